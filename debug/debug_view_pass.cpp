@@ -1,0 +1,115 @@
+// Debug views into the Display target.
+#include "debug/debug_view_pass.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/texture_units.h"
+
+namespace oasis {
+
+const char* stencilViewPathName(StencilViewPath path) {
+    return path == StencilViewPath::Texturing ? "stencil-texturing" : "read-back";
+}
+
+void DebugViewPass::uploadStencilCopy(const FrameTargets& targets) {
+    int w = targets.width(), h = targets.height();
+    stencilBytes_.resize(size_t(w) * size_t(h));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.finalFramebuffer());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencilBytes_.data());
+    if (!stencilCopy_ || stencilCopyWidth_ != w || stencilCopyHeight_ != h) {
+        stencilCopy_ = gl::createTargetTexture(GL_R8UI, w, h);
+        stencilCopyWidth_ = w;
+        stencilCopyHeight_ = h;
+    }
+    glBindTexture(GL_TEXTURE_2D, stencilCopy_.name());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_BYTE, stencilBytes_.data());
+}
+
+void DebugViewPass::bindSource(PassContext& context, const DebugView& view, StencilViewPath stencilPath) {
+    const FrameTargets& targets = context.targets;
+    auto bind = [](int unit, GLuint texture) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        glBindTexture(GL_TEXTURE_2D, texture);
+    };
+    GLuint depthStencil = targets.texture(Target::DepthStencil);
+    switch (view.source) {
+        case ViewSource::Final: bind(kUnitSource, targets.texture(Target::Final)); break;
+        case ViewSource::Albedo:
+            bind(kUnitAlbedo, targets.texture(Target::Albedo));
+            bind(kUnitInfo, targets.texture(Target::Info));
+            break;
+        case ViewSource::Normal: bind(kUnitNormal, targets.texture(Target::Normal)); break;
+        case ViewSource::Position: bind(kUnitPosition, targets.texture(Target::Position)); break;
+        case ViewSource::Info: bind(kUnitInfo, targets.texture(Target::Info)); break;
+        case ViewSource::Depth:
+            bind(kUnitDepth, depthStencil);
+            glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+            break;
+        case ViewSource::Stencil:
+            if (stencilPath == StencilViewPath::ReadBack) {
+                uploadStencilCopy(targets);
+                bind(kUnitStencil, stencilCopy_.name());
+            } else {
+                bind(kUnitStencil, depthStencil);
+                glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+            }
+            break;
+    }
+}
+
+void DebugViewPass::drawTile(PassContext& context, const DebugView& view, StencilViewPath stencilPath,
+                             int x, int y, int width, int height) {
+    gl::DebugGroup group(("DebugView." + view.name).c_str());
+    bindSource(context, view, stencilPath);
+    glBindFramebuffer(GL_FRAMEBUFFER, context.targets.displayFramebuffer());
+    glViewport(x, y, width, height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glUseProgram(context.shaders.program(debugProgramName(view)));
+    context.geometry.drawFullscreenTriangle();
+    if (view.source == ViewSource::Stencil && stencilPath == StencilViewPath::Texturing) {
+        // Leave the depth-stencil texture in its default mode for the depth view and the passes.
+        glActiveTexture(GL_TEXTURE0 + kUnitStencil);
+        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    }
+}
+
+void DebugViewPass::drawView(PassContext& context, const DebugView& view, StencilViewPath stencilPath) {
+    gl::DebugGroup group(name().c_str());
+    drawTile(context, view, stencilPath, 0, 0, context.targets.width(), context.targets.height());
+}
+
+void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPath) {
+    gl::DebugGroup group((name() + ".overview").c_str());
+    const FrameTargets& targets = context.targets;
+    const auto& views = debugViews();
+    int columns = int(std::ceil(std::sqrt(double(views.size()))));
+    int rows = int((views.size() + size_t(columns) - 1) / size_t(columns));
+    int tileWidth = targets.width() / columns, tileHeight = targets.height() / rows;
+
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.displayFramebuffer());
+    glViewport(0, 0, targets.width(), targets.height());
+    glClearColor(0.08f, 0.08f, 0.08f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    std::vector<Label> labels;
+    for (size_t i = 0; i < views.size(); ++i) {
+        int column = int(i) % columns, row = int(i) / columns;
+        int x = column * tileWidth;
+        int yFromTop = row * tileHeight;
+        // One pixel gap between tiles keeps their edges apart.
+        drawTile(context, views[i], stencilPath, x + 1, targets.height() - yFromTop - tileHeight + 1,
+                 std::max(1, tileWidth - 2), std::max(1, tileHeight - 2));
+        labels.push_back({views[i].name, float(x + 4), float(yFromTop + 4)});
+    }
+    if (tileHeight >= 24) {
+        if (!labels_) labels_ = std::make_unique<LabelOverlay>();
+        glBindFramebuffer(GL_FRAMEBUFFER, targets.displayFramebuffer());
+        glViewport(0, 0, targets.width(), targets.height());
+        labels_->draw(labels, targets.width(), targets.height(), std::max(1.0f, float(tileHeight) / 200.0f));
+    }
+}
+
+}  // namespace oasis

@@ -1,0 +1,36 @@
+// DebugViewPass: draws one debug view, or the overview grid of all of them with their names,
+// into the Display target. The stencil view has two paths: sampling the depth-stencil texture
+// through stencil texturing, or reading the stencil back to the CPU and uploading it.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "debug/debug_views.h"
+#include "debug/label_overlay.h"
+#include "passes/pass.h"
+
+namespace oasis {
+
+enum class StencilViewPath { Texturing, ReadBack };
+const char* stencilViewPathName(StencilViewPath path);
+
+class DebugViewPass {
+public:
+    std::string name() const { return "DebugViewPass"; }
+
+    void drawView(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
+    void drawOverview(PassContext& context, StencilViewPath stencilPath);
+
+private:
+    void drawTile(PassContext& context, const DebugView& view, StencilViewPath stencilPath,
+                  int x, int y, int width, int height);
+    void bindSource(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
+    void uploadStencilCopy(const FrameTargets& targets);
+
+    gl::Texture stencilCopy_;
+    int stencilCopyWidth_ = 0, stencilCopyHeight_ = 0;
+    std::vector<uint8_t> stencilBytes_;
+    std::unique_ptr<LabelOverlay> labels_;
+};
+
+}  // namespace oasis

@@ -1,0 +1,41 @@
+// The debug view table.
+#include "debug/debug_views.h"
+
+namespace oasis {
+namespace {
+
+const std::vector<DebugView> kViews = {
+    {"final", ViewSource::Final, "VIEW_COLOUR", "the lit frame as displayed"},
+    {"albedo", ViewSource::Albedo, "VIEW_ALBEDO", "material colour, gamma-encoded; sky as drawn"},
+    {"normal", ViewSource::Normal, "VIEW_NORMAL", "world normal xyz as rgb = 0.5 + 0.5 n"},
+    {"position", ViewSource::Position, "VIEW_POSITION",
+     "camera-relative position, signed log scale to the view distance (grey = camera)"},
+    {"info", ViewSource::Info, "VIEW_INFO", "red specular power, green specular intensity, blue sky flag"},
+    {"depth", ViewSource::Depth, "VIEW_DEPTH", "eye distance, log scale near to far; black = cleared"},
+    {"stencil", ViewSource::Stencil, "VIEW_STENCIL", "one colour per stencil value: black 0, amber 1 terrain"},
+};
+
+}  // namespace
+
+const std::vector<DebugView>& debugViews() { return kViews; }
+
+const DebugView* findDebugView(const std::string& name) {
+    for (const DebugView& view : kViews)
+        if (view.name == name) return &view;
+    return nullptr;
+}
+
+std::string debugViewNames() {
+    std::string names;
+    for (const DebugView& view : kViews) names += view.name + ", ";
+    return names + kOverviewName;
+}
+
+bool readsGBuffer(const DebugView& view) {
+    return view.source == ViewSource::Albedo || view.source == ViewSource::Normal ||
+           view.source == ViewSource::Position || view.source == ViewSource::Info;
+}
+
+std::string debugProgramName(const DebugView& view) { return "debug." + view.name; }
+
+}  // namespace oasis

@@ -1,0 +1,59 @@
+// ImGui-rendered labels for the overview tiles.
+#include "debug/label_overlay.h"
+
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+
+namespace oasis {
+namespace {
+
+// Makes `context` current for a scope and restores whatever was current before.
+struct ContextScope {
+    explicit ContextScope(ImGuiContext* context) : previous(ImGui::GetCurrentContext()) {
+        ImGui::SetCurrentContext(context);
+    }
+    ~ContextScope() { ImGui::SetCurrentContext(previous); }
+    ImGuiContext* previous;
+};
+
+}  // namespace
+
+LabelOverlay::LabelOverlay() {
+    ImGuiContext* previous = ImGui::GetCurrentContext();
+    context_ = ImGui::CreateContext();
+    ImGui::SetCurrentContext(context_);
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui::SetCurrentContext(previous);
+}
+
+LabelOverlay::~LabelOverlay() {
+    {
+        ContextScope scope(context_);
+        ImGui_ImplOpenGL3_Shutdown();
+    }
+    ImGui::DestroyContext(context_);
+}
+
+void LabelOverlay::draw(const std::vector<Label>& labels, int width, int height, float scale) {
+    ContextScope scope(context_);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(float(width), float(height));
+    io.DeltaTime = 1.0f / 60.0f;
+    io.FontGlobalScale = scale;
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    float pad = 3.0f * scale;
+    for (const Label& label : labels) {
+        ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
+        ImVec2 corner(label.x, label.y);
+        draw->AddRectFilled(corner, ImVec2(corner.x + size.x + 2 * pad, corner.y + size.y + 2 * pad),
+                            IM_COL32(0, 0, 0, 190));
+        draw->AddText(ImVec2(corner.x + pad, corner.y + pad), IM_COL32(255, 255, 255, 255), label.text.c_str());
+    }
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+}  // namespace oasis

@@ -1,0 +1,30 @@
+// Text labels drawn over the display target with Dear ImGui's built-in font, in a private ImGui
+// context so it works headless (EGL) as well as beside the window's own ImGui panel.
+#pragma once
+#include <string>
+#include <vector>
+
+struct ImGuiContext;
+
+namespace oasis {
+
+struct Label {
+    std::string text;
+    float x, y;  // top-left corner in pixels, y down from the top of the target
+};
+
+class LabelOverlay {
+public:
+    LabelOverlay();
+    ~LabelOverlay();
+    LabelOverlay(const LabelOverlay&) = delete;
+    LabelOverlay& operator=(const LabelOverlay&) = delete;
+
+    // Draws the labels into the bound framebuffer of the given size.
+    void draw(const std::vector<Label>& labels, int width, int height, float scale);
+
+private:
+    ImGuiContext* context_ = nullptr;
+};
+
+}  // namespace oasis

@@ -1,0 +1,21 @@
+// ClearPass: resets the targets a pipeline draws into (colour, depth 1, stencil 0).
+#pragma once
+#include "passes/pass.h"
+
+namespace oasis {
+
+class ClearPass : public Pass {
+public:
+    explicit ClearPass(SurfaceOutput output) : output_(output) {}
+    std::string name() const override { return std::string("ClearPass.") + surfaceOutputName(output_); }
+    std::vector<Target> reads() const override { return {}; }
+    std::vector<Target> writes() const override { return surfaceOutputTargets(output_); }
+
+protected:
+    void execute(PassContext& context) override;
+
+private:
+    SurfaceOutput output_;
+};
+
+}  // namespace oasis

@@ -1,0 +1,22 @@
+// Per-frame data shared by C++ (src/render/frame_data.h includes this file) and every shader.
+// Only vec4 and mat4 members, so std140 (UBO) and the C++ struct have the same bytes.
+
+#ifndef OASIS_FRAME_DATA_GLSL
+#define OASIS_FRAME_DATA_GLSL
+
+struct FrameData {
+    mat4 viewProjection;         // world (camera-relative) -> clip
+    mat4 inverseViewProjection;  // clip -> world (camera-relative)
+    vec4 cameraPosition;         // xyz world position; w unused
+    vec4 sunDirection;           // xyz towards the sun (unit); w = sun elevation (sin)
+    vec4 sunRadiance;            // rgb sun colour times intensity; w unused
+    vec4 skyZenith;              // rgb zenith colour; w = sky brightness
+    vec4 skyHorizon;             // rgb horizon colour; w unused
+    vec4 groundAmbient;          // rgb light bounced from the ground; w unused
+    vec4 terrainShape;           // x frequency, y amplitude, z base height, w octaves
+    vec4 terrainGrid;            // x central azimuth, y half-width (rad), z first ring radius, w ring ratio
+    vec4 terrainGridCounts;      // x rings, y segments, z fog start, w fog end
+    vec4 depthRange;             // x near, y far, z time (s), w exposure
+};
+
+#endif

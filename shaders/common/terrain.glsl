@@ -1,0 +1,45 @@
+// The terrain's height (same maths as src/scene/terrain.cpp) and its material: sand by the
+// water, grass on gentle ground, rock on steep or high ground, broken up by noise.
+#ifndef OASIS_TERRAIN_GLSL
+#define OASIS_TERRAIN_GLSL
+#include "common/noise.glsl"
+#include "common/surface.glsl"
+
+// Same constant as kValleyFlattening in src/scene/terrain.cpp (a shape, not a tuning knob).
+#define TERRAIN_VALLEY_FLATTENING 0.3
+
+// (height, d height / dx, d height / dz) at world (x, z).
+vec3 terrainHeight(vec2 worldXZ) {
+    vec4 shape = frame.terrainShape;  // frequency, amplitude, base height, octaves
+    vec3 n = fractalNoise(worldXZ * shape.x, int(shape.w));
+    // h = amplitude * (n + k n^2): broad flat valleys for the water, sharper ridges above.
+    const float k = TERRAIN_VALLEY_FLATTENING;
+    float slopeScale = shape.y * shape.x * (1.0 + 2.0 * k * n.x);
+    return vec3(shape.y * (n.x + k * n.x * n.x) + shape.z, slopeScale * n.y, slopeScale * n.z);
+}
+
+Surface terrainSurface(vec3 relativePosition, vec3 normal) {
+    vec3 world = relativePosition + frame.cameraPosition.xyz;
+    float broad = simplexNoise(world.xz * 0.02).x;
+    // Fine variation fades out with distance, where a pixel spans many of its cycles.
+    float fine = simplexNoise(world.xz * 0.25).x * (1.0 - smoothstep(40.0, 250.0, length(relativePosition)));
+    float slope = 1.0 - normal.y;
+
+    vec3 sand = vec3(0.42, 0.33, 0.19);
+    vec3 grass = mix(vec3(0.045, 0.10, 0.02), vec3(0.13, 0.14, 0.04), 0.5 + 0.5 * broad);
+    vec3 rock = mix(vec3(0.17, 0.145, 0.13), vec3(0.27, 0.24, 0.21), 0.5 + 0.5 * fine);
+    float sandAmount = 1.0 - smoothstep(1.5, 4.0, world.y + 1.5 * broad);
+    float rockAmount = max(smoothstep(0.30, 0.45, slope + 0.06 * broad),
+                           smoothstep(48.0, 62.0, world.y + 8.0 * broad));
+
+    Surface s;
+    s.albedo = mix(mix(grass, sand, sandAmount), rock, rockAmount) * (0.9 + 0.1 * fine);
+    s.normal = normal;
+    s.relativePosition = relativePosition;
+    s.specularPower = round(mix(mix(4.0, 16.0, sandAmount), 24.0, rockAmount));
+    s.specularIntensity = quantiseUnit(mix(mix(0.04, 0.10, sandAmount), 0.18, rockAmount));
+    s.flags = 0u;
+    return s;
+}
+
+#endif

@@ -1,0 +1,86 @@
+// Debug views: one G-buffer, depth or stencil target remapped to a colour a person can read.
+// The variant's VIEW_* define picks the remapping; debug/debug_views.cpp lists which view uses which.
+#include "common/frame_block.glsl"
+#include "common/surface.glsl"
+
+in vec2 vScreenUv;
+layout(location = 0) out vec4 outColour;
+
+// A perceptual ramp (dark blue - teal - yellow) for scalar fields.
+vec3 ramp(float t) {
+    t = clamp(t, 0.0, 1.0);
+    vec3 low = vec3(0.05, 0.03, 0.25), mid = vec3(0.10, 0.60, 0.55), high = vec3(0.99, 0.91, 0.15);
+    return t < 0.5 ? mix(low, mid, t * 2.0) : mix(mid, high, t * 2.0 - 1.0);
+}
+
+#if defined(VIEW_COLOUR)
+uniform sampler2D sourceTexture;
+vec3 viewColour() { return texture(sourceTexture, vScreenUv).rgb; }
+
+#elif defined(VIEW_ALBEDO)
+uniform sampler2D gAlbedo;
+uniform sampler2D gInfo;
+vec3 viewColour() {
+    // Sky albedo already holds its display colour; material albedo is linear, so gamma-encode it.
+    uint flags = infoFlags(texture(gInfo, vScreenUv));
+    vec3 albedo = texture(gAlbedo, vScreenUv).rgb;
+    return (flags & SURFACE_UNLIT) != 0u ? albedo : pow(clamp(albedo, 0.0, 1.0), vec3(1.0 / 2.2));
+}
+
+#elif defined(VIEW_NORMAL)
+uniform sampler2D gNormal;
+vec3 viewColour() { return 0.5 + 0.5 * clamp(texture(gNormal, vScreenUv).xyz, -1.0, 1.0); }
+
+#elif defined(VIEW_POSITION)
+uniform sampler2D gPosition;
+vec3 viewColour() {
+    // Camera-relative position on a signed log scale over the view distance: nearby detail and
+    // the far hills both stay visible. Grey is the camera; red +x, green +y, blue +z.
+    vec4 stored = texture(gPosition, vScreenUv);
+    if (stored.w == 0.0) return vec3(0.0);  // sky: no position
+    vec3 p = stored.xyz;
+    vec3 scaled = sign(p) * log(1.0 + abs(p)) / log(1.0 + frame.terrainGridCounts.w);  // black: sky
+    return 0.5 + 0.5 * clamp(scaled, -1.0, 1.0);
+}
+
+#elif defined(VIEW_INFO)
+uniform sampler2D gInfo;
+vec3 viewColour() {
+    // Red: specular power (0..64), green: specular intensity (0..0.25), blue: the sky flag.
+    vec4 info = texture(gInfo, vScreenUv);
+    bool sky = (infoFlags(info) & SURFACE_SKY) != 0u;
+    return sky ? vec3(0.0, 0.0, 0.8) : vec3(round(info.r * 255.0) / 64.0, info.g / 0.25, 0.0);
+}
+
+#elif defined(VIEW_DEPTH)
+uniform sampler2D gDepth;
+vec3 viewColour() {
+    // Window depth back to eye distance, then a log scale from the near to the far plane.
+    float depth = texture(gDepth, vScreenUv).r;
+    if (depth >= 1.0) return vec3(0.0);
+    float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
+    float ndc = depth * 2.0 - 1.0;
+    float eyeDistance = 2.0 * nearPlane * farPlane / (farPlane + nearPlane - ndc * (farPlane - nearPlane));
+    return ramp(log(eyeDistance / nearPlane) / log(farPlane / nearPlane));
+}
+
+#elif defined(VIEW_STENCIL)
+uniform usampler2D gStencil;
+vec3 viewColour() {
+    // Each stencil value its own colour: 0 black, 1 amber (terrain), then distinct hues.
+    uint value = texture(gStencil, vScreenUv).r;
+    if (value == 0u) return vec3(0.0);
+    if (value == 1u) return vec3(0.95, 0.62, 0.12);
+    if (value == 2u) return vec3(0.15, 0.45, 0.95);
+    if (value == 3u) return vec3(0.20, 0.85, 0.35);
+    float hue = fract(float(value) * 0.618034);
+    return clamp(abs(mod(hue * 6.0 + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);
+}
+
+#else
+#error "define one VIEW_* remapping"
+#endif
+
+void main() {
+    outColour = vec4(viewColour(), 1.0);
+}

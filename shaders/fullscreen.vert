@@ -1,0 +1,13 @@
+// One triangle that covers the screen, at the far plane when FULLSCREEN_AT_FAR_PLANE is defined
+// (the sky draws there so the depth test keeps it behind everything). No vertex buffer needed.
+out vec2 vScreenUv;
+
+void main() {
+    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    vScreenUv = corner;
+#if defined(FULLSCREEN_AT_FAR_PLANE)
+    gl_Position = vec4(corner * 2.0 - 1.0, 1.0, 1.0);
+#else
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+#endif
+}

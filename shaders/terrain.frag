@@ -1,0 +1,11 @@
+// Terrain fragments: build the material's surface and emit it (G-buffer or shaded, by variant).
+#include "common/frame_block.glsl"
+#include "common/terrain.glsl"
+#include "common/emit_surface.glsl"
+
+in vec3 vRelativePosition;
+in vec3 vNormal;
+
+void main() {
+    emitSurface(terrainSurface(vRelativePosition, normalize(vNormal)));
+}

@@ -1,0 +1,18 @@
+// Terrain vertices: a polar grid cell (ring, segment) placed around the camera, raised to the
+// noise height. Normals come from the height's analytic gradient, exact however coarse the grid.
+#include "common/frame_block.glsl"
+#include "common/terrain.glsl"
+
+layout(location = 0) in vec2 gridCoordinate;  // (ring fraction, segment fraction)
+out vec3 vRelativePosition;
+out vec3 vNormal;
+
+void main() {
+    float radius = frame.terrainGrid.z * pow(frame.terrainGrid.w, gridCoordinate.x * frame.terrainGridCounts.x);
+    float azimuth = frame.terrainGrid.x + (2.0 * gridCoordinate.y - 1.0) * frame.terrainGrid.y;
+    vec2 offset = radius * vec2(sin(azimuth), -cos(azimuth));
+    vec3 height = terrainHeight(frame.cameraPosition.xz + offset);
+    vRelativePosition = vec3(offset.x, height.x - frame.cameraPosition.y, offset.y);
+    vNormal = normalize(vec3(-height.y, 1.0, -height.z));
+    gl_Position = frame.viewProjection * vec4(vRelativePosition, 1.0);
+}

@@ -1,0 +1,31 @@
+// oasis's entry point: parse the command line, then run the window or a headless command.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/options.h"
+#include "commands/headless_commands.h"
+#include "commands/window_app.h"
+#include "context/gl_context.h"
+
+int main(int argc, char** argv) {
+    using namespace oasis;
+    ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+    if (!parsed.ok) {
+        std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());
+        return 2;
+    }
+    const Options& options = parsed.options;
+    if (options.help) {
+        std::fputs(usage(options.command).c_str(), stdout);
+        return 0;
+    }
+    switch (options.command) {
+        case Command::Render: return runRenderCommand(options);
+        case Command::Compare: return runCompareCommand(options);
+        case Command::Window: return runWindowApp(options);
+        case Command::Default:
+            return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);
+    }
+    return 0;
+}

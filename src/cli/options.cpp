@@ -1,0 +1,174 @@
+// Command-line parsing and help text.
+#include "cli/options.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "debug/debug_views.h"
+#include "render/gbuffer_layout.h"
+
+namespace oasis {
+namespace {
+
+bool parseDouble(const std::string& text, double& value) {
+    if (text.empty()) return false;
+    char* end = nullptr;
+    value = std::strtod(text.c_str(), &end);
+    return end && *end == '\0' && std::isfinite(value);
+}
+
+bool parseInt(const std::string& text, int& value) {
+    if (text.empty()) return false;
+    char* end = nullptr;
+    long parsed = std::strtol(text.c_str(), &end, 10);
+    if (!end || *end != '\0' || parsed < -1000000000L || parsed > 1000000000L) return false;
+    value = int(parsed);
+    return true;
+}
+
+const char* kSceneOptionsHelp =
+    "scene options (every subcommand):\n"
+    "  --size WxH                frame size in pixels (default 1280x720)\n"
+    "  --time SECONDS            animation time: camera flight and time of day (default 0 = 10:00)\n"
+    "  --hour H                  override the hour of day, 0..24 (6 sunrise, 18 sunset)\n"
+    "  --camera X,Y,Z,YAW,PITCH  fixed camera instead of the flight (degrees; yaw 0 = -Z, 90 = +X)\n"
+    "  --gbuffer LAYOUT          G-buffer layout: ";
+
+}  // namespace
+
+const char* commandName(Command command) {
+    switch (command) {
+        case Command::Default: return "";
+        case Command::Window: return "window";
+        case Command::Render: return "render";
+        case Command::Compare: return "compare";
+    }
+    return "";
+}
+
+bool parseSize(const std::string& text, int& width, int& height) {
+    size_t x = text.find('x');
+    if (x == std::string::npos) return false;
+    return parseInt(text.substr(0, x), width) && parseInt(text.substr(x + 1), height) && width >= 1 &&
+           height >= 1;
+}
+
+bool parseCameraPose(const std::string& text, CameraPose& pose) {
+    std::vector<double> values;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        double value = 0.0;
+        if (!parseDouble(item, value)) return false;
+        values.push_back(value);
+    }
+    if (values.size() != 5 || std::fabs(values[4]) > 90.0) return false;
+    pose.position = glm::dvec3(values[0], values[1], values[2]);
+    pose.yawDegrees = float(values[3]);
+    pose.pitchDegrees = float(values[4]);
+    return true;
+}
+
+std::string usage(Command command) {
+    std::string scene = std::string(kSceneOptionsHelp) + gbufferLayoutNames() + " (default standard)\n";
+    switch (command) {
+        case Command::Render:
+            return "usage: oasis render [scene options] [--pipeline forward|deferred] [--view NAME] [--out FILE.png]\n"
+                   "  renders one frame and writes one debug view of it (default: deferred, final)\n"
+                   "  --view NAME               " + debugViewNames() + "\n"
+                   "  --stencil-view PATH       texturing | read-back (default: texturing where supported)\n" + scene;
+        case Command::Compare:
+            return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N]\n"
+                   "  renders the frame in both pipelines; prints PSNR, max abs and RMSE over 8-bit RGB and the\n"
+                   "  median ms per frame of each (wall time around glFinish over N frames, default 9);\n"
+                   "  writes forward.png, deferred.png and difference.png to DIR (default oasis-out)\n" + scene;
+        case Command::Window:
+            return "usage: oasis window [scene options]\n"
+                   "  opens the interactive window (what `oasis` does when a display exists)\n" + scene;
+        case Command::Default: break;
+    }
+    return "oasis - a forward/deferred renderer workbench\n"
+           "usage: oasis [SUBCOMMAND] [options]\n"
+           "  (none)     a window when a display exists; otherwise the headless main job: renders the\n"
+           "             default frame in both pipelines and the debug overview to PNGs in --out-dir\n"
+           "             (default oasis-out) and prints a summary\n"
+           "  window     the interactive window\n"
+           "  render     one frame, one debug view, to a PNG\n"
+           "  compare    forward against deferred: image difference and time\n"
+           "  oasis SUBCOMMAND --help for its options\n" + scene +
+           "  --out-dir DIR             where the main job writes (default oasis-out)\n";
+}
+
+ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
+    ParseResult result;
+    Options& options = result.options;
+    auto fail = [&](const std::string& message) {
+        result.ok = false;
+        result.error = message;
+        return result;
+    };
+    size_t i = 0;
+    if (i < arguments.size() && !arguments[i].empty() && arguments[i][0] != '-') {
+        const std::string& name = arguments[i];
+        if (name == "render") options.command = Command::Render;
+        else if (name == "compare") options.command = Command::Compare;
+        else if (name == "window") options.command = Command::Window;
+        else return fail("unknown subcommand '" + name + "' (expected render, compare or window)");
+        ++i;
+    }
+    for (; i < arguments.size(); ++i) {
+        const std::string& flag = arguments[i];
+        if (flag == "--help" || flag == "-h") { options.help = true; continue; }
+        if (flag == "--json") { options.json = true; continue; }
+        if (i + 1 >= arguments.size()) return fail("option " + flag + " needs a value (see --help)");
+        const std::string& value = arguments[++i];
+        bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view";
+        if (renderOnly && options.command != Command::Render)
+            return fail("option " + flag + " belongs to `oasis render`");
+        if (flag == "--size") {
+            if (!parseSize(value, options.scene.width, options.scene.height))
+                return fail("--size expects WxH with positive integers, e.g. 1280x720, got '" + value + "'");
+        } else if (flag == "--time") {
+            if (!parseDouble(value, options.scene.timeSeconds))
+                return fail("--time expects a number of seconds, got '" + value + "'");
+        } else if (flag == "--hour") {
+            double hour = 0.0;
+            if (!parseDouble(value, hour) || hour < 0.0 || hour > 24.0)
+                return fail("--hour expects a number from 0 to 24, got '" + value + "'");
+            options.scene.hour = hour;
+        } else if (flag == "--camera") {
+            CameraPose pose;
+            if (!parseCameraPose(value, pose))
+                return fail("--camera expects X,Y,Z,YAW,PITCH (five numbers, |pitch| <= 90), got '" + value + "'");
+            options.scene.camera = pose;
+        } else if (flag == "--gbuffer") {
+            if (!findGBufferLayout(value))
+                return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");
+            options.scene.gbuffer = value;
+        } else if (flag == "--pipeline") {
+            if (!parsePipelineKind(value, options.pipeline))
+                return fail("--pipeline expects forward or deferred, got '" + value + "'");
+        } else if (flag == "--view") {
+            if (!findDebugView(value) && value != kOverviewName)
+                return fail("--view: unknown view '" + value + "' (one of: " + debugViewNames() + ")");
+            options.view = value;
+        } else if (flag == "--stencil-view") {
+            if (value == "texturing") options.stencilView = StencilViewPath::Texturing;
+            else if (value == "read-back") options.stencilView = StencilViewPath::ReadBack;
+            else return fail("--stencil-view expects texturing or read-back, got '" + value + "'");
+        } else if (flag == "--out") {
+            options.out = value;
+        } else if (flag == "--out-dir") {
+            options.outDir = value;
+        } else if (flag == "--frames") {
+            if (!parseInt(value, options.timingFrames) || options.timingFrames < 1 || options.timingFrames > 1000)
+                return fail("--frames expects an integer from 1 to 1000, got '" + value + "'");
+        } else {
+            return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
+        }
+    }
+    return result;
+}
+
+}  // namespace oasis

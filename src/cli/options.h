@@ -1,0 +1,52 @@
+// The command line: subcommands, the scene options every subcommand shares, and their parsing.
+// Parsing is GL-free and reports the first bad argument in words (the caller exits 2).
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "debug/debug_view_pass.h"
+#include "render/pipeline.h"
+#include "scene/camera.h"
+
+namespace oasis {
+
+// Shared by every subcommand: --size, --time, --hour, --camera, --gbuffer.
+struct SceneOptions {
+    int width = 1280, height = 720;
+    double timeSeconds = 0.0;
+    std::optional<double> hour;
+    std::optional<CameraPose> camera;
+    std::string gbuffer = "standard";
+};
+
+enum class Command { Default, Window, Render, Compare };
+
+struct Options {
+    Command command = Command::Default;
+    bool help = false;
+    SceneOptions scene;
+    PipelineKind pipeline = PipelineKind::Deferred;
+    std::string view = "final";
+    std::string out = "oasis.png";
+    std::string outDir = "oasis-out";
+    bool json = false;
+    int timingFrames = 9;
+    std::optional<StencilViewPath> stencilView;
+};
+
+struct ParseResult {
+    bool ok = true;
+    std::string error;  // set when !ok
+    Options options;
+};
+
+ParseResult parseCommandLine(const std::vector<std::string>& arguments);
+std::string usage(Command command);
+const char* commandName(Command command);
+
+// Individual value parsers (exposed for tests).
+bool parseSize(const std::string& text, int& width, int& height);
+bool parseCameraPose(const std::string& text, CameraPose& pose);
+
+}  // namespace oasis

@@ -1,0 +1,159 @@
+// render / compare / main job on a surfaceless EGL context.
+#include "commands/headless_commands.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+#include "commands/session.h"
+#include "context/gl_context.h"
+
+namespace oasis {
+namespace {
+
+struct Comparison {
+    ImageDifference difference;
+    double forwardMs = 0.0, deferredMs = 0.0, floorMs = 0.0;
+    Image forward, deferred;
+};
+
+bool ensureDirectory(const std::string& path, std::string& error) {
+    if (mkdir(path.c_str(), 0755) == 0 || errno == EEXIST) return true;
+    error = "cannot create directory " + path + ": " + std::strerror(errno);
+    return false;
+}
+
+Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
+    renderer.setPipeline(kind);
+    renderer.renderFrame(scene);
+    renderer.renderView("final");
+    return renderer.readDisplay();
+}
+
+Comparison compareFrame(RenderSession& session, int timingFrames) {
+    Renderer& renderer = *session.renderer;
+    Comparison result;
+    result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
+    result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
+    result.difference = compareImages(result.forward, result.deferred);
+    renderer.setPipeline(PipelineKind::Forward);
+    result.forwardMs = medianFrameMs(renderer, session.scene, timingFrames);
+    renderer.setPipeline(PipelineKind::Deferred);
+    result.deferredMs = medianFrameMs(renderer, session.scene, timingFrames);
+    result.floorMs = medianFloorMs(renderer, timingFrames);
+    renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
+    return result;
+}
+
+bool writeImages(const std::string& directory, const std::vector<std::pair<std::string, const Image*>>& images,
+                 std::vector<std::string>& written) {
+    std::string error;
+    if (!ensureDirectory(directory, error)) { std::fprintf(stderr, "oasis: %s\n", error.c_str()); return false; }
+    for (const auto& [file, image] : images) {
+        std::string path = directory + "/" + file;
+        if (!writePng(path, *image, error)) { std::fprintf(stderr, "oasis: %s\n", error.c_str()); return false; }
+        written.push_back(path);
+    }
+    return true;
+}
+
+void printSummary(const Options& options, const RenderSession& session, const Comparison& c) {
+    const FrameTargets& targets = session.renderer->targets();
+    const FrameSetup& frame = session.renderer->lastFrame();
+    std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel), time %.2f s (%.2f h), on %s\n", targets.width(),
+                targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
+                options.scene.timeSeconds, frame.hour, queryContextInfo().summary().c_str());
+    std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
+                c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
+    std::printf("  forward  %8.2f ms/frame  (%.2fx floor)\n", c.forwardMs, c.forwardMs / c.floorMs);
+    std::printf("  deferred %8.2f ms/frame  (%.2fx floor)\n", c.deferredMs, c.deferredMs / c.floorMs);
+    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, same run)\n", c.floorMs);
+    std::printf("  medians of %d frames, wall time around glFinish; terrain %d triangles\n", options.timingFrames,
+                session.renderer->geometry().terrainTriangles());
+}
+
+void printJson(const Options& options, const RenderSession& session, const Comparison& c) {
+    const FrameTargets& targets = session.renderer->targets();
+    ContextInfo info = queryContextInfo();
+    std::printf("{\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
+                "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\"}\n",
+                c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
+                targets.width(), targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
+                options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
+                stencilViewPathName(session.renderer->stencilViewPath()));
+}
+
+// Runs `body` with a headless context and a session, turning failures into messages and exit 1.
+template <typename Body>
+int withHeadlessSession(const Options& options, Body body) {
+    try {
+        HeadlessContext context;
+        RenderSession session(options);
+        return body(session);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "oasis: %s\n", error.what());
+        return 1;
+    }
+}
+
+}  // namespace
+
+int runRenderCommand(const Options& options) {
+    return withHeadlessSession(options, [&](RenderSession& session) {
+        Renderer& renderer = *session.renderer;
+        renderer.setPipeline(options.pipeline);
+        renderer.renderFrame(session.scene);
+        renderer.renderView(options.view);
+        std::string error;
+        if (!writePng(options.out, renderer.readDisplay(), error)) {
+            std::fprintf(stderr, "oasis: %s\n", error.c_str());
+            return 1;
+        }
+        std::printf("oasis: wrote %s (%s pipeline, view %s, %dx%d)\n", options.out.c_str(),
+                    pipelineName(options.pipeline), options.view.c_str(), renderer.targets().width(),
+                    renderer.targets().height());
+        return 0;
+    });
+}
+
+int runCompareCommand(const Options& options) {
+    return withHeadlessSession(options, [&](RenderSession& session) {
+        Comparison c = compareFrame(session, options.timingFrames);
+        Image heat = differenceHeatmap(c.forward, c.deferred);
+        std::vector<std::string> written;
+        if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
+                                          {"difference.png", &heat}}, written))
+            return 1;
+        if (options.json) {
+            printJson(options, session, c);
+        } else {
+            printSummary(options, session, c);
+            for (const std::string& path : written) std::printf("  wrote %s\n", path.c_str());
+        }
+        return 0;
+    });
+}
+
+int runMainJob(const Options& options) {
+    return withHeadlessSession(options, [&](RenderSession& session) {
+        std::printf("oasis: no display, running the headless main job (stencil view: %s)\n",
+                    session.stencilPathReason.c_str());
+        Comparison c = compareFrame(session, options.timingFrames);
+        session.renderer->renderView(kOverviewName);
+        Image overview = session.renderer->readDisplay();
+        Image heat = differenceHeatmap(c.forward, c.deferred);
+        std::vector<std::string> written;
+        if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
+                                          {"difference.png", &heat}, {"overview.png", &overview}}, written))
+            return 1;
+        printSummary(options, session, c);
+        for (const std::string& path : written) std::printf("  wrote %s\n", path.c_str());
+        return 0;
+    });
+}
+
+}  // namespace oasis

@@ -1,0 +1,73 @@
+// Command set-up shared by the headless commands and the window.
+#include "commands/session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <vector>
+
+namespace oasis {
+
+SceneSettings sceneSettingsFrom(const SceneOptions& options) {
+    SceneSettings scene;
+    scene.timeSeconds = options.timeSeconds;
+    scene.hour = options.hour;
+    scene.camera = options.camera;
+    return scene;
+}
+
+StencilViewPath chooseStencilViewPath(std::optional<StencilViewPath> forced, std::string& reason) {
+    bool supported = epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_ARB_stencil_texturing");
+    if (forced) {
+        if (*forced == StencilViewPath::Texturing && !supported) {
+            reason = "stencil texturing was asked for but this context lacks GL 4.3 / ARB_stencil_texturing: read-back";
+            return StencilViewPath::ReadBack;
+        }
+        reason = std::string("forced on the command line: ") + stencilViewPathName(*forced);
+        return *forced;
+    }
+    reason = supported ? "stencil texturing (GL 4.3 or ARB_stencil_texturing present)"
+                       : "read-back (no GL 4.3 / ARB_stencil_texturing)";
+    return supported ? StencilViewPath::Texturing : StencilViewPath::ReadBack;
+}
+
+RenderSession::RenderSession(const Options& options) : scene(sceneSettingsFrom(options.scene)) {
+    std::string searched;
+    std::string directory = findShaderDirectory(&searched);
+    if (directory.empty())
+        throw std::runtime_error("cannot find oasis's shaders (looked in: " + searched +
+                                 "); set OASIS_SHADER_DIR to the shaders/ directory");
+    shaders = std::make_unique<ShaderLibrary>(directory);
+    renderer = std::make_unique<Renderer>(*shaders, scene);
+    renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
+    renderer->setStencilViewPath(chooseStencilViewPath(options.stencilView, stencilPathReason));
+}
+
+namespace {
+template <typename Work>
+double medianMs(int frames, Work work) {
+    using Clock = std::chrono::steady_clock;
+    for (int warm = 0; warm < 2; ++warm) work();
+    glFinish();
+    std::vector<double> samples;
+    for (int i = 0; i < frames; ++i) {
+        auto start = Clock::now();
+        work();
+        glFinish();
+        samples.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+    }
+    std::sort(samples.begin(), samples.end());
+    size_t n = samples.size();
+    return n % 2 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
+}
+}  // namespace
+
+double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames) {
+    return medianMs(frames, [&] { renderer.renderFrame(scene); });
+}
+
+double medianFloorMs(Renderer& renderer, int frames) {
+    return medianMs(frames, [&] { renderer.renderFloor(); });
+}
+
+}  // namespace oasis

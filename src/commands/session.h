@@ -1,0 +1,33 @@
+// What every command does before and around rendering: find the shaders, turn options into
+// scene settings, pick capability-dependent paths (and say why), and time frames.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "cli/options.h"
+#include "render/renderer.h"
+
+namespace oasis {
+
+SceneSettings sceneSettingsFrom(const SceneOptions& options);
+
+// Stencil texturing needs GL 4.3 or ARB_stencil_texturing; `reason` says why the path was chosen.
+StencilViewPath chooseStencilViewPath(std::optional<StencilViewPath> forced, std::string& reason);
+
+// Everything a command renders with, on the current context. Throws std::runtime_error with a
+// readable message when the shaders cannot be found or the targets cannot be allocated.
+struct RenderSession {
+    std::unique_ptr<ShaderLibrary> shaders;
+    std::unique_ptr<Renderer> renderer;
+    SceneSettings scene;
+    std::string stencilPathReason;
+
+    explicit RenderSession(const Options& options);
+};
+
+// Median wall-clock milliseconds of `frames` frames of the active pipeline, each ended by
+// glFinish (GPU timer queries are not trustworthy on software rasterisers), after two warm-ups.
+double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames);
+double medianFloorMs(Renderer& renderer, int frames);
+
+}  // namespace oasis

@@ -1,0 +1,132 @@
+// EGL surfaceless and GLFW contexts, context facts and debug output.
+#include "context/gl_context.h"
+
+#include <epoxy/egl.h>
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <stdexcept>
+
+namespace oasis {
+namespace {
+
+const std::pair<int, int> kVersionsToTry[] = {{4, 6}, {4, 5}, {4, 3}, {4, 2}, {4, 1}, {3, 3}};
+
+std::string glString(GLenum name) {
+    const GLubyte* text = glGetString(name);
+    return text ? reinterpret_cast<const char*>(text) : "";
+}
+
+void GLAPIENTRY printDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
+                                  const void*) {
+    if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+    static std::set<GLuint> seen;  // each message once: a per-frame warning must not flood the console
+    if (!seen.insert(id).second) return;
+    std::fprintf(stderr, "oasis: GL %s: %s\n", type == GL_DEBUG_TYPE_ERROR ? "error" : "debug", message);
+}
+
+std::string glfwLastError() {
+    const char* description = nullptr;
+    glfwGetError(&description);
+    return description ? description : "unknown GLFW error";
+}
+
+}  // namespace
+
+std::string ContextInfo::summary() const { return version + " on " + renderer; }
+
+ContextInfo queryContextInfo() {
+    ContextInfo info;
+    info.version = glString(GL_VERSION);
+    info.vendor = glString(GL_VENDOR);
+    info.renderer = glString(GL_RENDERER);
+    info.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
+    glGetIntegerv(GL_MAJOR_VERSION, &info.major);
+    glGetIntegerv(GL_MINOR_VERSION, &info.minor);
+    return info;
+}
+
+void installDebugOutput() {
+    if (epoxy_gl_version() < 43 && !epoxy_has_gl_extension("GL_KHR_debug")) return;
+    glEnable(GL_DEBUG_OUTPUT);
+    glDebugMessageCallback(printDebugMessage, nullptr);
+}
+
+HeadlessContext::HeadlessContext() {
+    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
+        throw std::runtime_error("EGL has no EGL_MESA_platform_surfaceless (need Mesa's libegl-mesa0)");
+    EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLint major = 0, minor = 0;
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor))
+        throw std::runtime_error("cannot initialise a surfaceless EGL display");
+    display_ = display;
+    if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL cannot bind the desktop OpenGL API");
+    EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint configCount = 0;
+    eglChooseConfig(display, configAttributes, &config, 1, &configCount);
+    bool noConfig = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
+    if (configCount < 1 && !noConfig) throw std::runtime_error("EGL has no OpenGL-renderable config");
+    for (auto [glMajor, glMinor] : kVersionsToTry) {
+        EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION_KHR, glMajor, EGL_CONTEXT_MINOR_VERSION_KHR, glMinor,
+                               EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR,
+                               EGL_CONTEXT_FLAGS_KHR, EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR, EGL_NONE};
+        EGLContext context = eglCreateContext(display, configCount ? config : EGL_NO_CONFIG_KHR,
+                                              EGL_NO_CONTEXT, attributes);
+        if (context == EGL_NO_CONTEXT) continue;
+        if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+            eglDestroyContext(display, context);
+            continue;
+        }
+        context_ = context;
+        installDebugOutput();
+        return;
+    }
+    eglTerminate(display);
+    throw std::runtime_error("EGL could not create an OpenGL 3.3+ core context on this driver");
+}
+
+HeadlessContext::~HeadlessContext() {
+    auto display = static_cast<EGLDisplay>(display_);
+    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (context_) eglDestroyContext(display, static_cast<EGLContext>(context_));
+    eglTerminate(display);
+}
+
+bool WindowContext::displayAvailable() {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 && *x11) || (wayland && *wayland);
+}
+
+WindowContext::WindowContext(int width, int height, const std::string& title) {
+    if (!glfwInit()) throw std::runtime_error("cannot open a window: " + glfwLastError());
+    for (auto [glMajor, glMinor] : kVersionsToTry) {
+        glfwDefaultWindowHints();
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, glMajor);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, glMinor);
+        glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+        glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
+        window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+        if (window_) break;
+    }
+    if (!window_) {
+        std::string reason = glfwLastError();
+        glfwTerminate();
+        throw std::runtime_error("cannot open an OpenGL 3.3+ core window: " + reason);
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(0);
+    installDebugOutput();
+}
+
+WindowContext::~WindowContext() {
+    if (window_) glfwDestroyWindow(window_);
+    glfwTerminate();
+}
+
+}  // namespace oasis

@@ -1,0 +1,49 @@
+// An OpenGL context made current on this thread: headless through EGL (no display needed) or a
+// GLFW window. Both ask for the newest core profile the driver gives, down to 3.3.
+#pragma once
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+namespace oasis {
+
+struct ContextInfo {
+    std::string version, vendor, renderer, glslVersion;
+    int major = 0, minor = 0;
+    std::string summary() const;  // "4.5 (Core Profile) Mesa 22.3.6 on llvmpipe (...)"
+};
+ContextInfo queryContextInfo();
+
+// Routes GL debug output (errors and warnings; notifications are dropped) to stderr.
+void installDebugOutput();
+
+class HeadlessContext {
+public:
+    // Throws std::runtime_error naming what is missing when no context can be made.
+    HeadlessContext();
+    ~HeadlessContext();
+    HeadlessContext(const HeadlessContext&) = delete;
+    HeadlessContext& operator=(const HeadlessContext&) = delete;
+
+private:
+    void* display_ = nullptr;
+    void* context_ = nullptr;
+};
+
+class WindowContext {
+public:
+    // Throws std::runtime_error (with GLFW's reason) when no window can be opened.
+    WindowContext(int width, int height, const std::string& title);
+    ~WindowContext();
+    WindowContext(const WindowContext&) = delete;
+    WindowContext& operator=(const WindowContext&) = delete;
+    GLFWwindow* window() const { return window_; }
+
+    static bool displayAvailable();  // a display server to open a window on
+
+private:
+    GLFWwindow* window_ = nullptr;
+};
+
+}  // namespace oasis

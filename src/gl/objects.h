@@ -1,0 +1,70 @@
+// Owning wrappers for OpenGL object names. Each wrapper deletes its name on destruction and
+// counts itself, so tests can check that pipeline switches and resizes leak nothing.
+#pragma once
+#include <epoxy/gl.h>
+
+#include <string>
+#include <utility>
+
+namespace oasis::gl {
+
+enum class ObjectKind { Buffer, Texture, Framebuffer, VertexArray, Program, Shader, Count };
+
+// Live objects created through these wrappers, by kind.
+int liveObjectCount(ObjectKind kind);
+int liveObjectCount();
+
+// One owned GL name. Move-only.
+template <ObjectKind Kind>
+class Object {
+public:
+    Object() = default;
+    explicit Object(GLuint name) : name_(name) { if (name_) track(+1); }
+    ~Object() { reset(); }
+    Object(Object&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
+    Object& operator=(Object&& other) noexcept {
+        if (this != &other) { reset(); name_ = std::exchange(other.name_, 0); }
+        return *this;
+    }
+    Object(const Object&) = delete;
+    Object& operator=(const Object&) = delete;
+
+    GLuint name() const { return name_; }
+    explicit operator bool() const { return name_ != 0; }
+    void reset();
+
+private:
+    static void track(int delta);
+    GLuint name_ = 0;
+};
+
+using Buffer = Object<ObjectKind::Buffer>;
+using Texture = Object<ObjectKind::Texture>;
+using Framebuffer = Object<ObjectKind::Framebuffer>;
+using VertexArray = Object<ObjectKind::VertexArray>;
+using Program = Object<ObjectKind::Program>;
+using Shader = Object<ObjectKind::Shader>;
+
+Buffer createBuffer();
+Texture createTexture();
+Framebuffer createFramebuffer();
+VertexArray createVertexArray();
+
+// A texture for a render target: immutable storage, nearest filtering, clamped.
+Texture createTargetTexture(GLenum internalFormat, int width, int height);
+
+// Opens a KHR_debug group for the lifetime of the scope, when the context has KHR_debug.
+class DebugGroup {
+public:
+    explicit DebugGroup(const char* name);
+    ~DebugGroup();
+    DebugGroup(const DebugGroup&) = delete;
+    DebugGroup& operator=(const DebugGroup&) = delete;
+private:
+    bool open_ = false;
+};
+
+bool hasDebugGroups();
+std::string errorString(GLenum error);
+
+}  // namespace oasis::gl

@@ -1,0 +1,35 @@
+// Builds a frame's CPU-side state and its uniform block contents.
+#include "render/frame_setup.h"
+
+namespace oasis {
+
+FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
+    FrameSetup setup;
+    setup.view.pose = scene.camera ? *scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
+    setup.view.projection = scene.projection;
+    setup.view.aspect = float(width) / float(height);
+    setup.hour = scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds);
+    setup.sky = skyAtHour(setup.hour);
+    setup.wedge = computeTerrainWedge(setup.view, scene.grid, scene.viewDistance);
+
+    FrameData& d = setup.data;
+    d.viewProjection = setup.view.viewProjection();
+    d.inverseViewProjection = glm::inverse(d.viewProjection);
+    d.cameraPosition = glm::vec4(glm::vec3(setup.view.pose.position), 1.0f);
+    d.sunDirection = glm::vec4(setup.sky.sunDirection, setup.sky.sunDirection.y);
+    d.sunRadiance = glm::vec4(setup.sky.sunRadiance, 0.0f);
+    d.skyZenith = glm::vec4(setup.sky.skyZenith, 1.0f);
+    d.skyHorizon = glm::vec4(setup.sky.skyHorizon, 0.0f);
+    d.groundAmbient = glm::vec4(setup.sky.groundAmbient, 0.0f);
+    d.terrainShape = glm::vec4(scene.terrain.frequency, scene.terrain.amplitude, scene.terrain.baseHeight,
+                               float(scene.terrain.octaves));
+    d.terrainGrid = glm::vec4(setup.wedge.centralAzimuth, setup.wedge.halfWidth,
+                              scene.grid.firstRingRadius, setup.wedge.ringRatio);
+    d.terrainGridCounts = glm::vec4(float(scene.grid.rings), float(scene.grid.segments), scene.fogStart,
+                                    scene.viewDistance);
+    d.depthRange = glm::vec4(scene.projection.nearPlane, scene.projection.farPlane,
+                             float(scene.timeSeconds), scene.exposure);
+    return setup;
+}
+
+}  // namespace oasis

@@ -1,0 +1,62 @@
+// Allocation of the frame's render targets.
+#include "render/frame_targets.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace oasis {
+namespace {
+
+void checkComplete(const char* what) {
+    GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error(std::string(what) + " framebuffer incomplete (status 0x" +
+                                 std::to_string(status) + ")");
+}
+
+}  // namespace
+
+FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
+    : layout_(layout), width_(width), height_(height) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (width < 1 || height < 1 || width > maxSize || height > maxSize)
+        throw std::runtime_error("frame size " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " is outside 1.." + std::to_string(maxSize) +
+                                 " (GL_MAX_TEXTURE_SIZE of this driver)");
+    while (glGetError() != GL_NO_ERROR) {}
+    for (int t = 0; t < int(Target::Count); ++t)
+        textures_[t] = gl::createTargetTexture(layout.format(Target(t)).internalFormat, width, height);
+    display_ = gl::createTargetTexture(GL_RGBA8, width, height);
+    if (GLenum error = glGetError(); error != GL_NO_ERROR)
+        throw std::runtime_error("allocating " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " render targets failed: " + gl::errorString(error));
+
+    gbufferFbo_ = gl::createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo_.name());
+    const Target colour[] = {Target::Albedo, Target::Normal, Target::Position, Target::Info};
+    GLenum drawBuffers[4];
+    for (int i = 0; i < 4; ++i) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, texture(colour[i]), 0);
+        drawBuffers[i] = GL_COLOR_ATTACHMENT0 + i;
+    }
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                           texture(Target::DepthStencil), 0);
+    glDrawBuffers(4, drawBuffers);
+    checkComplete("G-buffer");
+
+    finalFbo_ = gl::createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, finalFbo_.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Final), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                           texture(Target::DepthStencil), 0);
+    checkComplete("final");
+
+    displayFbo_ = gl::createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, displayFbo_.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display_.name(), 0);
+    checkComplete("display");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace oasis

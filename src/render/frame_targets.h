@@ -1,0 +1,35 @@
+// The textures a frame renders into and the framebuffers over them. Both pipelines share them:
+// deferred fills the G-buffer then Final; forward fills Final directly. Depth-stencil is shared.
+// Display holds what a debug view shows (or the overview), ready to present or save.
+#pragma once
+#include <array>
+
+#include "gl/objects.h"
+#include "render/gbuffer_layout.h"
+
+namespace oasis {
+
+class FrameTargets {
+public:
+    // Throws std::runtime_error when the size is impossible or the framebuffer is incomplete.
+    FrameTargets(const GBufferLayout& layout, int width, int height);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    const GBufferLayout& layout() const { return layout_; }
+
+    GLuint texture(Target target) const { return textures_[size_t(target)].name(); }
+    GLuint displayTexture() const { return display_.name(); }
+    GLuint gbufferFramebuffer() const { return gbufferFbo_.name(); }
+    GLuint finalFramebuffer() const { return finalFbo_.name(); }
+    GLuint displayFramebuffer() const { return displayFbo_.name(); }
+
+private:
+    const GBufferLayout& layout_;
+    int width_, height_;
+    std::array<gl::Texture, size_t(Target::Count)> textures_;
+    gl::Texture display_;
+    gl::Framebuffer gbufferFbo_, finalFbo_, displayFbo_;
+};
+
+}  // namespace oasis

@@ -1,0 +1,37 @@
+// 8-bit RGBA images (top row first): PNG output and the comparisons oasis reports between
+// frames (PSNR, RMSE and max absolute difference over RGB, and a difference heat map).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace oasis {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgba;
+
+    Image() = default;
+    Image(int w, int h) : width(w), height(h), rgba(size_t(w) * size_t(h) * 4, 0) {}
+    const uint8_t* pixel(int x, int y) const { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
+    uint8_t* pixel(int x, int y) { return &rgba[(size_t(y) * size_t(width) + size_t(x)) * 4]; }
+    void flipRows();
+};
+
+// Writes a PNG; on failure returns false and says why.
+bool writePng(const std::string& path, const Image& image, std::string& error);
+
+// PSNR is capped at kPsnrIdentical (identical images have infinite PSNR).
+constexpr double kPsnrIdentical = 100.0;
+struct ImageDifference {
+    double psnrDb = kPsnrIdentical;
+    double rmse = 0.0;
+    int maxAbs = 0;
+};
+// Over the RGB channels of same-sized images. Throws std::invalid_argument if sizes differ.
+ImageDifference compareImages(const Image& a, const Image& b);
+
+// Per pixel max channel difference on a black-red-yellow-white scale that saturates at `fullScale`.
+Image differenceHeatmap(const Image& a, const Image& b, int fullScale = 16);
+
+}  // namespace oasis

@@ -1,0 +1,108 @@
+// Frame orchestration: upload the frame's uniforms, run the active pipeline, draw debug views.
+#include "render/renderer.h"
+
+#include <algorithm>
+
+#include "render/texture_units.h"
+
+namespace oasis {
+
+Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
+    : shaders_(shaders), geometry_(scene.grid) {
+    frameUniforms_ = gl::createBuffer();
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
+    glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+}
+
+void Renderer::configure(int width, int height, const GBufferLayout& layout) {
+    if (targets_ && targets_->width() == width && targets_->height() == height && &targets_->layout() == &layout)
+        return;
+    targets_.reset();  // free the old targets before allocating the new ones
+    targets_ = std::make_unique<FrameTargets>(layout, width, height);
+    gbufferCurrent_ = false;
+}
+
+PassContext Renderer::context() { return PassContext{*targets_, shaders_, geometry_, frame_}; }
+
+const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
+    return kind == PipelineKind::Forward ? forward_ : deferred_;
+}
+
+void Renderer::renderFrame(const SceneSettings& scene) {
+    frame_ = prepareFrame(scene, targets_->width(), targets_->height());
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());
+    PassContext passContext = context();
+    pipelineOf(active_).run(passContext);
+    gbufferCurrent_ = pipelineOf(active_).writes(Target::Albedo);
+}
+
+void Renderer::renderView(const std::string& viewName) {
+    PassContext passContext = context();
+    const DebugView* view = findDebugView(viewName);
+    bool needsGBuffer = viewName == kOverviewName || (view && readsGBuffer(*view));
+    if (needsGBuffer && !gbufferCurrent_) {
+        // Forward draws no G-buffer: fill it for the view with the deferred geometry passes.
+        // Final and depth-stencil stay the forward frame's because these passes do not touch Final
+        // and redraw the same depth and stencil.
+        for (const auto& pass : deferred_.passes()) {
+            std::vector<Target> written = pass->writes();
+            if (std::find(written.begin(), written.end(), Target::Final) == written.end()) pass->run(passContext);
+        }
+        gbufferCurrent_ = true;
+    }
+    if (viewName == kOverviewName)
+        debugViews_.drawOverview(passContext, stencilPath_);
+    else
+        debugViews_.drawView(passContext, *view, stencilPath_);
+}
+
+void Renderer::renderFloor() {
+    PassContext passContext = context();
+    floor_.run(passContext);
+    gbufferCurrent_ = false;
+}
+
+void Renderer::present(int windowWidth, int windowHeight) {
+    PassContext passContext = context();
+    present_.run(passContext, windowWidth, windowHeight);
+}
+
+Image Renderer::readDisplay() const {
+    Image image(targets_->width(), targets_->height());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->displayFramebuffer());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    image.flipRows();  // GL is bottom-up; images are top-down
+    return image;
+}
+
+std::vector<float> Renderer::readTarget(Target target) const {
+    std::vector<float> pixels(size_t(targets_->width()) * size_t(targets_->height()) * 4);
+    GLuint fbo = target == Target::Final ? targets_->finalFramebuffer() : targets_->gbufferFramebuffer();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    int attachment = target == Target::Final ? 0 : int(target) - int(Target::Albedo);
+    glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
+    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_RGBA, GL_FLOAT, pixels.data());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    return pixels;
+}
+
+std::vector<float> Renderer::readDepth() const {
+    std::vector<float> depth(size_t(targets_->width()) * size_t(targets_->height()));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->finalFramebuffer());
+    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    return depth;
+}
+
+std::vector<uint8_t> Renderer::readStencil() const {
+    std::vector<uint8_t> stencil(size_t(targets_->width()) * size_t(targets_->height()));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->finalFramebuffer());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
+    return stencil;
+}
+
+}  // namespace oasis

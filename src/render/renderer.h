@@ -1,0 +1,71 @@
+// The renderer: owns the shader library, the scene's GPU data, the frame targets, both pipelines
+// (built once; switching only changes which runs) and the debug views. The window app, the
+// headless commands and the tests all drive this same object.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "debug/debug_view_pass.h"
+#include "passes/floor_pass.h"
+#include "passes/present_pass.h"
+#include "render/frame_setup.h"
+#include "render/frame_targets.h"
+#include "render/image.h"
+#include "render/pipeline.h"
+#include "render/scene_geometry.h"
+#include "render/shader_library.h"
+
+namespace oasis {
+
+class Renderer {
+public:
+    Renderer(ShaderLibrary& shaders, const SceneSettings& scene);
+
+    // Reallocates the targets when the size or layout changes; scene data is kept.
+    void configure(int width, int height, const GBufferLayout& layout);
+    void setPipeline(PipelineKind kind) { active_ = kind; }
+    PipelineKind pipeline() const { return active_; }
+    void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
+    StencilViewPath stencilViewPath() const { return stencilPath_; }
+
+    // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
+    void renderFrame(const SceneSettings& scene);
+    // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
+    // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
+    void renderView(const std::string& viewName);
+    // The timing floor (passes/floor_pass.h) at the current size and layout; overwrites the targets.
+    void renderFloor();
+    // Shows the Display target in the bound window's framebuffer of the given size.
+    void present(int windowWidth, int windowHeight);
+
+    const FrameTargets& targets() const { return *targets_; }
+    const FrameSetup& lastFrame() const { return frame_; }
+    ShaderLibrary& shaders() { return shaders_; }
+    const SceneGeometry& geometry() const { return geometry_; }
+
+    Image readDisplay() const;
+    // Any colour target as RGBA floats, bottom row first (GL order).
+    std::vector<float> readTarget(Target target) const;
+    std::vector<float> readDepth() const;
+    std::vector<uint8_t> readStencil() const;
+
+private:
+    PassContext context();
+    const Pipeline& pipelineOf(PipelineKind kind) const;
+
+    ShaderLibrary& shaders_;
+    SceneGeometry geometry_;
+    std::unique_ptr<FrameTargets> targets_;
+    Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
+    PipelineKind active_ = PipelineKind::Deferred;
+    StencilViewPath stencilPath_ = StencilViewPath::Texturing;
+    DebugViewPass debugViews_;
+    FloorPass floor_;
+    PresentPass present_;
+    gl::Buffer frameUniforms_;
+    FrameSetup frame_;
+    bool gbufferCurrent_ = false;  // whether the G-buffer holds the last frame
+};
+
+}  // namespace oasis

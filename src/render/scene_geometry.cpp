@@ -1,0 +1,37 @@
+// Uploads the terrain grid; draws it and full-screen triangles.
+#include "render/scene_geometry.h"
+
+namespace oasis {
+
+SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(density) {
+    GridMesh mesh = buildTerrainGrid(density);
+    indexCount_ = int(mesh.indices.size());
+    terrainVao_ = gl::createVertexArray();
+    terrainVertices_ = gl::createBuffer();
+    terrainIndices_ = gl::createBuffer();
+    glBindVertexArray(terrainVao_.name());
+    glBindBuffer(GL_ARRAY_BUFFER, terrainVertices_.name());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(glm::vec2)), mesh.vertices.data(),
+                 GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, terrainIndices_.name());
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
+                 GL_STATIC_DRAW);
+    glBindVertexArray(0);
+    emptyVao_ = gl::createVertexArray();
+}
+
+void SceneGeometry::drawTerrain() const {
+    glBindVertexArray(terrainVao_.name());
+    glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+}
+
+void SceneGeometry::drawFullscreenTriangle() const {
+    glBindVertexArray(emptyVao_.name());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+}
+
+}  // namespace oasis

@@ -1,0 +1,25 @@
+// GPU-side scene data built once and shared by both pipelines: the terrain grid's buffers and
+// an empty vertex array for full-screen triangles. Switching pipelines never rebuilds it.
+#pragma once
+#include "gl/objects.h"
+#include "scene/terrain.h"
+
+namespace oasis {
+
+class SceneGeometry {
+public:
+    explicit SceneGeometry(const TerrainGridDensity& density);
+
+    const TerrainGridDensity& density() const { return density_; }
+    void drawTerrain() const;
+    void drawFullscreenTriangle() const;
+    int terrainTriangles() const { return indexCount_ / 3; }
+
+private:
+    TerrainGridDensity density_;
+    gl::VertexArray terrainVao_, emptyVao_;
+    gl::Buffer terrainVertices_, terrainIndices_;
+    int indexCount_ = 0;
+};
+
+}  // namespace oasis

@@ -1,0 +1,198 @@
+// Shader loading: include resolution, variant defines, compile/link with readable errors, reload.
+#include "render/shader_library.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <stdexcept>
+
+#include "render/texture_units.h"
+
+namespace oasis {
+namespace {
+
+bool readFile(const std::string& path, std::string& text) {
+    std::ifstream in(path);
+    if (!in) return false;
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    text = buffer.str();
+    return true;
+}
+
+std::string executableDirectory() {
+    char path[4096];
+    ssize_t length = readlink("/proc/self/exe", path, sizeof(path) - 1);
+    if (length <= 0) return {};
+    std::string exe(path, size_t(length));
+    return exe.substr(0, exe.find_last_of('/'));
+}
+
+bool isShaderDirectory(const std::string& dir) {
+    std::ifstream probe(dir + "/common/frame_data.glsl");
+    return bool(probe);
+}
+
+// Appends `file` to `out`, expanding #include "name" lines recursively.
+bool expandIncludes(const std::string& root, const std::string& file, PreprocessedShader& out,
+                    int depth, std::string& error) {
+    if (depth > 16) { error = file + ": #include nested too deeply"; return false; }
+    std::string text;
+    if (!readFile(root + "/" + file, text)) { error = "cannot read shader " + root + "/" + file; return false; }
+    int index = int(out.files.size());
+    out.files.push_back(file);
+    out.text += "#line 1 " + std::to_string(index) + "\n";
+    std::istringstream lines(text);
+    std::string line;
+    int lineNumber = 0;
+    static const std::regex includeLine(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
+    while (std::getline(lines, line)) {
+        ++lineNumber;
+        std::smatch match;
+        if (std::regex_match(line, match, includeLine)) {
+            if (!expandIncludes(root, match[1].str(), out, depth + 1, error)) {
+                error = file + ":" + std::to_string(lineNumber) + ": " + error;
+                return false;
+            }
+            out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
+        } else {
+            out.text += line + "\n";
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string PreprocessedShader::annotateLog(const std::string& log) const {
+    // Mesa writes "0:12(5): error", glslang "ERROR: 0:12: ..."; both are "source:line".
+    static const std::regex location(R"((^|\s)(\d+):(\d+))");
+    std::string result;
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::smatch match;
+        if (std::regex_search(line, match, location)) {
+            size_t index = std::stoul(match[2].str());
+            if (index < files.size())
+                line = match.prefix().str() + match[1].str() + files[index] + ":" + match[3].str() +
+                       match.suffix().str();
+        }
+        result += line + "\n";
+    }
+    return result;
+}
+
+std::string findShaderDirectory(std::string* searched) {
+    std::vector<std::string> candidates;
+    if (const char* env = std::getenv("OASIS_SHADER_DIR")) candidates.push_back(env);
+    std::string exeDir = executableDirectory();
+    if (!exeDir.empty()) candidates.push_back(exeDir + "/../share/oasis/shaders");
+    candidates.push_back(OASIS_INSTALL_SHADER_DIR);
+    candidates.push_back(OASIS_SOURCE_SHADER_DIR);
+    std::string tried;
+    for (const std::string& dir : candidates) {
+        tried += (tried.empty() ? "" : ", ") + dir;
+        if (isShaderDirectory(dir)) return dir;
+    }
+    if (searched) *searched = tried;
+    return {};
+}
+
+ShaderLibrary::ShaderLibrary(std::string directory, GlslDialect dialect)
+    : directory_(std::move(directory)), dialect_(std::move(dialect)) {}
+
+bool ShaderLibrary::preprocess(const std::string& file, const std::vector<std::string>& defines,
+                               PreprocessedShader& out, std::string& error) const {
+    out = {};
+    out.text = dialect_.versionLine + "\n";
+    for (const std::string& extension : dialect_.extensionLines) out.text += extension + "\n";
+    for (const std::string& define : defines) out.text += "#define " + define + "\n";
+    return expandIncludes(directory_, file, out, 0, error);
+}
+
+bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
+                                 const std::vector<std::string>& defines, gl::Shader& out,
+                                 std::string& error) const {
+    PreprocessedShader source;
+    if (!preprocess(file, defines, source, error)) return false;
+    gl::Shader shader(glCreateShader(stage));
+    const char* text = source.text.c_str();
+    glShaderSource(shader.name(), 1, &text, nullptr);
+    glCompileShader(shader.name());
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader.name(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[8192] = {};
+        glGetShaderInfoLog(shader.name(), sizeof(log), nullptr, log);
+        error = "compiling " + file + ":\n" + source.annotateLog(log);
+        return false;
+    }
+    out = std::move(shader);
+    return true;
+}
+
+bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::string& error) const {
+    gl::Shader vertex, fragment;
+    if (!compileStage(GL_VERTEX_SHADER, variant.vertexFile, variant.defines, vertex, error) ||
+        !compileStage(GL_FRAGMENT_SHADER, variant.fragmentFile, variant.defines, fragment, error)) {
+        error = "program " + variant.name + ": " + error;
+        return false;
+    }
+    gl::Program program(glCreateProgram());
+    glAttachShader(program.name(), vertex.name());
+    glAttachShader(program.name(), fragment.name());
+    glLinkProgram(program.name());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.name(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[8192] = {};
+        glGetProgramInfoLog(program.name(), sizeof(log), nullptr, log);
+        error = "linking program " + variant.name + ":\n" + log;
+        return false;
+    }
+    glDetachShader(program.name(), vertex.name());
+    glDetachShader(program.name(), fragment.name());
+    // Bindings come from texture_units.h rather than layout(binding) so GLSL 3.30 works too.
+    GLuint block = glGetUniformBlockIndex(program.name(), kFrameBlockName);
+    if (block != GL_INVALID_INDEX) glUniformBlockBinding(program.name(), block, kFrameBlockBinding);
+    glUseProgram(program.name());
+    for (const SamplerBinding& binding : kSamplerBindings) {
+        GLint location = glGetUniformLocation(program.name(), binding.uniformName);
+        if (location >= 0) glUniform1i(location, binding.unit);
+    }
+    glUseProgram(0);
+    out = std::move(program);
+    return true;
+}
+
+GLuint ShaderLibrary::program(const std::string& variantName) {
+    auto found = programs_.find(variantName);
+    if (found != programs_.end()) return found->second.name();
+    const ProgramVariant* variant = findProgramVariant(variantName);
+    if (!variant) throw std::runtime_error("no shader program variant named '" + variantName + "'");
+    gl::Program program;
+    std::string error;
+    if (!build(*variant, program, error)) throw std::runtime_error(error);
+    GLuint name = program.name();
+    programs_.emplace(variantName, std::move(program));
+    return name;
+}
+
+std::vector<std::string> ShaderLibrary::reloadAll() {
+    std::vector<std::string> failures;
+    for (auto& [name, program] : programs_) {
+        gl::Program rebuilt;
+        std::string error;
+        if (build(*findProgramVariant(name), rebuilt, error))
+            program = std::move(rebuilt);
+        else
+            failures.push_back(error + "(keeping the previous version of " + name + ")");
+    }
+    return failures;
+}
+
+}  // namespace oasis

@@ -1,0 +1,61 @@
+// Loads GLSL from shaders/: resolves #include "..." (with #line so errors name file:line),
+// prepends the version header and the variant's #defines, compiles and links, caches by variant
+// name, and reloads on request keeping the last good program when an edit fails to compile.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gl/objects.h"
+#include "render/shader_variants.h"
+
+namespace oasis {
+
+// A shader after preprocessing: the text and the files its #line numbers refer to.
+struct PreprocessedShader {
+    std::string text;
+    std::vector<std::string> files;  // index used in "#line N index"
+    // Rewrites "index:line" in a compiler log to "file:line".
+    std::string annotateLog(const std::string& log) const;
+};
+
+// The directory holding the shaders: $OASIS_SHADER_DIR, the installed share dir next to the
+// executable, or the source tree this binary was built from. Empty if none has them.
+std::string findShaderDirectory(std::string* searched = nullptr);
+
+// Text for `#version`: the GLSL the context speaks (450 core by default).
+struct GlslDialect {
+    std::string versionLine = "#version 450 core";
+    std::vector<std::string> extensionLines;
+};
+
+class ShaderLibrary {
+public:
+    explicit ShaderLibrary(std::string directory, GlslDialect dialect = {});
+
+    const std::string& directory() const { return directory_; }
+    const GlslDialect& dialect() const { return dialect_; }
+
+    // Preprocesses one stage of a variant; returns false with a message on a missing file.
+    bool preprocess(const std::string& file, const std::vector<std::string>& defines,
+                    PreprocessedShader& out, std::string& error) const;
+
+    // The linked program for a variant from the table, built on first use. Throws
+    // std::runtime_error naming file:line when it does not compile.
+    GLuint program(const std::string& variantName);
+
+    // Rebuilds every cached program from disk. A variant that fails keeps its previous program;
+    // the returned messages say which and why (empty when all succeeded).
+    std::vector<std::string> reloadAll();
+
+private:
+    bool build(const ProgramVariant& variant, gl::Program& out, std::string& error) const;
+    bool compileStage(GLenum stage, const std::string& file, const std::vector<std::string>& defines,
+                      gl::Shader& out, std::string& error) const;
+
+    std::string directory_;
+    GlslDialect dialect_;
+    std::map<std::string, gl::Program> programs_;
+};
+
+}  // namespace oasis

@@ -1,0 +1,39 @@
+// The program variant table. Shader files are shared; variants differ only by #define.
+#include "render/shader_variants.h"
+
+#include "debug/debug_views.h"
+
+namespace oasis {
+namespace {
+
+std::vector<ProgramVariant> buildVariants() {
+    std::vector<ProgramVariant> variants = {
+        {"terrain.gbuffer", "terrain.vert", "terrain.frag", {"OUTPUT_GBUFFER"}},
+        {"terrain.forward", "terrain.vert", "terrain.frag", {"OUTPUT_FORWARD"}},
+        {"sky.gbuffer", "fullscreen.vert", "sky.frag", {"OUTPUT_GBUFFER", "FULLSCREEN_AT_FAR_PLANE"}},
+        {"sky.forward", "fullscreen.vert", "sky.frag", {"OUTPUT_FORWARD", "FULLSCREEN_AT_FAR_PLANE"}},
+        {"lighting", "fullscreen.vert", "lighting.frag", {}},
+        {"present", "fullscreen.vert", "debug_view.frag", {"VIEW_COLOUR"}},
+        {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
+        {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
+        {"floor.read", "fullscreen.vert", "floor.frag", {"FLOOR_READ"}},
+    };
+    for (const DebugView& view : debugViews())
+        variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});
+    return variants;
+}
+
+}  // namespace
+
+const std::vector<ProgramVariant>& programVariants() {
+    static const std::vector<ProgramVariant> variants = buildVariants();
+    return variants;
+}
+
+const ProgramVariant* findProgramVariant(const std::string& name) {
+    for (const ProgramVariant& variant : programVariants())
+        if (variant.name == name) return &variant;
+    return nullptr;
+}
+
+}  // namespace oasis

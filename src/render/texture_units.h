@@ -1,0 +1,36 @@
+// Which texture unit and uniform-block binding each shader input uses: the one table that both
+// the shader library (to bind sampler uniforms after linking) and the passes (to bind textures) read.
+#pragma once
+#include <array>
+
+namespace oasis {
+
+struct SamplerBinding {
+    const char* uniformName;
+    int unit;
+};
+
+enum TextureUnit : int {
+    kUnitAlbedo = 0,
+    kUnitNormal = 1,
+    kUnitPosition = 2,
+    kUnitInfo = 3,
+    kUnitDepth = 4,
+    kUnitStencil = 5,
+    kUnitSource = 6,
+};
+
+inline constexpr std::array<SamplerBinding, 7> kSamplerBindings{{
+    {"gAlbedo", kUnitAlbedo},
+    {"gNormal", kUnitNormal},
+    {"gPosition", kUnitPosition},
+    {"gInfo", kUnitInfo},
+    {"gDepth", kUnitDepth},
+    {"gStencil", kUnitStencil},
+    {"sourceTexture", kUnitSource},
+}};
+
+inline constexpr const char* kFrameBlockName = "FrameBlock";
+inline constexpr int kFrameBlockBinding = 0;
+
+}  // namespace oasis

@@ -1,0 +1,65 @@
+// Camera maths and the default flight path.
+#include "scene/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace oasis {
+
+float CameraPose::yawRadians() const { return glm::radians(yawDegrees); }
+float CameraPose::pitchRadians() const {
+    return glm::radians(std::clamp(pitchDegrees, -89.9f, 89.9f));
+}
+
+glm::vec3 CameraPose::forward() const {
+    float yaw = yawRadians(), pitch = pitchRadians();
+    return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), -std::cos(yaw) * std::cos(pitch)};
+}
+
+glm::mat4 CameraView::rotationOnlyView() const {
+    return glm::lookAt(glm::vec3(0.0f), pose.forward(), glm::vec3(0.0f, 1.0f, 0.0f));
+}
+
+glm::mat4 CameraView::projectionMatrix() const {
+    return glm::perspective(glm::radians(projection.verticalFovDegrees), aspect,
+                            projection.nearPlane, projection.farPlane);
+}
+
+glm::mat4 CameraView::viewProjection() const { return projectionMatrix() * rotationOnlyView(); }
+
+std::array<glm::vec3, 4> CameraView::cornerRays() const {
+    glm::mat4 toWorld = glm::inverse(rotationOnlyView());
+    float tanY = std::tan(glm::radians(projection.verticalFovDegrees) * 0.5f);
+    float tanX = tanY * aspect;
+    std::array<glm::vec3, 4> rays;
+    int i = 0;
+    for (float sy : {-1.0f, 1.0f})
+        for (float sx : {-1.0f, 1.0f})
+            rays[i++] = glm::normalize(glm::vec3(toWorld * glm::vec4(sx * tanX, sy * tanY, -1.0f, 0.0f)));
+    return rays;
+}
+
+CameraPose defaultCameraPath(const TerrainShape& shape, double timeSeconds) {
+    const double speed = 7.0;  // world units per second eastwards
+    const double swayPeriod = 90.0, swayAmplitude = 160.0;
+    double t = timeSeconds;
+    CameraPose pose;
+    double x = speed * t + 210.0;
+    double z = swayAmplitude * std::sin(t / swayPeriod * 2.0 * M_PI) - 120.0;
+    double dzdt = swayAmplitude * std::cos(t / swayPeriod * 2.0 * M_PI) * 2.0 * M_PI / swayPeriod;
+    float yaw = float(std::atan2(speed, -dzdt));
+    // Clear the highest ground just ahead so the flight never dips into a hill.
+    double ground = 0.0;
+    for (double ahead : {0.0, 15.0, 40.0, 80.0}) {
+        glm::vec2 probe(float(x + ahead * std::sin(yaw)), float(z - ahead * std::cos(yaw)));
+        ground = std::max(ground, double(terrainHeight(shape, probe).x));
+    }
+    pose.position = glm::dvec3(x, ground + 16.0, z);
+    pose.yawDegrees = glm::degrees(yaw);
+    pose.pitchDegrees = -10.0f;
+    return pose;
+}
+
+}  // namespace oasis

@@ -1,0 +1,50 @@
+// The terrain: a fractal-noise heightfield (shape parameters shared with the GPU through FrameData)
+// and the screen-following polar grid it is drawn on (rings that widen with distance, a wedge
+// that covers only the azimuths the camera can see).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace oasis {
+
+struct TerrainShape {
+    float frequency = 1.0f / 650.0f;  // noise units per world unit
+    float amplitude = 40.0f;          // world units per noise unit
+    float baseHeight = 3.0f;          // added to every height
+    int octaves = 7;
+};
+
+// Height (y) at world (x, z) and its derivatives: (h, dh/dx, dh/dz). Same maths as terrain.glsl.
+glm::vec3 terrainHeight(const TerrainShape& shape, glm::vec2 worldXZ);
+glm::vec3 terrainNormal(const TerrainShape& shape, glm::vec2 worldXZ);
+
+// How finely the grid follows the screen: the grid's density knob.
+struct TerrainGridDensity {
+    int rings = 150;        // geometric rings from firstRingRadius to the view distance
+    int segments = 128;     // angular segments across the wedge
+    float firstRingRadius = 0.25f;
+};
+
+// The wedge of azimuths the grid spans this frame: centred on the camera's heading,
+// widened to the frustum's footprint, or a full circle when looking steeply up or down.
+struct TerrainWedge {
+    float centralAzimuth = 0.0f;  // radians, 0 = -Z, pi/2 = +X (same convention as Camera yaw)
+    float halfWidth = 0.0f;       // radians, at most pi
+    float ringRatio = 1.0f;       // radius of ring i+1 over ring i
+};
+
+struct CameraView;
+TerrainWedge computeTerrainWedge(const CameraView& view, const TerrainGridDensity& density,
+                                 float viewDistance);
+
+// Grid vertices are (ring fraction, segment fraction) in [0,1]^2; the vertex shader maps them
+// to world positions. Indices are ordered near to far so early depth testing culls overdraw.
+struct GridMesh {
+    std::vector<glm::vec2> vertices;
+    std::vector<uint32_t> indices;
+};
+GridMesh buildTerrainGrid(const TerrainGridDensity& density);
+
+}  // namespace oasis
