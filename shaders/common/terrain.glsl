@@ -25,7 +25,7 @@ Surface terrainSurface(vec3 relativePosition, vec3 normal) {
     float fine = simplexNoise(world.xz * 0.25).x * (1.0 - smoothstep(40.0, 250.0, length(relativePosition)));
     float slope = 1.0 - normal.y;
 
-    vec3 sand = vec3(0.42, 0.33, 0.19);
+    vec3 sand = vec3(0.40, 0.29, 0.14);
     vec3 grass = mix(vec3(0.045, 0.10, 0.02), vec3(0.13, 0.14, 0.04), 0.5 + 0.5 * broad);
     vec3 rock = mix(vec3(0.17, 0.145, 0.13), vec3(0.27, 0.24, 0.21), 0.5 + 0.5 * fine);
     float sandAmount = 1.0 - smoothstep(1.5, 4.0, world.y + 1.5 * broad);

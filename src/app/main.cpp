@@ -10,6 +10,7 @@
 
 int main(int argc, char** argv) {
     using namespace oasis;
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress reaches logs even if the window is killed
     ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
     if (!parsed.ok) {
         std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());

@@ -52,13 +52,13 @@ CameraPose defaultCameraPath(const TerrainShape& shape, double timeSeconds) {
     float yaw = float(std::atan2(speed, -dzdt));
     // Clear the highest ground just ahead so the flight never dips into a hill.
     double ground = 0.0;
-    for (double ahead : {0.0, 15.0, 40.0, 80.0}) {
+    for (double ahead : {0.0, 20.0, 50.0, 100.0, 160.0}) {
         glm::vec2 probe(float(x + ahead * std::sin(yaw)), float(z - ahead * std::cos(yaw)));
         ground = std::max(ground, double(terrainHeight(shape, probe).x));
     }
-    pose.position = glm::dvec3(x, ground + 16.0, z);
+    pose.position = glm::dvec3(x, ground + 26.0, z);
     pose.yawDegrees = glm::degrees(yaw);
-    pose.pitchDegrees = -10.0f;
+    pose.pitchDegrees = -9.0f;
     return pose;
 }
 
