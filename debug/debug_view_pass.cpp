@@ -15,7 +15,7 @@ const char* stencilViewPathName(StencilViewPath path) {
 void DebugViewPass::uploadStencilCopy(const FrameTargets& targets) {
     int w = targets.width(), h = targets.height();
     stencilBytes_.resize(size_t(w) * size_t(h));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.finalFramebuffer());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.radianceFramebuffer());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencilBytes_.data());
     if (!stencilCopy_ || stencilCopyWidth_ != w || stencilCopyHeight_ != h) {
@@ -37,10 +37,8 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
     GLuint depthStencil = targets.texture(Target::DepthStencil);
     switch (view.source) {
         case ViewSource::Final: bind(kUnitSource, targets.texture(Target::Final)); break;
-        case ViewSource::Albedo:
-            bind(kUnitAlbedo, targets.texture(Target::Albedo));
-            bind(kUnitInfo, targets.texture(Target::Info));
-            break;
+        case ViewSource::Reflection: bind(kUnitSource, targets.texture(Target::Reflection)); break;
+        case ViewSource::Albedo: bind(kUnitAlbedo, targets.texture(Target::Albedo)); break;
         case ViewSource::Normal: bind(kUnitNormal, targets.texture(Target::Normal)); break;
         case ViewSource::Position: bind(kUnitPosition, targets.texture(Target::Position)); break;
         case ViewSource::Info: bind(kUnitInfo, targets.texture(Target::Info)); break;

@@ -6,13 +6,17 @@ namespace {
 
 const std::vector<DebugView> kViews = {
     {"final", ViewSource::Final, "VIEW_COLOUR", "the lit frame as displayed"},
-    {"albedo", ViewSource::Albedo, "VIEW_ALBEDO", "material colour, gamma-encoded; sky as drawn"},
+    {"albedo", ViewSource::Albedo, "VIEW_ALBEDO", "material colour, gamma-encoded; black where nothing was drawn (sky)"},
     {"normal", ViewSource::Normal, "VIEW_NORMAL", "world normal xyz as rgb = 0.5 + 0.5 n"},
     {"position", ViewSource::Position, "VIEW_POSITION",
      "camera-relative position, signed log scale to the view distance (grey = camera)"},
-    {"info", ViewSource::Info, "VIEW_INFO", "red specular power, green specular intensity, blue sky flag"},
+    {"info", ViewSource::Info, "VIEW_INFO",
+     "red specular power, green specular intensity, blue flags (full: sky, half: reflected)"},
     {"depth", ViewSource::Depth, "VIEW_DEPTH", "eye distance, log scale near to far; black = cleared"},
-    {"stencil", ViewSource::Stencil, "VIEW_STENCIL", "one colour per stencil value: black 0, amber 1 terrain"},
+    {"stencil", ViewSource::Stencil, "VIEW_STENCIL",
+     "one colour per stencil value: black 0 nothing, amber 1 terrain, blue 2 water"},
+    {"reflection", ViewSource::Reflection, "VIEW_RADIANCE",
+     "the mirrored scene alone, tone-mapped; black outside the water or with reflections off"},
 };
 
 }  // namespace

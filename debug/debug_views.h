@@ -9,7 +9,7 @@
 
 namespace oasis {
 
-enum class ViewSource { Final, Albedo, Normal, Position, Info, Depth, Stencil };
+enum class ViewSource { Final, Albedo, Normal, Position, Info, Depth, Stencil, Reflection };
 
 struct DebugView {
     std::string name;

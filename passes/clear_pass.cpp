@@ -9,10 +9,15 @@ void ClearPass::execute(PassContext& context) {
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glDisable(GL_SCISSOR_TEST);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClearDepth(1.0);
-    glClearStencil(kStencilNothing);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    if (output_ == SurfaceOutput::GBuffer) {
+        const GLfloat skyInfo[4] = {0.0f, 0.0f, 1.0f / 255.0f, 0.0f};  // CLEARED_INFO in surface.glsl
+        for (int attachment = 0; attachment < 3; ++attachment) glClearBufferfv(GL_COLOR, attachment, nothing);
+        glClearBufferfv(GL_COLOR, 3, skyInfo);
+    } else {
+        glClearBufferfv(GL_COLOR, 0, nothing);
+    }
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, kStencilNothing);
 }
 
 }  // namespace oasis

@@ -1,4 +1,5 @@
-// ClearPass: resets the targets a pipeline draws into (colour, depth 1, stencil 0).
+// ClearPass: resets the targets a pipeline draws into (depth 1, stencil 0, colour to "nothing
+// drawn": for the G-buffer that is the sky flag in info, so lighting knows to evaluate the sky).
 #pragma once
 #include "passes/pass.h"
 

@@ -4,13 +4,13 @@
 namespace oasis {
 
 void LightingPass::execute(PassContext& context) {
-    const FrameTargets& targets = context.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.finalFramebuffer());
-    glViewport(0, 0, targets.width(), targets.height());
+    bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_);
     glDisable(GL_DEPTH_TEST);
-    bindGBufferInputs(targets);
-    glUseProgram(context.shaders.program("lighting"));
+    bindGBufferInputs(context.targets);
+    beginMirroredDraw(mirroring_);
+    glUseProgram(context.shaders.program(mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting"));
     context.geometry.drawFullscreenTriangle();
+    endMirroredDraw(mirroring_);
 }
 
 }  // namespace oasis

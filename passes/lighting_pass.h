@@ -1,4 +1,5 @@
-// LightingPass: the deferred pipeline's shading. Reads the four G-buffer targets, writes Final.
+// LightingPass: the deferred pipeline's shading. Reads the four G-buffer targets and writes
+// Radiance; mirrored, it lights the mirrored G-buffer into Reflection inside the water only.
 #pragma once
 #include "passes/pass.h"
 
@@ -6,14 +7,23 @@ namespace oasis {
 
 class LightingPass : public Pass {
 public:
-    std::string name() const override { return "LightingPass"; }
+    explicit LightingPass(Mirroring mirroring = Mirroring::Direct) : mirroring_(mirroring) {}
+    std::string name() const override {
+        return mirroring_ == Mirroring::Mirrored ? "LightingPass.mirrored" : "LightingPass";
+    }
     std::vector<Target> reads() const override {
         return {Target::Albedo, Target::Normal, Target::Position, Target::Info};
     }
-    std::vector<Target> writes() const override { return {Target::Final}; }
+    std::vector<Target> writes() const override {
+        return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance};
+    }
+    bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
 
 protected:
     void execute(PassContext& context) override;
+
+private:
+    Mirroring mirroring_;
 };
 
 }  // namespace oasis

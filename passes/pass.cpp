@@ -5,10 +5,38 @@
 
 namespace oasis {
 
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output) {
-    glBindFramebuffer(GL_FRAMEBUFFER, output == SurfaceOutput::GBuffer ? targets.gbufferFramebuffer()
-                                                                       : targets.finalFramebuffer());
+void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring) {
+    GLuint framebuffer = output == SurfaceOutput::GBuffer ? targets.gbufferFramebuffer()
+                         : mirroring == Mirroring::Mirrored ? targets.reflectionFramebuffer()
+                                                            : targets.radianceFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(0, 0, targets.width(), targets.height());
+}
+
+void beginMirroredDraw(Mirroring mirroring) {
+    if (mirroring != Mirroring::Mirrored) return;
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, kStencilWater, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilMask(0x00);
+    glFrontFace(GL_CW);
+    glEnable(GL_CLIP_DISTANCE0);
+}
+
+void endMirroredDraw(Mirroring mirroring) {
+    if (mirroring != Mirroring::Mirrored) return;
+    glDisable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+    glFrontFace(GL_CCW);
+    glDisable(GL_CLIP_DISTANCE0);
+}
+
+bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring) {
+    return mirroring == Mirroring::Direct || frame.reflectionsActive;
+}
+
+std::string variantName(const std::string& base, SurfaceOutput output, Mirroring mirroring) {
+    return base + "." + surfaceOutputName(output) + (mirroring == Mirroring::Mirrored ? ".mirrored" : "");
 }
 
 void bindGBufferInputs(const FrameTargets& targets) {
@@ -24,10 +52,10 @@ const char* surfaceOutputName(SurfaceOutput output) {
     return output == SurfaceOutput::GBuffer ? "gbuffer" : "forward";
 }
 
-std::vector<Target> surfaceOutputTargets(SurfaceOutput output) {
+std::vector<Target> surfaceOutputTargets(SurfaceOutput output, Mirroring mirroring) {
     if (output == SurfaceOutput::GBuffer)
         return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
-    return {Target::Final, Target::DepthStencil};
+    return {mirroring == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
 }
 
 }  // namespace oasis

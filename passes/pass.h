@@ -21,8 +21,11 @@ struct PassContext {
     const FrameSetup& frame;
 };
 
-// Where a geometry pass sends its surfaces: into the G-buffer, or shaded into Final.
+// Where a geometry pass sends its surfaces: into the G-buffer, or shaded into Radiance.
 enum class SurfaceOutput { GBuffer, Forward };
+// Whether a pass draws the scene as seen directly or its mirror image in the water (which goes to
+// the Reflection target when shaded, and only where the stencil marks water).
+enum class Mirroring { Direct, Mirrored };
 
 class Pass {
 public:
@@ -30,6 +33,8 @@ public:
     virtual std::string name() const = 0;
     virtual std::vector<Target> reads() const = 0;
     virtual std::vector<Target> writes() const = 0;
+    // Whether the pass has work this frame (the mirrored passes only with reflections on).
+    virtual bool active(const FrameSetup&) const { return true; }
 
     void run(PassContext& context) {
         gl::DebugGroup group(name().c_str());
@@ -41,13 +46,20 @@ protected:
 };
 
 // The stencil value each kind of surface writes, shown by the stencil debug view.
-enum StencilMark : int { kStencilNothing = 0, kStencilTerrain = 1 };
+enum StencilMark : int { kStencilNothing = 0, kStencilTerrain = 1, kStencilWater = 2 };
 
-// Binds the framebuffer a surface output draws into and sets the viewport to the whole frame.
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output);
+// Binds the framebuffer a surface output draws into and sets the viewport to the whole frame:
+// the G-buffer, Radiance (forward, direct) or Reflection (forward, mirrored).
+void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring = Mirroring::Direct);
+// Mirrored draws pass the stencil test only on water pixels, and flip the front face (a mirror
+// reverses winding) and clip what lies below the water.
+void beginMirroredDraw(Mirroring mirroring);
+void endMirroredDraw(Mirroring mirroring);
+bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring);
+std::string variantName(const std::string& base, SurfaceOutput output, Mirroring mirroring);
 const char* surfaceOutputName(SurfaceOutput output);
 // Binds the four G-buffer colour targets to their texture units for a pass that reads them.
 void bindGBufferInputs(const FrameTargets& targets);
-std::vector<Target> surfaceOutputTargets(SurfaceOutput output);
+std::vector<Target> surfaceOutputTargets(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct);
 
 }  // namespace oasis

@@ -5,12 +5,14 @@
 namespace oasis {
 
 void SkyPass::execute(PassContext& context) {
-    bindSurfaceOutput(context.targets, output_);
+    bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    glUseProgram(context.shaders.program(output_ == SurfaceOutput::GBuffer ? "sky.gbuffer" : "sky.forward"));
+    beginMirroredDraw(mirroring_);
+    glUseProgram(context.shaders.program(variantName("sky", SurfaceOutput::Forward, mirroring_)));
     context.geometry.drawFullscreenTriangle();
+    endMirroredDraw(mirroring_);
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_TEST);
 }

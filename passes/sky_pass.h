@@ -1,5 +1,6 @@
-// SkyPass: fills every pixel nothing else covered with the procedural sky, flagged as sky,
-// either into the G-buffer or shaded into Final.
+// SkyPass (forward only): fills every pixel nothing else covered with the procedural sky.
+// Mirrored: the mirrored sky inside the water. The deferred pipeline evaluates the same sky in
+// its lighting pass, where the G-buffer clear left the sky flag.
 #pragma once
 #include "passes/pass.h"
 
@@ -7,16 +8,19 @@ namespace oasis {
 
 class SkyPass : public Pass {
 public:
-    explicit SkyPass(SurfaceOutput output) : output_(output) {}
-    std::string name() const override { return std::string("SkyPass.") + surfaceOutputName(output_); }
+    explicit SkyPass(Mirroring mirroring = Mirroring::Direct) : mirroring_(mirroring) {}
+    std::string name() const override { return variantName("SkyPass", SurfaceOutput::Forward, mirroring_); }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
-    std::vector<Target> writes() const override { return surfaceOutputTargets(output_); }
+    std::vector<Target> writes() const override {
+        return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance};
+    }
+    bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
 
 protected:
     void execute(PassContext& context) override;
 
 private:
-    SurfaceOutput output_;
+    Mirroring mirroring_;
 };
 
 }  // namespace oasis

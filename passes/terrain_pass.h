@@ -1,5 +1,5 @@
-// TerrainPass: draws the terrain grid, its surfaces to the G-buffer or shaded into Final,
-// marking its pixels in the stencil buffer.
+// TerrainPass: draws the terrain grid, its surfaces to the G-buffer or shaded into Radiance,
+// marking its pixels in the stencil buffer. Mirrored: its mirror image, inside the water only.
 #pragma once
 #include "passes/pass.h"
 
@@ -7,16 +7,19 @@ namespace oasis {
 
 class TerrainPass : public Pass {
 public:
-    explicit TerrainPass(SurfaceOutput output) : output_(output) {}
-    std::string name() const override { return std::string("TerrainPass.") + surfaceOutputName(output_); }
+    TerrainPass(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct)
+        : output_(output), mirroring_(mirroring) {}
+    std::string name() const override { return variantName("TerrainPass", output_, mirroring_); }
     std::vector<Target> reads() const override { return {}; }
-    std::vector<Target> writes() const override { return surfaceOutputTargets(output_); }
+    std::vector<Target> writes() const override { return surfaceOutputTargets(output_, mirroring_); }
+    bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
 
 protected:
     void execute(PassContext& context) override;
 
 private:
     SurfaceOutput output_;
+    Mirroring mirroring_;
 };
 
 }  // namespace oasis

@@ -17,14 +17,16 @@ vec3 ramp(float t) {
 uniform sampler2D sourceTexture;
 vec3 viewColour() { return texture(sourceTexture, vScreenUv).rgb; }
 
+#elif defined(VIEW_RADIANCE)
+#include "common/output.glsl"
+uniform sampler2D sourceTexture;
+vec3 viewColour() { return displayEncode(texture(sourceTexture, vScreenUv).rgb); }
+
 #elif defined(VIEW_ALBEDO)
 uniform sampler2D gAlbedo;
-uniform sampler2D gInfo;
 vec3 viewColour() {
-    // Sky albedo already holds its display colour; material albedo is linear, so gamma-encode it.
-    uint flags = infoFlags(texture(gInfo, vScreenUv));
-    vec3 albedo = texture(gAlbedo, vScreenUv).rgb;
-    return (flags & SURFACE_UNLIT) != 0u ? albedo : pow(clamp(albedo, 0.0, 1.0), vec3(1.0 / 2.2));
+    // Linear reflectance, gamma-encoded so it reads like the frame; black where nothing was drawn.
+    return pow(clamp(texture(gAlbedo, vScreenUv).rgb, 0.0, 1.0), vec3(1.0 / 2.2));
 }
 
 #elif defined(VIEW_NORMAL)
@@ -46,10 +48,13 @@ vec3 viewColour() {
 #elif defined(VIEW_INFO)
 uniform sampler2D gInfo;
 vec3 viewColour() {
-    // Red: specular power (0..64), green: specular intensity (0..0.25), blue: the sky flag.
+    // Red: specular power (0..64), green: specular intensity (0..0.25),
+    // blue: flags (full blue = sky, half blue = a reflected surface).
     vec4 info = texture(gInfo, vScreenUv);
-    bool sky = (infoFlags(info) & SURFACE_SKY) != 0u;
-    return sky ? vec3(0.0, 0.0, 0.8) : vec3(round(info.r * 255.0) / 64.0, info.g / 0.25, 0.0);
+    uint flags = infoFlags(info);
+    if ((flags & SURFACE_SKY) != 0u) return vec3(0.0, 0.0, 0.8);
+    float reflectedMark = (flags & SURFACE_REFLECTED) != 0u ? 0.5 : 0.0;
+    return vec3(round(info.r * 255.0) / 64.0, info.g / 0.25, reflectedMark);
 }
 
 #elif defined(VIEW_DEPTH)
@@ -70,8 +75,8 @@ vec3 viewColour() {
     // Each stencil value its own colour: 0 black, 1 amber (terrain), then distinct hues.
     uint value = texture(gStencil, vScreenUv).r;
     if (value == 0u) return vec3(0.0);
-    if (value == 1u) return vec3(0.95, 0.62, 0.12);
-    if (value == 2u) return vec3(0.15, 0.45, 0.95);
+    if (value == 1u) return vec3(0.95, 0.62, 0.12);  // terrain
+    if (value == 2u) return vec3(0.15, 0.45, 0.95);  // water
     if (value == 3u) return vec3(0.20, 0.85, 0.35);
     float hue = fract(float(value) * 0.618034);
     return clamp(abs(mod(hue * 6.0 + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);

@@ -1,20 +1,16 @@
-// Sky pixels: the procedural sky along the view ray, emitted as an unlit surface flagged SKY so
-// the lighting pass copies it instead of shading it.
+// Forward sky: the procedural sky along the view ray (its mirror image when MIRRORED), written
+// where nothing else was drawn. The deferred pipeline evaluates the same function in lighting.frag.
 #include "common/frame_block.glsl"
-#include "common/sky.glsl"
-#include "common/emit_surface.glsl"
+#include "common/lighting.glsl"
 
 in vec2 vScreenUv;
+layout(location = 0) out vec4 outColour;
 
 void main() {
-    vec4 farPoint = frame.inverseViewProjection * vec4(vScreenUv * 2.0 - 1.0, 1.0, 1.0);
-    vec3 direction = normalize(farPoint.xyz / farPoint.w);
-    Surface s;
-    s.albedo = displayEncode(skyRadiance(direction));
-    s.normal = -direction;
-    s.relativePosition = direction * frame.depthRange.y;
-    s.specularPower = 1.0;
-    s.specularIntensity = 0.0;
-    s.flags = SURFACE_SKY | SURFACE_UNLIT;
-    emitSurface(s);
+#if defined(MIRRORED)
+    const bool reflected = true;
+#else
+    const bool reflected = false;
+#endif
+    outColour = vec4(skySeenAlong(viewRayDirection(vScreenUv), reflected), 1.0);
 }

@@ -7,5 +7,10 @@ in vec3 vRelativePosition;
 in vec3 vNormal;
 
 void main() {
-    emitSurface(terrainSurface(vRelativePosition, normalize(vNormal)));
+#if defined(MIRRORED)
+    const bool reflected = true;
+#else
+    const bool reflected = false;
+#endif
+    emitSurface(terrainSurface(vRelativePosition, normalize(vNormal), reflected));
 }

@@ -1,5 +1,6 @@
 // Terrain vertices: a polar grid cell (ring, segment) placed around the camera, raised to the
 // noise height. Normals come from the height's analytic gradient, exact however coarse the grid.
+// MIRRORED: the mirror image across the water plane, clipped to what lies above the water.
 #include "common/frame_block.glsl"
 #include "common/terrain.glsl"
 
@@ -12,7 +13,12 @@ void main() {
     float azimuth = frame.terrainGrid.x + (2.0 * gridCoordinate.y - 1.0) * frame.terrainGrid.y;
     vec2 offset = radius * vec2(sin(azimuth), -cos(azimuth));
     vec3 height = terrainHeight(frame.cameraPosition.xz + offset);
-    vRelativePosition = vec3(offset.x, height.x - frame.cameraPosition.y, offset.y);
+    vec3 relative = vec3(offset.x, height.x - frame.cameraPosition.y, offset.y);
     vNormal = normalize(vec3(-height.y, 1.0, -height.z));
-    gl_Position = frame.viewProjection * vec4(vRelativePosition, 1.0);
+#if defined(MIRRORED)
+    gl_ClipDistance[0] = height.x - frame.water.x;  // keep only what is above the water
+    relative.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - relative.y;
+#endif
+    vRelativePosition = relative;
+    gl_Position = frame.viewProjection * vec4(relative, 1.0);
 }

@@ -1,9 +1,8 @@
 // Where a surface goes once the material has built it, chosen by the variant's #define:
-// OUTPUT_GBUFFER stores it in the four G-buffer targets; OUTPUT_FORWARD shades it now.
+// OUTPUT_GBUFFER stores it in the four G-buffer targets; OUTPUT_FORWARD shades it now (linear).
 #ifndef OASIS_EMIT_SURFACE_GLSL
 #define OASIS_EMIT_SURFACE_GLSL
 #include "common/surface.glsl"
-#include "common/output.glsl"
 
 #if defined(OUTPUT_GBUFFER)
 layout(location = 0) out vec4 outAlbedo;
@@ -13,16 +12,14 @@ layout(location = 3) out vec4 outInfo;
 void emitSurface(Surface s) {
     outAlbedo = vec4(s.albedo, 1.0);
     outNormal = vec4(s.normal, 0.0);
-    // w = 0 marks the sky: a direction at the far plane, not a surface point.
-    outPosition = vec4(s.relativePosition, (s.flags & SURFACE_SKY) != 0u ? 0.0 : 1.0);
+    outPosition = vec4(s.relativePosition, 1.0);  // w = 0 (the clear value) marks the sky
     outInfo = encodeInfo(s);
 }
 #elif defined(OUTPUT_FORWARD)
 #include "common/lighting.glsl"
 layout(location = 0) out vec4 outColour;
 void emitSurface(Surface s) {
-    vec3 colour = (s.flags & SURFACE_UNLIT) != 0u ? s.albedo : displayEncode(shadeSurface(s));
-    outColour = vec4(colour, 1.0);
+    outColour = vec4(shadeSurface(s), 1.0);
 }
 #else
 #error "define OUTPUT_GBUFFER or OUTPUT_FORWARD"

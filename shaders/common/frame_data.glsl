@@ -17,6 +17,8 @@ struct FrameData {
     vec4 terrainGrid;            // x central azimuth, y half-width (rad), z first ring radius, w ring ratio
     vec4 terrainGridCounts;      // x rings, y segments, z fog start, w fog end
     vec4 depthRange;             // x near, y far, z time (s), w exposure
+    vec4 water;                  // x level (world y), y absorption per unit, z ripple strength, w flags
+    vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
 };
 
 #endif

@@ -1,12 +1,21 @@
 // The lighting both pipelines use: the sun (Lambert diffuse, normalised Blinn-Phong specular
-// from the surface's power and intensity), hemisphere ambient from sky and ground, then fog.
+// from the surface's power and intensity), hemisphere ambient from sky and ground, then what lies
+// between the surface and the eye: water (absorption) and air (fog). Output is linear radiance.
 #ifndef OASIS_LIGHTING_GLSL
 #define OASIS_LIGHTING_GLSL
 #include "common/sky.glsl"
+#include "common/surface.glsl"
+#include "common/water.glsl"
+
+vec3 reflectAcrossWater(vec3 v) { return vec3(v.x, -v.y, v.z); }
 
 vec3 shadeSurface(Surface s) {
+    bool reflected = (s.flags & SURFACE_REFLECTED) != 0u;
+    // A reflected surface is lit where it really is and seen from the mirrored camera: the ray
+    // from that camera to the surface is the mirror image of the ray to its image.
+    vec3 eyeToSurface = reflected ? reflectAcrossWater(s.relativePosition) : s.relativePosition;
     vec3 n = normalize(s.normal);
-    vec3 toCamera = normalize(-s.relativePosition);
+    vec3 toCamera = normalize(-eyeToSurface);
     vec3 toSun = frame.sunDirection.xyz;
     float diffuse = max(dot(n, toSun), 0.0);
     vec3 halfway = normalize(toSun + toCamera);
@@ -16,9 +25,25 @@ vec3 shadeSurface(Surface s) {
     vec3 skyAmbient = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, 0.5);
     vec3 ambient = mix(frame.groundAmbient.rgb, skyAmbient, 0.5 + 0.5 * n.y);
     vec3 lit = s.albedo * (ambient + frame.sunRadiance.rgb * diffuse) + frame.sunRadiance.rgb * specular;
-    float distance = length(s.relativePosition);
-    float fog = smoothstep(frame.terrainGridCounts.z, frame.terrainGridCounts.w, distance);
+    // Reflections show only what is above the water, so only direct views cross it.
+    if (!reflected) {
+        vec3 eye = frame.cameraPosition.xyz;
+        lit = throughWater(lit, underwaterLength(eye, eye + s.relativePosition));
+    }
+    float fog = smoothstep(frame.terrainGridCounts.z, frame.terrainGridCounts.w, length(eyeToSurface));
     return mix(lit, fogColour(-toCamera), fog);
+}
+
+// The sky along a view ray, as seen directly (through water if the camera is under it) or mirrored.
+vec3 skySeenAlong(vec3 direction, bool reflected) {
+    if (reflected) return skyRadiance(reflectAcrossWater(direction));
+    return throughWater(skyRadiance(direction), underwaterLengthToSky(frame.cameraPosition.xyz, direction));
+}
+
+// The view ray through a pixel (uv in [0,1]^2), camera-relative world direction.
+vec3 viewRayDirection(vec2 uv) {
+    vec4 farPoint = frame.inverseViewProjection * vec4(uv * 2.0 - 1.0, 1.0, 1.0);
+    return normalize(farPoint.xyz / farPoint.w);
 }
 
 #endif

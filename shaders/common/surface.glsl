@@ -4,13 +4,13 @@
 #ifndef OASIS_SURFACE_GLSL
 #define OASIS_SURFACE_GLSL
 
-const uint SURFACE_SKY = 1u;    // a sky pixel
-const uint SURFACE_UNLIT = 2u;  // albedo already holds the display colour; lighting copies it
+const uint SURFACE_SKY = 1u;        // nothing drawn here: lighting evaluates the sky instead
+const uint SURFACE_REFLECTED = 2u;  // seen in the water: the mirrored scene
 
 struct Surface {
-    vec3 albedo;            // linear reflectance, or the display colour when UNLIT
-    vec3 normal;            // unit, world space
-    vec3 relativePosition;  // world position minus the camera position
+    vec3 albedo;            // linear reflectance
+    vec3 normal;            // unit, world space, as the unmirrored surface faces
+    vec3 relativePosition;  // where the camera sees it (the mirror image when REFLECTED) minus the camera
     float specularPower;    // integer 1..255
     float specularIntensity;// multiple of 1/255
     uint flags;
@@ -21,6 +21,9 @@ float quantiseUnit(float x) { return round(clamp(x, 0.0, 1.0) * 255.0) / 255.0; 
 vec4 encodeInfo(Surface s) {
     return vec4(s.specularPower / 255.0, s.specularIntensity, float(s.flags) / 255.0, 1.0);
 }
+
+// The G-buffer values of a pixel where nothing was drawn: the clear values and ReflectionClearPass.
+const vec4 CLEARED_INFO = vec4(0.0, 0.0, float(SURFACE_SKY) / 255.0, 0.0);
 
 uint infoFlags(vec4 info) { return uint(round(info.b * 255.0)); }
 

@@ -18,8 +18,11 @@ vec3 terrainHeight(vec2 worldXZ) {
     return vec3(shape.y * (n.x + k * n.x * n.x) + shape.z, slopeScale * n.y, slopeScale * n.z);
 }
 
-Surface terrainSurface(vec3 relativePosition, vec3 normal) {
+// relativePosition is where the camera sees the point; when `reflected` that is its mirror image.
+Surface terrainSurface(vec3 relativePosition, vec3 normal, bool reflected) {
     vec3 world = relativePosition + frame.cameraPosition.xyz;
+    if (reflected) world.y = 2.0 * frame.water.x - world.y;
+    float aboveWater = world.y - frame.water.x;
     float broad = simplexNoise(world.xz * 0.02).x;
     // Fine variation fades out with distance, where a pixel spans many of its cycles.
     float fine = simplexNoise(world.xz * 0.25).x * (1.0 - smoothstep(40.0, 250.0, length(relativePosition)));
@@ -28,9 +31,9 @@ Surface terrainSurface(vec3 relativePosition, vec3 normal) {
     vec3 sand = vec3(0.40, 0.29, 0.14);
     vec3 grass = mix(vec3(0.045, 0.10, 0.02), vec3(0.13, 0.14, 0.04), 0.5 + 0.5 * broad);
     vec3 rock = mix(vec3(0.17, 0.145, 0.13), vec3(0.27, 0.24, 0.21), 0.5 + 0.5 * fine);
-    float sandAmount = 1.0 - smoothstep(1.5, 4.0, world.y + 1.5 * broad);
+    float sandAmount = 1.0 - smoothstep(1.5, 4.0, aboveWater + 1.5 * broad);
     float rockAmount = max(smoothstep(0.30, 0.45, slope + 0.06 * broad),
-                           smoothstep(48.0, 62.0, world.y + 8.0 * broad));
+                           smoothstep(48.0, 62.0, aboveWater + 8.0 * broad));
 
     Surface s;
     s.albedo = mix(mix(grass, sand, sandAmount), rock, rockAmount) * (0.9 + 0.1 * fine);
@@ -38,7 +41,7 @@ Surface terrainSurface(vec3 relativePosition, vec3 normal) {
     s.relativePosition = relativePosition;
     s.specularPower = round(mix(mix(4.0, 16.0, sandAmount), 24.0, rockAmount));
     s.specularIntensity = quantiseUnit(mix(mix(0.04, 0.10, sandAmount), 0.18, rockAmount));
-    s.flags = 0u;
+    s.flags = reflected ? SURFACE_REFLECTED : 0u;
     return s;
 }
 

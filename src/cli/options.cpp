@@ -33,6 +33,10 @@ const char* kSceneOptionsHelp =
     "  --time SECONDS            animation time: camera flight and time of day (default 0 = 10:00)\n"
     "  --hour H                  override the hour of day, 0..24 (6 sunrise, 18 sunset)\n"
     "  --camera X,Y,Z,YAW,PITCH  fixed camera instead of the flight (degrees; yaw 0 = -Z, 90 = +X)\n"
+    "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
+    "  --water-level Y           world height of the water plane (default 0)\n"
+    "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
+    "  --absorption A            water absorption per unit depth, 0 = clear (default 0.07)\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -142,6 +146,19 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!parseCameraPose(value, pose))
                 return fail("--camera expects X,Y,Z,YAW,PITCH (five numbers, |pitch| <= 90), got '" + value + "'");
             options.scene.camera = pose;
+        } else if (flag == "--reflections") {
+            if (value != "on" && value != "off")
+                return fail("--reflections expects on or off, got '" + value + "'");
+            options.scene.water.reflections = value == "on";
+        } else if (flag == "--water-level" || flag == "--ripples" || flag == "--absorption") {
+            double number = 0.0;
+            bool nonNegative = flag != "--water-level";
+            if (!parseDouble(value, number) || (nonNegative && number < 0.0) || std::fabs(number) > 1e6)
+                return fail(flag + " expects a " + (nonNegative ? "non-negative " : "") + "number, got '" + value + "'");
+            float& field = flag == "--water-level" ? options.scene.water.level
+                           : flag == "--ripples"   ? options.scene.water.rippleStrength
+                                                   : options.scene.water.absorption;
+            field = float(number);
         } else if (flag == "--gbuffer") {
             if (!findGBufferLayout(value))
                 return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");

@@ -6,18 +6,20 @@
 #include <vector>
 
 #include "debug/debug_view_pass.h"
+#include "render/frame_setup.h"
 #include "render/pipeline.h"
 #include "scene/camera.h"
 
 namespace oasis {
 
-// Shared by every subcommand: --size, --time, --hour, --camera, --gbuffer.
+// Shared by every subcommand: --size, --time, --hour, --camera, --gbuffer and the water's settings.
 struct SceneOptions {
     int width = 1280, height = 720;
     double timeSeconds = 0.0;
     std::optional<double> hour;
     std::optional<CameraPose> camera;
     std::string gbuffer = "standard";
+    WaterSettings water;
 };
 
 enum class Command { Default, Window, Render, Compare };

@@ -13,6 +13,7 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.timeSeconds = options.timeSeconds;
     scene.hour = options.hour;
     scene.camera = options.camera;
+    scene.water = options.water;
     return scene;
 }
 

@@ -112,6 +112,14 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::SliderFloat("yaw", &pose.yawDegrees, -180.0f, 360.0f)) state.freeCamera = true;
     if (ImGui::SliderFloat("pitch", &pose.pitchDegrees, -89.0f, 89.0f)) state.freeCamera = true;
 
+    if (ImGui::CollapsingHeader("water", ImGuiTreeNodeFlags_DefaultOpen)) {
+        WaterSettings& water = scene.water;
+        ImGui::Checkbox("reflections", &water.reflections);
+        ImGui::SliderFloat("level", &water.level, -20.0f, 30.0f);
+        ImGui::ColorEdit3("tint", &water.tint.x);
+        ImGui::SliderFloat("absorption", &water.absorption, 0.0f, 0.5f);
+        ImGui::SliderFloat("ripples", &water.rippleStrength, 0.0f, 4.0f);
+    }
     ImGui::Separator();
     ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),

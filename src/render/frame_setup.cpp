@@ -11,6 +11,8 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     setup.hour = scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds);
     setup.sky = skyAtHour(setup.hour);
     setup.wedge = computeTerrainWedge(setup.view, scene.grid, scene.viewDistance);
+    setup.cameraAboveWater = setup.view.pose.position.y >= double(scene.water.level);
+    setup.reflectionsActive = scene.water.reflections && setup.cameraAboveWater;
 
     FrameData& d = setup.data;
     d.viewProjection = setup.view.viewProjection();
@@ -29,6 +31,10 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
                                     scene.viewDistance);
     d.depthRange = glm::vec4(scene.projection.nearPlane, scene.projection.farPlane,
                              float(scene.timeSeconds), scene.exposure);
+    const float kReflectionsFlag = 1.0f;  // WATER_REFLECTIONS in shaders/common/water.glsl
+    d.water = glm::vec4(scene.water.level, scene.water.absorption, scene.water.rippleStrength,
+                        setup.reflectionsActive ? kReflectionsFlag : 0.0f);
+    d.waterTint = glm::vec4(scene.water.tint, scene.water.fresnelF0);
     return setup;
 }
 

@@ -45,11 +45,20 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
     glDrawBuffers(4, drawBuffers);
     checkComplete("G-buffer");
 
+    auto colourWithDepthStencil = [&](gl::Framebuffer& fbo, Target colour, const char* what) {
+        fbo = gl::createFramebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(colour), 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                               texture(Target::DepthStencil), 0);
+        checkComplete(what);
+    };
+    colourWithDepthStencil(radianceFbo_, Target::Radiance, "radiance");
+    colourWithDepthStencil(reflectionFbo_, Target::Reflection, "reflection");
+
     finalFbo_ = gl::createFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, finalFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Final), 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                           texture(Target::DepthStencil), 0);
     checkComplete("final");
 
     displayFbo_ = gl::createFramebuffer();

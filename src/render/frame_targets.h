@@ -1,5 +1,6 @@
 // The textures a frame renders into and the framebuffers over them. Both pipelines share them:
-// deferred fills the G-buffer then Final; forward fills Final directly. Depth-stencil is shared.
+// deferred fills the G-buffer then lights it into Radiance; forward shades into Radiance directly;
+// the mirrored scene goes to Reflection; tone mapping writes Final. Depth-stencil is shared by all.
 // Display holds what a debug view shows (or the overview), ready to present or save.
 #pragma once
 #include <array>
@@ -21,7 +22,9 @@ public:
     GLuint texture(Target target) const { return textures_[size_t(target)].name(); }
     GLuint displayTexture() const { return display_.name(); }
     GLuint gbufferFramebuffer() const { return gbufferFbo_.name(); }
-    GLuint finalFramebuffer() const { return finalFbo_.name(); }
+    GLuint radianceFramebuffer() const { return radianceFbo_.name(); }      // Radiance + depth-stencil
+    GLuint reflectionFramebuffer() const { return reflectionFbo_.name(); }  // Reflection + depth-stencil
+    GLuint finalFramebuffer() const { return finalFbo_.name(); }            // Final only
     GLuint displayFramebuffer() const { return displayFbo_.name(); }
 
 private:
@@ -29,7 +32,7 @@ private:
     int width_, height_;
     std::array<gl::Texture, size_t(Target::Count)> textures_;
     gl::Texture display_;
-    gl::Framebuffer gbufferFbo_, finalFbo_, displayFbo_;
+    gl::Framebuffer gbufferFbo_, radianceFbo_, reflectionFbo_, finalFbo_, displayFbo_;
 };
 
 }  // namespace oasis

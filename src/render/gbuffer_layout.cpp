@@ -9,6 +9,7 @@ constexpr TargetFormat kRGBA16F{GL_RGBA16F, 8};
 constexpr TargetFormat kRGBA32F{GL_RGBA32F, 16};
 constexpr TargetFormat kDepth24Stencil8{GL_DEPTH24_STENCIL8, 4};
 constexpr TargetFormat kFinalColour{GL_RGBA8, 4};
+constexpr TargetFormat kLinearLight{GL_RGBA16F, 8};
 
 // Positions are stored relative to the camera, so 32-bit floats keep sub-millimetre precision
 // near the viewer wherever the camera is; normals tolerate half floats (|n| error < 1e-3).
@@ -27,6 +28,8 @@ const char* targetName(Target target) {
         case Target::Position: return "position";
         case Target::Info: return "info";
         case Target::DepthStencil: return "depth-stencil";
+        case Target::Radiance: return "radiance";
+        case Target::Reflection: return "reflection";
         case Target::Final: return "final";
         case Target::Count: break;
     }
@@ -40,6 +43,8 @@ TargetFormat GBufferLayout::format(Target target) const {
         case Target::Position: return position;
         case Target::Info: return info;
         case Target::DepthStencil: return kDepth24Stencil8;
+        case Target::Radiance:
+        case Target::Reflection: return kLinearLight;
         default: return kFinalColour;
     }
 }

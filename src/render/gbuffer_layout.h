@@ -7,8 +7,10 @@
 
 namespace oasis {
 
-// The render targets of a frame. The G-buffer is the first four plus DepthStencil.
-enum class Target { Albedo, Normal, Position, Info, DepthStencil, Final, Count };
+// The render targets of a frame. The G-buffer is the first four plus DepthStencil. Radiance and
+// Reflection hold linear HDR light (the frame, and the mirrored scene seen in the water);
+// Final is Radiance tone-mapped to 8 bits for display.
+enum class Target { Albedo, Normal, Position, Info, DepthStencil, Radiance, Reflection, Final, Count };
 const char* targetName(Target target);
 
 struct TargetFormat {
@@ -21,8 +23,8 @@ struct GBufferLayout {
     std::string description;
     TargetFormat albedo, normal, position, info;
 
-    TargetFormat format(Target target) const;  // Final and DepthStencil are the same in every layout
-    int bytesPerPixel() const;                 // the four colour targets plus depth-stencil
+    TargetFormat format(Target target) const;  // targets outside the G-buffer are the same in every layout
+    int bytesPerPixel() const;                 // the four G-buffer colour targets plus depth-stencil
 };
 
 const std::vector<GBufferLayout>& gbufferLayouts();

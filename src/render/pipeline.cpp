@@ -5,8 +5,12 @@
 
 #include "passes/clear_pass.h"
 #include "passes/lighting_pass.h"
+#include "passes/reflection_clear_pass.h"
 #include "passes/sky_pass.h"
 #include "passes/terrain_pass.h"
+#include "passes/tone_map_pass.h"
+#include "passes/water_composite_pass.h"
+#include "passes/water_mask_pass.h"
 
 namespace oasis {
 
@@ -19,21 +23,32 @@ bool parsePipelineKind(const std::string& text, PipelineKind& out) {
 }
 
 Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
+    auto add = [this](auto pass) { passes_.push_back(std::move(pass)); };
     if (kind == PipelineKind::Deferred) {
-        passes_.push_back(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
-        passes_.push_back(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
-        passes_.push_back(std::make_unique<SkyPass>(SurfaceOutput::GBuffer));
-        passes_.push_back(std::make_unique<LightingPass>());
+        add(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
+        add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
+        add(std::make_unique<WaterMaskPass>());
+        add(std::make_unique<LightingPass>());
+        add(std::make_unique<ReflectionClearPass>(SurfaceOutput::GBuffer));
+        add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
+        add(std::make_unique<LightingPass>(Mirroring::Mirrored));
     } else {
-        passes_.push_back(std::make_unique<ClearPass>(SurfaceOutput::Forward));
-        passes_.push_back(std::make_unique<TerrainPass>(SurfaceOutput::Forward));
-        passes_.push_back(std::make_unique<SkyPass>(SurfaceOutput::Forward));
+        add(std::make_unique<ClearPass>(SurfaceOutput::Forward));
+        add(std::make_unique<TerrainPass>(SurfaceOutput::Forward));
+        add(std::make_unique<SkyPass>());
+        add(std::make_unique<WaterMaskPass>());
+        add(std::make_unique<ReflectionClearPass>(SurfaceOutput::Forward));
+        add(std::make_unique<TerrainPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
+        add(std::make_unique<SkyPass>(Mirroring::Mirrored));
     }
+    add(std::make_unique<WaterCompositePass>());
+    add(std::make_unique<ToneMapPass>());
 }
 
 void Pipeline::run(PassContext& context) const {
     gl::DebugGroup group(pipelineName(kind_));
-    for (const auto& pass : passes_) pass->run(context);
+    for (const auto& pass : passes_)
+        if (pass->active(context.frame)) pass->run(context);
 }
 
 bool Pipeline::writes(Target target) const {

@@ -1,6 +1,9 @@
 // A pipeline: an ordered list of passes over the shared frame targets.
-//   deferred: Clear(G-buffer) -> Terrain(G-buffer) -> Sky(G-buffer) -> Lighting -> Final
-//   forward:  Clear(Final)    -> Terrain(shaded)   -> Sky(shaded)                -> Final
+//   deferred: Clear(G) Terrain(G) WaterMask Lighting | ReflectionClear(G) Terrain(G, mirrored)
+//             Lighting(mirrored) | WaterComposite ToneMap
+//   forward:  Clear(Radiance) Terrain Sky WaterMask | ReflectionClear Terrain(mirrored)
+//             Sky(mirrored) | WaterComposite ToneMap
+// The passes between the bars run only with reflections on and the camera above the water.
 #pragma once
 #include <memory>
 #include <string>

@@ -44,12 +44,12 @@ void Renderer::renderView(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     bool needsGBuffer = viewName == kOverviewName || (view && readsGBuffer(*view));
     if (needsGBuffer && !gbufferCurrent_) {
-        // Forward draws no G-buffer: fill it for the view with the deferred geometry passes.
-        // Final and depth-stencil stay the forward frame's because these passes do not touch Final
-        // and redraw the same depth and stencil.
+        // Forward draws no G-buffer: fill it for the view with the deferred passes that come before
+        // lighting (the direct scene). Radiance and Final stay the forward frame's.
         for (const auto& pass : deferred_.passes()) {
             std::vector<Target> written = pass->writes();
-            if (std::find(written.begin(), written.end(), Target::Final) == written.end()) pass->run(passContext);
+            if (std::find(written.begin(), written.end(), Target::Radiance) != written.end()) break;
+            pass->run(passContext);
         }
         gbufferCurrent_ = true;
     }
@@ -81,9 +81,15 @@ Image Renderer::readDisplay() const {
 
 std::vector<float> Renderer::readTarget(Target target) const {
     std::vector<float> pixels(size_t(targets_->width()) * size_t(targets_->height()) * 4);
-    GLuint fbo = target == Target::Final ? targets_->finalFramebuffer() : targets_->gbufferFramebuffer();
+    GLuint fbo = targets_->gbufferFramebuffer();
+    int attachment = int(target) - int(Target::Albedo);
+    if (target == Target::Final || target == Target::Radiance || target == Target::Reflection) {
+        fbo = target == Target::Final      ? targets_->finalFramebuffer()
+              : target == Target::Radiance ? targets_->radianceFramebuffer()
+                                           : targets_->reflectionFramebuffer();
+        attachment = 0;
+    }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    int attachment = target == Target::Final ? 0 : int(target) - int(Target::Albedo);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
     glReadPixels(0, 0, targets_->width(), targets_->height(), GL_RGBA, GL_FLOAT, pixels.data());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -92,14 +98,14 @@ std::vector<float> Renderer::readTarget(Target target) const {
 
 std::vector<float> Renderer::readDepth() const {
     std::vector<float> depth(size_t(targets_->width()) * size_t(targets_->height()));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->finalFramebuffer());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
     glReadPixels(0, 0, targets_->width(), targets_->height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
     return depth;
 }
 
 std::vector<uint8_t> Renderer::readStencil() const {
     std::vector<uint8_t> stencil(size_t(targets_->width()) * size_t(targets_->height()));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->finalFramebuffer());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, targets_->width(), targets_->height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
     return stencil;

@@ -28,6 +28,12 @@ void SceneGeometry::drawTerrain() const {
     glBindVertexArray(0);
 }
 
+void SceneGeometry::drawWaterQuad() const {
+    glBindVertexArray(emptyVao_.name());
+    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glBindVertexArray(0);
+}
+
 void SceneGeometry::drawFullscreenTriangle() const {
     glBindVertexArray(emptyVao_.name());
     glDrawArrays(GL_TRIANGLES, 0, 3);

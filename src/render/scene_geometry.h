@@ -13,6 +13,7 @@ public:
     const TerrainGridDensity& density() const { return density_; }
     void drawTerrain() const;
     void drawFullscreenTriangle() const;
+    void drawWaterQuad() const;  // four vertices generated in water.vert
     int terrainTriangles() const { return indexCount_ / 3; }
 
 private:

@@ -12,7 +12,7 @@ namespace oasis {
 struct TerrainShape {
     float frequency = 1.0f / 650.0f;  // noise units per world unit
     float amplitude = 40.0f;          // world units per noise unit
-    float baseHeight = 3.0f;          // added to every height
+    float baseHeight = 18.0f;         // added to every height; about a fifth of the land is below 0
     int octaves = 7;
 };
 

@@ -1,0 +1,31 @@
+// The water quad again, stencil-masked to the water, blended (premultiplied) onto Radiance.
+#include "passes/water_composite_pass.h"
+
+#include "render/texture_units.h"
+
+namespace oasis {
+
+void WaterCompositePass::execute(PassContext& context) {
+    const FrameTargets& targets = context.targets;
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.radianceFramebuffer());
+    glViewport(0, 0, targets.width(), targets.height());
+    glActiveTexture(GL_TEXTURE0 + kUnitSource);
+    glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Reflection));
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, kStencilWater, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glStencilMask(0x00);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);  // the mirrored scene's depths are behind us now; the water's replace them
+    glDepthMask(GL_TRUE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(context.shaders.program("water.composite"));
+    context.geometry.drawWaterQuad();
+    glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glStencilMask(0xFF);
+}
+
+}  // namespace oasis

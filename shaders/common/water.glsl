@@ -1,0 +1,58 @@
+// Water: its level, how light is absorbed and scattered along the part of a ray under the plane,
+// the rippled normal of its surface, and Schlick's Fresnel reflectance.
+#ifndef OASIS_WATER_GLSL
+#define OASIS_WATER_GLSL
+#include "common/noise.glsl"
+
+const uint WATER_REFLECTIONS = 1u;  // bit of frame.water.w: mirrored scene drawn this frame
+
+float waterLevel() { return frame.water.x; }
+bool reflectionsActive() { return (uint(frame.water.w) & WATER_REFLECTIONS) != 0u; }
+
+// Length of the segment eye -> point (world space) that lies below the water plane.
+float underwaterLength(vec3 eye, vec3 point) {
+    float eyeHeight = eye.y - waterLevel(), pointHeight = point.y - waterLevel();
+    if (eyeHeight >= 0.0 && pointHeight >= 0.0) return 0.0;
+    float length = distance(eye, point);
+    if (eyeHeight < 0.0 && pointHeight < 0.0) return length;
+    float crossing = eyeHeight / (eyeHeight - pointHeight);  // fraction of the way from the eye
+    return eyeHeight < 0.0 ? length * crossing : length * (1.0 - crossing);
+}
+
+// From an eye under water towards the sky: the way up to the surface (or all the way, looking down).
+float underwaterLengthToSky(vec3 eye, vec3 direction) {
+    float depth = waterLevel() - eye.y;
+    if (depth <= 0.0) return 0.0;
+    return direction.y > 1e-4 ? depth / direction.y : 1e6;
+}
+
+// The light deep water tends to: its tint lit by the sky and the sun.
+vec3 waterScatter() {
+    vec3 light = 0.5 * (frame.skyZenith.rgb + frame.skyHorizon.rgb) + 0.25 * frame.sunRadiance.rgb * max(frame.sunDirection.y, 0.0);
+    return frame.waterTint.rgb * light;
+}
+
+// Radiance after `length` units of water: red is absorbed fastest, then green, then blue.
+vec3 throughWater(vec3 radiance, float length) {
+    if (length <= 0.0) return radiance;
+    vec3 transmittance = exp(-frame.water.y * length * vec3(1.0, 0.45, 0.3));
+    return radiance * transmittance + waterScatter() * (vec3(1.0) - transmittance);
+}
+
+// Surface normal with two layers of drifting ripples, scaled by the ripple strength.
+vec3 waterNormal(vec2 worldXZ) {
+    float strength = frame.water.z;
+    if (strength == 0.0) return vec3(0.0, 1.0, 0.0);
+    float t = frame.depthRange.z;
+    vec3 broad = simplexNoise(worldXZ * 0.12 + vec2(0.05, 0.03) * t);
+    vec3 fine = simplexNoise(worldXZ * 0.55 - vec2(0.11, -0.07) * t);
+    vec2 slope = strength * (0.08 * 0.12 * broad.yz + 0.025 * 0.55 * fine.yz);
+    return normalize(vec3(-slope.x, 1.0, -slope.y));
+}
+
+float fresnelSchlick(float cosTheta) {
+    float f0 = frame.waterTint.w;
+    return f0 + (1.0 - f0) * pow(1.0 - clamp(cosTheta, 0.0, 1.0), 5.0);
+}
+
+#endif
