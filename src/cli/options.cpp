@@ -81,7 +81,10 @@ std::string usage(Command command) {
             return "usage: oasis render [scene options] [--pipeline forward|deferred] [--view NAME] [--out FILE.png]\n"
                    "  renders one frame and writes one debug view of it (default: deferred, final)\n"
                    "  --view NAME               " + debugViewNames() + "\n"
-                   "  --stencil-view PATH       texturing | read-back (default: texturing where supported)\n" + scene;
+                   "  --stencil-view PATH       texturing | read-back (default: texturing where supported)\n"
+                   "  --stop-before PASS        end the frame before the named pass, to see its inputs\n"
+                   "                            (e.g. WaterCompositePass; a wrong name lists the passes);\n"
+                   "                            Final is black then: view the targets the frame reached\n" + scene;
         case Command::Compare:
             return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N]\n"
                    "  renders the frame in both pipelines; prints PSNR, max abs and RMSE over 8-bit RGB and the\n"
@@ -127,7 +130,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (flag == "--json") { options.json = true; continue; }
         if (i + 1 >= arguments.size()) return fail("option " + flag + " needs a value (see --help)");
         const std::string& value = arguments[++i];
-        bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view";
+        bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view" ||
+                          flag == "--stop-before";
         if (renderOnly && options.command != Command::Render)
             return fail("option " + flag + " belongs to `oasis render`");
         if (flag == "--size") {
@@ -174,6 +178,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value == "texturing") options.stencilView = StencilViewPath::Texturing;
             else if (value == "read-back") options.stencilView = StencilViewPath::ReadBack;
             else return fail("--stencil-view expects texturing or read-back, got '" + value + "'");
+        } else if (flag == "--stop-before") {
+            options.stopBefore = value;  // checked against the pipeline's passes when it runs
         } else if (flag == "--out") {
             options.out = value;
         } else if (flag == "--out-dir") {

@@ -35,6 +35,7 @@ struct Options {
     bool json = false;
     int timingFrames = 9;
     std::optional<StencilViewPath> stencilView;
+    std::string stopBefore;  // render: end the frame before this pass
 };
 
 struct ParseResult {

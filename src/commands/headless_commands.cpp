@@ -106,7 +106,7 @@ int runRenderCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
         Renderer& renderer = *session.renderer;
         renderer.setPipeline(options.pipeline);
-        renderer.renderFrame(session.scene);
+        renderer.renderFrame(session.scene, options.stopBefore);
         renderer.renderView(options.view);
         std::string error;
         if (!writePng(options.out, renderer.readDisplay(), error)) {

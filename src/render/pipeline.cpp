@@ -45,10 +45,24 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
     add(std::make_unique<ToneMapPass>());
 }
 
-void Pipeline::run(PassContext& context) const {
+bool Pipeline::run(PassContext& context, const std::string& stopBefore) const {
+    if (!stopBefore.empty() && !hasPass(stopBefore)) return false;
     gl::DebugGroup group(pipelineName(kind_));
-    for (const auto& pass : passes_)
+    for (const auto& pass : passes_) {
+        if (pass->name() == stopBefore) break;
         if (pass->active(context.frame)) pass->run(context);
+    }
+    return true;
+}
+
+bool Pipeline::hasPass(const std::string& name) const {
+    return std::any_of(passes_.begin(), passes_.end(), [&](const auto& pass) { return pass->name() == name; });
+}
+
+std::string Pipeline::passNames() const {
+    std::string names;
+    for (const auto& pass : passes_) names += (names.empty() ? "" : ", ") + pass->name();
+    return names;
 }
 
 bool Pipeline::writes(Target target) const {

@@ -21,7 +21,11 @@ class Pipeline {
 public:
     explicit Pipeline(PipelineKind kind);
     PipelineKind kind() const { return kind_; }
-    void run(PassContext& context) const;
+    // Runs the active passes in order; stops before the pass named `stopBefore` (empty: run all).
+    // Returns false if `stopBefore` names no pass of this pipeline.
+    bool run(PassContext& context, const std::string& stopBefore = {}) const;
+    bool hasPass(const std::string& name) const;
+    std::string passNames() const;
     bool writes(Target target) const;
     const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }
 

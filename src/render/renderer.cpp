@@ -2,6 +2,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "render/texture_units.h"
 
@@ -29,14 +30,24 @@ const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
     return kind == PipelineKind::Forward ? forward_ : deferred_;
 }
 
-void Renderer::renderFrame(const SceneSettings& scene) {
+void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBefore) {
+    const Pipeline& pipeline = pipelineOf(active_);
+    if (!stopBefore.empty() && !pipeline.hasPass(stopBefore))
+        throw std::invalid_argument("the " + std::string(pipelineName(active_)) + " pipeline has no pass '" +
+                                    stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     frame_ = prepareFrame(scene, targets_->width(), targets_->height());
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());
+    if (!stopBefore.empty()) {
+        // Final is not reached: show black rather than whatever an earlier frame left there.
+        const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_->finalFramebuffer());
+        glClearBufferfv(GL_COLOR, 0, black);
+    }
     PassContext passContext = context();
-    pipelineOf(active_).run(passContext);
-    gbufferCurrent_ = pipelineOf(active_).writes(Target::Albedo);
+    pipeline.run(passContext, stopBefore);
+    gbufferCurrent_ = pipeline.writes(Target::Albedo);
 }
 
 void Renderer::renderView(const std::string& viewName) {

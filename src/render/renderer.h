@@ -30,7 +30,9 @@ public:
     StencilViewPath stencilViewPath() const { return stencilPath_; }
 
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
-    void renderFrame(const SceneSettings& scene);
+    // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
+    // std::invalid_argument (listing the pipeline's passes) if no pass has that name.
+    void renderFrame(const SceneSettings& scene, const std::string& stopBefore = {});
     // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
     // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
     void renderView(const std::string& viewName);
