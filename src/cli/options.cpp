@@ -36,7 +36,7 @@ const char* kSceneOptionsHelp =
     "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
-    "  --absorption A            water absorption per unit depth, 0 = clear (default 0.07)\n"
+    "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace oasis {
 // The water plane and its look; every field is a run-time setting (panel and CLI).
 struct WaterSettings {
     float level = 0.0f;                                // world y of the plane
-    float absorption = 0.07f;                          // per world unit of water crossed (red channel)
+    float absorption = 0.09f;                          // per world unit of water crossed (red channel)
     float rippleStrength = 1.0f;                       // 0 = a still mirror
     glm::vec3 tint{0.02f, 0.11f, 0.10f};               // what deep water's scattered light looks like
     float fresnelF0 = 0.02f;                           // reflectance looking straight down (water: ~0.02)

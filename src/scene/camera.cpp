@@ -44,7 +44,9 @@ std::array<glm::vec3, 4> CameraView::cornerRays() const {
 CameraPose defaultCameraPath(const TerrainShape& shape, double timeSeconds) {
     const double speed = 7.0;  // world units per second eastwards
     const double swayPeriod = 90.0, swayAmplitude = 160.0;
-    double t = timeSeconds;
+    // The flight starts over a lake, so the default frame (time 0) shows the water.
+    const double startOffset = 25.0;
+    double t = timeSeconds + startOffset;
     CameraPose pose;
     double x = speed * t + 210.0;
     double z = swayAmplitude * std::sin(t / swayPeriod * 2.0 * M_PI) - 120.0;
