@@ -10,7 +10,7 @@ void WaterMaskPass::execute(PassContext& context) {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDepthMask(GL_FALSE);
+    glDepthMask(GL_TRUE);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);

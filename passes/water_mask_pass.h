@@ -1,5 +1,6 @@
 // WaterMaskPass: marks kStencilWater wherever the water plane is the nearest surface (depth
-// tested against what is already drawn, writing no colour and no depth).
+// tested against what is already drawn) and leaves the water's depth there; writes no colour.
+// Depth is then the visible surface's at every later stage, with reflections on or off.
 #pragma once
 #include "passes/pass.h"
 

@@ -9,7 +9,10 @@ out vec3 vRelativePosition;
 out vec3 vNormal;
 
 void main() {
-    float radius = frame.terrainGrid.z * pow(frame.terrainGrid.w, gridCoordinate.x * frame.terrainGridCounts.x);
+    // Ring 0 is the point under the camera (a fan of zero-area triangles closes the centre);
+    // ring i >= 1 sits at firstRadius * ratio^(i-1), out to the view distance.
+    float ring = floor(gridCoordinate.x * frame.terrainGridCounts.x + 0.5);
+    float radius = ring == 0.0 ? 0.0 : frame.terrainGrid.z * pow(frame.terrainGrid.w, ring - 1.0);
     float azimuth = frame.terrainGrid.x + (2.0 * gridCoordinate.y - 1.0) * frame.terrainGrid.y;
     vec2 offset = radius * vec2(sin(azimuth), -cos(azimuth));
     vec3 height = terrainHeight(frame.cameraPosition.xz + offset);

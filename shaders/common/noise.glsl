@@ -57,6 +57,9 @@ vec3 simplexNoise(vec2 p) {
 
 // Fractal sum of `octaves` simplex layers, each rotated by (0.8, 0.6) and doubled in frequency
 // so lattice directions do not line up. Returns (sum, d sum / dx, d sum / dy).
+// Each octave's small offset is added at evaluation, not carried into the next octave: carried,
+// it doubles with every octave and the finest layer would be evaluated near 2000, where a float
+// step is 1e-4 and CPU and GPU rounding visibly disagree.
 vec3 fractalNoise(vec2 p, int octaves) {
     vec3 result = vec3(0.0);
     float amplitude = 1.0;
@@ -65,11 +68,11 @@ vec3 fractalNoise(vec2 p, int octaves) {
     vec2 jy = vec2(0.0, 1.0);
     vec2 q = p;
     for (int octave = 0; octave < octaves; ++octave) {
-        vec3 n = simplexNoise(q);
+        vec3 n = simplexNoise(q + vec2(17.0, -31.0) * float(octave));
         result.x += amplitude * n.x;
         result.y += amplitude * dot(n.yz, jx);
         result.z += amplitude * dot(n.yz, jy);
-        q = vec2(1.6 * q.x - 1.2 * q.y, 1.2 * q.x + 1.6 * q.y) + vec2(17.0, -31.0);
+        q = vec2(1.6 * q.x - 1.2 * q.y, 1.2 * q.x + 1.6 * q.y);
         jx = vec2(1.6 * jx.x - 1.2 * jx.y, 1.2 * jx.x + 1.6 * jx.y);
         jy = vec2(1.6 * jy.x - 1.2 * jy.y, 1.2 * jy.x + 1.6 * jy.y);
         amplitude *= 0.5;

@@ -28,7 +28,7 @@ public:
     GLuint displayFramebuffer() const { return displayFbo_.name(); }
 
 private:
-    const GBufferLayout& layout_;
+    GBufferLayout layout_;
     int width_, height_;
     std::array<gl::Texture, size_t(Target::Count)> textures_;
     gl::Texture display_;

@@ -17,10 +17,13 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
 }
 
 void Renderer::configure(int width, int height, const GBufferLayout& layout) {
-    if (targets_ && targets_->width() == width && targets_->height() == height && &targets_->layout() == &layout)
+    if (targets_ && targets_->width() == width && targets_->height() == height &&
+        targets_->layout().name == layout.name)
         return;
-    targets_.reset();  // free the old targets before allocating the new ones
-    targets_ = std::make_unique<FrameTargets>(layout, width, height);
+    // Build the new targets before dropping the old: if allocation fails (too large, out of
+    // memory) the renderer keeps working at its previous size.
+    auto replacement = std::make_unique<FrameTargets>(layout, width, height);
+    targets_ = std::move(replacement);
     gbufferCurrent_ = false;
 }
 
@@ -31,6 +34,7 @@ const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
 }
 
 void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBefore) {
+    if (!targets_) throw std::logic_error("Renderer::renderFrame before configure()");
     const Pipeline& pipeline = pipelineOf(active_);
     if (!stopBefore.empty() && !pipeline.hasPass(stopBefore))
         throw std::invalid_argument("the " + std::string(pipelineName(active_)) + " pipeline has no pass '" +
@@ -53,6 +57,8 @@ void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBe
 void Renderer::renderView(const std::string& viewName) {
     PassContext passContext = context();
     const DebugView* view = findDebugView(viewName);
+    if (!view && viewName != kOverviewName)
+        throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
     bool needsGBuffer = viewName == kOverviewName || (view && readsGBuffer(*view));
     if (needsGBuffer && !gbufferCurrent_) {
         // Forward draws no G-buffer: fill it for the view with the deferred passes that come before

@@ -22,7 +22,8 @@ class Renderer {
 public:
     Renderer(ShaderLibrary& shaders, const SceneSettings& scene);
 
-    // Reallocates the targets when the size or layout changes; scene data is kept.
+    // Reallocates the targets when the size or layout changes; scene data is kept. Throws
+    // std::runtime_error (naming the size) when the targets cannot be made, keeping the old ones.
     void configure(int width, int height, const GBufferLayout& layout);
     void setPipeline(PipelineKind kind) { active_ = kind; }
     PipelineKind pipeline() const { return active_; }

@@ -62,12 +62,12 @@ glm::vec3 fractalNoise(glm::vec2 p, int octaves) {
     float amplitude = 1.0f;
     glm::vec2 jx(1.0f, 0.0f), jy(0.0f, 1.0f), q = p;
     for (int octave = 0; octave < octaves; ++octave) {
-        glm::vec3 n = simplexNoise(q);
+        glm::vec3 n = simplexNoise(q + glm::vec2(17.0f, -31.0f) * float(octave));
         glm::vec2 g(n.y, n.z);
         result.x += amplitude * n.x;
         result.y += amplitude * glm::dot(g, jx);
         result.z += amplitude * glm::dot(g, jy);
-        q = glm::vec2(1.6f * q.x - 1.2f * q.y, 1.2f * q.x + 1.6f * q.y) + glm::vec2(17.0f, -31.0f);
+        q = glm::vec2(1.6f * q.x - 1.2f * q.y, 1.2f * q.x + 1.6f * q.y);
         jx = glm::vec2(1.6f * jx.x - 1.2f * jx.y, 1.2f * jx.x + 1.6f * jx.y);
         jy = glm::vec2(1.6f * jy.x - 1.2f * jy.y, 1.2f * jy.x + 1.6f * jy.y);
         amplitude *= 0.5f;

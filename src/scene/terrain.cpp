@@ -28,7 +28,8 @@ glm::vec3 terrainNormal(const TerrainShape& shape, glm::vec2 worldXZ) {
 TerrainWedge computeTerrainWedge(const CameraView& view, const TerrainGridDensity& density,
                                  float viewDistance) {
     TerrainWedge wedge;
-    wedge.ringRatio = std::pow(viewDistance / density.firstRingRadius, 1.0f / float(density.rings));
+    // Ring 0 is the centre point; rings 1..rings go geometrically from firstRingRadius to viewDistance.
+    wedge.ringRatio = std::pow(viewDistance / density.firstRingRadius, 1.0f / float(density.rings - 1));
     wedge.centralAzimuth = view.pose.yawRadians();
     // Azimuth of each frustum corner relative to the heading; the extremes are at the corners
     // as long as every corner ray points forward horizontally.

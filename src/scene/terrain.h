@@ -22,7 +22,7 @@ glm::vec3 terrainNormal(const TerrainShape& shape, glm::vec2 worldXZ);
 
 // How finely the grid follows the screen: the grid's density knob.
 struct TerrainGridDensity {
-    int rings = 150;        // geometric rings from firstRingRadius to the view distance
+    int rings = 150;        // the centre point, then geometric rings from firstRingRadius to the view distance
     int segments = 128;     // angular segments across the wedge
     float firstRingRadius = 0.25f;
 };

@@ -1,0 +1,70 @@
+// Forward and deferred agree: PSNR of the final images (full layout >= 55 dB, standard >= 45 dB)
+// for the default frame at 1280x720 and five hard poses at 320x180, and every image has content.
+#include "gpu_test.h"
+
+namespace oasis::gputest {
+namespace {
+
+struct LayoutThreshold {
+    const char* layout;
+    double minPsnrDb;
+};
+constexpr LayoutThreshold kThresholds[] = {{"full", 55.0}, {"standard", 45.0}};
+
+class Agreement : public GpuTest {
+protected:
+    void checkAgreement(const NamedPose& pose, int width, int height) {
+        Renderer renderer(*shaders_, pose.scene);
+        Image firstForward;
+        for (const LayoutThreshold& threshold : kThresholds) {
+            SCOPED_TRACE(pose.name + " " + threshold.layout + " " + std::to_string(width) + "x" + std::to_string(height));
+            renderer.configure(width, height, layoutNamed(threshold.layout));
+            Image forward = renderFinal(renderer, pose.scene, PipelineKind::Forward);
+            Image deferred = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
+            std::vector<float> albedo = renderer.readTarget(Target::Albedo);  // the deferred frame's
+            dumpImage("agreement-" + pose.name + "-" + threshold.layout + "-forward", forward);
+            dumpImage("agreement-" + pose.name + "-" + threshold.layout + "-deferred", deferred);
+
+            // The forward pipeline never touches the G-buffer: its image cannot depend on the layout.
+            if (firstForward.width == 0) {
+                firstForward = forward;
+            } else {
+                EXPECT_EQ(compareImages(firstForward, forward).maxAbs, 0) << "forward image changed with the layout";
+            }
+
+            ImageDifference difference = compareImages(forward, deferred);
+            std::printf("[psnr] pose=%s layout=%s size=%dx%d psnr=%.2f dB rmse=%.4f maxAbs=%d\n", pose.name.c_str(),
+                        threshold.layout, width, height, difference.psnrDb, difference.rmse, difference.maxAbs);
+            RecordProperty("psnr_" + pose.name + "_" + threshold.layout, std::to_string(difference.psnrDb));
+            EXPECT_GE(difference.psnrDb, threshold.minPsnrDb)
+                << "forward and deferred disagree (rmse " << difference.rmse << ", max " << difference.maxAbs << ")";
+
+            for (const Image* image : {&forward, &deferred}) {
+                const char* which = image == &forward ? "forward" : "deferred";
+                std::printf("[content] pose=%s layout=%s %s: %s\n", pose.name.c_str(), threshold.layout, which,
+                            describe(rgbStats(*image, wholeImage(*image))).c_str());
+                if (pose.smoothSky) {
+                    // A view of nothing but sky may be one smooth gradient: it must be lit and finite.
+                    RgbStats stats = rgbStats(*image, wholeImage(*image));
+                    EXPECT_GT(stats.maxMean(), 20.0) << which << " sky view is black: " << describe(stats);
+                    EXPECT_EQ(countNonFinite(albedo), 0) << "non-finite sky colour in the G-buffer";
+                } else {
+                    EXPECT_TRUE(hasContent(*image)) << which;
+                }
+            }
+        }
+    }
+};
+
+TEST_F(Agreement, DefaultFrameAt1280x720) { checkAgreement(defaultPose(), 1280, 720); }
+
+class AgreementPose : public Agreement, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(AgreementPose, BothLayoutsAt320x180) { checkAgreement(poseNamed(GetParam()), 320, 180); }
+
+INSTANTIATE_TEST_SUITE_P(HardPoses, AgreementPose,
+                         ::testing::Values("grazing", "down", "up", "sunset", "night"),
+                         [](const auto& info) { return info.param; });
+
+}  // namespace
+}  // namespace oasis::gputest

@@ -1,0 +1,174 @@
+// Bad input: sizes beyond GL_MAX_TEXTURE_SIZE throw naming the size (and the renderer recovers),
+// a 1x1 frame renders in both pipelines without NaN, and a shader reload with a broken file keeps
+// the previous programs (same image) and names the file; restoring it reloads cleanly.
+#include "gpu_test.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "debug/debug_views.h"
+
+namespace oasis::gputest {
+namespace {
+
+namespace fs = std::filesystem;
+
+class BadInput : public GpuTest {};
+
+TEST_F(BadInput, SizeBeyondMaxTextureSizeThrowsNamingTheSize) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    ASSERT_GT(maxSize, 0);
+    NamedPose pose = defaultPose();
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(64, 36, layoutNamed("standard"));
+    const std::pair<int, int> badSizes[] = {{maxSize + 1, 16}, {16, maxSize + 1}, {2 * maxSize, 2 * maxSize}, {0, 16}};
+    for (auto [width, height] : badSizes) {
+        std::string size = std::to_string(width) + "x" + std::to_string(height);
+        try {
+            renderer.configure(width, height, layoutNamed("full"));
+            ADD_FAILURE() << "configure(" << size << ") did not throw (GL_MAX_TEXTURE_SIZE " << maxSize << ")";
+        } catch (const std::runtime_error& error) {
+            EXPECT_NE(std::string(error.what()).find(size), std::string::npos)
+                << "the message does not name the size " << size << ": " << error.what();
+        } catch (const std::exception& error) {
+            ADD_FAILURE() << "configure(" << size << ") threw something other than std::runtime_error: " << error.what();
+        }
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "a rejected size reached GL: " << size;
+    }
+    // A valid size afterwards works again.
+    renderer.configure(64, 36, layoutNamed("standard"));
+    EXPECT_TRUE(hasContent(renderFinal(renderer, pose.scene, PipelineKind::Deferred)));
+    // The limit itself is a valid size.
+    renderer.configure(maxSize, 4, layoutNamed("standard"));
+    EXPECT_EQ(renderer.targets().width(), maxSize);
+    renderer.configure(64, 36, layoutNamed("standard"));
+}
+
+TEST_F(BadInput, OneByOneFrameRendersInBothPipelinesWithoutNaN) {
+    for (const NamedPose& pose : {defaultPose(), poseNamed("up"), poseNamed("down")}) {
+        Renderer renderer(*shaders_, pose.scene);
+        for (const char* layout : {"full", "standard"}) {
+            SCOPED_TRACE(pose.name + " " + layout);
+            renderer.configure(1, 1, layoutNamed(layout));
+            Image forward = renderFinal(renderer, pose.scene, PipelineKind::Forward);
+            EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Final)), 0);
+            EXPECT_EQ(countNonFinite(renderer.readDepth()), 0);
+            Image deferred = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
+            for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::Final})
+                EXPECT_EQ(countNonFinite(renderer.readTarget(target)), 0) << targetName(target);
+            EXPECT_EQ(countNonFinite(renderer.readDepth()), 0);
+            ASSERT_EQ(forward.width, 1);
+            ASSERT_EQ(deferred.height, 1);
+            // The one pixel is a real colour (opaque, not black) and the pipelines agree on it.
+            EXPECT_EQ(forward.rgba[3], 255);
+            EXPECT_GT(int(forward.rgba[0]) + forward.rgba[1] + forward.rgba[2], 30) << "black 1x1 frame";
+            EXPECT_LE(compareImages(forward, deferred).maxAbs, 3);
+            // Views and the overview (tiles smaller than a pixel) must not fail either.
+            for (const DebugView& view : debugViews()) renderer.renderView(view.name);
+            renderer.renderView(kOverviewName);
+            EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+        }
+    }
+}
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::trunc);
+    out << text;
+}
+
+// A copy of the real shader directory in a fresh temporary directory, removed afterwards.
+struct ShaderDirCopy {
+    fs::path root;
+    explicit ShaderDirCopy(const std::string& source) {
+        root = fs::temp_directory_path() / ("oasis-gpu-shaders-" + std::to_string(::getpid()));
+        fs::remove_all(root);
+        fs::copy(source, root, fs::copy_options::recursive);
+    }
+    ~ShaderDirCopy() {
+        std::error_code ignored;
+        fs::remove_all(root, ignored);
+    }
+};
+
+class ShaderReload : public GpuTest {
+protected:
+    struct Frames {
+        Image forward, deferred;
+    };
+    Frames render(Renderer& renderer, const SceneSettings& scene) {
+        Frames frames;
+        frames.forward = renderFinal(renderer, scene, PipelineKind::Forward);
+        frames.deferred = renderFinal(renderer, scene, PipelineKind::Deferred);
+        return frames;
+    }
+    void expectSame(const Frames& a, const Frames& b, const std::string& when) {
+        EXPECT_EQ(compareImages(a.forward, b.forward).maxAbs, 0) << "forward image changed " << when;
+        EXPECT_EQ(compareImages(a.deferred, b.deferred).maxAbs, 0) << "deferred image changed " << when;
+    }
+    // Breaks `file` (relative to the shader dir), reloads, checks the failures and the images,
+    // restores it and reloads again. `programs` are the variants that include the file.
+    void breakAndRestore(const std::string& file, const std::vector<std::string>& programs) {
+        SCOPED_TRACE("broken " + file);
+        ShaderDirCopy copy(shaderDir_);
+        ShaderLibrary library(copy.root.string());
+        NamedPose pose = defaultPose();
+        Renderer renderer(library, pose.scene);
+        renderer.configure(160, 90, layoutNamed("standard"));
+        Frames before = render(renderer, pose.scene);
+        ASSERT_TRUE(hasContent(before.forward));
+        ASSERT_TRUE(hasContent(before.deferred));
+        ASSERT_TRUE(library.reloadAll().empty()) << "reloading the unmodified copy failed";
+        const int liveBefore = gl::liveObjectCount();
+
+        const fs::path path = copy.root / file;
+        const std::string original = readText(path);
+        ASSERT_FALSE(original.empty());
+        ASSERT_EQ(original.back(), '\n');
+        const int brokenLine = int(std::count(original.begin(), original.end(), '\n')) + 1;
+        writeText(path, original + "this is not GLSL;\n");
+
+        std::vector<std::string> failures = library.reloadAll();
+        ASSERT_FALSE(failures.empty()) << "a broken " << file << " reloaded without complaint";
+        EXPECT_EQ(failures.size(), programs.size()) << "one failure per program that includes " << file;
+        for (const std::string& program : programs) {
+            bool named = std::any_of(failures.begin(), failures.end(),
+                                     [&](const std::string& f) { return f.find(program) != std::string::npos; });
+            EXPECT_TRUE(named) << "no failure names program " << program;
+        }
+        for (const std::string& failure : failures) {
+            EXPECT_NE(failure.find(file + ":" + std::to_string(brokenLine)), std::string::npos)
+                << "failure does not name " << file << ":" << brokenLine << ":\n" << failure;
+        }
+        EXPECT_EQ(gl::liveObjectCount(), liveBefore) << "a failed reload leaked or dropped objects";
+        expectSame(before, render(renderer, pose.scene), "after a failed reload");
+
+        writeText(path, original);
+        std::vector<std::string> afterRestore = library.reloadAll();
+        EXPECT_TRUE(afterRestore.empty()) << "reload after restoring failed: " << (afterRestore.empty() ? "" : afterRestore[0]);
+        EXPECT_EQ(gl::liveObjectCount(), liveBefore);
+        expectSame(before, render(renderer, pose.scene), "after restoring");
+    }
+};
+
+TEST_F(ShaderReload, BrokenTerrainFragKeepsPreviousProgramsUntilRestored) {
+    breakAndRestore("terrain.frag", {"terrain.gbuffer", "terrain.forward"});
+}
+
+TEST_F(ShaderReload, BrokenIncludedFileIsNamedInEveryProgramThatIncludesIt) {
+    // common/output.glsl reaches both terrain and both sky variants (through emit_surface.glsl) and
+    // lighting; debug views do not include it. Only programs already built are reloaded.
+    breakAndRestore("common/output.glsl", {"terrain.gbuffer", "terrain.forward", "sky.gbuffer", "sky.forward", "lighting"});
+}
+
+}  // namespace
+}  // namespace oasis::gputest

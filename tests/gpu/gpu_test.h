@@ -1,0 +1,243 @@
+// Shared fixture of the GPU tests: the process-wide headless context (created by main.cpp), GL
+// error capture, the poses the suite renders, and image/buffer helpers (statistics, finiteness).
+#pragma once
+#include <gtest/gtest.h>
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "context/gl_context.h"
+#include "render/image.h"
+#include "render/renderer.h"
+#include "render/shader_library.h"
+#include "scene/terrain.h"
+
+namespace oasis::gputest {
+
+// The one context of the process and what went wrong making it (main.cpp owns both).
+struct GpuState {
+    std::unique_ptr<HeadlessContext> context;
+    std::string error;        // why there is no context
+    ContextInfo info;
+    std::vector<std::string> glErrors;  // GL_DEBUG_TYPE_ERROR messages (API source) since the last clear
+};
+GpuState& gpuState();
+
+// Every GPU test derives from this: it fails (never skips) without a context, gives each test a
+// shader library on the real shader directory, and fails a test that left a GL error behind.
+class GpuTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!gpuState().context) GTEST_FAIL() << "no headless OpenGL context: " << gpuState().error;
+        std::string searched;
+        shaderDir_ = findShaderDirectory(&searched);
+        ASSERT_FALSE(shaderDir_.empty()) << "shader directory not found (searched " << searched << ")";
+        shaders_ = std::make_unique<ShaderLibrary>(shaderDir_);
+        while (glGetError() != GL_NO_ERROR) {}
+        gpuState().glErrors.clear();
+    }
+    void TearDown() override {
+        if (!gpuState().context) return;
+        GLenum error = glGetError();
+        EXPECT_EQ(error, GLenum(GL_NO_ERROR)) << "GL error left behind: " << gl::errorString(error);
+        for (const std::string& message : gpuState().glErrors) ADD_FAILURE() << "GL debug error: " << message;
+        gpuState().glErrors.clear();
+    }
+
+    std::string shaderDir_;
+    std::unique_ptr<ShaderLibrary> shaders_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Poses. Ground heights come from the CPU terrain so cameras sit a known height above it.
+
+struct NamedPose {
+    std::string name;
+    SceneSettings scene;
+    bool expectSky = true;      // some sky pixels must be visible
+    bool expectTerrain = true;  // some terrain pixels must be visible
+    bool smoothSky = false;     // the whole frame is a smooth sky gradient (content check relaxed)
+};
+
+inline double groundAt(double x, double z) { return terrainHeight(TerrainShape{}, glm::vec2(float(x), float(z))).x; }
+
+inline SceneSettings sceneAt(double x, double z, double aboveGround, float yaw, float pitch) {
+    SceneSettings scene;
+    scene.camera = CameraPose{glm::dvec3(x, groundAt(x, z) + aboveGround, z), yaw, pitch};
+    return scene;
+}
+
+// The default frame: time 0, the default flight, 10:00.
+inline NamedPose defaultPose() { return {"default", SceneSettings{}, true, true, false}; }
+
+// The five hard poses of the agreement and buffer tests.
+inline std::vector<NamedPose> hardPoses() {
+    std::vector<NamedPose> poses;
+    // Grazing: 1.5 units above a flat valley floor, looking almost level (2 degrees down) along it.
+    poses.push_back({"grazing", sceneAt(-1150.0, 1250.0, 1.5, 30.0f, -2.0f), true, true, false});
+    // Straight down from 20 units: only terrain in view.
+    poses.push_back({"down", sceneAt(210.0, -120.0, 20.0, 90.0f, -89.9f), false, true, false});
+    // Straight up: only sky (the frustum spans 60 to 90 degrees of elevation).
+    poses.push_back({"up", sceneAt(210.0, -120.0, 20.0, 90.0f, 89.9f), true, false, true});
+    // Sun on the horizon at 18:00 in the west (-X): look west, slightly down.
+    {
+        SceneSettings scene = sceneAt(210.0, -120.0, 30.0, -90.0f, -3.0f);
+        scene.hour = 18.0;
+        poses.push_back({"sunset", scene, true, true, false});
+    }
+    // Sun below the horizon at 21:00 (night sky, stars): the default flight.
+    {
+        SceneSettings scene;
+        scene.hour = 21.0;
+        poses.push_back({"night", scene, true, true, false});
+    }
+    return poses;
+}
+
+inline std::vector<NamedPose> allPoses() {
+    std::vector<NamedPose> poses{defaultPose()};
+    for (NamedPose& pose : hardPoses()) poses.push_back(pose);
+    return poses;
+}
+
+inline NamedPose poseNamed(const std::string& name) {
+    for (const NamedPose& pose : allPoses())
+        if (pose.name == name) return pose;
+    throw std::invalid_argument("no pose " + name);
+}
+
+inline const GBufferLayout& layoutNamed(const std::string& name) {
+    const GBufferLayout* layout = findGBufferLayout(name);
+    if (!layout) throw std::invalid_argument("no G-buffer layout " + name);
+    return *layout;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Rendering shortcuts.
+
+inline Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
+    renderer.setPipeline(kind);
+    renderer.renderFrame(scene);
+    renderer.renderView("final");
+    return renderer.readDisplay();
+}
+
+inline Image renderView(Renderer& renderer, const SceneSettings& scene, PipelineKind kind, const std::string& view) {
+    renderer.setPipeline(kind);
+    renderer.renderFrame(scene);
+    renderer.renderView(view);
+    return renderer.readDisplay();
+}
+
+// Writes the image as a PNG under $OASIS_GPU_TEST_DUMP when set (for looking at failures).
+inline void dumpImage(const std::string& name, const Image& image) {
+    const char* dir = std::getenv("OASIS_GPU_TEST_DUMP");
+    if (!dir || !*dir) return;
+    std::string error;
+    writePng(std::string(dir) + "/" + name + ".png", image, error);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Image statistics (8-bit RGB; regions are top-down, half-open [x0, x1) x [y0, y1)).
+
+struct Region {
+    int x0, y0, x1, y1;
+};
+inline Region wholeImage(const Image& image) { return {0, 0, image.width, image.height}; }
+
+struct RgbStats {
+    std::array<double, 3> mean{}, stddev{};
+    size_t pixels = 0;
+    size_t distinctColours = 0;
+    double minStddev() const { return std::min({stddev[0], stddev[1], stddev[2]}); }
+    double maxStddev() const { return std::max({stddev[0], stddev[1], stddev[2]}); }
+    double maxMean() const { return std::max({mean[0], mean[1], mean[2]}); }
+};
+
+// Statistics over the region's pixels for which `keep(x, y)` holds (all when keep is empty).
+inline RgbStats rgbStats(const Image& image, Region region,
+                         const std::function<bool(int, int)>& keep = nullptr) {
+    RgbStats stats;
+    std::array<double, 3> sum{}, sumSquares{};
+    std::set<uint32_t> colours;
+    for (int y = region.y0; y < region.y1; ++y) {
+        for (int x = region.x0; x < region.x1; ++x) {
+            if (keep && !keep(x, y)) continue;
+            const uint8_t* p = image.pixel(x, y);
+            for (int c = 0; c < 3; ++c) {
+                sum[c] += p[c];
+                sumSquares[c] += double(p[c]) * p[c];
+            }
+            colours.insert(uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16);
+            ++stats.pixels;
+        }
+    }
+    for (int c = 0; c < 3 && stats.pixels; ++c) {
+        stats.mean[c] = sum[c] / double(stats.pixels);
+        stats.stddev[c] = std::sqrt(std::max(0.0, sumSquares[c] / double(stats.pixels) - stats.mean[c] * stats.mean[c]));
+    }
+    stats.distinctColours = colours.size();
+    return stats;
+}
+
+inline std::string describe(const RgbStats& s) {
+    char text[200];
+    std::snprintf(text, sizeof(text), "mean (%.2f, %.2f, %.2f) stddev (%.2f, %.2f, %.2f) over %zu px, %zu colours",
+                  s.mean[0], s.mean[1], s.mean[2], s.stddev[0], s.stddev[1], s.stddev[2], s.pixels,
+                  s.distinctColours);
+    return text;
+}
+
+// "Has content": more than one colour and every RGB channel varies (stddev in 8-bit units).
+constexpr double kMinChannelStddev = 1.0;
+inline ::testing::AssertionResult hasContent(const Image& image, double minStddev = kMinChannelStddev) {
+    RgbStats stats = rgbStats(image, wholeImage(image));
+    if (stats.distinctColours > 1 && stats.minStddev() > minStddev) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "image looks flat: " << describe(stats);
+}
+
+inline int countNonFinite(const std::vector<float>& values) {
+    return int(std::count_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); }));
+}
+
+// An RGBA float buffer pixel (bottom row first, as GL reads it).
+inline glm::vec4 texel(const std::vector<float>& rgba, int width, int x, int yFromBottom) {
+    size_t i = (size_t(yFromBottom) * size_t(width) + size_t(x)) * 4;
+    return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
+}
+
+// A display pixel at GL coordinates (bottom row first), from the top-down image.
+inline glm::ivec3 displayPixel(const Image& image, int x, int yFromBottom) {
+    const uint8_t* p = image.pixel(x, image.height - 1 - yFromBottom);
+    return {p[0], p[1], p[2]};
+}
+
+inline glm::ivec3 to8bit(glm::vec3 colour) {
+    glm::vec3 c = glm::clamp(colour, glm::vec3(0.0f), glm::vec3(1.0f)) * 255.0f;
+    return {int(std::lround(c.x)), int(std::lround(c.y)), int(std::lround(c.z))};
+}
+
+inline int maxChannelDifference(glm::ivec3 a, glm::ivec3 b) {
+    return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
+}
+
+inline std::string str(glm::ivec3 c) {
+    return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.z) + ")";
+}
+
+// Surface flags of an info texel (shaders/common/surface.glsl: infoFlags).
+constexpr unsigned kSurfaceSky = 1u, kSurfaceUnlit = 2u;
+inline unsigned infoFlags(glm::vec4 info) { return unsigned(std::lround(info.b * 255.0f)); }
+
+}  // namespace oasis::gputest

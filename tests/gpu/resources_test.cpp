@@ -1,0 +1,163 @@
+// GL resources: 100 pipeline switches and 20 size/layout round trips leave both the wrappers' live
+// object counts and an independent glIs* probe of names 1..4096 unchanged (no leaked GL objects).
+#include "gpu_test.h"
+
+#include <iostream>
+
+namespace oasis::gputest {
+namespace {
+
+// Names 1..4096 that the driver says are live objects of each kind; independent of the wrappers'
+// counters, so it also sees objects made outside them (ImGui's label renderer, raw glGen* calls).
+struct GlNameProbe {
+    int textures = 0, buffers = 0, framebuffers = 0, vertexArrays = 0, programs = 0, shaders = 0;
+    bool operator==(const GlNameProbe& o) const {
+        return textures == o.textures && buffers == o.buffers && framebuffers == o.framebuffers &&
+               vertexArrays == o.vertexArrays && programs == o.programs && shaders == o.shaders;
+    }
+    int total() const { return textures + buffers + framebuffers + vertexArrays + programs + shaders; }
+};
+
+GlNameProbe probeNames() {
+    GlNameProbe probe;
+    for (GLuint name = 1; name <= 4096; ++name) {
+        probe.textures += glIsTexture(name) ? 1 : 0;
+        probe.buffers += glIsBuffer(name) ? 1 : 0;
+        probe.framebuffers += glIsFramebuffer(name) ? 1 : 0;
+        probe.vertexArrays += glIsVertexArray(name) ? 1 : 0;
+        probe.programs += glIsProgram(name) ? 1 : 0;
+        probe.shaders += glIsShader(name) ? 1 : 0;
+    }
+    return probe;
+}
+
+std::ostream& operator<<(std::ostream& out, const GlNameProbe& p) {
+    return out << "{textures " << p.textures << ", buffers " << p.buffers << ", framebuffers " << p.framebuffers
+               << ", vertex arrays " << p.vertexArrays << ", programs " << p.programs << ", shaders " << p.shaders << "}";
+}
+
+struct LiveCounts {
+    std::array<int, size_t(gl::ObjectKind::Count)> byKind{};
+    int total = 0;
+    bool operator==(const LiveCounts& o) const { return byKind == o.byKind && total == o.total; }
+};
+LiveCounts liveCounts() {
+    LiveCounts counts;
+    for (int k = 0; k < int(gl::ObjectKind::Count); ++k) counts.byKind[k] = gl::liveObjectCount(gl::ObjectKind(k));
+    counts.total = gl::liveObjectCount();
+    return counts;
+}
+std::ostream& operator<<(std::ostream& out, const LiveCounts& c) {
+    out << "{total " << c.total << ":";
+    for (int n : c.byKind) out << " " << n;
+    return out << "}";
+}
+
+class Resources : public GpuTest {
+protected:
+    // Everything that creates objects lazily: both pipelines, every view, both stencil paths, overview.
+    void exerciseEverything(Renderer& renderer, const SceneSettings& scene) {
+        for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
+            renderer.setPipeline(kind);
+            renderer.renderFrame(scene);
+            for (const DebugView& view : debugViews()) renderer.renderView(view.name);
+            for (StencilViewPath path : {StencilViewPath::ReadBack, StencilViewPath::Texturing}) {
+                renderer.setStencilViewPath(path);
+                renderer.renderView("stencil");
+                renderer.renderView(kOverviewName);
+            }
+        }
+        glFinish();
+    }
+};
+
+TEST_F(Resources, HundredPipelineSwitchesLeakNothing) {
+    NamedPose pose = defaultPose();
+    Renderer renderer(*shaders_, pose.scene);
+    // 128x72: overview tiles are 24 px high, the smallest that gets labels (ImGui's objects).
+    renderer.configure(128, 72, layoutNamed("standard"));
+    exerciseEverything(renderer, pose.scene);  // warm-up: programs, label overlay, stencil copy exist
+    const LiveCounts countsBefore = liveCounts();
+    const GlNameProbe probeBefore = probeNames();
+    std::cout << "[resources] live " << countsBefore << ", probe " << probeBefore << "\n";
+    ASSERT_GT(countsBefore.total, 10);
+    ASSERT_GT(probeBefore.textures, 5) << probeBefore;
+    ASSERT_GT(probeBefore.programs, countsBefore.byKind[size_t(gl::ObjectKind::Program)])
+        << "the label overlay's own program should be live: " << probeBefore;
+
+    Image lastImage;
+    for (int i = 0; i < 100; ++i) {
+        PipelineKind kind = i % 2 ? PipelineKind::Forward : PipelineKind::Deferred;
+        renderer.setPipeline(kind);
+        ASSERT_EQ(renderer.pipeline(), kind);
+        renderer.renderFrame(pose.scene);
+        renderer.renderView(i % 4 < 2 ? "final" : (i % 4 == 2 ? "normal" : kOverviewName));
+        if (i == 99) lastImage = renderer.readDisplay();
+    }
+    glFinish();
+    EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over 100 pipeline switches";
+    EXPECT_EQ(probeNames(), probeBefore) << "glIs* probe changed over 100 pipeline switches";
+    EXPECT_TRUE(hasContent(lastImage)) << "the last frame rendered nothing";
+}
+
+TEST_F(Resources, TwentySizeAndLayoutRoundTripsLeakNothing) {
+    NamedPose pose = defaultPose();
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(128, 72, layoutNamed("full"));
+    exerciseEverything(renderer, pose.scene);
+    renderer.configure(64, 36, layoutNamed("standard"));
+    exerciseEverything(renderer, pose.scene);
+    const LiveCounts countsBefore = liveCounts();
+    const GlNameProbe probeBefore = probeNames();
+
+    for (int i = 0; i < 20; ++i) {
+        renderer.configure(128, 72, layoutNamed("full"));
+        ASSERT_EQ(renderer.targets().width(), 128);
+        ASSERT_EQ(&renderer.targets().layout(), &layoutNamed("full"));
+        renderer.setPipeline(i % 2 ? PipelineKind::Forward : PipelineKind::Deferred);
+        renderer.renderFrame(pose.scene);
+        renderer.setStencilViewPath(StencilViewPath::ReadBack);  // re-creates its copy at each size
+        renderer.renderView("stencil");
+        renderer.renderView("position");
+        renderer.configure(64, 36, layoutNamed("standard"));
+        ASSERT_EQ(renderer.targets().height(), 36);
+        renderer.renderFrame(pose.scene);
+        renderer.renderView(kOverviewName);
+        renderer.setStencilViewPath(StencilViewPath::Texturing);
+        renderer.renderView("stencil");
+    }
+    glFinish();
+    EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over 20 reconfigure round trips";
+    EXPECT_EQ(probeNames(), probeBefore) << "glIs* probe changed over 20 reconfigure round trips";
+
+    // The renderer still renders correctly at the size it ended on.
+    renderer.setPipeline(PipelineKind::Deferred);
+    Image image = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
+    EXPECT_EQ(image.width, 64);
+    EXPECT_TRUE(hasContent(image));
+}
+
+// A renderer that is destroyed gives back everything it made, its label overlay (ImGui) included;
+// the shader library keeps its programs.
+TEST_F(Resources, DestroyedRendererReleasesItsObjects) {
+    NamedPose pose = defaultPose();
+    {
+        Renderer warm(*shaders_, pose.scene);
+        warm.configure(128, 72, layoutNamed("standard"));
+        exerciseEverything(warm, pose.scene);  // compile every program the renderer uses
+    }
+    const LiveCounts countsBefore = liveCounts();
+    const GlNameProbe probeBefore = probeNames();
+    {
+        Renderer renderer(*shaders_, pose.scene);
+        renderer.configure(128, 72, layoutNamed("full"));
+        exerciseEverything(renderer, pose.scene);
+        EXPECT_GT(liveCounts().total, countsBefore.total);
+    }
+    glFinish();
+    EXPECT_EQ(liveCounts(), countsBefore);
+    EXPECT_EQ(probeNames(), probeBefore);
+}
+
+}  // namespace
+}  // namespace oasis::gputest
