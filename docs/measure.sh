@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Produces the README's timing tables: median ms per frame of each pipeline (wall time around
+# glFinish) beside the floor measured in the same run, for each size, layout and reflection setting.
+# usage: docs/measure.sh [path/to/oasis] [frames]   (run on an idle machine; prints markdown)
+set -euo pipefail
+oasis=${1:-build/oasis}
+frames=${2:-15}
+out=$(mktemp -d)
+field() { sed -E "s/.*\"$1\": \"?([^,\"}]*).*/\1/" <<<"$2"; }
+echo "| size | G-buffer | reflections | forward ms | deferred ms | floor ms | forward / floor | deferred / floor | PSNR fwd vs def |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+for size in 1280x720 640x360; do
+  for layout in standard full; do
+    for reflections in on off; do
+      json=$("$oasis" compare --size "$size" --gbuffer "$layout" --reflections "$reflections" \
+             --frames "$frames" --json --out-dir "$out")
+      awk -v size="$size" -v layout="$layout" -v bpp="$(field bytes_per_pixel "$json")" -v refl="$reflections" \
+          -v f="$(field forward_ms "$json")" -v d="$(field deferred_ms "$json")" \
+          -v floor="$(field floor_ms "$json")" -v psnr="$(field psnr_db "$json")" 'BEGIN {
+        printf "| %s | %s (%s B/px) | %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.1f dB |\n",
+               size, layout, bpp, refl, f, d, floor, f / floor, d / floor, psnr }'
+    done
+  done
+done
+echo
+echo "renderer: $(field renderer "$json"); medians of $frames frames; $(nproc) cores"
+rm -rf "$out"
