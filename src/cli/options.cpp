@@ -1,6 +1,7 @@
 // Command-line parsing and help text.
 #include "cli/options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -59,6 +60,7 @@ bool parseSize(const std::string& text, int& width, int& height) {
 }
 
 bool parseCameraPose(const std::string& text, CameraPose& pose) {
+    if (!text.empty() && text.back() == ',') return false;  // getline would drop the empty last field
     std::vector<double> values;
     std::stringstream stream(text);
     std::string item;
@@ -126,8 +128,17 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     }
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
+        static const std::vector<std::string> kValueOptions = {
+            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
+            "--absorption", "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames"};
+        bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
+        bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir";
+        if (compareOnly && (options.command == Command::Render || options.command == Command::Window))
+            return fail("option " + flag + " belongs to `oasis compare` and the main job");
         if (flag == "--json") { options.json = true; continue; }
+        if (!takesValue)
+            return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         if (i + 1 >= arguments.size()) return fail("option " + flag + " needs a value (see --help)");
         const std::string& value = arguments[++i];
         bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view" ||

@@ -52,6 +52,8 @@ ImageDifference compareImages(const Image& a, const Image& b) {
 }
 
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("images differ in size");
     Image heat(a.width, a.height);
     for (int y = 0; y < a.height; ++y) {
         for (int x = 0; x < a.width; ++x) {

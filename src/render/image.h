@@ -32,6 +32,7 @@ struct ImageDifference {
 ImageDifference compareImages(const Image& a, const Image& b);
 
 // Per pixel max channel difference on a black-red-yellow-white scale that saturates at `fullScale`.
+// Throws std::invalid_argument if sizes differ.
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale = 16);
 
 }  // namespace oasis

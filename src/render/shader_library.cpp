@@ -49,6 +49,7 @@ bool expandIncludes(const std::string& root, const std::string& file, Preprocess
     std::string line;
     int lineNumber = 0;
     static const std::regex includeLine(R"(^\s*#\s*include\s+\"([^\"]+)\"\s*$)");
+    static const std::regex conditionalLine(R"(^\s*#\s*(if|ifdef|ifndef|elif|else|endif)\b.*)");
     while (std::getline(lines, line)) {
         ++lineNumber;
         std::smatch match;
@@ -58,6 +59,10 @@ bool expandIncludes(const std::string& root, const std::string& file, Preprocess
                 return false;
             }
             out.text += "#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
+        } else if (std::regex_match(line, conditionalLine)) {
+            // A #line after an include in a branch that is switched off is skipped with the branch;
+            // restating the line after every conditional keeps the numbering right regardless.
+            out.text += line + "\n#line " + std::to_string(lineNumber + 1) + " " + std::to_string(index) + "\n";
         } else {
             out.text += line + "\n";
         }
@@ -68,8 +73,8 @@ bool expandIncludes(const std::string& root, const std::string& file, Preprocess
 }  // namespace
 
 std::string PreprocessedShader::annotateLog(const std::string& log) const {
-    // Mesa writes "0:12(5): error", glslang "ERROR: 0:12: ..."; both are "source:line".
-    static const std::regex location(R"((^|\s)(\d+):(\d+))");
+    // Mesa writes "0:12(5): error", glslang "ERROR: 0:12: ...", NVIDIA "0(12) : error".
+    static const std::regex location(R"((^|\s)(\d+)(?::(\d+)|\((\d+)\)))");
     std::string result;
     std::istringstream lines(log);
     std::string line;
@@ -77,8 +82,9 @@ std::string PreprocessedShader::annotateLog(const std::string& log) const {
         std::smatch match;
         if (std::regex_search(line, match, location)) {
             size_t index = std::stoul(match[2].str());
+            std::string lineNumber = match[3].matched ? match[3].str() : match[4].str();
             if (index < files.size())
-                line = match.prefix().str() + match[1].str() + files[index] + ":" + match[3].str() +
+                line = match.prefix().str() + match[1].str() + files[index] + ":" + lineNumber +
                        match.suffix().str();
         }
         result += line + "\n";

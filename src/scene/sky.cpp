@@ -8,7 +8,8 @@ namespace oasis {
 
 double hourAtTime(double timeSeconds) {
     double hour = std::fmod(kStartHour + 24.0 * timeSeconds / kDayLengthSeconds, 24.0);
-    return hour < 0.0 ? hour + 24.0 : hour;
+    if (hour < 0.0) hour += 24.0;  // a tiny negative remainder can round up to exactly 24
+    return hour >= 24.0 ? 0.0 : hour;
 }
 
 SkyState skyAtHour(double hour) {

@@ -29,7 +29,7 @@ TerrainWedge computeTerrainWedge(const CameraView& view, const TerrainGridDensit
                                  float viewDistance) {
     TerrainWedge wedge;
     // Ring 0 is the centre point; rings 1..rings go geometrically from firstRingRadius to viewDistance.
-    wedge.ringRatio = std::pow(viewDistance / density.firstRingRadius, 1.0f / float(density.rings - 1));
+    wedge.ringRatio = std::pow(viewDistance / density.firstRingRadius, 1.0f / float(std::max(1, density.rings - 1)));
     wedge.centralAzimuth = view.pose.yawRadians();
     // Azimuth of each frustum corner relative to the heading; the extremes are at the corners
     // as long as every corner ray points forward horizontally.
