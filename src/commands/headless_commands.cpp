@@ -80,11 +80,12 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     ContextInfo info = queryContextInfo();
     std::printf("{\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
-                "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\"}\n",
+                "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
+                "\"shader_dir\": \"%s\"}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
                 targets.width(), targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
                 options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
-                stencilViewPathName(session.renderer->stencilViewPath()));
+                stencilViewPathName(session.renderer->stencilViewPath()), session.shaders->directory().c_str());
 }
 
 // Runs `body` with a headless context and a session, turning failures into messages and exit 1.

@@ -96,7 +96,11 @@ std::string findShaderDirectory(std::string* searched) {
     std::vector<std::string> candidates;
     if (const char* env = std::getenv("OASIS_SHADER_DIR")) candidates.push_back(env);
     std::string exeDir = executableDirectory();
-    if (!exeDir.empty()) candidates.push_back(exeDir + "/../share/oasis/shaders");
+    if (!exeDir.empty()) {
+        std::string installed = exeDir + "/../share/oasis/shaders";
+        char resolved[4096];
+        candidates.push_back(realpath(installed.c_str(), resolved) ? std::string(resolved) : installed);
+    }
     candidates.push_back(OASIS_INSTALL_SHADER_DIR);
     candidates.push_back(OASIS_SOURCE_SHADER_DIR);
     std::string tried;
