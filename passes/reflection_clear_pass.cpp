@@ -10,6 +10,7 @@ void ReflectionClearPass::execute(PassContext& context) {
     glViewport(0, 0, targets.width(), targets.height());
     const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearBufferfv(GL_COLOR, 0, nothing);
+    if (!context.frame.reflectionsActive) return;
 
     bindSurfaceOutput(targets, output_, Mirroring::Mirrored);
     bool writeGBuffer = output_ == SurfaceOutput::GBuffer;

@@ -1,6 +1,6 @@
-// ReflectionClearPass: prepares the water pixels for the mirrored scene. Clears Reflection, and
-// inside the water resets depth to the far plane (and, for the G-buffer, the "nothing drawn"
-// values) so the mirrored scene is depth-tested against itself only.
+// ReflectionClearPass: clears Reflection every frame (so it never shows a stale mirror image) and,
+// with reflections active, resets depth inside the water to the far plane (and, for the G-buffer,
+// the "nothing drawn" values) so the mirrored scene is depth-tested against itself only.
 #pragma once
 #include "passes/pass.h"
 
@@ -16,8 +16,6 @@ public:
         return {Target::Reflection, Target::Albedo, Target::Normal, Target::Position, Target::Info,
                 Target::DepthStencil};
     }
-    bool active(const FrameSetup& frame) const override { return frame.reflectionsActive; }
-
 protected:
     void execute(PassContext& context) override;
 

@@ -16,6 +16,7 @@ void WaterCompositePass::execute(PassContext& context) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0x00);
     glEnable(GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
     glDepthFunc(GL_ALWAYS);  // the mirrored scene's depths are behind us now; the water's replace them
     glDepthMask(GL_TRUE);
     glEnable(GL_BLEND);
@@ -23,6 +24,7 @@ void WaterCompositePass::execute(PassContext& context) {
     glUseProgram(context.shaders.program("water.composite"));
     context.geometry.drawWaterQuad();
     glDisable(GL_BLEND);
+    glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);

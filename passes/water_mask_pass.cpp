@@ -9,6 +9,7 @@ void WaterMaskPass::execute(PassContext& context) {
     glViewport(0, 0, context.targets.width(), context.targets.height());
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glEnable(GL_STENCIL_TEST);
@@ -19,6 +20,7 @@ void WaterMaskPass::execute(PassContext& context) {
     context.geometry.drawWaterQuad();
     glDisable(GL_STENCIL_TEST);
     glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_DEPTH_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

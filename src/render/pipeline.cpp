@@ -45,12 +45,14 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
     add(std::make_unique<ToneMapPass>());
 }
 
-bool Pipeline::run(PassContext& context, const std::string& stopBefore) const {
+bool Pipeline::run(PassContext& context, const std::string& stopBefore, std::vector<std::string>* ran) const {
     if (!stopBefore.empty() && !hasPass(stopBefore)) return false;
     gl::DebugGroup group(pipelineName(kind_));
     for (const auto& pass : passes_) {
         if (pass->name() == stopBefore) break;
-        if (pass->active(context.frame)) pass->run(context);
+        if (!pass->active(context.frame)) continue;
+        pass->run(context);
+        if (ran) ran->push_back(pass->name());
     }
     return true;
 }

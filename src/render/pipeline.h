@@ -23,7 +23,8 @@ public:
     PipelineKind kind() const { return kind_; }
     // Runs the active passes in order; stops before the pass named `stopBefore` (empty: run all).
     // Returns false if `stopBefore` names no pass of this pipeline.
-    bool run(PassContext& context, const std::string& stopBefore = {}) const;
+    bool run(PassContext& context, const std::string& stopBefore = {},
+             std::vector<std::string>* ran = nullptr) const;
     bool hasPass(const std::string& name) const;
     std::string passNames() const;
     bool writes(Target target) const;

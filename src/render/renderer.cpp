@@ -50,7 +50,8 @@ void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBe
         glClearBufferfv(GL_COLOR, 0, black);
     }
     PassContext passContext = context();
-    pipeline.run(passContext, stopBefore);
+    passesRan_.clear();
+    pipeline.run(passContext, stopBefore, &passesRan_);
     gbufferCurrent_ = pipeline.writes(Target::Albedo);
 }
 
@@ -62,11 +63,17 @@ void Renderer::renderView(const std::string& viewName) {
     bool needsGBuffer = viewName == kOverviewName || (view && readsGBuffer(*view));
     if (needsGBuffer && !gbufferCurrent_) {
         // Forward draws no G-buffer: fill it for the view with the deferred passes that come before
-        // lighting (the direct scene). Radiance and Final stay the forward frame's.
+        // lighting (the direct scene), each only if its forward counterpart ran this frame, so a
+        // frame stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
+        auto ranInForward = [&](std::string name) {
+            size_t suffix = name.find(".gbuffer");
+            if (suffix != std::string::npos) name.replace(suffix, 8, ".forward");
+            return std::find(passesRan_.begin(), passesRan_.end(), name) != passesRan_.end();
+        };
         for (const auto& pass : deferred_.passes()) {
             std::vector<Target> written = pass->writes();
             if (std::find(written.begin(), written.end(), Target::Radiance) != written.end()) break;
-            pass->run(passContext);
+            if (ranInForward(pass->name())) pass->run(passContext);
         }
         gbufferCurrent_ = true;
     }

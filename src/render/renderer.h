@@ -69,6 +69,7 @@ private:
     gl::Buffer frameUniforms_;
     FrameSetup frame_;
     bool gbufferCurrent_ = false;  // whether the G-buffer holds the last frame
+    std::vector<std::string> passesRan_;  // names of the passes the last frame ran
 };
 
 }  // namespace oasis

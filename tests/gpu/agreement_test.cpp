@@ -1,5 +1,6 @@
 // Forward and deferred agree: PSNR of the final images (full layout >= 55 dB, standard >= 45 dB)
-// for the default frame at 1280x720 and five hard poses at 320x180, and every image has content.
+// for the default frame at 1280x720 (it shows the lake), five hard poses and three water poses at
+// 320x180, and every image has content.
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -22,6 +23,8 @@ protected:
             Image forward = renderFinal(renderer, pose.scene, PipelineKind::Forward);
             Image deferred = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
             std::vector<float> albedo = renderer.readTarget(Target::Albedo);  // the deferred frame's
+            std::vector<uint8_t> stencil = renderer.readStencil();
+            double waterShare = double(std::count(stencil.begin(), stencil.end(), uint8_t(2))) / double(stencil.size());
             dumpImage("agreement-" + pose.name + "-" + threshold.layout + "-forward", forward);
             dumpImage("agreement-" + pose.name + "-" + threshold.layout + "-deferred", deferred);
 
@@ -33,8 +36,12 @@ protected:
             }
 
             ImageDifference difference = compareImages(forward, deferred);
-            std::printf("[psnr] pose=%s layout=%s size=%dx%d psnr=%.2f dB rmse=%.4f maxAbs=%d\n", pose.name.c_str(),
-                        threshold.layout, width, height, difference.psnrDb, difference.rmse, difference.maxAbs);
+            std::printf("[psnr] pose=%s layout=%s size=%dx%d psnr=%.2f dB rmse=%.4f maxAbs=%d water=%.1f%%\n",
+                        pose.name.c_str(), threshold.layout, width, height, difference.psnrDb, difference.rmse,
+                        difference.maxAbs, 100.0 * waterShare);
+            if (pose.name == "default" || pose.name.rfind("lake", 0) == 0) {
+                EXPECT_GT(waterShare, 0.1) << "a water frame with little water in view";
+            }
             RecordProperty("psnr_" + pose.name + "_" + threshold.layout, std::to_string(difference.psnrDb));
             EXPECT_GE(difference.psnrDb, threshold.minPsnrDb)
                 << "forward and deferred disagree (rmse " << difference.rmse << ", max " << difference.maxAbs << ")";
@@ -64,6 +71,11 @@ TEST_P(AgreementPose, BothLayoutsAt320x180) { checkAgreement(poseNamed(GetParam(
 
 INSTANTIATE_TEST_SUITE_P(HardPoses, AgreementPose,
                          ::testing::Values("grazing", "down", "up", "sunset", "night"),
+                         [](const auto& info) { return info.param; });
+
+// Water frames over the lake: a still mirror, a grazing view 0.5 above rippled water, and the low
+// sun glinting on it (the default frame above shows the lake too).
+INSTANTIATE_TEST_SUITE_P(WaterPoses, AgreementPose, ::testing::Values("lakeMirror", "lakeGrazing", "lakeSunset"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

@@ -75,6 +75,39 @@ TEST_F(BadInput, OneByOneFrameRendersInBothPipelinesWithoutNaN) {
     }
 }
 
+// Unknown names are rejected with std::invalid_argument naming what exists: a debug view name in
+// renderView, a pass name in renderFrame's stopBefore (per pipeline: "SkyPass.forward" is a
+// forward pass only). The renderer keeps working afterwards.
+TEST_F(BadInput, UnknownViewAndPassNamesThrowInvalidArgument) {
+    NamedPose pose = defaultPose();
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(64, 36, layoutNamed("standard"));
+    renderer.setPipeline(PipelineKind::Deferred);
+    renderer.renderFrame(pose.scene);
+    auto expectInvalid = [](const std::function<void()>& call, const std::string& mustMention, const std::string& what) {
+        try {
+            call();
+            ADD_FAILURE() << what << " did not throw";
+        } catch (const std::invalid_argument& error) {
+            EXPECT_NE(std::string(error.what()).find(mustMention), std::string::npos)
+                << what << ": the message does not mention " << mustMention << ": " << error.what();
+        } catch (const std::exception& error) {
+            ADD_FAILURE() << what << " threw something other than std::invalid_argument: " << error.what();
+        }
+    };
+    expectInvalid([&] { renderer.renderView("no-such-view"); }, "reflection", "renderView(\"no-such-view\")");
+    expectInvalid([&] { renderer.renderView(""); }, "final", "renderView(\"\")");
+    expectInvalid([&] { renderer.renderFrame(pose.scene, "NoSuchPass"); }, "WaterCompositePass",
+                  "renderFrame(stopBefore \"NoSuchPass\")");
+    expectInvalid([&] { renderer.renderFrame(pose.scene, "SkyPass.forward"); }, "LightingPass",
+                  "deferred renderFrame(stopBefore \"SkyPass.forward\")");
+    renderer.setPipeline(PipelineKind::Forward);
+    expectInvalid([&] { renderer.renderFrame(pose.scene, "LightingPass"); }, "SkyPass.forward",
+                  "forward renderFrame(stopBefore \"LightingPass\")");
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    EXPECT_TRUE(hasContent(renderFinal(renderer, pose.scene, PipelineKind::Deferred)));
+}
+
 std::string readText(const fs::path& path) {
     std::ifstream in(path);
     std::stringstream text;
@@ -142,7 +175,7 @@ protected:
         EXPECT_EQ(failures.size(), programs.size()) << "one failure per program that includes " << file;
         for (const std::string& program : programs) {
             bool named = std::any_of(failures.begin(), failures.end(),
-                                     [&](const std::string& f) { return f.find(program) != std::string::npos; });
+                                     [&](const std::string& f) { return f.find("program " + program + ":") != std::string::npos; });
             EXPECT_TRUE(named) << "no failure names program " << program;
         }
         for (const std::string& failure : failures) {
@@ -161,13 +194,19 @@ protected:
 };
 
 TEST_F(ShaderReload, BrokenTerrainFragKeepsPreviousProgramsUntilRestored) {
-    breakAndRestore("terrain.frag", {"terrain.gbuffer", "terrain.forward"});
+    // The default frame (camera above the lake, reflections on) builds all four terrain variants.
+    breakAndRestore("terrain.frag",
+                    {"terrain.gbuffer", "terrain.forward", "terrain.gbuffer.mirrored", "terrain.forward.mirrored"});
 }
 
 TEST_F(ShaderReload, BrokenIncludedFileIsNamedInEveryProgramThatIncludesIt) {
-    // common/output.glsl reaches both terrain and both sky variants (through emit_surface.glsl) and
-    // lighting; debug views do not include it. Only programs already built are reloaded.
-    breakAndRestore("common/output.glsl", {"terrain.gbuffer", "terrain.forward", "sky.gbuffer", "sky.forward", "lighting"});
+    // common/sky.glsl reaches every program that includes common/lighting.glsl: the forward terrain
+    // variants (through emit_surface.glsl), both sky variants, both lighting variants and the water
+    // composite. The G-buffer terrain variants include lighting.glsl only inside emit_surface.glsl's
+    // inactive OUTPUT_FORWARD branch, so the broken line is not compiled there. Only programs already
+    // built are reloaded (the debug views built here, "final", do not include it).
+    breakAndRestore("common/sky.glsl", {"terrain.forward", "terrain.forward.mirrored", "sky.forward",
+                                        "sky.forward.mirrored", "lighting", "lighting.mirrored", "water.composite"});
 }
 
 }  // namespace

@@ -46,41 +46,109 @@ bool inside(const Region& r, int x, int y) { return x >= r.x0 && x < r.x1 && y >
 
 class DebugViews : public GpuTest {};
 
+// PSNR (8-bit RGB) of two images over a region, as compareImages computes it over a whole image.
+double regionPsnr(const Image& a, const Image& b, const Region& r) {
+    double sumSquares = 0.0;
+    size_t count = 0;
+    for (int y = r.y0; y < r.y1; ++y)
+        for (int x = r.x0; x < r.x1; ++x)
+            for (int c = 0; c < 3; ++c) {
+                double d = double(a.pixel(x, y)[c]) - double(b.pixel(x, y)[c]);
+                sumSquares += d * d;
+                ++count;
+            }
+    if (count == 0 || sumSquares == 0.0) return kPsnrIdentical;
+    return std::min(kPsnrIdentical, 10.0 * std::log10(255.0 * 255.0 / (sumSquares / double(count))));
+}
+
+// Pixels (top-down) where two images differ in any channel, split by a predicate on (x, y from bottom).
+struct DifferingPixels {
+    int where = 0, elsewhere = 0;
+};
+DifferingPixels differingPixels(const Image& a, const Image& b, const std::function<bool(int, int)>& split) {
+    DifferingPixels result;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            int yUp = a.height - 1 - y;
+            if (maxChannelDifference(displayPixel(a, x, yUp), displayPixel(b, x, yUp)) == 0) continue;
+            (split(x, yUp) ? result.where : result.elsewhere)++;
+        }
+    return result;
+}
+
 // Every view and the overview show content in both pipelines. Forward draws no G-buffer, so its
-// G-buffer views come from the geometry passes the renderer runs on demand: they must be exactly
-// the deferred frame's, even when the G-buffer still holds another (deferred) frame.
+// G-buffer views come from the deferred passes before the first that writes Radiance (the direct
+// scene), which the renderer runs on demand: they must equal the deferred frame's views outside the
+// water mask bit for bit, even when the G-buffer still holds another (deferred) frame. Inside the
+// mask the deferred G-buffer holds the mirrored scene, so there forward shows what deferred shows
+// with reflections off (the terrain under the water): equal to that frame's views everywhere.
+// Depth and stencil views are the same in both pipelines; the lit views (final, reflection) agree
+// by PSNR; the reflection view is black outside the water.
 TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
     NamedPose pose = defaultPose();
     NamedPose other = poseNamed("sunset");
+    SceneSettings noReflections = pose.scene;
+    noReflections.water.reflections = false;
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.setPipeline(PipelineKind::Deferred);
+    renderer.renderFrame(pose.scene);
+    const std::vector<uint8_t> stencil = renderer.readStencil();
+    auto inWater = [&](int x, int yUp) { return stencil[size_t(yUp) * kWidth + size_t(x)] == kStencilWater; };
+    const int waterPixels = int(std::count(stencil.begin(), stencil.end(), kStencilWater));
+    ASSERT_GT(waterPixels, kWidth * kHeight / 20) << "the default frame should show the lake";
+
     std::vector<OverviewTile> tiles = overviewTiles(kWidth, kHeight);
     for (const std::string& name : allViewNames()) {
         SCOPED_TRACE("view " + name);
+        Image deferredOff = renderView(renderer, noReflections, PipelineKind::Deferred, name);
         Image deferred = renderView(renderer, pose.scene, PipelineKind::Deferred, name);
         renderer.renderFrame(other.scene);  // leave a different deferred frame in the G-buffer
         Image forward = renderView(renderer, pose.scene, PipelineKind::Forward, name);
+        EXPECT_TRUE(renderer.readStencil() == stencil) << "forward stencil differs from deferred";
         dumpImage("view-" + name + "-deferred", deferred);
         dumpImage("view-" + name + "-forward", forward);
         EXPECT_TRUE(hasContent(deferred)) << "deferred";
         EXPECT_TRUE(hasContent(forward)) << "forward";
 
         ImageDifference difference = compareImages(deferred, forward);
-        if (name == "final") {
-            EXPECT_GE(difference.psnrDb, 45.0) << "final view: forward and deferred disagree";
+        const DebugView* view = findDebugView(name);
+        if (name == "final" || name == "reflection") {
+            std::printf("[views] %s: forward vs deferred PSNR %.2f dB, max %d\n", name.c_str(), difference.psnrDb,
+                        difference.maxAbs);
+            EXPECT_GE(difference.psnrDb, 45.0) << name << " view: forward and deferred disagree";
+            if (name == "reflection") {
+                DifferingPixels lit = differingPixels(deferred, Image(kWidth, kHeight), inWater);
+                EXPECT_EQ(differingPixels(forward, Image(kWidth, kHeight), inWater).elsewhere, 0)
+                    << "forward reflection view not black outside the water";
+                EXPECT_EQ(lit.elsewhere, 0) << "deferred reflection view not black outside the water";
+                EXPECT_GT(lit.where, waterPixels / 2) << "deferred reflection view mostly black in the water";
+            }
         } else if (name == kOverviewName) {
-            // Every tile but the lit frame's (tile 0) must be identical.
-            int differing = 0;
-            for (int y = 0; y < kHeight; ++y)
-                for (int x = 0; x < kWidth; ++x)
-                    if (!inside(tiles[0].area, x, y) &&
-                        maxChannelDifference(displayPixel(deferred, x, kHeight - 1 - y), displayPixel(forward, x, kHeight - 1 - y)) != 0)
-                        ++differing;
-            EXPECT_EQ(differing, 0) << "overview tiles other than 'final' differ between the pipelines";
-            EXPECT_GE(difference.psnrDb, 45.0);
+            // Tiles of G-buffer views, depth and stencil: forward equals deferred without reflections
+            // bit for bit; the lit tiles (final, reflection) agree with deferred by PSNR.
+            for (size_t t = 0; t < tiles.size(); ++t) {
+                const std::string& tileView = debugViews()[t].name;
+                SCOPED_TRACE("tile " + tileView);
+                if (tileView == "final" || tileView == "reflection") {
+                    EXPECT_GE(regionPsnr(deferred, forward, tiles[t].area), 45.0);
+                } else {
+                    EXPECT_EQ(regionPsnr(deferredOff, forward, tiles[t].area), kPsnrIdentical)
+                        << "forward tile differs from deferred without reflections";
+                }
+            }
+        } else if (view && readsGBuffer(*view)) {
+            // The direct scene: deferred's outside the water, deferred-without-reflections' everywhere.
+            DifferingPixels versusDeferred = differingPixels(deferred, forward, inWater);
+            EXPECT_EQ(versusDeferred.elsewhere, 0) << "forward and deferred show different " << name
+                                                   << " outside the water";
+            EXPECT_GT(versusDeferred.where, 0) << "deferred shows the direct scene in the water (no mirrored G-buffer?)";
+            EXPECT_EQ(compareImages(deferredOff, forward).maxAbs, 0)
+                << "forward " << name << " differs from deferred with reflections off";
         } else {
             EXPECT_EQ(difference.maxAbs, 0) << "forward and deferred show different " << name << " (PSNR "
                                             << difference.psnrDb << " dB)";
+            EXPECT_EQ(compareImages(deferredOff, forward).maxAbs, 0) << name << " changed with reflections off";
         }
     }
 }
@@ -103,8 +171,38 @@ TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
     EXPECT_TRUE(renderer.readStencil() == stencilBefore) << "the forward frame's stencil changed";
 }
 
+// The same for a forward frame stopped before a pass (renderFrame's stopBefore, the CLI's
+// --stop-before): the fill runs the deferred geometry passes up to the water mask whatever the
+// forward frame reached, so it must not leave their depth and stencil behind. Stopped before
+// WaterMaskPass the frame has no water in its stencil; stopped before its TerrainPass, no depth.
+TEST_F(DebugViews, GBufferViewOfStoppedForwardFrameKeepsDepthAndStencil) {
+    NamedPose pose = defaultPose();
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.setPipeline(PipelineKind::Forward);
+    for (const std::string& stop : {std::string("WaterMaskPass"), std::string("TerrainPass.forward")}) {
+        SCOPED_TRACE("forward frame stopped before " + stop);
+        renderer.renderFrame(pose.scene, stop);
+        std::vector<float> depthBefore = renderer.readDepth();
+        std::vector<uint8_t> stencilBefore = renderer.readStencil();
+        EXPECT_EQ(std::count(stencilBefore.begin(), stencilBefore.end(), kStencilWater), 0);
+        renderer.renderView("albedo");
+        std::vector<float> depthAfter = renderer.readDepth();
+        std::vector<uint8_t> stencilAfter = renderer.readStencil();
+        size_t depthChanged = 0, stencilChanged = 0;
+        for (size_t i = 0; i < depthBefore.size(); ++i) {
+            depthChanged += depthBefore[i] != depthAfter[i] ? 1 : 0;
+            stencilChanged += stencilBefore[i] != stencilAfter[i] ? 1 : 0;
+        }
+        EXPECT_EQ(depthChanged, 0u) << "a G-buffer view changed the stopped forward frame's depth";
+        EXPECT_EQ(stencilChanged, 0u) << "a G-buffer view changed the stopped forward frame's stencil (the stencil "
+                                         "view now shows passes the frame never ran)";
+    }
+}
+
 // Each view's colours follow its remapping in shaders/debug_view.frag, checked on every pixel
-// against the targets read back (8-bit rounding: +-1, the stencil colour +-2).
+// against the targets read back (8-bit rounding: +-1, the stencil colour +-2). The default frame
+// shows the lake, so reflected surfaces (info blue 0.5) and water stencil (2) are covered.
 class DebugViewSemantics : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
@@ -118,9 +216,11 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     const std::vector<float> position = renderer.readTarget(Target::Position);
     const std::vector<float> info = renderer.readTarget(Target::Info);
     const std::vector<float> final = renderer.readTarget(Target::Final);
+    const std::vector<float> reflection = renderer.readTarget(Target::Reflection);
     const std::vector<float> depth = renderer.readDepth();
     const std::vector<uint8_t> stencil = renderer.readStencil();
     const FrameData& frame = renderer.lastFrame().data;
+    const float exposure = frame.depthRange.w;
     const float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
     const float viewDistance = frame.terrainGridCounts.w;
 
@@ -141,8 +241,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     expected["final"] = [&](int x, int y) { return std::make_pair(to8bit(glm::vec3(texel(final, kWidth, x, y))), 0); };
     expected["albedo"] = [&](int x, int y) {
         glm::vec3 a(texel(albedo, kWidth, x, y));
-        bool unlit = (infoFlags(texel(info, kWidth, x, y)) & kSurfaceUnlit) != 0u;
-        return std::make_pair(to8bit(unlit ? a : glm::pow(glm::clamp(a, 0.0f, 1.0f), glm::vec3(1.0f / 2.2f))), 1);
+        return std::make_pair(to8bit(glm::pow(glm::clamp(a, 0.0f, 1.0f), glm::vec3(1.0f / 2.2f))), 1);
     };
     expected["normal"] = [&](int x, int y) {
         glm::vec3 n(texel(normal, kWidth, x, y));
@@ -158,7 +257,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     expected["info"] = [&](int x, int y) {
         glm::vec4 i = texel(info, kWidth, x, y);
         if (infoFlags(i) & kSurfaceSky) return std::make_pair(glm::ivec3(0, 0, 204), 0);
-        return std::make_pair(to8bit({std::round(i.r * 255.0f) / 64.0f, i.g / 0.25f, 0.0f}), 1);
+        float reflectedMark = (infoFlags(i) & kSurfaceReflected) ? 0.5f : 0.0f;
+        return std::make_pair(to8bit({std::round(i.r * 255.0f) / 64.0f, i.g / 0.25f, reflectedMark}), 1);
     };
     expected["depth"] = [&](int x, int y) {
         float d = depth[size_t(y) * kWidth + size_t(x)];
@@ -170,9 +270,26 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     expected["stencil"] = [&](int x, int y) {
         uint8_t s = stencil[size_t(y) * kWidth + size_t(x)];
         if (s == 0) return std::make_pair(glm::ivec3(0), 0);
-        EXPECT_EQ(s, 1) << "only terrain (1) writes stencil";
-        return std::make_pair(glm::ivec3(242, 158, 31), 2);  // (0.95, 0.62, 0.12)
+        if (s == 2) return std::make_pair(glm::ivec3(38, 115, 242), 2);  // water (0.15, 0.45, 0.95)
+        EXPECT_EQ(s, 1) << "only terrain (1) and water (2) write stencil";
+        return std::make_pair(glm::ivec3(242, 158, 31), 2);  // terrain (0.95, 0.62, 0.12)
     };
+    expected["reflection"] = [&](int x, int y) {
+        // Tone-mapped like Final (shaders/common/output.glsl); black outside the water.
+        glm::vec3 r(texel(reflection, kWidth, x, y));
+        glm::vec3 mapped = glm::vec3(1.0f) - glm::exp(-glm::max(r, glm::vec3(0.0f)) * exposure);
+        return std::make_pair(to8bit(glm::pow(mapped, glm::vec3(1.0f / 2.2f))), 1);
+    };
+
+    int reflectionOutsideWater = 0, stencilWater = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            bool water = stencil[size_t(y) * kWidth + size_t(x)] == kStencilWater;
+            stencilWater += water ? 1 : 0;
+            if (!water && glm::vec3(texel(reflection, kWidth, x, y)) != glm::vec3(0.0f)) ++reflectionOutsideWater;
+        }
+    EXPECT_EQ(reflectionOutsideWater, 0) << "Reflection non-zero outside the water (stencil != 2)";
+    EXPECT_GT(stencilWater, 0) << "the default frame should show the lake";
 
     for (const DebugView& view : debugViews()) {
         ASSERT_TRUE(expected.count(view.name)) << "no semantic check for view " << view.name;

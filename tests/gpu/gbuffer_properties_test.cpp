@@ -1,7 +1,10 @@
-// G-buffer properties per pose (deferred, layouts full and standard): unit normals, positions equal
-// to those reconstructed from D24 depth, sky <=> depth 1 <=> sky flag <=> w 0 <=> stencil 0, terrain
-// stencil 1, sky position = pixel ray at the far plane, and no NaN/Inf in any target; the forward
-// frame's depth and stencil agree on the sky.
+// G-buffer properties per pose (deferred, layouts full and standard, and standard with reflections
+// off): the clear is the sky (zero albedo, normal and position, SKY flag) and sky <=> depth 1 <=>
+// stencil 0; terrain (stencil 1) has unit normals facing up, flags 0 and positions equal to those
+// reconstructed from D24 depth; water (stencil 2) has the water plane's depth and holds the
+// mirrored scene (REFLECTED surfaces whose mirror image is above the water, or SKY) when
+// reflections are active, else the direct scene behind the surface; no NaN/Inf in any target. The
+// forward frame's depth and stencil are the deferred frame's, bit for bit.
 #include "gpu_test.h"
 
 #include <map>
@@ -18,13 +21,22 @@ constexpr int kWidth = 320, kHeight = 180;
 // D24 rounding (<= 1 step), z_ndc computed in float32 in the vertex shader, where z_ndc is close
 // to 1 and its ulp is half a step (clip z and w and their divide: ~2 steps), and the float32
 // entries of inverseViewProjection used for the reconstruction (~1 step). Allowed: 5 steps, plus
-// 1e-4 relative for the float32 position/interpolation and 1 mm. Measured worst: 3.1 steps (grazing). A
+// 1e-4 relative for the float32 position/interpolation and 1 mm. Measured worst: 3.3 steps (default). A
 // position off by one pixel sideways (3.2 units at d = 500) or by a wrong origin is far outside.
 double depthStep(double eyeDistance, double nearPlane, double farPlane) {
     return eyeDistance * eyeDistance * (farPlane - nearPlane) / (farPlane * nearPlane * 16777215.0);
 }
 double reconstructionTolerance(double eyeDistance, double nearPlane, double farPlane) {
     return 5.0 * depthStep(eyeDistance, nearPlane, farPlane) + 1e-4 * eyeDistance + 1e-3;
+}
+// The water's depth comes from one quad spanning +-viewDistance (4000 units) around the camera,
+// clipped by the near plane and interpolated in float32 from vertices thousands of units away:
+// its window depth is off by up to ~26 D24 steps near the camera (measured: 23 steps at 63 units
+// in the default frame, 26 at 13 units for lakeMirror; 189 steps at 1 unit is 4e-5 units). Allowed:
+// the reconstruction tolerance plus 30 steps. The expected depth is the pixel ray's exact hit on
+// the plane, so a depth taken from the terrain (off by metres) or a missing restore is far outside.
+double waterDepthTolerance(double eyeDistance, double nearPlane, double farPlane) {
+    return reconstructionTolerance(eyeDistance, nearPlane, farPlane) + 30.0 * depthStep(eyeDistance, nearPlane, farPlane);
 }
 
 struct FirstFailures {
@@ -39,101 +51,168 @@ std::string at(int x, int y) { return "pixel (" + std::to_string(x) + ", " + std
 
 class GBufferProperties : public GpuTest, public ::testing::WithParamInterface<std::string> {
 protected:
-    void checkLayout(Renderer& renderer, const NamedPose& pose, const std::string& layout) {
-        SCOPED_TRACE(pose.name + " " + layout);
+    void checkLayout(Renderer& renderer, const NamedPose& pose, const std::string& layout, bool reflections = true) {
+        SceneSettings scene = pose.scene;
+        scene.water.reflections = reflections;
+        const std::string label = pose.name + " " + layout + (reflections ? "" : " reflections-off");
+        SCOPED_TRACE(label);
         renderer.configure(kWidth, kHeight, layoutNamed(layout));
         renderer.setPipeline(PipelineKind::Deferred);
-        renderer.renderFrame(pose.scene);
+        renderer.renderFrame(scene);
         const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
         const std::vector<float> normal = renderer.readTarget(Target::Normal);
         const std::vector<float> position = renderer.readTarget(Target::Position);
         const std::vector<float> info = renderer.readTarget(Target::Info);
+        const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
+        const std::vector<float> reflection = renderer.readTarget(Target::Reflection);
         const std::vector<float> final = renderer.readTarget(Target::Final);
         const std::vector<float> depth = renderer.readDepth();
         const std::vector<uint8_t> stencil = renderer.readStencil();
+        deferredDepth_ = depth;
+        deferredStencil_ = stencil;
 
         EXPECT_EQ(countNonFinite(albedo), 0) << "albedo";
         EXPECT_EQ(countNonFinite(normal), 0) << "normal";
         EXPECT_EQ(countNonFinite(position), 0) << "position";
         EXPECT_EQ(countNonFinite(info), 0) << "info";
+        EXPECT_EQ(countNonFinite(radiance), 0) << "radiance";
+        EXPECT_EQ(countNonFinite(reflection), 0) << "reflection";
         EXPECT_EQ(countNonFinite(final), 0) << "final";
         EXPECT_EQ(countNonFinite(depth), 0) << "depth";
 
         const FrameSetup& frame = renderer.lastFrame();
-        const glm::dmat4 inverse(frame.data.inverseViewProjection);
-        const double nearPlane = frame.data.depthRange.x, farPlane = frame.data.depthRange.y;
+        const FrameData& data = frame.data;
+        const double nearPlane = data.depthRange.x, farPlane = data.depthRange.y;
+        const double level = data.water.x, eyeHeight = double(data.cameraPosition.y) - level;
+        const bool cameraAbove = frame.cameraAboveWater;
+        EXPECT_EQ(frame.reflectionsActive, reflections && cameraAbove);
 
         FirstFailures failures;
-        int skyPixels = 0, terrainPixels = 0;
-        double worstNormal = 0.0, worstRatio = 0.0, worstSteps = 0.0;
+        int skyPixels = 0, surfacePixels = 0, waterPixels = 0, reflectedPixels = 0, stencilSky = 0;
+        double worstNormal = 0.0, worstRatio = 0.0, worstSteps = 0.0, worstWaterRatio = 0.0;
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
                 size_t i = size_t(y) * kWidth + size_t(x);
+                glm::vec4 a = texel(albedo, kWidth, x, y);
                 glm::vec4 p = texel(position, kWidth, x, y);
                 glm::vec4 n = texel(normal, kWidth, x, y);
-                unsigned flags = infoFlags(texel(info, kWidth, x, y));
-                bool depthCleared = depth[i] == 1.0f;
-                bool skyFlag = (flags & kSurfaceSky) != 0u;
-                bool wZero = p.w == 0.0f;
-                bool stencilZero = stencil[i] == 0;
-                if (!(depthCleared == skyFlag && skyFlag == wZero && wZero == stencilZero))
-                    failures.note("sky markers disagree",
-                                  at(x, y) + ": depth " + std::to_string(depth[i]) + ", flags " + std::to_string(flags) +
-                                      ", position.w " + std::to_string(p.w) + ", stencil " + std::to_string(stencil[i]));
-                if (p.w != 0.0f && p.w != 1.0f) failures.note("position.w neither 0 nor 1", at(x, y) + ": " + std::to_string(p.w));
-                glm::dvec2 ndcXY((x + 0.5) / kWidth * 2.0 - 1.0, (y + 0.5) / kHeight * 2.0 - 1.0);
-                if (wZero) {
-                    ++skyPixels;
-                    if (flags != (kSurfaceSky | kSurfaceUnlit))
-                        failures.note("sky flags not SKY|UNLIT", at(x, y) + ": " + std::to_string(flags));
-                    // The sky stores its view direction scaled to the far plane.
-                    glm::dvec4 far = inverse * glm::dvec4(ndcXY, 1.0, 1.0);
-                    glm::dvec3 ray = glm::normalize(glm::dvec3(far) / far.w);
-                    glm::dvec3 stored(p);
-                    if (std::fabs(glm::length(stored) - farPlane) > 1e-3 * farPlane ||
-                        glm::length(glm::normalize(stored) - ray) > 1e-3)
-                        failures.note("sky position is not the pixel's ray at the far plane",
-                                      at(x, y) + ": |p| " + std::to_string(glm::length(stored)));
-                    continue;
+                glm::vec4 in = texel(info, kWidth, x, y);
+                unsigned flags = infoFlags(in);
+                const uint8_t s = stencil[i];
+                const glm::dvec3 ray = pixelRay(data, kWidth, kHeight, x, y);
+                if (s > kStencilWater) failures.note("stencil value other than 0, 1, 2", at(x, y) + ": " + std::to_string(s));
+                if ((depth[i] == 1.0f) != (s == kStencilSky))
+                    failures.note("depth 1 <=> stencil 0 fails",
+                                  at(x, y) + ": depth " + std::to_string(depth[i]) + ", stencil " + std::to_string(s));
+                if (s == kStencilSky) {
+                    ++stencilSky;
+                    if (flags != kSurfaceSky)
+                        failures.note("stencil-0 pixel without the SKY flag", at(x, y) + ": flags " + std::to_string(flags));
                 }
-                if (p.w != 1.0f) continue;
-                ++terrainPixels;
-                if (stencil[i] != 1) failures.note("terrain stencil != 1", at(x, y) + ": " + std::to_string(stencil[i]));
-                if (flags != 0u) failures.note("terrain flags != 0", at(x, y) + ": " + std::to_string(flags));
+                if (flags != kSurfaceSky && flags != 0u && flags != kSurfaceReflected)
+                    failures.note("flags neither SKY, 0 nor REFLECTED", at(x, y) + ": " + std::to_string(flags));
+                if (flags == kSurfaceSky) {
+                    ++skyPixels;
+                    // The clear values: nothing drawn (gbuffer_clear.frag, ClearPass).
+                    if (a != glm::vec4(0.0f) || n != glm::vec4(0.0f) || p != glm::vec4(0.0f) || in.r != 0.0f ||
+                        in.g != 0.0f || in.a != 0.0f)
+                        failures.note("sky texel is not the clear value",
+                                      at(x, y) + ": albedo.a " + std::to_string(a.a) + ", |p| " +
+                                          std::to_string(glm::length(glm::vec3(p))) + ", position.w " + std::to_string(p.w));
+                } else {
+                    ++surfacePixels;
+                    if (p.w != 1.0f) failures.note("surface position.w != 1", at(x, y) + ": " + std::to_string(p.w));
+                    double length = glm::length(glm::dvec3(n));
+                    worstNormal = std::max(worstNormal, std::fabs(length - 1.0));
+                    if (std::fabs(length - 1.0) > 1e-3) failures.note("normal not unit", at(x, y) + ": |n| = " + std::to_string(length));
+                    // Terrain normals face up, mirrored or not (the G-buffer holds the unmirrored normal).
+                    if (n.y <= 0.0f) failures.note("terrain normal faces down", at(x, y) + ": n.y = " + std::to_string(n.y));
+                }
 
-                double length = glm::length(glm::dvec3(n));
-                worstNormal = std::max(worstNormal, std::fabs(length - 1.0));
-                if (std::fabs(length - 1.0) > 1e-3) failures.note("normal not unit", at(x, y) + ": |n| = " + std::to_string(length));
-                if (n.y <= 0.0f) failures.note("terrain normal faces down", at(x, y) + ": n.y = " + std::to_string(n.y));
-
-                glm::dvec4 ndc(ndcXY, double(depth[i]) * 2.0 - 1.0, 1.0);
-                glm::dvec4 world = inverse * ndc;
-                glm::dvec3 reconstructed = glm::dvec3(world) / world.w;
-                glm::dvec3 stored(p);
-                double distance = glm::length(stored);
-                double error = glm::length(reconstructed - stored);
-                double tolerance = reconstructionTolerance(distance, nearPlane, farPlane);
-                worstRatio = std::max(worstRatio, error / tolerance);
-                if (distance > 50.0) worstSteps = std::max(worstSteps, error / depthStep(distance, nearPlane, farPlane));
-                if (error > tolerance)
-                    failures.note("position != depth reconstruction",
-                                  at(x, y) + ": stored distance " + std::to_string(distance) + ", error " +
-                                      std::to_string(error) + " > tolerance " + std::to_string(tolerance));
+                if (s == kStencilTerrain) {
+                    if (flags != 0u) failures.note("terrain (stencil 1) flags != 0", at(x, y) + ": " + std::to_string(flags));
+                    if (flags == kSurfaceSky) continue;
+                    glm::dvec3 reconstructed = unproject(data, kWidth, kHeight, x, y, depth[i]);
+                    glm::dvec3 stored(p);
+                    double distance = glm::length(stored);
+                    double error = glm::length(reconstructed - stored);
+                    double tolerance = reconstructionTolerance(distance, nearPlane, farPlane);
+                    worstRatio = std::max(worstRatio, error / tolerance);
+                    if (distance > 50.0) worstSteps = std::max(worstSteps, error / depthStep(distance, nearPlane, farPlane));
+                    if (error > tolerance)
+                        failures.note("position != depth reconstruction",
+                                      at(x, y) + ": stored distance " + std::to_string(distance) + ", error " +
+                                          std::to_string(error) + " > tolerance " + std::to_string(tolerance));
+                } else if (s == kStencilWater) {
+                    ++waterPixels;
+                    // Depth is the water surface's: the reconstruction is the ray's hit on the plane.
+                    glm::dvec3 hit;
+                    if (!rayMeetsWater(data, ray, hit)) {
+                        failures.note("stencil 2 where the ray misses the water plane", at(x, y));
+                        continue;
+                    }
+                    double hitDistance = glm::length(hit);
+                    glm::dvec3 reconstructed = unproject(data, kWidth, kHeight, x, y, depth[i]);
+                    double waterError = glm::length(reconstructed - hit);
+                    double waterTolerance = waterDepthTolerance(hitDistance, nearPlane, farPlane);
+                    worstWaterRatio = std::max(worstWaterRatio, waterError / waterTolerance);
+                    if (waterError > waterTolerance)
+                        failures.note("water depth != the water plane along the ray",
+                                      at(x, y) + ": hit at " + std::to_string(hitDistance) + ", error " +
+                                          std::to_string(waterError) + " > " + std::to_string(waterTolerance));
+                    if (flags == kSurfaceSky) continue;
+                    // A surface seen in or through the water lies on the pixel's ray beyond the surface.
+                    glm::dvec3 stored(p);
+                    double distance = glm::length(stored);
+                    if (glm::length(stored / distance - ray) > 1e-4)
+                        failures.note("water pixel's surface is off the pixel's ray",
+                                      at(x, y) + ": direction error " + std::to_string(glm::length(stored / distance - ray)));
+                    // (Within the water depth's tolerance: at the shore the two are within its error.)
+                    if (distance < hitDistance - waterTolerance)
+                        failures.note("water pixel's surface is nearer than the water",
+                                      at(x, y) + ": " + std::to_string(distance) + " < " + std::to_string(hitDistance));
+                    // Heights relative to the water: the mirrored surface's original point is above it;
+                    // a direct one seen through it lies on the far side from the camera.
+                    double heightTolerance = waterTolerance * std::fabs(ray.y) + 1e-5 * distance + 1e-3;
+                    if (frame.reflectionsActive) {
+                        if (flags != kSurfaceReflected) {
+                            failures.note("water pixel not REFLECTED with reflections active",
+                                          at(x, y) + ": " + std::to_string(flags));
+                            continue;
+                        }
+                        ++reflectedPixels;
+                        double originalHeight = -(eyeHeight + stored.y);  // mirrorY(p + camera).y - level
+                        if (originalHeight < -heightTolerance)
+                            failures.note("reflected surface's original is under the water",
+                                          at(x, y) + ": " + std::to_string(originalHeight) + " below the level");
+                    } else {
+                        if (flags != 0u) {
+                            failures.note("water pixel not a direct surface with reflections inactive",
+                                          at(x, y) + ": " + std::to_string(flags));
+                            continue;
+                        }
+                        double height = eyeHeight + stored.y;
+                        if (cameraAbove ? height > heightTolerance : height < -heightTolerance)
+                            failures.note("direct surface behind the water is on the camera's side",
+                                          at(x, y) + ": " + std::to_string(height) + " from the level");
+                    }
+                }
             }
         }
-        std::printf("[gbuffer] pose=%s layout=%s sky=%d terrain=%d worst |n|-1=%.2e worst position error "
-                    "%.2f D24 steps (beyond 50 units), %.3f of tolerance\n",
-                    pose.name.c_str(), layout.c_str(), skyPixels, terrainPixels, worstNormal, worstSteps, worstRatio);
+        std::printf("[gbuffer] pose=%s sky=%d (stencil 0: %d) surfaces=%d water=%d (reflected %d) worst |n|-1=%.2e "
+                    "worst position error %.2f D24 steps (beyond 50 units), %.3f of tolerance; water depth %.3f of tolerance\n",
+                    label.c_str(), skyPixels, stencilSky, surfacePixels, waterPixels, reflectedPixels, worstNormal,
+                    worstSteps, worstRatio, worstWaterRatio);
         for (const auto& [what, count] : failures.count)
             ADD_FAILURE() << what << " at " << count << " pixels; first " << failures.first[what];
-        EXPECT_EQ(skyPixels + terrainPixels, kWidth * kHeight) << "pixels that are neither sky nor terrain";
+        EXPECT_EQ(skyPixels + surfacePixels, kWidth * kHeight) << "pixels that are neither sky nor a surface";
         if (pose.expectSky) EXPECT_GT(skyPixels, 0) << "no sky in view";
         else EXPECT_EQ(skyPixels, 0) << "sky visible where only terrain should be (a hole in the terrain?)";
-        if (pose.expectTerrain) EXPECT_GT(terrainPixels, 0) << "no terrain in view";
-        else EXPECT_EQ(terrainPixels, 0) << "terrain visible where only sky should be";
+        if (pose.expectTerrain) EXPECT_GT(surfacePixels, 0) << "no terrain in view";
+        else EXPECT_EQ(surfacePixels, 0) << "terrain visible where only sky should be";
     }
 
-    // The forward frame writes the same depth and stencil: sky (depth 1) exactly where stencil is 0.
+    // The forward frame writes the same depth and stencil as the deferred frame rendered before it.
     void checkForward(Renderer& renderer, const NamedPose& pose) {
         SCOPED_TRACE(pose.name + " forward");
         renderer.setPipeline(PipelineKind::Forward);
@@ -141,27 +220,41 @@ protected:
         const std::vector<float> depth = renderer.readDepth();
         const std::vector<uint8_t> stencil = renderer.readStencil();
         EXPECT_EQ(countNonFinite(depth), 0);
+        EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Radiance)), 0);
+        EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Reflection)), 0);
         EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Final)), 0);
         int mismatches = 0, firstMismatch = -1;
         for (size_t i = 0; i < depth.size(); ++i) {
-            bool sky = depth[i] == 1.0f;
-            bool ok = sky ? stencil[i] == 0 : stencil[i] == 1;
+            bool ok = (depth[i] == 1.0f) == (stencil[i] == kStencilSky) && stencil[i] <= kStencilWater;
             if (!ok && mismatches++ == 0) firstMismatch = int(i);
         }
-        EXPECT_EQ(mismatches, 0) << "depth 1 <=> stencil 0 (else stencil 1) fails; first at index " << firstMismatch;
+        EXPECT_EQ(mismatches, 0) << "depth 1 <=> stencil 0 fails; first at index " << firstMismatch;
+        ASSERT_EQ(deferredDepth_.size(), depth.size());
+        size_t depthDiffers = 0, stencilDiffers = 0;
+        for (size_t i = 0; i < depth.size(); ++i) {
+            depthDiffers += depth[i] != deferredDepth_[i] ? 1 : 0;
+            stencilDiffers += stencil[i] != deferredStencil_[i] ? 1 : 0;
+        }
+        EXPECT_EQ(depthDiffers, 0u) << "forward depth differs from deferred";
+        EXPECT_EQ(stencilDiffers, 0u) << "forward stencil differs from deferred";
     }
+
+    std::vector<float> deferredDepth_;
+    std::vector<uint8_t> deferredStencil_;
 };
 
 TEST_P(GBufferProperties, DeferredFullAndStandard) {
     NamedPose pose = poseNamed(GetParam());
     Renderer renderer(*shaders_, pose.scene);
     checkLayout(renderer, pose, "full");
+    checkLayout(renderer, pose, "standard", false);
     checkLayout(renderer, pose, "standard");
     checkForward(renderer, pose);
 }
 
 INSTANTIATE_TEST_SUITE_P(Poses, GBufferProperties,
-                         ::testing::Values("default", "grazing", "down", "up", "sunset", "night"),
+                         ::testing::Values("default", "grazing", "down", "up", "sunset", "night", "lakeMirror",
+                                           "lakeGrazing", "lakeSunset"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

@@ -85,6 +85,8 @@ inline NamedPose defaultPose() { return {"default", SceneSettings{}, true, true,
 inline std::vector<NamedPose> hardPoses() {
     std::vector<NamedPose> poses;
     // Grazing: 1.5 units above a flat valley floor, looking almost level (2 degrees down) along it.
+    // Since the water came the valley is a lake (floor -9.2, level 0): the camera is 7.7 units under
+    // water and sees the sky only through the surface (no stencil-0 pixels, SKY flags in the water).
     poses.push_back({"grazing", sceneAt(-1150.0, 1250.0, 1.5, 30.0f, -2.0f), true, true, false});
     // Straight down from 20 units: only terrain in view.
     poses.push_back({"down", sceneAt(210.0, -120.0, 20.0, 90.0f, -89.9f), false, true, false});
@@ -105,9 +107,36 @@ inline std::vector<NamedPose> hardPoses() {
     return poses;
 }
 
+// Water poses over the lake east of the default flight's start (bed about -10 at (490, 100), level 0).
+inline SceneSettings sceneAtHeight(double x, double y, double z, float yaw, float pitch) {
+    SceneSettings scene;
+    scene.camera = CameraPose{glm::dvec3(x, y, z), yaw, pitch};
+    return scene;
+}
+inline std::vector<NamedPose> waterPoses() {
+    std::vector<NamedPose> poses;
+    // A still, clear mirror: from the western shore (5 units up) across the lake to the hills.
+    {
+        SceneSettings scene = sceneAtHeight(435.0, 5.0, 140.0, 30.0f, -3.0f);
+        scene.water.rippleStrength = 0.0f;
+        scene.water.absorption = 0.0f;
+        poses.push_back({"lakeMirror", scene, true, true, false});
+    }
+    // Grazing: 0.5 units above the (rippled, default) water, 1 degree down, across the lake.
+    poses.push_back({"lakeGrazing", sceneAtHeight(470.0, 0.5, 150.0, 30.0f, -1.0f), true, true, false});
+    // Late afternoon from the eastern shore, looking west into the low sun: its glint on the water.
+    {
+        SceneSettings scene = sceneAtHeight(580.0, 12.0, 120.0, -80.0f, -4.0f);
+        scene.hour = 17.5;
+        poses.push_back({"lakeSunset", scene, true, true, false});
+    }
+    return poses;
+}
+
 inline std::vector<NamedPose> allPoses() {
     std::vector<NamedPose> poses{defaultPose()};
     for (NamedPose& pose : hardPoses()) poses.push_back(pose);
+    for (NamedPose& pose : waterPoses()) poses.push_back(pose);
     return poses;
 }
 
@@ -237,7 +266,53 @@ inline std::string str(glm::ivec3 c) {
 }
 
 // Surface flags of an info texel (shaders/common/surface.glsl: infoFlags).
-constexpr unsigned kSurfaceSky = 1u, kSurfaceUnlit = 2u;
+constexpr unsigned kSurfaceSky = 1u, kSurfaceReflected = 2u;
 inline unsigned infoFlags(glm::vec4 info) { return unsigned(std::lround(info.b * 255.0f)); }
+
+// Stencil marks (passes/pass.h: StencilMark).
+constexpr uint8_t kStencilSky = 0, kStencilTerrain = 1, kStencilWater = 2;
+
+// ---------------------------------------------------------------------------------------------
+// Frame geometry on the CPU, in double, from the frame's own matrices.
+
+// One D24 step of window depth.
+constexpr double kDepthStep = 1.0 / 16777215.0;
+
+// The camera-relative world direction of the ray through a pixel centre (x, y from bottom).
+inline glm::dvec3 pixelRay(const FrameData& frame, int width, int height, double x, double yFromBottom) {
+    glm::dmat4 inverse(frame.inverseViewProjection);
+    glm::dvec4 far = inverse * glm::dvec4(x / width * 2.0 - 1.0, yFromBottom / height * 2.0 - 1.0, 1.0, 1.0);
+    return glm::normalize(glm::dvec3(far) / far.w);
+}
+inline glm::dvec3 pixelRay(const FrameData& frame, int width, int height, int x, int yFromBottom) {
+    return pixelRay(frame, width, height, x + 0.5, yFromBottom + 0.5);
+}
+
+// A camera-relative point projected with the frame's viewProjection: window x, y (pixels) and z.
+inline glm::dvec3 project(const FrameData& frame, int width, int height, glm::dvec3 relative) {
+    glm::dvec4 clip = glm::dmat4(frame.viewProjection) * glm::dvec4(relative, 1.0);
+    glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+    return {(ndc.x * 0.5 + 0.5) * width, (ndc.y * 0.5 + 0.5) * height, ndc.z * 0.5 + 0.5};
+}
+
+// The camera-relative point a window depth reconstructs at a pixel centre.
+inline glm::dvec3 unproject(const FrameData& frame, int width, int height, int x, int yFromBottom, double depth) {
+    glm::dvec4 ndc((x + 0.5) / width * 2.0 - 1.0, (yFromBottom + 0.5) / height * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+    glm::dvec4 world = glm::dmat4(frame.inverseViewProjection) * ndc;
+    return glm::dvec3(world) / world.w;
+}
+
+// Where a camera-relative ray meets the water plane (false if it does not, ahead of the camera).
+inline bool rayMeetsWater(const FrameData& frame, glm::dvec3 ray, glm::dvec3& hit) {
+    double height = double(frame.water.x) - double(frame.cameraPosition.y);  // plane relative to the eye
+    if (ray.y == 0.0 || height / ray.y <= 0.0) return false;
+    hit = ray * (height / ray.y);
+    return true;
+}
+
+// Linear RGB of a float target at a pixel.
+inline glm::vec3 rgbAt(const std::vector<float>& rgba, int width, int x, int yFromBottom) {
+    return glm::vec3(texel(rgba, width, x, yFromBottom));
+}
 
 }  // namespace oasis::gputest
