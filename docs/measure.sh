@@ -6,7 +6,8 @@ set -euo pipefail
 oasis=${1:-build/oasis}
 frames=${2:-15}
 out=$(mktemp -d)
-field() { sed -E "s/.*\"$1\": \"?([^,\"}]*).*/\1/" <<<"$2"; }
+# One value from the JSON line: a quoted string whole, or a number.
+field() { sed -E "s/.*\"$1\": (\"([^\"]*)\"|([^,}]*)).*/\2\3/" <<<"$2"; }
 echo "| size | G-buffer | reflections | forward ms | deferred ms | floor ms | forward / floor | deferred / floor | PSNR fwd vs def |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for size in 1280x720 640x360; do
