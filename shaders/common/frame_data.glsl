@@ -10,7 +10,7 @@ struct FrameData {
     vec4 cameraPosition;         // xyz world position; w unused
     vec4 sunDirection;           // xyz towards the sun (unit); w = sun elevation (sin)
     vec4 sunRadiance;            // rgb sun colour times intensity; w unused
-    vec4 skyZenith;              // rgb zenith colour; w = sky brightness
+    vec4 skyZenith;              // rgb zenith colour; w unused
     vec4 skyHorizon;             // rgb horizon colour; w unused
     vec4 groundAmbient;          // rgb light bounced from the ground; w unused
     vec4 terrainShape;           // x frequency, y amplitude, z base height, w octaves

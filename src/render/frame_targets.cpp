@@ -14,6 +14,12 @@ void checkComplete(const char* what) {
                                  std::to_string(status) + ")");
 }
 
+int bytesPerPixelOfAllTargets(const GBufferLayout& layout) {
+    int total = 4;  // Display
+    for (int t = 0; t < int(Target::Count); ++t) total += layout.format(Target(t)).bytesPerPixel;
+    return total;
+}
+
 }  // namespace
 
 FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
@@ -24,6 +30,14 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
         throw std::runtime_error("frame size " + std::to_string(width) + "x" + std::to_string(height) +
                                  " is outside 1.." + std::to_string(maxSize) +
                                  " (GL_MAX_TEXTURE_SIZE of this driver)");
+    // Software drivers allocate targets in system memory and may abort rather than report
+    // GL_OUT_OF_MEMORY: refuse sizes whose targets could not reasonably fit.
+    double bytes = double(width) * double(height) * double(bytesPerPixelOfAllTargets(layout));
+    if (bytes > kMaxTargetBytes)
+        throw std::runtime_error("frame size " + std::to_string(width) + "x" + std::to_string(height) + " needs " +
+                                 std::to_string(int(bytes / double(1u << 30))) + " GiB of render targets (" +
+                                 layout.name + " layout); the limit is " +
+                                 std::to_string(int(kMaxTargetBytes / double(1u << 30))) + " GiB");
     while (glGetError() != GL_NO_ERROR) {}
     for (int t = 0; t < int(Target::Count); ++t)
         textures_[t] = gl::createTargetTexture(layout.format(Target(t)).internalFormat, width, height);

@@ -10,6 +10,9 @@
 
 namespace oasis {
 
+// Larger frames are refused with a message instead of risking the process on allocation.
+constexpr double kMaxTargetBytes = 4.0 * 1024 * 1024 * 1024;
+
 class FrameTargets {
 public:
     // Throws std::runtime_error when the size is impossible or the framebuffer is incomplete.
