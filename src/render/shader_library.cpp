@@ -146,15 +146,21 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
 }
 
 bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::string& error) const {
-    gl::Shader vertex, fragment;
-    if (!compileStage(GL_VERTEX_SHADER, variant.vertexFile, variant.defines, vertex, error) ||
-        !compileStage(GL_FRAGMENT_SHADER, variant.fragmentFile, variant.defines, fragment, error)) {
-        error = "program " + variant.name + ": " + error;
-        return false;
+    struct Stage { GLenum type; const std::string* file; };
+    std::vector<Stage> stages;
+    if (variant.isCompute())
+        stages = {{GL_COMPUTE_SHADER, &variant.computeFile}};
+    else
+        stages = {{GL_VERTEX_SHADER, &variant.vertexFile}, {GL_FRAGMENT_SHADER, &variant.fragmentFile}};
+    std::vector<gl::Shader> shaders(stages.size());
+    for (size_t i = 0; i < stages.size(); ++i) {
+        if (!compileStage(stages[i].type, *stages[i].file, variant.defines, shaders[i], error)) {
+            error = "program " + variant.name + ": " + error;
+            return false;
+        }
     }
     gl::Program program(glCreateProgram());
-    glAttachShader(program.name(), vertex.name());
-    glAttachShader(program.name(), fragment.name());
+    for (const gl::Shader& shader : shaders) glAttachShader(program.name(), shader.name());
     glLinkProgram(program.name());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.name(), GL_LINK_STATUS, &ok);
@@ -164,8 +170,7 @@ bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::
         error = "linking program " + variant.name + ":\n" + log;
         return false;
     }
-    glDetachShader(program.name(), vertex.name());
-    glDetachShader(program.name(), fragment.name());
+    for (const gl::Shader& shader : shaders) glDetachShader(program.name(), shader.name());
     // Bindings come from texture_units.h rather than layout(binding) so GLSL 3.30 works too.
     GLuint block = glGetUniformBlockIndex(program.name(), kFrameBlockName);
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program.name(), block, kFrameBlockBinding);
