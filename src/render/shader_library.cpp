@@ -112,6 +112,13 @@ std::string findShaderDirectory(std::string* searched) {
     return {};
 }
 
+GlslDialect glslDialectForCurrentContext() {
+    GlslDialect dialect;
+    int version = epoxy_gl_version();  // 42 for GL 4.2; GLSL matches GL from 3.3 on
+    if (version >= 33 && version < 45) dialect.versionLine = "#version " + std::to_string(version * 10) + " core";
+    return dialect;
+}
+
 ShaderLibrary::ShaderLibrary(std::string directory, GlslDialect dialect)
     : directory_(std::move(directory)), dialect_(std::move(dialect)) {}
 

@@ -24,6 +24,7 @@ std::vector<ProgramVariant> buildVariants() {
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
         {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
         {"floor.read", "fullscreen.vert", "floor.frag", {"FLOOR_READ"}},
+        {"plant.atlas", "plant_atlas.vert", "plant_atlas.frag", {}},
         // The three passes of the parallel turtle interpretation (src/render/plant_interpreter.h).
         {"lsystem.local", "", "", {"PASS_LOCAL_TRANSFORMS"}, "lsystem_interpret.comp"},
         {"lsystem.compose", "", "", {"PASS_COMPOSE_ROUND"}, "lsystem_interpret.comp"},
