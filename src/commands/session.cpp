@@ -43,7 +43,16 @@ RenderSession::RenderSession(const Options& options) : scene(sceneSettingsFrom(o
     renderer = std::make_unique<Renderer>(*shaders, scene);
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
     renderer->setStencilViewPath(chooseStencilViewPath(options.stencilView, stencilPathReason));
-    plantAtlas = std::make_unique<PlantAtlas>(*shaders, choosePlantInterpretation(options.scene.noCompute, plantPathReason));
+    PlantInterpretation plantPath = choosePlantInterpretation(options.scene.noCompute, plantPathReason);
+    try {
+        plantAtlas = std::make_unique<PlantAtlas>(*shaders, plantPath);
+    } catch (const std::runtime_error& error) {
+        // A driver that offers compute but cannot build this shader (e.g. GL 3.3 with only the ARB
+        // extensions) still gets its plants: from the CPU, saying why.
+        if (plantPath != PlantInterpretation::Gpu) throw;
+        plantPathReason = std::string("cpu (the compute path failed: ") + error.what() + ")";
+        plantAtlas = std::make_unique<PlantAtlas>(*shaders, PlantInterpretation::Cpu);
+    }
     renderer->setPlantAtlas(plantAtlas.get());
 }
 

@@ -153,15 +153,12 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
 }
 
 bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::string& error) const {
-    struct Stage { GLenum type; const std::string* file; };
-    std::vector<Stage> stages;
-    if (variant.isCompute())
-        stages = {{GL_COMPUTE_SHADER, &variant.computeFile}};
-    else
-        stages = {{GL_VERTEX_SHADER, &variant.vertexFile}, {GL_FRAGMENT_SHADER, &variant.fragmentFile}};
-    std::vector<gl::Shader> shaders(stages.size());
-    for (size_t i = 0; i < stages.size(); ++i) {
-        if (!compileStage(stages[i].type, *stages[i].file, variant.defines, shaders[i], error)) {
+    const std::vector<std::string> files = variant.stageFiles();
+    const GLenum graphicsStages[] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    std::vector<gl::Shader> shaders(files.size());
+    for (size_t i = 0; i < files.size(); ++i) {
+        GLenum stage = variant.isCompute() ? GLenum(GL_COMPUTE_SHADER) : graphicsStages[i];
+        if (!compileStage(stage, files[i], variant.defines, shaders[i], error)) {
             error = "program " + variant.name + ": " + error;
             return false;
         }
