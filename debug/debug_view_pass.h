@@ -20,6 +20,8 @@ public:
 
     void drawView(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
     void drawOverview(PassContext& context, StencilViewPath stencilPath);
+    // The texture the atlas view shows (0: none, the view is black).
+    void setPlantAtlasTexture(GLuint texture) { plantAtlasTexture_ = texture; }
 
 private:
     void drawTile(PassContext& context, const DebugView& view, StencilViewPath stencilPath,
@@ -27,6 +29,7 @@ private:
     void bindSource(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
     void uploadStencilCopy(const FrameTargets& targets);
 
+    GLuint plantAtlasTexture_ = 0;
     gl::Texture stencilCopy_;
     int stencilCopyWidth_ = 0, stencilCopyHeight_ = 0;
     std::vector<uint8_t> stencilBytes_;

@@ -17,6 +17,8 @@ const std::vector<DebugView> kViews = {
      "one colour per stencil value: black 0 nothing, amber 1 terrain, blue 2 water"},
     {"reflection", ViewSource::Reflection, "VIEW_RADIANCE",
      "the mirrored scene alone, tone-mapped; black outside the water or with reflections off"},
+    {"atlas", ViewSource::PlantAtlas, "VIEW_COLOUR",
+     "the plant atlas, stretched to the view: a cell per L-system variant, brown base to green tips, on black"},
 };
 
 }  // namespace

@@ -9,7 +9,7 @@
 
 namespace oasis {
 
-enum class ViewSource { Final, Albedo, Normal, Position, Info, Depth, Stencil, Reflection };
+enum class ViewSource { Final, Albedo, Normal, Position, Info, Depth, Stencil, Reflection, PlantAtlas };
 
 struct DebugView {
     std::string name;

@@ -38,6 +38,7 @@ const char* kSceneOptionsHelp =
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
     "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
+    "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -137,6 +138,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (compareOnly && (options.command == Command::Render || options.command == Command::Window))
             return fail("option " + flag + " belongs to `oasis compare` and the main job");
         if (flag == "--json") { options.json = true; continue; }
+        if (flag == "--no-compute") { options.scene.noCompute = true; continue; }
         if (!takesValue)
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         if (i + 1 >= arguments.size()) return fail("option " + flag + " needs a value (see --help)");

@@ -73,6 +73,7 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, same run)\n", c.floorMs);
     std::printf("  medians of %d frames, wall time around glFinish; terrain %d triangles\n", options.timingFrames,
                 session.renderer->geometry().terrainTriangles());
+    std::printf("  %s\n", describePlantAtlas(session).c_str());
 }
 
 void printJson(const Options& options, const RenderSession& session, const Comparison& c) {
@@ -81,11 +82,12 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     std::printf("{\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
-                "\"shader_dir\": \"%s\"}\n",
+                "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
                 targets.width(), targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
                 options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
-                stencilViewPathName(session.renderer->stencilViewPath()), session.shaders->directory().c_str());
+                stencilViewPathName(session.renderer->stencilViewPath()), session.shaders->directory().c_str(),
+                plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs());
 }
 
 // Runs `body` with a headless context and a session, turning failures into messages and exit 1.
@@ -117,6 +119,7 @@ int runRenderCommand(const Options& options) {
         std::printf("oasis: wrote %s (%s pipeline, view %s, %dx%d)\n", options.out.c_str(),
                     pipelineName(options.pipeline), options.view.c_str(), renderer.targets().width(),
                     renderer.targets().height());
+        std::printf("oasis: %s\n", describePlantAtlas(session).c_str());
         return 0;
     });
 }

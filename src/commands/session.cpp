@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -38,10 +39,29 @@ RenderSession::RenderSession(const Options& options) : scene(sceneSettingsFrom(o
     if (directory.empty())
         throw std::runtime_error("cannot find oasis's shaders (looked in: " + searched +
                                  "); set OASIS_SHADER_DIR to the shaders/ directory");
-    shaders = std::make_unique<ShaderLibrary>(directory);
+    shaders = std::make_unique<ShaderLibrary>(directory, glslDialectForCurrentContext());
     renderer = std::make_unique<Renderer>(*shaders, scene);
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
     renderer->setStencilViewPath(chooseStencilViewPath(options.stencilView, stencilPathReason));
+    PlantInterpretation plantPath = choosePlantInterpretation(options.scene.noCompute, plantPathReason);
+    try {
+        plantAtlas = std::make_unique<PlantAtlas>(*shaders, plantPath);
+    } catch (const std::runtime_error& error) {
+        // A driver that offers compute but cannot build this shader (e.g. GL 3.3 with only the ARB
+        // extensions) still gets its plants: from the CPU, saying why.
+        if (plantPath != PlantInterpretation::Gpu) throw;
+        plantPathReason = std::string("cpu (the compute path failed: ") + error.what() + ")";
+        plantAtlas = std::make_unique<PlantAtlas>(*shaders, PlantInterpretation::Cpu);
+    }
+    renderer->setPlantAtlas(plantAtlas.get());
+}
+
+std::string describePlantAtlas(const RenderSession& session) {
+    const PlantAtlas& atlas = *session.plantAtlas;
+    char timing[96];
+    std::snprintf(timing, sizeof(timing), ", atlas %dx%d in %.1f ms (segments %.1f ms)", atlas.width(),
+                  atlas.height(), atlas.totalMs(), atlas.interpretMs());
+    return "plants: " + session.plantPathReason + timing;
 }
 
 namespace {

@@ -139,6 +139,7 @@ int runWindowApp(const Options& options) {
         renderer.setPipeline(options.pipeline);
         std::printf("oasis: window on %s; stencil view: %s\n", queryContextInfo().summary().c_str(),
                     session.stencilPathReason.c_str());
+        std::printf("oasis: %s\n", describePlantAtlas(session).c_str());
 
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();

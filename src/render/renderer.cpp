@@ -27,6 +27,11 @@ void Renderer::configure(int width, int height, const GBufferLayout& layout) {
     gbufferCurrent_ = false;
 }
 
+void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
+    plantAtlas_ = atlas;
+    debugViews_.setPlantAtlasTexture(atlas ? atlas->texture() : 0);
+}
+
 PassContext Renderer::context() { return PassContext{*targets_, shaders_, geometry_, frame_}; }
 
 const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {

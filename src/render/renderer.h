@@ -13,6 +13,7 @@
 #include "render/frame_targets.h"
 #include "render/image.h"
 #include "render/pipeline.h"
+#include "render/plant_atlas.h"
 #include "render/scene_geometry.h"
 #include "render/shader_library.h"
 
@@ -29,6 +30,9 @@ public:
     PipelineKind pipeline() const { return active_; }
     void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
     StencilViewPath stencilViewPath() const { return stencilPath_; }
+    // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).
+    void setPlantAtlas(const PlantAtlas* atlas);
+    const PlantAtlas* plantAtlas() const { return plantAtlas_; }
 
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
@@ -63,6 +67,7 @@ private:
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
     StencilViewPath stencilPath_ = StencilViewPath::Texturing;
+    const PlantAtlas* plantAtlas_ = nullptr;
     DebugViewPass debugViews_;
     FloorPass floor_;
     PresentPass present_;

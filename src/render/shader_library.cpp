@@ -112,6 +112,13 @@ std::string findShaderDirectory(std::string* searched) {
     return {};
 }
 
+GlslDialect glslDialectForCurrentContext() {
+    GlslDialect dialect;
+    int version = epoxy_gl_version();  // 42 for GL 4.2; GLSL matches GL from 3.3 on
+    if (version >= 33 && version < 45) dialect.versionLine = "#version " + std::to_string(version * 10) + " core";
+    return dialect;
+}
+
 ShaderLibrary::ShaderLibrary(std::string directory, GlslDialect dialect)
     : directory_(std::move(directory)), dialect_(std::move(dialect)) {}
 
@@ -146,15 +153,18 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
 }
 
 bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::string& error) const {
-    gl::Shader vertex, fragment;
-    if (!compileStage(GL_VERTEX_SHADER, variant.vertexFile, variant.defines, vertex, error) ||
-        !compileStage(GL_FRAGMENT_SHADER, variant.fragmentFile, variant.defines, fragment, error)) {
-        error = "program " + variant.name + ": " + error;
-        return false;
+    const std::vector<std::string> files = variant.stageFiles();
+    const GLenum graphicsStages[] = {GL_VERTEX_SHADER, GL_FRAGMENT_SHADER};
+    std::vector<gl::Shader> shaders(files.size());
+    for (size_t i = 0; i < files.size(); ++i) {
+        GLenum stage = variant.isCompute() ? GLenum(GL_COMPUTE_SHADER) : graphicsStages[i];
+        if (!compileStage(stage, files[i], variant.defines, shaders[i], error)) {
+            error = "program " + variant.name + ": " + error;
+            return false;
+        }
     }
     gl::Program program(glCreateProgram());
-    glAttachShader(program.name(), vertex.name());
-    glAttachShader(program.name(), fragment.name());
+    for (const gl::Shader& shader : shaders) glAttachShader(program.name(), shader.name());
     glLinkProgram(program.name());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.name(), GL_LINK_STATUS, &ok);
@@ -164,8 +174,7 @@ bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::
         error = "linking program " + variant.name + ":\n" + log;
         return false;
     }
-    glDetachShader(program.name(), vertex.name());
-    glDetachShader(program.name(), fragment.name());
+    for (const gl::Shader& shader : shaders) glDetachShader(program.name(), shader.name());
     // Bindings come from texture_units.h rather than layout(binding) so GLSL 3.30 works too.
     GLuint block = glGetUniformBlockIndex(program.name(), kFrameBlockName);
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program.name(), block, kFrameBlockBinding);

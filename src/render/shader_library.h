@@ -29,6 +29,10 @@ struct GlslDialect {
     std::vector<std::string> extensionLines;
 };
 
+// The current context's own GLSL when it is older than 4.50 ("#version 420 core" on a GL 4.2
+// context, e.g. llvmpipe without compute shaders), so the same shaders run there; 450 otherwise.
+GlslDialect glslDialectForCurrentContext();
+
 class ShaderLibrary {
 public:
     explicit ShaderLibrary(std::string directory, GlslDialect dialect = {});

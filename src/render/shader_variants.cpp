@@ -24,6 +24,11 @@ std::vector<ProgramVariant> buildVariants() {
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
         {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
         {"floor.read", "fullscreen.vert", "floor.frag", {"FLOOR_READ"}},
+        {"plant.atlas", "plant_atlas.vert", "plant_atlas.frag", {}},
+        // The three passes of the parallel turtle interpretation (src/render/plant_interpreter.h).
+        {"lsystem.local", "", "", {"PASS_LOCAL_TRANSFORMS"}, "lsystem_interpret.comp"},
+        {"lsystem.compose", "", "", {"PASS_COMPOSE_ROUND"}, "lsystem_interpret.comp"},
+        {"lsystem.segments", "", "", {"PASS_EMIT_SEGMENTS"}, "lsystem_interpret.comp"},
     };
     for (const DebugView& view : debugViews())
         variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});

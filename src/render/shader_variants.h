@@ -1,5 +1,6 @@
 // The table of every shader program oasis can request: a name, its stage files, its #defines.
 // Passes ask the shader library for a program by name; the shader tests compile every entry.
+// A program is either vertex + fragment, or (computeFile set, the others empty) one compute stage.
 #pragma once
 #include <string>
 #include <vector>
@@ -11,6 +12,12 @@ struct ProgramVariant {
     std::string vertexFile;
     std::string fragmentFile;
     std::vector<std::string> defines;  // each "NAME" or "NAME VALUE"
+    std::string computeFile{};         // non-empty: a compute program (needs GL 4.3 or the ARB extensions)
+    bool isCompute() const { return !computeFile.empty(); }
+    // The files the program is built from: {compute} or {vertex, fragment}.
+    std::vector<std::string> stageFiles() const {
+        return isCompute() ? std::vector<std::string>{computeFile} : std::vector<std::string>{vertexFile, fragmentFile};
+    }
 };
 
 // Every program: the fixed ones plus one per debug view (generated from the debug view table).

@@ -4,6 +4,7 @@
 #include "gpu_test.h"
 
 #include "debug/debug_views.h"
+#include "render/plant_atlas.h"
 
 namespace oasis::gputest {
 namespace {
@@ -43,6 +44,29 @@ std::vector<OverviewTile> overviewTiles(int width, int height) {
     return tiles;
 }
 bool inside(const Region& r, int x, int y) { return x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1; }
+
+// The atlas view samples the plant atlas (nearest) rather than a frame target: of the atlas texels
+// at and next to where pixel (x, y) of a width x height view samples (the sample position may round
+// either way at a texel edge), the one closest to `got` (top-down image coordinates).
+glm::ivec3 atlasTexelFor(const Image& atlas, int x, int y, int width, int height, glm::ivec3 got) {
+    int ax = int(std::floor((x + 0.5) / width * atlas.width));
+    int ay = int(std::floor((y + 0.5) / height * atlas.height));
+    glm::ivec3 best(-1000);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const uint8_t* p = atlas.pixel(std::clamp(ax + dx, 0, atlas.width - 1), std::clamp(ay + dy, 0, atlas.height - 1));
+            glm::ivec3 texel(p[0], p[1], p[2]);
+            if (maxChannelDifference(texel, got) < maxChannelDifference(best, got)) best = texel;
+        }
+    return best;
+}
+// The atlas the app would build on this context, for a renderer made in a test.
+std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Renderer& renderer) {
+    std::string reason;
+    auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(false, reason));
+    renderer.setPlantAtlas(atlas.get());
+    return atlas;
+}
 
 class DebugViews : public GpuTest {};
 
@@ -91,6 +115,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
     noReflections.water.reflections = false;
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
     const std::vector<uint8_t> stencil = renderer.readStencil();
@@ -209,6 +234,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed(GetParam()));
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    const Image atlasImage = atlas->read();
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
     const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
@@ -238,6 +265,10 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     };
     // name -> (expected colour, tolerance) of pixel (x, y from bottom)
     std::map<std::string, std::function<std::pair<glm::ivec3, int>(int, int)>> expected;
+    expected["atlas"] = [&](int x, int y) {  // y from the bottom
+        glm::ivec3 got = displayPixel(images["atlas"], x, y);
+        return std::make_pair(atlasTexelFor(atlasImage, x, kHeight - 1 - y, kWidth, kHeight, got), 0);
+    };
     expected["final"] = [&](int x, int y) { return std::make_pair(to8bit(glm::vec3(texel(final, kWidth, x, y))), 0); };
     expected["albedo"] = [&](int x, int y) {
         glm::vec3 a(texel(albedo, kWidth, x, y));
@@ -339,12 +370,14 @@ TEST_F(DebugViews, OverviewTilesShowEveryViewWithLabels) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
+    // What each tile samples: the view at frame size, except the atlas view, which samples the atlas.
     std::vector<Image> views;
     for (const DebugView& view : debugViews()) {
         renderer.renderView(view.name);
-        views.push_back(renderer.readDisplay());
+        views.push_back(view.source == ViewSource::PlantAtlas ? atlas->read() : renderer.readDisplay());
     }
     renderer.renderView(kOverviewName);
     Image overview = renderer.readDisplay();
@@ -368,14 +401,15 @@ TEST_F(DebugViews, OverviewTilesShowEveryViewWithLabels) {
                 if (!outsideLabel(x, y)) continue;
                 // Source texel in GL (bottom-up) coordinates, then back to the top-down image.
                 int localX = x - tile.area.x0, localYUp = tile.area.y1 - 1 - y;
-                int sourceX = int(std::floor((localX + 0.5) / tileWidth * kWidth));
-                int sourceYUp = int(std::floor((localYUp + 0.5) / tileHeight * kHeight));
+                const int sourceWidth = views[i].width, sourceHeight = views[i].height;
+                int sourceX = int(std::floor((localX + 0.5) / tileWidth * sourceWidth));
+                int sourceYUp = int(std::floor((localYUp + 0.5) / tileHeight * sourceHeight));
                 const uint8_t* got = overview.pixel(x, y);
                 bool found = false;
                 for (int dy = -1; dy <= 1 && !found; ++dy) {
                     for (int dx = -1; dx <= 1 && !found; ++dx) {
-                        int sx = std::clamp(sourceX + dx, 0, kWidth - 1);
-                        int sy = kHeight - 1 - std::clamp(sourceYUp + dy, 0, kHeight - 1);
+                        int sx = std::clamp(sourceX + dx, 0, sourceWidth - 1);
+                        int sy = sourceHeight - 1 - std::clamp(sourceYUp + dy, 0, sourceHeight - 1);
                         const uint8_t* want = views[i].pixel(sx, sy);
                         found = std::abs(got[0] - want[0]) <= 1 && std::abs(got[1] - want[1]) <= 1 &&
                                 std::abs(got[2] - want[2]) <= 1;

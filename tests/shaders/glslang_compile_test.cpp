@@ -46,12 +46,17 @@ bool compileStage(glslang::TProgram& program, std::vector<std::unique_ptr<glslan
     return true;
 }
 
+// The glslang stage of each file a variant names: one compute stage, or vertex and fragment.
+std::vector<std::pair<EShLanguage, std::string>> variantStages(const ProgramVariant& variant) {
+    if (variant.isCompute()) return {{EShLangCompute, variant.computeFile}};
+    return {{EShLangVertex, variant.vertexFile}, {EShLangFragment, variant.fragmentFile}};
+}
+
 bool compileVariant(const ShaderLibrary& library, const ProgramVariant& variant, std::string& log) {
     glslang::TProgram program;
     std::vector<std::unique_ptr<glslang::TShader>> shaders;
-    if (!compileStage(program, shaders, library, EShLangVertex, variant.vertexFile, variant.defines, log) ||
-        !compileStage(program, shaders, library, EShLangFragment, variant.fragmentFile, variant.defines, log))
-        return false;
+    for (const auto& [stage, file] : variantStages(variant))
+        if (!compileStage(program, shaders, library, stage, file, variant.defines, log)) return false;
     if (!program.link(EShMsgDefault)) {
         log = std::string("link: ") + program.getInfoLog();
         return false;
@@ -87,15 +92,13 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) {
 INSTANTIATE_TEST_SUITE_P(Shaders, EveryVariant, ::testing::ValuesIn(variantNames()), testName);
 
 TEST(ShaderVariants, TableCoversEveryShaderFile) {
-    // Every .vert/.frag in shaders/ is used by some variant: no shader escapes compilation.
+    // Every .vert/.frag/.comp in shaders/ is used by some variant: no shader escapes compilation.
     std::set<std::string> used;
-    for (const ProgramVariant& variant : programVariants()) {
-        used.insert(variant.vertexFile);
-        used.insert(variant.fragmentFile);
-    }
+    for (const ProgramVariant& variant : programVariants())
+        for (const auto& [stage, file] : variantStages(variant)) used.insert(file);
     for (const auto& entry : std::filesystem::directory_iterator(findShaderDirectory())) {
         std::string ext = entry.path().extension().string();
-        if (ext == ".vert" || ext == ".frag")
+        if (ext == ".vert" || ext == ".frag" || ext == ".comp")
             EXPECT_TRUE(used.count(entry.path().filename().string())) << entry.path() << " is in no variant";
     }
 }
@@ -118,6 +121,16 @@ TEST(ShaderErrors, BrokenShaderIsReportedAtItsFileAndLine) {
     EXPECT_NE(log.find("broken.frag:4"), std::string::npos) << log;
     EXPECT_NE(log.find("undeclaredThing"), std::string::npos) << log;
     fs::remove_all(root);
+}
+
+TEST(ShaderVariants, ComputeVariantsHaveOnlyAComputeStage) {
+    int computePrograms = 0;
+    for (const ProgramVariant& variant : programVariants()) {
+        if (!variant.isCompute()) continue;
+        ++computePrograms;
+        EXPECT_TRUE(variant.vertexFile.empty() && variant.fragmentFile.empty()) << variant.name;
+    }
+    EXPECT_GE(computePrograms, 3);  // the turtle interpretation's three passes
 }
 
 }  // namespace

@@ -221,7 +221,9 @@ TEST_P(GlslangLineProbe, ErrorOnTheLastLineOfEachStageIsReportedThere) {
     ASSERT_NE(variant, nullptr);
     ShaderLibrary library(root_);
     struct Stage { EShLanguage language; std::string file; };
-    for (const Stage& stage : {Stage{EShLangVertex, variant->vertexFile}, Stage{EShLangFragment, variant->fragmentFile}}) {
+    std::vector<Stage> stages = {Stage{EShLangVertex, variant->vertexFile}, Stage{EShLangFragment, variant->fragmentFile}};
+    if (variant->isCompute()) stages = {Stage{EShLangCompute, variant->computeFile}};
+    for (const Stage& stage : stages) {
         std::string probe;
         int line = writeProbe(stage.file, probe);
         std::unique_ptr<glslang::TShader> shader;

@@ -56,6 +56,17 @@ TEST(Cli, SceneOptions) {
     EXPECT_TRUE(parse({"compare", "--json", "--out-dir", "d", "--frames", "3"}).options.json);
 }
 
+TEST(Cli, NoComputeIsASceneOptionOfEverySubcommand) {
+    EXPECT_FALSE(parse({}).options.scene.noCompute);
+    for (const char* command : {"render", "compare", "window"}) {
+        ParseResult result = parse({command, "--no-compute"});
+        ASSERT_TRUE(result.ok) << command << ": " << result.error;
+        EXPECT_TRUE(result.options.scene.noCompute) << command;
+    }
+    EXPECT_TRUE(parse({"--no-compute"}).options.scene.noCompute);
+    EXPECT_NE(usage(Command::Render).find("--no-compute"), std::string::npos);
+}
+
 TEST(Cli, BadInputNamesTheOption) {
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
         {{"--bogus"}, "--bogus"},

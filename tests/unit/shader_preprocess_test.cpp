@@ -260,7 +260,7 @@ TEST(ShaderPreprocess, EveryVariantOfTheRealShadersPreprocessesWithCorrectLines)
     ASSERT_FALSE(directory.empty());
     ShaderLibrary library(directory);
     for (const ProgramVariant& variant : programVariants()) {
-        for (const std::string& file : {variant.vertexFile, variant.fragmentFile}) {
+        for (const std::string& file : variant.stageFiles()) {
             PreprocessedShader out;
             std::string error;
             ASSERT_TRUE(library.preprocess(file, variant.defines, out, error)) << variant.name << ": " << error;

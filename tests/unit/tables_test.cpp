@@ -158,12 +158,15 @@ TEST(ProgramVariantTable, NamesUniqueAndEveryFileExists) {
     for (const ProgramVariant& variant : programVariants()) {
         EXPECT_TRUE(names.insert(variant.name).second) << "duplicate variant " << variant.name;
         EXPECT_EQ(findProgramVariant(variant.name), &variant);
-        EXPECT_TRUE(std::filesystem::is_regular_file(directory + "/" + variant.vertexFile))
-            << variant.name << ": " << variant.vertexFile;
-        EXPECT_TRUE(std::filesystem::is_regular_file(directory + "/" + variant.fragmentFile))
-            << variant.name << ": " << variant.fragmentFile;
-        EXPECT_EQ(std::filesystem::path(variant.vertexFile).extension(), ".vert") << variant.name;
-        EXPECT_EQ(std::filesystem::path(variant.fragmentFile).extension(), ".frag") << variant.name;
+        for (const std::string& file : variant.stageFiles())
+            EXPECT_TRUE(std::filesystem::is_regular_file(directory + "/" + file)) << variant.name << ": " << file;
+        if (variant.isCompute()) {
+            EXPECT_EQ(std::filesystem::path(variant.computeFile).extension(), ".comp") << variant.name;
+            EXPECT_TRUE(variant.vertexFile.empty() && variant.fragmentFile.empty()) << variant.name;
+        } else {
+            EXPECT_EQ(std::filesystem::path(variant.vertexFile).extension(), ".vert") << variant.name;
+            EXPECT_EQ(std::filesystem::path(variant.fragmentFile).extension(), ".frag") << variant.name;
+        }
         for (const std::string& define : variant.defines) EXPECT_FALSE(define.empty()) << variant.name;
     }
     EXPECT_EQ(names.size(), programVariants().size());

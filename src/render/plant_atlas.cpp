@@ -1,0 +1,164 @@
+// The plant atlas: interpretation path choice, segments per variant, one draw into RGBA8.
+#include "render/plant_atlas.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace oasis {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+    glFinish();
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// How a cell's plant fills it: its bounding box centred, the longer side 90% of the cell.
+struct CellFit {
+    glm::vec2 centre{0.0f};
+    float scale = 1.0f;
+    float maxDistance = 1.0f;
+};
+
+CellFit fitSegments(const std::vector<Segment2D>& segments) {
+    CellFit fit;
+    if (segments.empty()) return fit;
+    glm::vec2 low(INFINITY), high(-INFINITY);
+    for (const Segment2D& s : segments) {
+        low = glm::min(low, glm::min(s.start, s.end));
+        high = glm::max(high, glm::max(s.start, s.end));
+        fit.maxDistance = std::max(fit.maxDistance, s.distanceFromRoot + 1.0f);
+    }
+    fit.centre = 0.5f * (low + high);
+    glm::vec2 size = high - low;
+    fit.scale = 2.0f * 0.9f / std::max({size.x, size.y, 1e-6f});
+    return fit;
+}
+
+// Segment2D as instanced vertex attributes: start, end, distanceFromRoot (depth is not drawn).
+void bindSegmentAttributes(GLuint buffer) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    const GLsizei stride = sizeof(Segment2D);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, (const void*)offsetof(Segment2D, start));
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride, (const void*)offsetof(Segment2D, end));
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, (const void*)offsetof(Segment2D, distanceFromRoot));
+    for (GLuint attribute = 0; attribute < 3; ++attribute) {
+        glEnableVertexAttribArray(attribute);
+        glVertexAttribDivisor(attribute, 1);
+    }
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+TurtleProgram programFor(const PlantAtlasVariant& variant, const PlantPreset& preset) {
+    return encodeTurtleProgram(rewrite(preset.system, variant.iterations));
+}
+
+const PlantPreset& presetOf(const PlantAtlasVariant& variant) {
+    const PlantPreset* preset = findPlantPreset(variant.preset);
+    if (!preset) throw std::logic_error("plant atlas variant names no preset: " + variant.preset);
+    return *preset;
+}
+
+}  // namespace
+
+const char* plantInterpretationName(PlantInterpretation path) {
+    return path == PlantInterpretation::Gpu ? "gpu" : "cpu";
+}
+
+PlantInterpretation choosePlantInterpretation(bool forceCpu, std::string& reason) {
+    if (forceCpu) {
+        reason = "cpu (forced with --no-compute)";
+        return PlantInterpretation::Cpu;
+    }
+    if (!contextHasComputeShaders()) {
+        reason = "cpu (no GL 4.3 / ARB_compute_shader + ARB_shader_storage_buffer_object)";
+        return PlantInterpretation::Cpu;
+    }
+    reason = "gpu (compute shaders and SSBOs present)";
+    return PlantInterpretation::Gpu;
+}
+
+const std::vector<PlantAtlasVariant>& plantAtlasVariants() {
+    static const std::vector<PlantAtlasVariant> variants = [] {
+        std::vector<PlantAtlasVariant> table;
+        for (int fewer : {0, 1})
+            for (const PlantPreset& preset : plantPresets())
+                table.push_back({preset.name, preset.system.iterations - fewer});
+        return table;
+    }();
+    return variants;
+}
+
+PlantAtlas::PlantAtlas(ShaderLibrary& shaders, PlantInterpretation path, int cellSize)
+    : path_(path), cellSize_(cellSize) {
+    gl::DebugGroup group("PlantAtlas");
+    const auto& variants = plantAtlasVariants();
+    columns_ = int(plantPresets().size());
+    rows_ = int((variants.size() + size_t(columns_) - 1) / size_t(columns_));
+    Clock::time_point start = Clock::now();
+    std::vector<SegmentBuffer> buffers;
+    GpuTurtleInterpreter gpu(shaders);
+    for (const PlantAtlasVariant& variant : variants) {
+        const PlantPreset& preset = presetOf(variant);
+        TurtleProgram program = programFor(variant, preset);
+        if (path_ == PlantInterpretation::Gpu)
+            buffers.push_back(gpu.interpret(program, preset.system.angleDegrees));
+        else
+            buffers.push_back(uploadSegments(interpretTurtleByComposition(program, preset.system.angleDegrees)));
+    }
+    interpretMs_ = millisecondsSince(start);
+    // Both paths fit the cells from the segments in the buffers (a read-back on the GPU path).
+    for (const SegmentBuffer& buffer : buffers) segments_.push_back(readSegments(buffer));
+    draw(shaders, buffers);
+    totalMs_ = millisecondsSince(start);
+}
+
+void PlantAtlas::draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& buffers) {
+    // Nearest filtering, like every target the debug views sample: a view pixel is one atlas texel.
+    texture_ = gl::createTargetTexture(GL_RGBA8, width(), height());
+    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), 0);
+    const GLfloat transparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, transparent);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    GLuint program = shaders.program("plant.atlas");
+    glUseProgram(program);
+    for (size_t i = 0; i < buffers.size(); ++i) drawCell(program, i, buffers[i]);
+    glUseProgram(0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void PlantAtlas::drawCell(GLuint program, size_t variant, const SegmentBuffer& buffer) {
+    if (buffer.count == 0) return;
+    CellFit fit = fitSegments(segments_[variant]);
+    glUniform2f(glGetUniformLocation(program, "plantCentre"), fit.centre.x, fit.centre.y);
+    glUniform1f(glGetUniformLocation(program, "plantScale"), fit.scale);
+    glUniform1f(glGetUniformLocation(program, "maxDistance"), fit.maxDistance);
+    // GL rows run bottom-up; cells are numbered from the top row.
+    glViewport(cellX(variant), height() - cellY(variant) - cellSize_, cellSize_, cellSize_);
+    gl::VertexArray vertexArray = gl::createVertexArray();
+    glBindVertexArray(vertexArray.name());
+    bindSegmentAttributes(buffer.buffer.name());
+    glDrawArraysInstanced(GL_LINES, 0, 2, GLsizei(buffer.count));
+    glBindVertexArray(0);
+}
+
+Image PlantAtlas::read() const {
+    Image image(width(), height());
+    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    image.flipRows();
+    return image;
+}
+
+}  // namespace oasis

@@ -1,0 +1,65 @@
+// The plant atlas: at start-up every variant of the L-system preset table is interpreted into
+// segments (on the GPU when the context has compute shaders, else on the CPU) and drawn once as
+// brown-to-green lines into one RGBA8 texture with a transparent background, a cell per variant.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gl/objects.h"
+#include "render/image.h"
+#include "render/plant_interpreter.h"
+#include "render/shader_library.h"
+#include "scene/lsystem.h"
+
+namespace oasis {
+
+enum class PlantInterpretation { Gpu, Cpu };
+const char* plantInterpretationName(PlantInterpretation path);  // "gpu" | "cpu"
+
+// GPU when the context has compute shaders and SSBOs and the CPU is not forced; `reason` says why.
+PlantInterpretation choosePlantInterpretation(bool forceCpu, std::string& reason);
+
+// One cell of the atlas: a preset at an iteration count. Cells run left to right, top to bottom.
+struct PlantAtlasVariant {
+    std::string preset;
+    int iterations;
+};
+// The table: every preset at its default iterations (top row) and one rewrite fewer (bottom row).
+const std::vector<PlantAtlasVariant>& plantAtlasVariants();
+
+class PlantAtlas {
+public:
+    static constexpr int kCellSize = 256;
+
+    // Interprets and draws every variant; throws std::runtime_error if the GPU path fails.
+    PlantAtlas(ShaderLibrary& shaders, PlantInterpretation path, int cellSize = kCellSize);
+
+    GLuint texture() const { return texture_.name(); }
+    PlantInterpretation path() const { return path_; }
+    int width() const { return columns_ * cellSize_; }
+    int height() const { return rows_ * cellSize_; }
+    int cellSize() const { return cellSize_; }
+    // Top-left pixel of a variant's cell in the image read() returns (top row first).
+    int cellX(size_t variant) const { return int(variant % size_t(columns_)) * cellSize_; }
+    int cellY(size_t variant) const { return int(variant / size_t(columns_)) * cellSize_; }
+    // Wall-clock start-up cost, each ended by glFinish: segments ready, then segments and drawing.
+    double interpretMs() const { return interpretMs_; }
+    double totalMs() const { return totalMs_; }
+    // Each variant's segments as drawn (read back from the GPU on that path).
+    const std::vector<std::vector<Segment2D>>& segments() const { return segments_; }
+
+    Image read() const;
+
+private:
+    void draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& buffers);
+    void drawCell(GLuint program, size_t variant, const SegmentBuffer& buffer);
+
+    PlantInterpretation path_;
+    int cellSize_;
+    int columns_ = 1, rows_ = 1;
+    gl::Texture texture_;
+    std::vector<std::vector<Segment2D>> segments_;
+    double interpretMs_ = 0.0, totalMs_ = 0.0;
+};
+
+}  // namespace oasis
