@@ -89,10 +89,11 @@ std::string usage(Command command) {
                    "                            (e.g. WaterCompositePass; a wrong name lists the passes);\n"
                    "                            Final is black then: view the targets the frame reached\n" + scene;
         case Command::Compare:
-            return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N]\n"
+            return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N] [--passes]\n"
                    "  renders the frame in both pipelines; prints PSNR, max abs and RMSE over 8-bit RGB and the\n"
                    "  median ms per frame of each (wall time around glFinish over N frames, default 9);\n"
-                   "  writes forward.png, deferred.png and difference.png to DIR (default oasis-out)\n" + scene;
+                   "  writes forward.png, deferred.png and difference.png to DIR (default oasis-out);\n"
+                   "  --passes adds each pass's median ms (glFinish after every pass)\n" + scene;
         case Command::Window:
             return "usage: oasis window [scene options]\n"
                    "  opens the interactive window (what `oasis` does when a display exists)\n" + scene;
@@ -134,10 +135,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--absorption", "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
-        bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir";
+        bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
         if (compareOnly && (options.command == Command::Render || options.command == Command::Window))
             return fail("option " + flag + " belongs to `oasis compare` and the main job");
         if (flag == "--json") { options.json = true; continue; }
+        if (flag == "--passes") { options.passTimes = true; continue; }
         if (flag == "--no-compute") { options.scene.noCompute = true; continue; }
         if (!takesValue)
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");

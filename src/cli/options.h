@@ -34,6 +34,7 @@ struct Options {
     std::string out = "oasis.png";
     std::string outDir = "oasis-out";
     bool json = false;
+    bool passTimes = false;  // compare / main job: per-pass medians too
     int timingFrames = 9;
     std::optional<StencilViewPath> stencilView;
     std::string stopBefore;  // render: end the frame before this pass

@@ -18,6 +18,8 @@ struct Comparison {
     ImageDifference difference;
     double forwardMs = 0.0, deferredMs = 0.0, floorMs = 0.0;
     Image forward, deferred;
+    using PassTimes = std::vector<std::pair<std::string, double>>;
+    PassTimes forwardPasses, deferredPasses;  // only with --passes
 };
 
 bool ensureDirectory(const std::string& path, std::string& error) {
@@ -33,7 +35,7 @@ Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind k
     return renderer.readDisplay();
 }
 
-Comparison compareFrame(RenderSession& session, int timingFrames) {
+Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes) {
     Renderer& renderer = *session.renderer;
     Comparison result;
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
@@ -44,6 +46,12 @@ Comparison compareFrame(RenderSession& session, int timingFrames) {
     renderer.setPipeline(PipelineKind::Deferred);
     result.deferredMs = medianFrameMs(renderer, session.scene, timingFrames);
     result.floorMs = medianFloorMs(renderer, timingFrames);
+    if (passTimes) {
+        renderer.setPipeline(PipelineKind::Forward);
+        result.forwardPasses = medianPassMs(renderer, session.scene, timingFrames);
+        renderer.setPipeline(PipelineKind::Deferred);
+        result.deferredPasses = medianPassMs(renderer, session.scene, timingFrames);
+    }
     renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
     return result;
 }
@@ -74,6 +82,22 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  medians of %d frames, wall time around glFinish; terrain %d triangles\n", options.timingFrames,
                 session.renderer->geometry().terrainTriangles());
     std::printf("  %s\n", describePlantAtlas(session).c_str());
+    for (const auto& [pipeline, passes] : {std::pair{"forward", &c.forwardPasses}, {"deferred", &c.deferredPasses}}) {
+        if (passes->empty()) continue;
+        std::printf("  %s per pass (median ms, glFinish after each):\n", pipeline);
+        for (const auto& [name, ms] : *passes) std::printf("    %-30s %7.2f\n", name.c_str(), ms);
+    }
+}
+
+std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) {
+    if (passes.empty()) return {};
+    std::string json = std::string(", \"") + key + "\": {";
+    char number[32];
+    for (size_t i = 0; i < passes.size(); ++i) {
+        std::snprintf(number, sizeof(number), "%.4f", passes[i].second);
+        json += (i ? ", \"" : "\"") + passes[i].first + "\": " + number;
+    }
+    return json + "}";
 }
 
 void printJson(const Options& options, const RenderSession& session, const Comparison& c) {
@@ -82,12 +106,14 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     std::printf("{\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
-                "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f}\n",
+                "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
                 targets.width(), targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
                 options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
                 stencilViewPathName(session.renderer->stencilViewPath()), session.shaders->directory().c_str(),
-                plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs());
+                plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
+                passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
+                passTimesJson("deferred_passes_ms", c.deferredPasses).c_str());
 }
 
 // Runs `body` with a headless context and a session, turning failures into messages and exit 1.
@@ -126,7 +152,7 @@ int runRenderCommand(const Options& options) {
 
 int runCompareCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
-        Comparison c = compareFrame(session, options.timingFrames);
+        Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
         Image heat = differenceHeatmap(c.forward, c.deferred);
         std::vector<std::string> written;
         if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
@@ -146,7 +172,7 @@ int runMainJob(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
         std::printf("oasis: no display, running the headless main job (stencil view: %s)\n",
                     session.stencilPathReason.c_str());
-        Comparison c = compareFrame(session, options.timingFrames);
+        Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
         session.renderer->renderView(kOverviewName);
         Image overview = session.renderer->readDisplay();
         Image heat = differenceHeatmap(c.forward, c.deferred);

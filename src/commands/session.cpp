@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
@@ -85,6 +86,26 @@ double medianMs(int frames, Work work) {
 
 double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames) {
     return medianMs(frames, [&] { renderer.renderFrame(scene); });
+}
+
+std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, const SceneSettings& scene,
+                                                         int frames) {
+    renderer.renderFrame(scene);  // warm-up
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<double>> samples;
+    for (int i = 0; i < frames; ++i)
+        for (const auto& [name, ms] : renderer.renderFrameTimingPasses(scene)) {
+            if (!samples.count(name)) order.push_back(name);
+            samples[name].push_back(ms);
+        }
+    std::vector<std::pair<std::string, double>> medians;
+    for (const std::string& name : order) {
+        std::vector<double>& v = samples[name];
+        std::sort(v.begin(), v.end());
+        size_t n = v.size();
+        medians.emplace_back(name, n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+    }
+    return medians;
 }
 
 double medianFloorMs(Renderer& renderer, int frames) {

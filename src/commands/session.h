@@ -34,5 +34,7 @@ std::string describePlantAtlas(const RenderSession& session);
 // glFinish (GPU timer queries are not trustworthy on software rasterisers), after two warm-ups.
 double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames);
 double medianFloorMs(Renderer& renderer, int frames);
+// Median wall milliseconds of each pass of the active pipeline over `frames` frames, in pass order.
+std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, const SceneSettings& scene, int frames);
 
 }  // namespace oasis

@@ -45,14 +45,15 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
     add(std::make_unique<ToneMapPass>());
 }
 
-bool Pipeline::run(PassContext& context, const std::string& stopBefore, std::vector<std::string>* ran) const {
+bool Pipeline::run(PassContext& context, const std::string& stopBefore,
+                   const std::function<void(const Pass&)>& afterEach) const {
     if (!stopBefore.empty() && !hasPass(stopBefore)) return false;
     gl::DebugGroup group(pipelineName(kind_));
     for (const auto& pass : passes_) {
         if (pass->name() == stopBefore) break;
         if (!pass->active(context.frame)) continue;
         pass->run(context);
-        if (ran) ran->push_back(pass->name());
+        if (afterEach) afterEach(*pass);
     }
     return true;
 }

@@ -5,6 +5,7 @@
 //             Sky(mirrored) | WaterComposite ToneMap
 // The passes between the bars run only with reflections on and the camera above the water.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,8 +24,9 @@ public:
     PipelineKind kind() const { return kind_; }
     // Runs the active passes in order; stops before the pass named `stopBefore` (empty: run all).
     // Returns false if `stopBefore` names no pass of this pipeline.
+    // `afterEach` is called after every pass that ran (to record or time it).
     bool run(PassContext& context, const std::string& stopBefore = {},
-             std::vector<std::string>* ran = nullptr) const;
+             const std::function<void(const Pass&)>& afterEach = {}) const;
     bool hasPass(const std::string& name) const;
     std::string passNames() const;
     bool writes(Target target) const;

@@ -2,6 +2,7 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 #include "render/texture_units.h"
@@ -39,6 +40,25 @@ const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
 }
 
 void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBefore) {
+    runFrame(scene, stopBefore, {});
+}
+
+std::vector<std::pair<std::string, double>> Renderer::renderFrameTimingPasses(const SceneSettings& scene) {
+    using Clock = std::chrono::steady_clock;
+    std::vector<std::pair<std::string, double>> times;
+    glFinish();
+    Clock::time_point start = Clock::now();
+    runFrame(scene, {}, [&](const Pass& pass) {
+        glFinish();
+        Clock::time_point now = Clock::now();
+        times.emplace_back(pass.name(), std::chrono::duration<double, std::milli>(now - start).count());
+        start = now;
+    });
+    return times;
+}
+
+void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefore,
+                        const std::function<void(const Pass&)>& afterEach) {
     if (!targets_) throw std::logic_error("Renderer::renderFrame before configure()");
     const Pipeline& pipeline = pipelineOf(active_);
     if (!stopBefore.empty() && !pipeline.hasPass(stopBefore))
@@ -56,7 +76,10 @@ void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBe
     }
     PassContext passContext = context();
     passesRan_.clear();
-    pipeline.run(passContext, stopBefore, &passesRan_);
+    pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
+        passesRan_.push_back(pass.name());
+        if (afterEach) afterEach(pass);
+    });
     gbufferCurrent_ = pipeline.writes(Target::Albedo);
 }
 

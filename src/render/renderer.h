@@ -38,6 +38,9 @@ public:
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
     // std::invalid_argument (listing the pipeline's passes) if no pass has that name.
     void renderFrame(const SceneSettings& scene, const std::string& stopBefore = {});
+    // The same frame with glFinish after every pass: wall milliseconds per pass, in order. The
+    // synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
+    std::vector<std::pair<std::string, double>> renderFrameTimingPasses(const SceneSettings& scene);
     // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
     // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
     void renderView(const std::string& viewName);
@@ -59,6 +62,8 @@ public:
 
 private:
     PassContext context();
+    void runFrame(const SceneSettings& scene, const std::string& stopBefore,
+                  const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
 
     ShaderLibrary& shaders_;
