@@ -1,7 +1,5 @@
 // Covers glslang error reporting through ShaderLibrary: broken shaders, errors inside includes and missing variant defines are named as file:line.
 #include <gtest/gtest.h>
-#include <glslang/Public/ResourceLimits.h>
-#include <glslang/Public/ShaderLang.h>
 #include <stdlib.h>
 
 #include <filesystem>
@@ -11,8 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "render/shader_library.h"
-#include "render/shader_variants.h"
+#include "glslang_compiler.h"
 
 namespace oasis {
 namespace {
@@ -20,50 +17,7 @@ namespace {
 // Every program variant is compiled and linked by glslang_compile_test.cpp; this file checks the
 // failure paths and that their messages point at the right file and line.
 
-class GlslangErrorsEnvironment : public ::testing::Environment {
-public:
-    void SetUp() override { ASSERT_TRUE(glslang::InitializeProcess()); }
-    void TearDown() override { glslang::FinalizeProcess(); }
-};
-const auto* const kEnvironment = ::testing::AddGlobalTestEnvironment(new GlslangErrorsEnvironment);
-
-// Compiles one stage with OpenGL semantics. On failure `log` holds the annotated (file:line) log.
-bool compileStage(const ShaderLibrary& library, EShLanguage stage, const std::string& file,
-                  const std::vector<std::string>& defines, std::unique_ptr<glslang::TShader>& shader,
-                  std::string& log) {
-    PreprocessedShader source;
-    std::string error;
-    if (!library.preprocess(file, defines, source, error)) {
-        log = error;
-        return false;
-    }
-    shader = std::make_unique<glslang::TShader>(stage);
-    const char* text = source.text.c_str();
-    shader->setStrings(&text, 1);
-    shader->setEnvInput(glslang::EShSourceGlsl, stage, glslang::EShClientNone, 0);
-    shader->setEnvClient(glslang::EShClientNone, glslang::EShTargetClientVersion(0));
-    shader->setEnvTarget(glslang::EShTargetNone, glslang::EShTargetLanguageVersion(0));
-    if (!shader->parse(GetDefaultResources(), 450, ECoreProfile, false, false, EShMsgDefault)) {
-        log = source.annotateLog(shader->getInfoLog());
-        return false;
-    }
-    return true;
-}
-
-bool compileAndLink(const ShaderLibrary& library, const std::string& vertexFile, const std::string& fragmentFile,
-                    const std::vector<std::string>& defines, std::string& log) {
-    std::unique_ptr<glslang::TShader> vertex, fragment;
-    if (!compileStage(library, EShLangVertex, vertexFile, defines, vertex, log)) return false;
-    if (!compileStage(library, EShLangFragment, fragmentFile, defines, fragment, log)) return false;
-    glslang::TProgram program;
-    program.addShader(vertex.get());
-    program.addShader(fragment.get());
-    if (!program.link(EShMsgDefault)) {
-        log = std::string("link: ") + program.getInfoLog();
-        return false;
-    }
-    return true;
-}
+using namespace glslang_test;
 
 // 1-based line of the first line of `path` containing `needle`, or 0.
 int lineContaining(const std::string& path, const std::string& needle) {
