@@ -4,8 +4,9 @@
 #ifndef OASIS_SURFACE_GLSL
 #define OASIS_SURFACE_GLSL
 
-const uint SURFACE_SKY = 1u;        // nothing drawn here: lighting evaluates the sky instead
-const uint SURFACE_REFLECTED = 2u;  // seen in the water: the mirrored scene
+#include "common/shared_constants.glsl"
+const uint SURFACE_SKY = OASIS_SURFACE_SKY;              // nothing drawn: lighting evaluates the sky instead
+const uint SURFACE_REFLECTED = OASIS_SURFACE_REFLECTED;  // seen in the water: the mirrored scene
 
 struct Surface {
     vec3 albedo;            // linear reflectance

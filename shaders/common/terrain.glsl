@@ -5,15 +5,14 @@
 #include "common/noise.glsl"
 #include "common/surface.glsl"
 
-// Same constant as kValleyFlattening in src/scene/terrain.cpp (a shape, not a tuning knob).
-#define TERRAIN_VALLEY_FLATTENING 0.3
+#include "common/shared_constants.glsl"
 
 // (height, d height / dx, d height / dz) at world (x, z).
 vec3 terrainHeight(vec2 worldXZ) {
     vec4 shape = frame.terrainShape;  // frequency, amplitude, base height, octaves
     vec3 n = fractalNoise(worldXZ * shape.x, int(shape.w));
     // h = amplitude * (n + k n^2): broad flat valleys for the water, sharper ridges above.
-    const float k = TERRAIN_VALLEY_FLATTENING;
+    const float k = OASIS_TERRAIN_VALLEY_FLATTENING;
     float slopeScale = shape.y * shape.x * (1.0 + 2.0 * k * n.x);
     return vec3(shape.y * (n.x + k * n.x * n.x) + shape.z, slopeScale * n.y, slopeScale * n.z);
 }

@@ -3,11 +3,10 @@
 #ifndef OASIS_WATER_GLSL
 #define OASIS_WATER_GLSL
 #include "common/noise.glsl"
-
-const uint WATER_REFLECTIONS = 1u;  // bit of frame.water.w: mirrored scene drawn this frame
+#include "common/shared_constants.glsl"
 
 float waterLevel() { return frame.water.x; }
-bool reflectionsActive() { return (uint(frame.water.w) & WATER_REFLECTIONS) != 0u; }
+bool reflectionsActive() { return (uint(frame.water.w) & OASIS_WATER_REFLECTIONS_FLAG) != 0u; }
 
 // Length of the segment eye -> point (world space) that lies below the water plane.
 float underwaterLength(vec3 eye, vec3 point) {

@@ -1,6 +1,8 @@
 // Builds a frame's CPU-side state and its uniform block contents.
 #include "render/frame_setup.h"
 
+#include "common/shared_constants.glsl"
+
 namespace oasis {
 
 FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
@@ -31,9 +33,8 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
                                     scene.viewDistance);
     d.depthRange = glm::vec4(scene.projection.nearPlane, scene.projection.farPlane,
                              float(scene.timeSeconds), scene.exposure);
-    const float kReflectionsFlag = 1.0f;  // WATER_REFLECTIONS in shaders/common/water.glsl
     d.water = glm::vec4(scene.water.level, scene.water.absorption, scene.water.rippleStrength,
-                        setup.reflectionsActive ? kReflectionsFlag : 0.0f);
+                        setup.reflectionsActive ? float(OASIS_WATER_REFLECTIONS_FLAG) : 0.0f);
     d.waterTint = glm::vec4(scene.water.tint, scene.water.fresnelF0);
     return setup;
 }

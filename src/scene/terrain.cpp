@@ -4,13 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/shared_constants.glsl"
 #include "scene/camera.h"
 #include "scene/noise.h"
 
 namespace oasis {
 namespace {
-// Same as TERRAIN_VALLEY_FLATTENING in shaders/common/terrain.glsl.
-constexpr float kValleyFlattening = 0.3f;
+constexpr float kValleyFlattening = float(OASIS_TERRAIN_VALLEY_FLATTENING);
 }  // namespace
 
 glm::vec3 terrainHeight(const TerrainShape& shape, glm::vec2 worldXZ) {

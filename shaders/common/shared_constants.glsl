@@ -1,0 +1,14 @@
+// Numbers both C++ and GLSL must agree on, as macros so one file serves both languages
+// (C++ includes it through the shaders/ include path).
+#ifndef OASIS_SHARED_CONSTANTS_GLSL
+#define OASIS_SHARED_CONSTANTS_GLSL
+
+// Terrain height = amplitude * (n + k n^2) + base: flat valleys for the water, sharper ridges.
+#define OASIS_TERRAIN_VALLEY_FLATTENING 0.3
+// Bit of FrameData.water.w: the mirrored scene is drawn this frame.
+#define OASIS_WATER_REFLECTIONS_FLAG 1u
+// Surface flags stored in the info target (info.b * 255).
+#define OASIS_SURFACE_SKY 1u
+#define OASIS_SURFACE_REFLECTED 2u
+
+#endif
