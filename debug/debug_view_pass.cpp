@@ -39,6 +39,10 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
         case ViewSource::Final: bind(kUnitSource, targets.texture(Target::Final)); break;
         case ViewSource::Reflection: bind(kUnitSource, targets.texture(Target::Reflection)); break;
         case ViewSource::PlantAtlas: bind(kUnitSource, plantAtlasTexture_); break;
+        case ViewSource::Vegetation:
+            bind(kUnitSource, targets.texture(Target::Final));
+            bind(kUnitInfo, targets.texture(Target::Info));
+            break;
         case ViewSource::Albedo: bind(kUnitAlbedo, targets.texture(Target::Albedo)); break;
         case ViewSource::Normal: bind(kUnitNormal, targets.texture(Target::Normal)); break;
         case ViewSource::Position: bind(kUnitPosition, targets.texture(Target::Position)); break;

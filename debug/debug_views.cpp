@@ -14,9 +14,11 @@ const std::vector<DebugView> kViews = {
      "red specular power, green specular intensity, blue flags (full: sky, half: reflected)"},
     {"depth", ViewSource::Depth, "VIEW_DEPTH", "eye distance, log scale near to far; black = cleared"},
     {"stencil", ViewSource::Stencil, "VIEW_STENCIL",
-     "one colour per stencil value: black 0 nothing, amber 1 terrain, blue 2 water"},
+     "one colour per stencil value: black 0 nothing, amber 1 terrain, blue 2 water, green 3 plants"},
     {"reflection", ViewSource::Reflection, "VIEW_RADIANCE",
      "the mirrored scene alone, tone-mapped; black outside the water or with reflections off"},
+    {"vegetation", ViewSource::Vegetation, "VIEW_VEGETATION",
+     "the plants alone: the lit frame where a plant billboard is the nearest surface, black elsewhere"},
     {"atlas", ViewSource::PlantAtlas, "VIEW_COLOUR",
      "the plant atlas, stretched to the view: a cell per L-system variant, brown base to green tips, on black"},
 };
@@ -39,7 +41,8 @@ std::string debugViewNames() {
 
 bool readsGBuffer(const DebugView& view) {
     return view.source == ViewSource::Albedo || view.source == ViewSource::Normal ||
-           view.source == ViewSource::Position || view.source == ViewSource::Info;
+           view.source == ViewSource::Position || view.source == ViewSource::Info ||
+           view.source == ViewSource::Vegetation;
 }
 
 std::string debugProgramName(const DebugView& view) { return "debug." + view.name; }

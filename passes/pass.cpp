@@ -35,6 +35,33 @@ bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring) {
     return mirroring == Mirroring::Direct || frame.reflectionsActive;
 }
 
+SurfacePass::SurfacePass(const std::string& baseName, SurfaceOutput output, Mirroring mirroring)
+    : output_(output), mirroring_(mirroring), name_(variantName(baseName, output, mirroring)) {}
+
+std::vector<Target> SurfacePass::writes() const { return surfaceOutputTargets(output_, mirroring_); }
+
+bool SurfacePass::active(const FrameSetup& frame) const { return mirroredPassActive(frame, mirroring_); }
+
+void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const {
+    bindSurfaceOutput(context.targets, output_, mirroring_);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    if (mirroring_ == Mirroring::Direct) {
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_ALWAYS, stencilMark, 0xFF);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glStencilMask(0xFF);
+    }
+    beginMirroredDraw(mirroring_);
+}
+
+void SurfacePass::endSurfaceDraw() const {
+    endMirroredDraw(mirroring_);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_DEPTH_TEST);
+}
+
 std::string variantName(const std::string& base, SurfaceOutput output, Mirroring mirroring) {
     return base + "." + surfaceOutputName(output) + (mirroring == Mirroring::Mirrored ? ".mirrored" : "");
 }

@@ -10,6 +10,8 @@
 #include "render/frame_targets.h"
 #include "render/scene_geometry.h"
 #include "render/shader_library.h"
+#include "render/surface_output.h"
+#include "render/vegetation_buffers.h"
 
 namespace oasis {
 
@@ -19,13 +21,8 @@ struct PassContext {
     ShaderLibrary& shaders;
     const SceneGeometry& geometry;
     const FrameSetup& frame;
+    const VegetationBuffers& vegetation;
 };
-
-// Where a geometry pass sends its surfaces: into the G-buffer, or shaded into Radiance.
-enum class SurfaceOutput { GBuffer, Forward };
-// Whether a pass draws the scene as seen directly or its mirror image in the water (which goes to
-// the Reflection target when shaded, and only where the stencil marks water).
-enum class Mirroring { Direct, Mirrored };
 
 class Pass {
 public:
@@ -46,7 +43,30 @@ protected:
 };
 
 // The stencil value each kind of surface writes, shown by the stencil debug view.
-enum StencilMark : int { kStencilNothing = 0, kStencilTerrain = 1, kStencilWater = 2 };
+enum StencilMark : int { kStencilNothing = 0, kStencilTerrain = 1, kStencilWater = 2, kStencilVegetation = 3 };
+
+// A pass that draws scene surfaces (terrain, plants): into the G-buffer or shaded, as seen directly
+// or mirrored in the water. It is named "<Base>.<output>[.mirrored]", after its shader variants.
+class SurfacePass : public Pass {
+public:
+    SurfacePass(const std::string& baseName, SurfaceOutput output, Mirroring mirroring);
+    std::string name() const override { return name_; }
+    std::vector<Target> reads() const override { return {}; }
+    std::vector<Target> writes() const override;
+    bool active(const FrameSetup& frame) const override;
+
+protected:
+    // Binds the output, depth-tests and writes depth; direct draws mark `stencilMark`, mirrored
+    // draws stay inside the water (beginMirroredDraw). endSurfaceDraw restores the defaults.
+    void beginSurfaceDraw(PassContext& context, int stencilMark) const;
+    void endSurfaceDraw() const;
+
+    SurfaceOutput output_;
+    Mirroring mirroring_;
+
+private:
+    std::string name_;
+};
 
 // Binds the framebuffer a surface output draws into and sets the viewport to the whole frame:
 // the G-buffer, Radiance (forward, direct) or Reflection (forward, mirrored).

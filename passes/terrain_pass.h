@@ -5,21 +5,13 @@
 
 namespace oasis {
 
-class TerrainPass : public Pass {
+class TerrainPass : public SurfacePass {
 public:
     TerrainPass(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct)
-        : output_(output), mirroring_(mirroring) {}
-    std::string name() const override { return variantName("TerrainPass", output_, mirroring_); }
-    std::vector<Target> reads() const override { return {}; }
-    std::vector<Target> writes() const override { return surfaceOutputTargets(output_, mirroring_); }
-    bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
+        : SurfacePass("TerrainPass", output, mirroring) {}
 
 protected:
     void execute(PassContext& context) override;
-
-private:
-    SurfaceOutput output_;
-    Mirroring mirroring_;
 };
 
 }  // namespace oasis

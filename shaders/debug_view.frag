@@ -17,6 +17,16 @@ vec3 ramp(float t) {
 uniform sampler2D sourceTexture;
 vec3 viewColour() { return texture(sourceTexture, vScreenUv).rgb; }
 
+#elif defined(VIEW_VEGETATION)
+uniform sampler2D sourceTexture;
+uniform sampler2D gInfo;
+vec3 viewColour() {
+    // Direct plant pixels only: in the deferred G-buffer the water holds the mirrored scene.
+    uint flags = infoFlags(texture(gInfo, vScreenUv));
+    bool plant = (flags & SURFACE_PLANT) != 0u && (flags & SURFACE_REFLECTED) == 0u;
+    return plant ? texture(sourceTexture, vScreenUv).rgb : vec3(0.0);
+}
+
 #elif defined(VIEW_RADIANCE)
 #include "common/output.glsl"
 uniform sampler2D sourceTexture;
@@ -77,7 +87,7 @@ vec3 viewColour() {
     if (value == 0u) return vec3(0.0);
     if (value == 1u) return vec3(0.95, 0.62, 0.12);  // terrain
     if (value == 2u) return vec3(0.15, 0.45, 0.95);  // water
-    if (value == 3u) return vec3(0.20, 0.85, 0.35);
+    if (value == 3u) return vec3(0.20, 0.85, 0.35);  // plants
     float hue = fract(float(value) * 0.618034);
     return clamp(abs(mod(hue * 6.0 + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);
 }

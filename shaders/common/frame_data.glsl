@@ -19,6 +19,8 @@ struct FrameData {
     vec4 depthRange;             // x near, y far, z time (s), w exposure
     vec4 water;                  // x level (world y), y absorption per unit, z ripple strength, w flags
     vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
+    vec4 vegetation;             // x wind strength, y flutter phase (rad), z gust drift (noise units), w unused
+    vec4 vegetationAtlas;        // x atlas columns, y atlas rows, zw unused
 };
 
 #endif

@@ -10,5 +10,8 @@
 // Surface flags stored in the info target (info.b * 255).
 #define OASIS_SURFACE_SKY 1u
 #define OASIS_SURFACE_REFLECTED 2u
+#define OASIS_SURFACE_PLANT 4u
+// A plant's root sits this fraction of its atlas cell above the cell's bottom edge, centred.
+#define OASIS_PLANT_ROOT_V 0.05
 
 #endif

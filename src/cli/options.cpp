@@ -38,6 +38,9 @@ const char* kSceneOptionsHelp =
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
     "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
+    "  --vegetation on|off       the plant billboards (default on)\n"
+    "  --vegetation-density D    plants per unit of ground, 0..4 times the default (default 1)\n"
+    "  --wind S                  wind strength bending the plants, 0..3 (default 1)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
@@ -132,7 +135,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
-            "--absorption", "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames"};
+            "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
@@ -178,6 +181,17 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                            : flag == "--ripples"   ? options.scene.water.rippleStrength
                                                    : options.scene.water.absorption;
             field = float(number);
+        } else if (flag == "--vegetation") {
+            if (value != "on" && value != "off")
+                return fail("--vegetation expects on or off, got '" + value + "'");
+            options.scene.vegetation.enabled = value == "on";
+        } else if (flag == "--vegetation-density" || flag == "--wind") {
+            double number = 0.0;
+            bool density = flag == "--vegetation-density";
+            double highest = density ? VegetationSettings::kMaxDensity : VegetationSettings::kMaxWindStrength;
+            if (!parseDouble(value, number) || number < 0.0 || number > highest)
+                return fail(flag + " expects a number from 0 to " + std::to_string(int(highest)) + ", got '" + value + "'");
+            (density ? options.scene.vegetation.density : options.scene.vegetation.windStrength) = float(number);
         } else if (flag == "--gbuffer") {
             if (!findGBufferLayout(value))
                 return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");

@@ -20,6 +20,7 @@ struct SceneOptions {
     std::optional<CameraPose> camera;
     std::string gbuffer = "standard";
     WaterSettings water;
+    VegetationSettings vegetation;
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
 };
 

@@ -82,6 +82,7 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  medians of %d frames, wall time around glFinish; terrain %d triangles\n", options.timingFrames,
                 session.renderer->geometry().terrainTriangles());
     std::printf("  %s\n", describePlantAtlas(session).c_str());
+    std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     for (const auto& [pipeline, passes] : {std::pair{"forward", &c.forwardPasses}, {"deferred", &c.deferredPasses}}) {
         if (passes->empty()) continue;
         std::printf("  %s per pass (median ms, glFinish after each):\n", pipeline);
@@ -103,7 +104,12 @@ std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) 
 void printJson(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
     ContextInfo info = queryContextInfo();
-    std::printf("{\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
+    const VegetationStats& plants = session.renderer->vegetationStats();
+    std::printf("{\"vegetation\": %s, \"vegetation_density\": %.3f, \"plants_placed\": %zu, \"plants_drawn\": %zu, "
+                "\"plants_drawn_mirrored\": %zu, ",
+                session.renderer->lastFrame().vegetationEnabled ? "true" : "false", session.scene.vegetation.density,
+                plants.plantsPlaced, plants.plantsDrawn, plants.plantsDrawnMirrored);
+    std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f%s%s}\n",
@@ -146,6 +152,7 @@ int runRenderCommand(const Options& options) {
                     pipelineName(options.pipeline), options.view.c_str(), renderer.targets().width(),
                     renderer.targets().height());
         std::printf("oasis: %s\n", describePlantAtlas(session).c_str());
+        std::printf("oasis: %s\n", describeVegetation(renderer).c_str());
         return 0;
     });
 }

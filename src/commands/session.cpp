@@ -16,6 +16,7 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.hour = options.hour;
     scene.camera = options.camera;
     scene.water = options.water;
+    scene.vegetation = options.vegetation;
     return scene;
 }
 
@@ -63,6 +64,18 @@ std::string describePlantAtlas(const RenderSession& session) {
     std::snprintf(timing, sizeof(timing), ", atlas %dx%d in %.1f ms (segments %.1f ms)", atlas.width(),
                   atlas.height(), atlas.totalMs(), atlas.interpretMs());
     return "plants: " + session.plantPathReason + timing;
+}
+
+std::string describeVegetation(const Renderer& renderer) {
+    const VegetationStats& stats = renderer.vegetationStats();
+    if (!renderer.lastFrame().vegetationEnabled) return "vegetation: off";
+    char text[256];
+    std::snprintf(text, sizeof(text),
+                  "vegetation: %zu plants placed in %zu chunks around the camera; drawn %zu (%zu chunks in view, "
+                  "thinned with distance) and %zu in the reflection (%zu chunks)",
+                  stats.plantsPlaced, stats.chunksInRange, stats.plantsDrawn, stats.chunksVisible,
+                  stats.plantsDrawnMirrored, stats.chunksMirrored);
+    return text;
 }
 
 namespace {

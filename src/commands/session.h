@@ -30,6 +30,9 @@ struct RenderSession {
 // "plants: gpu (compute shaders and SSBOs present), atlas 1280x512 in 12.3 ms" for the commands' output.
 std::string describePlantAtlas(const RenderSession& session);
 
+// "vegetation: 24312 plants placed in ...; drawn 5321 ..." for the last frame, or "vegetation: off".
+std::string describeVegetation(const Renderer& renderer);
+
 // Median wall-clock milliseconds of `frames` frames of the active pipeline, each ended by
 // glFinish (GPU timer queries are not trustworthy on software rasterisers), after two warm-ups.
 double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames);

@@ -42,7 +42,8 @@ void reloadShaders(Renderer& renderer, WindowState& state) {
     for (const std::string& failure : failures) std::fprintf(stderr, "oasis: %s\n", failure.c_str());
 }
 
-void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, WindowState& state) {
+void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, WindowState& state,
+                SceneSettings& scene) {
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
     const auto& views = debugViews();
     if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
@@ -53,6 +54,7 @@ void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, Win
     if (key == GLFW_KEY_SPACE) state.paused = !state.paused;
     if (key == GLFW_KEY_R) reloadShaders(renderer, state);
     if (key == GLFW_KEY_G) state.layoutIndex = (state.layoutIndex + 1) % gbufferLayouts().size();
+    if (key == GLFW_KEY_V) scene.vegetation.enabled = !scene.vegetation.enabled;
 }
 
 void moveFreeCamera(GLFWwindow* window, CameraPose& pose, float seconds) {
@@ -120,6 +122,18 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         ImGui::SliderFloat("absorption", &water.absorption, 0.0f, 0.5f);
         ImGui::SliderFloat("ripples", &water.rippleStrength, 0.0f, 4.0f);
     }
+    if (ImGui::CollapsingHeader("vegetation", ImGuiTreeNodeFlags_DefaultOpen)) {
+        VegetationSettings& vegetation = scene.vegetation;
+        ImGui::Checkbox("plants (V)", &vegetation.enabled);
+        // Density re-places every chunk when released, so it is applied on release, not per drag step.
+        static float density = vegetation.density;
+        ImGui::SliderFloat("density", &density, 0.0f, VegetationSettings::kMaxDensity, "%.2f");
+        if (ImGui::IsItemDeactivatedAfterEdit()) vegetation.density = density;
+        ImGui::SliderFloat("wind", &vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
+        ImGui::SliderFloat("draw distance", &vegetation.drawDistance, 50.0f, 1500.0f, "%.0f");
+        ImGui::SliderFloat("thinning from", &vegetation.thinningStart, 10.0f, 600.0f, "%.0f");
+        ImGui::TextWrapped("%s", describeVegetation(renderer).c_str());
+    }
     ImGui::Separator();
     ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
@@ -154,12 +168,12 @@ int runWindowApp(const Options& options) {
         state.freeCamera = bool(options.scene.camera);
         scene.camera = options.scene.camera ? *options.scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
 
-        struct Input { Renderer* renderer; WindowState* state; } input{&renderer, &state};
+        struct Input { Renderer* renderer; WindowState* state; SceneSettings* scene; } input{&renderer, &state, &scene};
         glfwSetWindowUserPointer(window.window(), &input);
         glfwSetKeyCallback(window.window(), [](GLFWwindow* w, int key, int scancode, int action, int mods) {
             ImGui_ImplGlfw_KeyCallback(w, key, scancode, action, mods);
             auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
-            handleKeys(w, key, action, *in->renderer, *in->state);
+            handleKeys(w, key, action, *in->renderer, *in->state, *in->scene);
         });
 
         auto last = std::chrono::steady_clock::now();

@@ -28,6 +28,7 @@ void Object<Kind>::reset() {
         case ObjectKind::VertexArray: glDeleteVertexArrays(1, &name_); break;
         case ObjectKind::Program: glDeleteProgram(name_); break;
         case ObjectKind::Shader: glDeleteShader(name_); break;
+        case ObjectKind::Sampler: glDeleteSamplers(1, &name_); break;
         case ObjectKind::Count: break;
     }
     track(-1);
@@ -40,16 +41,18 @@ template class Object<ObjectKind::Framebuffer>;
 template class Object<ObjectKind::VertexArray>;
 template class Object<ObjectKind::Program>;
 template class Object<ObjectKind::Shader>;
+template class Object<ObjectKind::Sampler>;
 
 Buffer createBuffer() { GLuint n = 0; glGenBuffers(1, &n); return Buffer(n); }
 Texture createTexture() { GLuint n = 0; glGenTextures(1, &n); return Texture(n); }
 Framebuffer createFramebuffer() { GLuint n = 0; glGenFramebuffers(1, &n); return Framebuffer(n); }
 VertexArray createVertexArray() { GLuint n = 0; glGenVertexArrays(1, &n); return VertexArray(n); }
+Sampler createSampler() { GLuint n = 0; glGenSamplers(1, &n); return Sampler(n); }
 
-Texture createTargetTexture(GLenum internalFormat, int width, int height) {
+Texture createTargetTexture(GLenum internalFormat, int width, int height, int levels) {
     Texture texture = createTexture();
     glBindTexture(GL_TEXTURE_2D, texture.name());
-    glTexStorage2D(GL_TEXTURE_2D, 1, internalFormat, width, height);
+    glTexStorage2D(GL_TEXTURE_2D, levels, internalFormat, width, height);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

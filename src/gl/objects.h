@@ -8,7 +8,7 @@
 
 namespace oasis::gl {
 
-enum class ObjectKind { Buffer, Texture, Framebuffer, VertexArray, Program, Shader, Count };
+enum class ObjectKind { Buffer, Texture, Framebuffer, VertexArray, Program, Shader, Sampler, Count };
 
 // Live objects created through these wrappers, by kind.
 int liveObjectCount(ObjectKind kind);
@@ -44,14 +44,17 @@ using Framebuffer = Object<ObjectKind::Framebuffer>;
 using VertexArray = Object<ObjectKind::VertexArray>;
 using Program = Object<ObjectKind::Program>;
 using Shader = Object<ObjectKind::Shader>;
+using Sampler = Object<ObjectKind::Sampler>;
 
 Buffer createBuffer();
 Texture createTexture();
 Framebuffer createFramebuffer();
 VertexArray createVertexArray();
+Sampler createSampler();
 
-// A texture for a render target: immutable storage, nearest filtering, clamped.
-Texture createTargetTexture(GLenum internalFormat, int width, int height);
+// A texture for a render target: immutable storage, nearest filtering (of level 0), clamped.
+// `levels` > 1 leaves room for a mipmap chain that a sampler object may read.
+Texture createTargetTexture(GLenum internalFormat, int width, int height, int levels = 1);
 
 // Opens a KHR_debug group for the lifetime of the scope, when the context has KHR_debug.
 class DebugGroup {

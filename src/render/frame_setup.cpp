@@ -1,6 +1,9 @@
 // Builds a frame's CPU-side state and its uniform block contents.
 #include "render/frame_setup.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "common/shared_constants.glsl"
 
 namespace oasis {
@@ -15,6 +18,7 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     setup.wedge = computeTerrainWedge(setup.view, scene.grid, scene.viewDistance);
     setup.cameraAboveWater = setup.view.pose.position.y >= double(scene.water.level);
     setup.reflectionsActive = scene.water.reflections && setup.cameraAboveWater;
+    setup.vegetationEnabled = scene.vegetation.enabled;
 
     FrameData& d = setup.data;
     d.viewProjection = setup.view.viewProjection();
@@ -36,6 +40,13 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     d.water = glm::vec4(scene.water.level, scene.water.absorption, scene.water.rippleStrength,
                         setup.reflectionsActive ? float(OASIS_WATER_REFLECTIONS_FLAG) : 0.0f);
     d.waterTint = glm::vec4(scene.water.tint, scene.water.fresnelF0);
+    // Wind phases grow with time; wrapped here in double, the shader's floats stay precise after
+    // days of animation (the flutter exactly, the gusts with one jump every 4.6 hours).
+    const double kTwoPi = 6.283185307179586;
+    float wind = std::clamp(scene.vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
+    d.vegetation = glm::vec4(wind, float(std::fmod(scene.timeSeconds * 2.3, kTwoPi)),
+                             float(std::fmod(scene.timeSeconds * 0.6, 10000.0)), 0.0f);
+    d.vegetationAtlas = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the renderer fills in its atlas
     return setup;
 }
 

@@ -7,6 +7,7 @@
 #include "scene/camera.h"
 #include "scene/sky.h"
 #include "scene/terrain.h"
+#include "scene/vegetation.h"
 
 namespace oasis {
 
@@ -31,6 +32,7 @@ struct SceneSettings {
     float fogStart = 350.0f;
     float exposure = 1.0f;
     WaterSettings water;
+    VegetationSettings vegetation;
 };
 
 struct FrameSetup {
@@ -40,6 +42,7 @@ struct FrameSetup {
     TerrainWedge wedge;
     bool cameraAboveWater = true;   // at the level counts as above: the plane is seen edge-on
     bool reflectionsActive = true;  // reflections on and the camera above the water
+    bool vegetationEnabled = true;
     FrameData data;
 };
 

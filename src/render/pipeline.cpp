@@ -9,6 +9,7 @@
 #include "passes/sky_pass.h"
 #include "passes/terrain_pass.h"
 #include "passes/tone_map_pass.h"
+#include "passes/vegetation_pass.h"
 #include "passes/water_composite_pass.h"
 #include "passes/water_mask_pass.h"
 
@@ -27,18 +28,22 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
     if (kind == PipelineKind::Deferred) {
         add(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
+        add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<WaterMaskPass>());
         add(std::make_unique<LightingPass>());
         add(std::make_unique<ReflectionClearPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
+        add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
         add(std::make_unique<LightingPass>(Mirroring::Mirrored));
     } else {
         add(std::make_unique<ClearPass>(SurfaceOutput::Forward));
         add(std::make_unique<TerrainPass>(SurfaceOutput::Forward));
+        add(std::make_unique<VegetationPass>(SurfaceOutput::Forward));
         add(std::make_unique<SkyPass>());
         add(std::make_unique<WaterMaskPass>());
         add(std::make_unique<ReflectionClearPass>(SurfaceOutput::Forward));
         add(std::make_unique<TerrainPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
+        add(std::make_unique<VegetationPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
         add(std::make_unique<SkyPass>(Mirroring::Mirrored));
     }
     add(std::make_unique<WaterCompositePass>());

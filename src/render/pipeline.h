@@ -1,8 +1,8 @@
 // A pipeline: an ordered list of passes over the shared frame targets.
-//   deferred: Clear(G) Terrain(G) WaterMask Lighting | ReflectionClear(G) Terrain(G, mirrored)
-//             Lighting(mirrored) | WaterComposite ToneMap
-//   forward:  Clear(Radiance) Terrain Sky WaterMask | ReflectionClear Terrain(mirrored)
-//             Sky(mirrored) | WaterComposite ToneMap
+//   deferred: Clear(G) Terrain(G) Vegetation(G) WaterMask Lighting | ReflectionClear(G)
+//             Terrain(G, mirrored) Vegetation(G, mirrored) Lighting(mirrored) | WaterComposite ToneMap
+//   forward:  Clear(Radiance) Terrain Vegetation Sky WaterMask | ReflectionClear Terrain(mirrored)
+//             Vegetation(mirrored) Sky(mirrored) | WaterComposite ToneMap
 // The passes between the bars run only with reflections on and the camera above the water.
 #pragma once
 #include <functional>

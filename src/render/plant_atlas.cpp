@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/shared_constants.glsl"
+
 namespace oasis {
 namespace {
 
@@ -16,7 +18,9 @@ double millisecondsSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// How a cell's plant fills it: its bounding box centred, the longer side 90% of the cell.
+// How a cell's plant fills it: the root at the bottom centre, OASIS_PLANT_ROOT_V of the cell above
+// the bottom edge, and the plant as large as fits inside that margin on every side. A billboard
+// then stands its root on the ground without knowing the plant's shape.
 struct CellFit {
     glm::vec2 centre{0.0f};
     float scale = 1.0f;
@@ -26,15 +30,16 @@ struct CellFit {
 CellFit fitSegments(const std::vector<Segment2D>& segments) {
     CellFit fit;
     if (segments.empty()) return fit;
-    glm::vec2 low(INFINITY), high(-INFINITY);
+    float highest = 1e-6f, widest = 1e-6f;
     for (const Segment2D& s : segments) {
-        low = glm::min(low, glm::min(s.start, s.end));
-        high = glm::max(high, glm::max(s.start, s.end));
+        highest = std::max({highest, s.start.y, s.end.y});
+        widest = std::max({widest, std::fabs(s.start.x), std::fabs(s.end.x)});
         fit.maxDistance = std::max(fit.maxDistance, s.distanceFromRoot + 1.0f);
     }
-    fit.centre = 0.5f * (low + high);
-    glm::vec2 size = high - low;
-    fit.scale = 2.0f * 0.9f / std::max({size.x, size.y, 1e-6f});
+    // In the cell's clip space the root sits at y = -1 + 2m and the plant may reach 1 - 2m.
+    const float margin = float(OASIS_PLANT_ROOT_V), usable = 1.0f - 2.0f * margin;
+    fit.scale = std::min(2.0f * usable / highest, usable / widest);
+    fit.centre = {0.0f, usable / fit.scale};
     return fit;
 }
 
@@ -117,8 +122,9 @@ PlantAtlas::PlantAtlas(ShaderLibrary& shaders, PlantInterpretation path, int cel
 }
 
 void PlantAtlas::draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& buffers) {
-    // Nearest filtering, like every target the debug views sample: a view pixel is one atlas texel.
-    texture_ = gl::createTargetTexture(GL_RGBA8, width(), height());
+    // Nearest filtering of level 0, like every target the debug views sample; the billboards read
+    // the mipmaps through their own sampler (src/render/vegetation_buffers.h).
+    texture_ = gl::createTargetTexture(GL_RGBA8, width(), height(), kMipLevels);
     gl::Framebuffer framebuffer = gl::createFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), 0);
@@ -131,6 +137,10 @@ void PlantAtlas::draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& 
     glUseProgram(program);
     for (size_t i = 0; i < buffers.size(); ++i) drawCell(program, i, buffers[i]);
     glUseProgram(0);
+    // The transparent background is black, so the box-filtered levels hold premultiplied colour.
+    glBindTexture(GL_TEXTURE_2D, texture_.name());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -30,6 +30,8 @@ const std::vector<PlantAtlasVariant>& plantAtlasVariants();
 class PlantAtlas {
 public:
     static constexpr int kCellSize = 256;
+    // Levels down to 8 texels a cell: below that neighbouring cells would bleed into each other.
+    static constexpr int kMipLevels = 6;
 
     // Interprets and draws every variant; throws std::runtime_error if the GPU path fails.
     PlantAtlas(ShaderLibrary& shaders, PlantInterpretation path, int cellSize = kCellSize);
@@ -39,6 +41,9 @@ public:
     int width() const { return columns_ * cellSize_; }
     int height() const { return rows_ * cellSize_; }
     int cellSize() const { return cellSize_; }
+    int columns() const { return columns_; }
+    int rows() const { return rows_; }
+    size_t variantCount() const { return segments_.size(); }
     // Top-left pixel of a variant's cell in the image read() returns (top row first).
     int cellX(size_t variant) const { return int(variant % size_t(columns_)) * cellSize_; }
     int cellY(size_t variant) const { return int(variant / size_t(columns_)) * cellSize_; }

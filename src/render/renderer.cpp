@@ -31,9 +31,32 @@ void Renderer::configure(int width, int height, const GBufferLayout& layout) {
 void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
     plantAtlas_ = atlas;
     debugViews_.setPlantAtlasTexture(atlas ? atlas->texture() : 0);
+    if (atlas)
+        vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows());
+    else
+        vegetationBuffers_.setAtlas(0, 1, 1);
 }
 
-PassContext Renderer::context() { return PassContext{*targets_, shaders_, geometry_, frame_}; }
+PassContext Renderer::context() {
+    return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_};
+}
+
+void Renderer::prepareVegetation(const SceneSettings& scene) {
+    frame_.data.vegetationAtlas =
+        glm::vec4(float(vegetationBuffers_.atlasColumns()), float(vegetationBuffers_.atlasRows()), 0.0f, 0.0f);
+    vegetationList_.instances.clear();
+    vegetationList_.directCount = vegetationList_.mirroredCount = 0;
+    if (frame_.vegetationEnabled && plantAtlas_) {
+        const glm::dvec3& camera = frame_.view.pose.position;
+        vegetationField_.update(scene.terrain, scene.water.level, scene.vegetation,
+                                uint32_t(plantAtlas_->variantCount()), camera);
+        vegetationField_.buildDrawList(scene.vegetation, camera, frame_.data.viewProjection,
+                                       frame_.reflectionsActive, scene.water.level, vegetationList_);
+    } else {
+        vegetationField_.clearStats();
+    }
+    vegetationBuffers_.upload(vegetationList_);
+}
 
 const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
     return kind == PipelineKind::Forward ? forward_ : deferred_;
@@ -65,6 +88,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         throw std::invalid_argument("the " + std::string(pipelineName(active_)) + " pipeline has no pass '" +
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     frame_ = prepareFrame(scene, targets_->width(), targets_->height());
+    prepareVegetation(scene);
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());

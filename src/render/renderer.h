@@ -16,6 +16,8 @@
 #include "render/plant_atlas.h"
 #include "render/scene_geometry.h"
 #include "render/shader_library.h"
+#include "render/vegetation_buffers.h"
+#include "scene/vegetation.h"
 
 namespace oasis {
 
@@ -33,6 +35,9 @@ public:
     // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).
     void setPlantAtlas(const PlantAtlas* atlas);
     const PlantAtlas* plantAtlas() const { return plantAtlas_; }
+    // The plants placed around the last frame's camera and what that frame drew of them.
+    const VegetationField& vegetation() const { return vegetationField_; }
+    const VegetationStats& vegetationStats() const { return vegetationField_.stats(); }
 
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
@@ -62,6 +67,7 @@ public:
 
 private:
     PassContext context();
+    void prepareVegetation(const SceneSettings& scene);
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
@@ -73,6 +79,9 @@ private:
     PipelineKind active_ = PipelineKind::Deferred;
     StencilViewPath stencilPath_ = StencilViewPath::Texturing;
     const PlantAtlas* plantAtlas_ = nullptr;
+    VegetationField vegetationField_;
+    VegetationDrawList vegetationList_;
+    VegetationBuffers vegetationBuffers_;
     DebugViewPass debugViews_;
     FloorPass floor_;
     PresentPass present_;

@@ -18,9 +18,10 @@ enum TextureUnit : int {
     kUnitDepth = 4,
     kUnitStencil = 5,
     kUnitSource = 6,
+    kUnitPlantAtlas = 7,
 };
 
-inline constexpr std::array<SamplerBinding, 7> kSamplerBindings{{
+inline constexpr std::array<SamplerBinding, 8> kSamplerBindings{{
     {"gAlbedo", kUnitAlbedo},
     {"gNormal", kUnitNormal},
     {"gPosition", kUnitPosition},
@@ -28,6 +29,7 @@ inline constexpr std::array<SamplerBinding, 7> kSamplerBindings{{
     {"gDepth", kUnitDepth},
     {"gStencil", kUnitStencil},
     {"sourceTexture", kUnitSource},
+    {"plantAtlas", kUnitPlantAtlas},
 }};
 
 inline constexpr const char* kFrameBlockName = "FrameBlock";

@@ -1,6 +1,6 @@
 // Forward and deferred agree: PSNR of the final images (full layout >= 55 dB, standard >= 45 dB)
-// for the default frame at 1280x720 (it shows the lake), five hard poses and three water poses at
-// 320x180, and every image has content.
+// for the default frame at 1280x720 (it shows the lake and plants), five hard poses, three water
+// poses and a meadow at 320x180, all with vegetation, and every image has content.
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -16,6 +16,7 @@ class Agreement : public GpuTest {
 protected:
     void checkAgreement(const NamedPose& pose, int width, int height) {
         Renderer renderer(*shaders_, pose.scene);
+        auto atlas = attachPlantAtlas(*shaders_, renderer);
         Image firstForward;
         for (const LayoutThreshold& threshold : kThresholds) {
             SCOPED_TRACE(pose.name + " " + threshold.layout + " " + std::to_string(width) + "x" + std::to_string(height));
@@ -24,7 +25,8 @@ protected:
             Image deferred = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
             std::vector<float> albedo = renderer.readTarget(Target::Albedo);  // the deferred frame's
             std::vector<uint8_t> stencil = renderer.readStencil();
-            double waterShare = double(std::count(stencil.begin(), stencil.end(), uint8_t(2))) / double(stencil.size());
+            double waterShare = double(std::count(stencil.begin(), stencil.end(), kStencilWater)) / double(stencil.size());
+            double plantShare = double(std::count(stencil.begin(), stencil.end(), kStencilPlant)) / double(stencil.size());
             dumpImage("agreement-" + pose.name + "-" + threshold.layout + "-forward", forward);
             dumpImage("agreement-" + pose.name + "-" + threshold.layout + "-deferred", deferred);
 
@@ -36,9 +38,12 @@ protected:
             }
 
             ImageDifference difference = compareImages(forward, deferred);
-            std::printf("[psnr] pose=%s layout=%s size=%dx%d psnr=%.2f dB rmse=%.4f maxAbs=%d water=%.1f%%\n",
-                        pose.name.c_str(), threshold.layout, width, height, difference.psnrDb, difference.rmse,
-                        difference.maxAbs, 100.0 * waterShare);
+            std::printf("[psnr] pose=%s layout=%s size=%dx%d psnr=%.2f dB rmse=%.4f maxAbs=%d water=%.1f%% "
+                        "plants=%.1f%%\n", pose.name.c_str(), threshold.layout, width, height, difference.psnrDb,
+                        difference.rmse, difference.maxAbs, 100.0 * waterShare, 100.0 * plantShare);
+            if (pose.name == "default" || pose.name == "meadow") {
+                EXPECT_GT(plantShare, pose.name == "meadow" ? 0.05 : 0.01) << "a vegetation frame with few plants";
+            }
             if (pose.name == "default" || pose.name.rfind("lake", 0) == 0) {
                 EXPECT_GT(waterShare, 0.1) << "a water frame with little water in view";
             }
@@ -76,6 +81,10 @@ INSTANTIATE_TEST_SUITE_P(HardPoses, AgreementPose,
 // Water frames over the lake: a still mirror, a grazing view 0.5 above rippled water, and the low
 // sun glinting on it (the default frame above shows the lake too).
 INSTANTIATE_TEST_SUITE_P(WaterPoses, AgreementPose, ::testing::Values("lakeMirror", "lakeGrazing", "lakeSunset"),
+                         [](const auto& info) { return info.param; });
+
+// Among the plants, near and far, with their reflections.
+INSTANTIATE_TEST_SUITE_P(VegetationPoses, AgreementPose, ::testing::Values("meadow"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

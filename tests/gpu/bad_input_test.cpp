@@ -201,11 +201,13 @@ TEST_F(ShaderReload, BrokenTerrainFragKeepsPreviousProgramsUntilRestored) {
 
 TEST_F(ShaderReload, BrokenIncludedFileIsNamedInEveryProgramThatIncludesIt) {
     // common/sky.glsl reaches every program that includes common/lighting.glsl: the forward terrain
-    // variants (through emit_surface.glsl), both sky variants, both lighting variants and the water
-    // composite. The G-buffer terrain variants include lighting.glsl only inside emit_surface.glsl's
-    // inactive OUTPUT_FORWARD branch, so the broken line is not compiled there. Only programs already
+    // and vegetation variants (through emit_surface.glsl; the vegetation pass builds its program even
+    // without an atlas to draw), both sky variants, both lighting variants and the water
+    // composite. The G-buffer terrain and vegetation variants include lighting.glsl only inside
+    // emit_surface.glsl's inactive OUTPUT_FORWARD branch, so the broken line is not compiled there. Only programs already
     // built are reloaded (the debug views built here, "final", do not include it).
-    breakAndRestore("common/sky.glsl", {"terrain.forward", "terrain.forward.mirrored", "sky.forward",
+    breakAndRestore("common/sky.glsl", {"terrain.forward", "terrain.forward.mirrored", "vegetation.forward",
+                                        "vegetation.forward.mirrored", "sky.forward",
                                         "sky.forward.mirrored", "lighting", "lighting.mirrored", "water.composite"});
 }
 

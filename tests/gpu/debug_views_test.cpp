@@ -60,14 +60,6 @@ glm::ivec3 atlasTexelFor(const Image& atlas, int x, int y, int width, int height
         }
     return best;
 }
-// The atlas the app would build on this context, for a renderer made in a test.
-std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Renderer& renderer) {
-    std::string reason;
-    auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(false, reason));
-    renderer.setPlantAtlas(atlas.get());
-    return atlas;
-}
-
 class DebugViews : public GpuTest {};
 
 // PSNR (8-bit RGB) of two images over a region, as compareImages computes it over a whole image.
@@ -138,7 +130,8 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
 
         ImageDifference difference = compareImages(deferred, forward);
         const DebugView* view = findDebugView(name);
-        if (name == "final" || name == "reflection") {
+        // The vegetation view shows lit pixels (Final), masked by the G-buffer's plant flags.
+        if (name == "final" || name == "reflection" || name == "vegetation") {
             std::printf("[views] %s: forward vs deferred PSNR %.2f dB, max %d\n", name.c_str(), difference.psnrDb,
                         difference.maxAbs);
             EXPECT_GE(difference.psnrDb, 45.0) << name << " view: forward and deferred disagree";
@@ -155,7 +148,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
             for (size_t t = 0; t < tiles.size(); ++t) {
                 const std::string& tileView = debugViews()[t].name;
                 SCOPED_TRACE("tile " + tileView);
-                if (tileView == "final" || tileView == "reflection") {
+                if (tileView == "final" || tileView == "reflection" || tileView == "vegetation") {
                     EXPECT_GE(regionPsnr(deferred, forward, tiles[t].area), 45.0);
                 } else {
                     EXPECT_EQ(regionPsnr(deferredOff, forward, tiles[t].area), kPsnrIdentical)
@@ -302,8 +295,14 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         uint8_t s = stencil[size_t(y) * kWidth + size_t(x)];
         if (s == 0) return std::make_pair(glm::ivec3(0), 0);
         if (s == 2) return std::make_pair(glm::ivec3(38, 115, 242), 2);  // water (0.15, 0.45, 0.95)
-        EXPECT_EQ(s, 1) << "only terrain (1) and water (2) write stencil";
+        if (s == 3) return std::make_pair(glm::ivec3(51, 217, 89), 2);   // plants (0.20, 0.85, 0.35)
+        EXPECT_EQ(s, 1) << "only terrain (1), water (2) and plants (3) write stencil";
         return std::make_pair(glm::ivec3(242, 158, 31), 2);  // terrain (0.95, 0.62, 0.12)
+    };
+    expected["vegetation"] = [&](int x, int y) {
+        unsigned flags = infoFlags(texel(info, kWidth, x, y));
+        bool plant = (flags & kSurfacePlant) && !(flags & kSurfaceReflected);
+        return std::make_pair(plant ? to8bit(glm::vec3(texel(final, kWidth, x, y))) : glm::ivec3(0), 0);
     };
     expected["reflection"] = [&](int x, int y) {
         // Tone-mapped like Final (shaders/common/output.glsl); black outside the water.

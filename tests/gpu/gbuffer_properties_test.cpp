@@ -1,7 +1,7 @@
 // G-buffer properties per pose (deferred, layouts full and standard, and standard with reflections
 // off): the clear is the sky (zero albedo, normal and position, SKY flag) and sky <=> depth 1 <=>
-// stencil 0; terrain (stencil 1) has unit normals facing up, flags 0 and positions equal to those
-// reconstructed from D24 depth; water (stencil 2) has the water plane's depth and holds the
+// stencil 0; terrain (stencil 1) and plants (stencil 3, PLANT flag) have unit normals facing up,
+// and positions equal to those reconstructed from D24 depth; water (stencil 2) has the water plane's depth and holds the
 // mirrored scene (REFLECTED surfaces whose mirror image is above the water, or SKY) when
 // reflections are active, else the direct scene behind the surface; no NaN/Inf in any target. The
 // forward frame's depth and stencil are the deferred frame's, bit for bit.
@@ -88,7 +88,7 @@ protected:
         EXPECT_EQ(frame.reflectionsActive, reflections && cameraAbove);
 
         FirstFailures failures;
-        int skyPixels = 0, surfacePixels = 0, waterPixels = 0, reflectedPixels = 0, stencilSky = 0;
+        int skyPixels = 0, surfacePixels = 0, waterPixels = 0, reflectedPixels = 0, stencilSky = 0, plantPixels = 0;
         double worstNormal = 0.0, worstRatio = 0.0, worstSteps = 0.0, worstWaterRatio = 0.0;
         for (int y = 0; y < kHeight; ++y) {
             for (int x = 0; x < kWidth; ++x) {
@@ -100,7 +100,7 @@ protected:
                 unsigned flags = infoFlags(in);
                 const uint8_t s = stencil[i];
                 const glm::dvec3 ray = pixelRay(data, kWidth, kHeight, x, y);
-                if (s > kStencilWater) failures.note("stencil value other than 0, 1, 2", at(x, y) + ": " + std::to_string(s));
+                if (s > kStencilPlant) failures.note("stencil value other than 0, 1, 2, 3", at(x, y) + ": " + std::to_string(s));
                 if ((depth[i] == 1.0f) != (s == kStencilSky))
                     failures.note("depth 1 <=> stencil 0 fails",
                                   at(x, y) + ": depth " + std::to_string(depth[i]) + ", stencil " + std::to_string(s));
@@ -109,8 +109,9 @@ protected:
                     if (flags != kSurfaceSky)
                         failures.note("stencil-0 pixel without the SKY flag", at(x, y) + ": flags " + std::to_string(flags));
                 }
-                if (flags != kSurfaceSky && flags != 0u && flags != kSurfaceReflected)
-                    failures.note("flags neither SKY, 0 nor REFLECTED", at(x, y) + ": " + std::to_string(flags));
+                if (flags != kSurfaceSky && (flags & ~(kSurfaceReflected | kSurfacePlant)) != 0u)
+                    failures.note("flags neither SKY nor a combination of REFLECTED and PLANT", at(x, y) + ": " + std::to_string(flags));
+                if (flags & kSurfacePlant) ++plantPixels;
                 if (flags == kSurfaceSky) {
                     ++skyPixels;
                     // The clear values: nothing drawn (gbuffer_clear.frag, ClearPass).
@@ -125,12 +126,15 @@ protected:
                     double length = glm::length(glm::dvec3(n));
                     worstNormal = std::max(worstNormal, std::fabs(length - 1.0));
                     if (std::fabs(length - 1.0) > 1e-3) failures.note("normal not unit", at(x, y) + ": |n| = " + std::to_string(length));
-                    // Terrain normals face up, mirrored or not (the G-buffer holds the unmirrored normal).
-                    if (n.y <= 0.0f) failures.note("terrain normal faces down", at(x, y) + ": n.y = " + std::to_string(n.y));
+                    // Terrain and plant normals face up, mirrored or not (the G-buffer holds the unmirrored normal).
+                    if (n.y <= 0.0f) failures.note("surface normal faces down", at(x, y) + ": n.y = " + std::to_string(n.y));
                 }
 
-                if (s == kStencilTerrain) {
-                    if (flags != 0u) failures.note("terrain (stencil 1) flags != 0", at(x, y) + ": " + std::to_string(flags));
+                if (s == kStencilTerrain || s == kStencilPlant) {
+                    if (s == kStencilTerrain && flags != 0u)
+                        failures.note("terrain (stencil 1) flags != 0", at(x, y) + ": " + std::to_string(flags));
+                    if (s == kStencilPlant && flags != kSurfacePlant)
+                        failures.note("plant (stencil 3) flags != PLANT", at(x, y) + ": " + std::to_string(flags));
                     if (flags == kSurfaceSky) continue;
                     glm::dvec3 reconstructed = unproject(data, kWidth, kHeight, x, y, depth[i]);
                     glm::dvec3 stored(p);
@@ -175,7 +179,7 @@ protected:
                     // a direct one seen through it lies on the far side from the camera.
                     double heightTolerance = waterTolerance * std::fabs(ray.y) + 1e-5 * distance + 1e-3;
                     if (frame.reflectionsActive) {
-                        if (flags != kSurfaceReflected) {
+                        if ((flags & ~kSurfacePlant) != kSurfaceReflected) {
                             failures.note("water pixel not REFLECTED with reflections active",
                                           at(x, y) + ": " + std::to_string(flags));
                             continue;
@@ -186,7 +190,7 @@ protected:
                             failures.note("reflected surface's original is under the water",
                                           at(x, y) + ": " + std::to_string(originalHeight) + " below the level");
                     } else {
-                        if (flags != 0u) {
+                        if ((flags & ~kSurfacePlant) != 0u) {
                             failures.note("water pixel not a direct surface with reflections inactive",
                                           at(x, y) + ": " + std::to_string(flags));
                             continue;
@@ -199,13 +203,14 @@ protected:
                 }
             }
         }
-        std::printf("[gbuffer] pose=%s sky=%d (stencil 0: %d) surfaces=%d water=%d (reflected %d) worst |n|-1=%.2e "
+        std::printf("[gbuffer] pose=%s sky=%d (stencil 0: %d) surfaces=%d plants=%d water=%d (reflected %d) worst |n|-1=%.2e "
                     "worst position error %.2f D24 steps (beyond 50 units), %.3f of tolerance; water depth %.3f of tolerance\n",
-                    label.c_str(), skyPixels, stencilSky, surfacePixels, waterPixels, reflectedPixels, worstNormal,
+                    label.c_str(), skyPixels, stencilSky, surfacePixels, plantPixels, waterPixels, reflectedPixels, worstNormal,
                     worstSteps, worstRatio, worstWaterRatio);
         for (const auto& [what, count] : failures.count)
             ADD_FAILURE() << what << " at " << count << " pixels; first " << failures.first[what];
         EXPECT_EQ(skyPixels + surfacePixels, kWidth * kHeight) << "pixels that are neither sky nor a surface";
+        if (pose.name == "default" || pose.name == "meadow") EXPECT_GT(plantPixels, 0) << "no plants in view";
         if (pose.expectSky) EXPECT_GT(skyPixels, 0) << "no sky in view";
         else EXPECT_EQ(skyPixels, 0) << "sky visible where only terrain should be (a hole in the terrain?)";
         if (pose.expectTerrain) EXPECT_GT(surfacePixels, 0) << "no terrain in view";
@@ -225,7 +230,7 @@ protected:
         EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Final)), 0);
         int mismatches = 0, firstMismatch = -1;
         for (size_t i = 0; i < depth.size(); ++i) {
-            bool ok = (depth[i] == 1.0f) == (stencil[i] == kStencilSky) && stencil[i] <= kStencilWater;
+            bool ok = (depth[i] == 1.0f) == (stencil[i] == kStencilSky) && stencil[i] <= kStencilPlant;
             if (!ok && mismatches++ == 0) firstMismatch = int(i);
         }
         EXPECT_EQ(mismatches, 0) << "depth 1 <=> stencil 0 fails; first at index " << firstMismatch;
@@ -246,6 +251,7 @@ protected:
 TEST_P(GBufferProperties, DeferredFullAndStandard) {
     NamedPose pose = poseNamed(GetParam());
     Renderer renderer(*shaders_, pose.scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
     checkLayout(renderer, pose, "full");
     checkLayout(renderer, pose, "standard", false);
     checkLayout(renderer, pose, "standard");
@@ -254,7 +260,7 @@ TEST_P(GBufferProperties, DeferredFullAndStandard) {
 
 INSTANTIATE_TEST_SUITE_P(Poses, GBufferProperties,
                          ::testing::Values("default", "grazing", "down", "up", "sunset", "night", "lakeMirror",
-                                           "lakeGrazing", "lakeSunset"),
+                                           "lakeGrazing", "lakeSunset", "meadow"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

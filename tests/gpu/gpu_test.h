@@ -19,7 +19,9 @@
 
 #include "context/gl_context.h"
 #include "render/image.h"
+#include "render/plant_atlas.h"
 #include "render/renderer.h"
+#include "render/texture_units.h"
 #include "render/shader_library.h"
 #include "scene/terrain.h"
 
@@ -133,10 +135,17 @@ inline std::vector<NamedPose> waterPoses() {
     return poses;
 }
 
+// Among the plants: 6 units above the lake's western shore, looking north-east over a meadow
+// (plants near and far, and their reflections in the water on the right).
+inline std::vector<NamedPose> vegetationPoses() {
+    return {{"meadow", sceneAtHeight(420.0, 6.0, 160.0, 40.0f, -4.0f), true, true, false}};
+}
+
 inline std::vector<NamedPose> allPoses() {
     std::vector<NamedPose> poses{defaultPose()};
     for (NamedPose& pose : hardPoses()) poses.push_back(pose);
     for (NamedPose& pose : waterPoses()) poses.push_back(pose);
+    for (NamedPose& pose : vegetationPoses()) poses.push_back(pose);
     return poses;
 }
 
@@ -167,6 +176,58 @@ inline Image renderView(Renderer& renderer, const SceneSettings& scene, Pipeline
     renderer.renderFrame(scene);
     renderer.renderView(view);
     return renderer.readDisplay();
+}
+
+// The plant atlas the app would build on this context, attached to a renderer made in a test (so
+// its frames draw vegetation). The caller keeps it alive as long as the renderer draws.
+inline std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Renderer& renderer) {
+    std::string reason;
+    auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(false, reason));
+    renderer.setPlantAtlas(atlas.get());
+    return atlas;
+}
+
+// terrainHeight() as the GPU evaluates it (shaders/height_probe.frag) at each world point:
+// (h, dh/dx, dh/dz). Uses the FrameBlock of the renderer's last frame (its terrain shape).
+inline std::vector<glm::vec3> probeGpuHeights(ShaderLibrary& shaders, const Renderer& renderer,
+                                              const std::vector<glm::vec2>& points) {
+    const int side = std::max(1, int(std::ceil(std::sqrt(double(points.size())))));
+    std::vector<float> input(size_t(side) * size_t(side) * 4, 0.0f);
+    for (size_t i = 0; i < points.size(); ++i) {
+        input[i * 4] = points[i].x;
+        input[i * 4 + 1] = points[i].y;
+    }
+    gl::Texture source = gl::createTargetTexture(GL_RGBA32F, side, side);
+    glBindTexture(GL_TEXTURE_2D, source.name());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, side, side, GL_RGBA, GL_FLOAT, input.data());
+    gl::Texture output = gl::createTargetTexture(GL_RGBA32F, side, side);
+    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, output.name(), 0);
+    EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    glViewport(0, 0, side, side);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glClearColor(-1000.0f, -1000.0f, -1000.0f, 0.0f);  // a pixel the probe misses cannot pass
+    glClear(GL_COLOR_BUFFER_BIT);
+    glActiveTexture(GL_TEXTURE0 + kUnitSource);
+    glBindTexture(GL_TEXTURE_2D, source.name());
+    glUseProgram(shaders.program("probe.height"));
+    renderer.geometry().drawFullscreenTriangle();
+    std::vector<float> result(size_t(side) * size_t(side) * 4);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT, result.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glUseProgram(0);
+    std::vector<glm::vec3> heights;
+    for (size_t i = 0; i < points.size(); ++i) {
+        EXPECT_EQ(result[i * 4 + 3], 1.0f) << "probe pixel " << i << " not written";
+        heights.emplace_back(result[i * 4], result[i * 4 + 1], result[i * 4 + 2]);
+    }
+    return heights;
 }
 
 // Writes the image as a PNG under $OASIS_GPU_TEST_DUMP when set (for looking at failures).
@@ -266,11 +327,11 @@ inline std::string str(glm::ivec3 c) {
 }
 
 // Surface flags of an info texel (shaders/common/surface.glsl: infoFlags).
-constexpr unsigned kSurfaceSky = 1u, kSurfaceReflected = 2u;
+constexpr unsigned kSurfaceSky = 1u, kSurfaceReflected = 2u, kSurfacePlant = 4u;
 inline unsigned infoFlags(glm::vec4 info) { return unsigned(std::lround(info.b * 255.0f)); }
 
 // Stencil marks (passes/pass.h: StencilMark).
-constexpr uint8_t kStencilSky = 0, kStencilTerrain = 1, kStencilWater = 2;
+constexpr uint8_t kStencilSky = 0, kStencilTerrain = 1, kStencilWater = 2, kStencilPlant = 3;
 
 // ---------------------------------------------------------------------------------------------
 // Frame geometry on the CPU, in double, from the frame's own matrices.

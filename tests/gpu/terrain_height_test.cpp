@@ -3,8 +3,6 @@
 // 1e-4, gradient within the relative tolerance below; for the default and a non-default shape.
 #include "gpu_test.h"
 
-#include "render/texture_units.h"
-
 namespace oasis::gputest {
 namespace {
 
@@ -40,41 +38,7 @@ protected:
         renderer.configure(64, 36, layoutNamed("standard"));
         renderer.setPipeline(PipelineKind::Deferred);
         renderer.renderFrame(scene);
-
-        std::vector<float> input;
-        for (glm::vec2 p : points) input.insert(input.end(), {p.x, p.y, 0.0f, 1.0f});
-        gl::Texture source = gl::createTargetTexture(GL_RGBA32F, kSide, kSide);
-        glBindTexture(GL_TEXTURE_2D, source.name());
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kSide, kSide, GL_RGBA, GL_FLOAT, input.data());
-        gl::Texture output = gl::createTargetTexture(GL_RGBA32F, kSide, kSide);
-        gl::Framebuffer framebuffer = gl::createFramebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, output.name(), 0);
-        EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-        glViewport(0, 0, kSide, kSide);
-        glDisable(GL_DEPTH_TEST);
-        glDisable(GL_STENCIL_TEST);
-        glDisable(GL_CULL_FACE);
-        glDisable(GL_BLEND);
-        glClearColor(-1000.0f, -1000.0f, -1000.0f, 0.0f);  // a pixel the probe misses cannot pass
-        glClear(GL_COLOR_BUFFER_BIT);
-        glActiveTexture(GL_TEXTURE0 + kUnitSource);
-        glBindTexture(GL_TEXTURE_2D, source.name());
-        glUseProgram(shaders_->program("probe.height"));
-        renderer.geometry().drawFullscreenTriangle();
-        std::vector<float> result(size_t(kSide) * kSide * 4);
-        glReadBuffer(GL_COLOR_ATTACHMENT0);
-        glReadPixels(0, 0, kSide, kSide, GL_RGBA, GL_FLOAT, result.data());
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glUseProgram(0);
-
-        std::vector<glm::vec3> heights;
-        for (size_t i = 0; i < points.size(); ++i) {
-            EXPECT_EQ(result[i * 4 + 3], 1.0f) << "probe pixel " << i << " not written";
-            heights.emplace_back(result[i * 4], result[i * 4 + 1], result[i * 4 + 2]);
-        }
-        return heights;
+        return probeGpuHeights(*shaders_, renderer, points);
     }
 
     // Height within 1e-4 (absolute, world units): the contract shaders/common/noise.glsl states.

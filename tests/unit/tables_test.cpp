@@ -127,9 +127,10 @@ TEST(DebugViewTable, NamesListEndsWithOverview) {
     EXPECT_EQ(debugViewNames(), expected + "overview");
 }
 
-TEST(DebugViewTable, ReadsGBufferExactlyForTheFourColourTargets) {
+TEST(DebugViewTable, ReadsGBufferExactlyForTheFourColourTargetsAndTheVegetationMask) {
     for (const DebugView& view : debugViews()) {
-        bool gbuffer = view.name == "albedo" || view.name == "normal" || view.name == "position" || view.name == "info";
+        bool gbuffer = view.name == "albedo" || view.name == "normal" || view.name == "position" ||
+                       view.name == "info" || view.name == "vegetation";
         EXPECT_EQ(readsGBuffer(view), gbuffer) << view.name;
     }
 }

@@ -1,0 +1,59 @@
+// Plant billboards: one instance per plant, a 4-vertex strip standing on its base, turned about
+// the vertical to face the camera (the plants stay upright), its top bent by a wind field: gusts
+// of noise drifting with the wind plus each plant's own flutter. The base never moves.
+// MIRRORED: the mirror image across the water plane, clipped to what lies above the water.
+#include "common/frame_block.glsl"
+#include "common/noise.glsl"
+#include "common/shared_constants.glsl"
+
+layout(location = 0) in vec4 baseSize;   // xyz base minus camera, w billboard height (world units)
+layout(location = 1) in vec4 tintPhase;  // rgb tint, w wind phase (radians)
+layout(location = 2) in float variant;   // atlas cell
+
+out vec2 vAtlasUv;
+out vec3 vRelativePosition;
+out vec3 vNormal;
+out vec3 vTint;
+
+// Sideways displacement of a plant's top per unit of its height: at most 0.24 * wind strength
+// (scene/vegetation.cpp bounds chunks by 0.3 per unit of strength).
+vec2 windBend(vec2 worldXZ, float phase) {
+    const vec2 windDirection = vec2(0.943, 0.333);  // unit, blowing east-north-east
+    float strength = frame.vegetation.x;
+    // frame.vegetation.z is the gusts' drift, wrapped on the CPU so long runs keep precision.
+    float gust = 0.5 + 0.5 * simplexNoise(worldXZ * 0.012 - windDirection * frame.vegetation.z).x;
+    float flutter = sin(frame.vegetation.y + phase);
+    return windDirection * strength * (0.18 * gust + 0.06 * flutter);
+}
+
+void main() {
+    vec3 base = baseSize.xyz;
+    float size = baseSize.w;
+    vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1));  // (0,0) (1,0) (0,1) (1,1)
+
+    vec2 toCamera = -base.xz;
+    float distance = length(toCamera);
+    vec2 facing = distance > 1e-4 ? toCamera / distance : vec2(0.0, 1.0);
+    vec3 right = vec3(facing.y, 0.0, -facing.x);
+    // The atlas cell's root is OASIS_PLANT_ROOT_V above its bottom edge; the base is the root.
+    const float rootV = float(OASIS_PLANT_ROOT_V);
+    float aboveRoot = (corner.y - rootV) * size;
+    vec3 relative = base + right * ((corner.x - 0.5) * size) + vec3(0.0, aboveRoot, 0.0);
+    // Bend grows with the square of the height above the root: a stem bends, its root does not.
+    float bend = max(corner.y - rootV, 0.0) / (1.0 - rootV);
+    relative.xz += windBend(base.xz + frame.cameraPosition.xz, tintPhase.w) * size * bend * bend;
+
+    // Lit as a tuft: mostly up, partly towards the camera, so plants take the ground's light.
+    vNormal = normalize(vec3(0.0, 1.0, 0.0) + 0.6 * vec3(facing.x, 0.0, facing.y));
+    vTint = tintPhase.rgb;
+    float columns = frame.vegetationAtlas.x, rows = frame.vegetationAtlas.y;
+    float column = mod(variant, columns), row = floor(variant / columns);
+    // Cell rows are numbered from the atlas's top, which is GL's high v.
+    vAtlasUv = vec2((column + corner.x) / columns, 1.0 - (row + 1.0 - corner.y) / rows);
+#if defined(MIRRORED)
+    gl_ClipDistance[0] = relative.y + frame.cameraPosition.y - frame.water.x;  // keep what is above the water
+    relative.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - relative.y;
+#endif
+    vRelativePosition = relative;
+    gl_Position = frame.viewProjection * vec4(relative, 1.0);
+}

@@ -1,0 +1,175 @@
+// The vegetation field: a cache of placed chunks around the camera and the per-frame draw lists.
+#include "scene/vegetation.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace oasis {
+namespace {
+
+// How far a billboard's top can sway sideways, per unit of its height and of wind strength
+// (shaders/vegetation.vert bends the top by at most 0.3 of the height at strength 1).
+constexpr double kSwayPerHeight = 0.3;
+// The billboard reaches below its base by the atlas cell's margin under the root.
+constexpr double kBelowRootPerHeight = 0.05;
+
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
+    // Gribb and Hartmann: each plane is the last row of the matrix plus or minus another row.
+    auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
+    glm::vec4 w = row(3);
+    return {w + row(0), w - row(0), w + row(1), w - row(1), w + row(2), w - row(2)};
+}
+
+}  // namespace
+
+bool boxMeetsFrustum(const glm::mat4& viewProjection, glm::vec3 low, glm::vec3 high) {
+    for (const glm::vec4& plane : frustumPlanes(viewProjection)) {
+        // The corner furthest along the plane's normal: if even it is outside, the whole box is.
+        glm::vec3 corner(plane.x > 0.0f ? high.x : low.x, plane.y > 0.0f ? high.y : low.y,
+                         plane.z > 0.0f ? high.z : low.z);
+        if (glm::dot(glm::vec3(plane), corner) + plane.w < 0.0f) return false;
+    }
+    return true;
+}
+
+float drawnFraction(const VegetationSettings& settings, float distance) {
+    if (distance > settings.drawDistance) return 0.0f;
+    if (distance <= settings.thinningStart) return 1.0f;
+    return settings.thinningStart / distance;
+}
+
+PlantPlacementSettings VegetationField::defaultPlacement() {
+    PlantPlacementSettings placement;
+    placement.worldSeed = 0x0A515u;
+    placement.chunkSize = 32.0f;
+    placement.candidatesPerChunk = 80;  // one candidate per 12.8 square units at density 1
+    placement.minSize = 1.2f;
+    placement.maxSize = 3.6f;
+    return placement;
+}
+
+VegetationField::VegetationField(PlantPlacementSettings placement)
+    : basePlacement_(placement), placement_(placement) {}
+
+bool VegetationField::inRange(glm::ivec2 chunk, const glm::dvec3& camera, float distance) const {
+    // The chunk's square against the disc of the draw distance around the camera.
+    double size = placement_.chunkSize;
+    double nearestX = std::clamp(camera.x, chunk.x * size, (chunk.x + 1) * size);
+    double nearestZ = std::clamp(camera.z, chunk.y * size, (chunk.y + 1) * size);
+    double dx = nearestX - camera.x, dz = nearestZ - camera.z;
+    return dx * dx + dz * dz <= double(distance) * double(distance);
+}
+
+void VegetationField::placeChunk(const TerrainShape& shape, glm::ivec2 chunk) {
+    Chunk placed;
+    placed.plants = placePlantsInChunk(shape, placement_, chunk);
+    double size = placement_.chunkSize;
+    double lowY = INFINITY, highY = -INFINITY, tallest = 0.0;
+    for (const PlantInstance& plant : placed.plants) {
+        lowY = std::min(lowY, double(plant.base.y) - kBelowRootPerHeight * plant.size);
+        highY = std::max(highY, double(plant.base.y) + plant.size);
+        tallest = std::max(tallest, double(plant.size));
+    }
+    double sway = kSwayPerHeight * tallest * double(VegetationSettings::kMaxWindStrength);
+    placed.bounds.low = {chunk.x * size - sway, lowY, chunk.y * size - sway};
+    placed.bounds.high = {(chunk.x + 1) * size + sway, highY, (chunk.y + 1) * size + sway};
+    chunks_[{chunk.x, chunk.y}] = std::move(placed);
+}
+
+void VegetationField::update(const TerrainShape& shape, float waterLevel, const VegetationSettings& settings,
+                             uint32_t variantCount, const glm::dvec3& camera) {
+    float density = std::clamp(settings.density, 0.0f, VegetationSettings::kMaxDensity);
+    bool samePlacement = placedDensity_ == density && placedWaterLevel_ == waterLevel &&
+                         placedVariants_ == variantCount && placedShape_.frequency == shape.frequency &&
+                         placedShape_.amplitude == shape.amplitude &&
+                         placedShape_.baseHeight == shape.baseHeight && placedShape_.octaves == shape.octaves;
+    if (!samePlacement) {
+        chunks_.clear();
+        placement_ = basePlacement_;
+        placement_.candidatesPerChunk = int(std::lround(basePlacement_.candidatesPerChunk * density));
+        placement_.waterLevel = waterLevel;
+        placement_.variantCount = std::max(1u, variantCount);
+        placedShape_ = shape;
+        placedWaterLevel_ = waterLevel;
+        placedDensity_ = density;
+        placedVariants_ = variantCount;
+    }
+    // Forget chunks well out of range (a margin keeps a camera on a chunk edge from thrashing).
+    for (auto it = chunks_.begin(); it != chunks_.end();) {
+        glm::ivec2 chunk(it->first.first, it->first.second);
+        it = inRange(chunk, camera, settings.drawDistance + 2.0f * placement_.chunkSize) ? std::next(it)
+                                                                                        : chunks_.erase(it);
+    }
+    double size = placement_.chunkSize;
+    glm::ivec2 first(int(std::floor((camera.x - settings.drawDistance) / size)),
+                     int(std::floor((camera.z - settings.drawDistance) / size)));
+    glm::ivec2 last(int(std::floor((camera.x + settings.drawDistance) / size)),
+                    int(std::floor((camera.z + settings.drawDistance) / size)));
+    stats_ = VegetationStats{};
+    for (int z = first.y; z <= last.y; ++z)
+        for (int x = first.x; x <= last.x; ++x) {
+            glm::ivec2 chunk(x, z);
+            if (!inRange(chunk, camera, settings.drawDistance)) continue;
+            auto found = chunks_.find({x, z});
+            if (found == chunks_.end()) placeChunk(shape, chunk);
+            stats_.chunksInRange++;
+            stats_.plantsPlaced += chunks_[{x, z}].plants.size();
+        }
+}
+
+void VegetationField::buildDrawList(const VegetationSettings& settings, const glm::dvec3& camera,
+                                    const glm::mat4& viewProjection, bool withReflection, float waterLevel,
+                                    VegetationDrawList& list) {
+    list.instances.clear();
+    list.directCount = list.mirroredCount = 0;
+    stats_.chunksVisible = stats_.chunksMirrored = 0;
+    stats_.plantsDrawn = stats_.plantsDrawnMirrored = 0;
+    auto relative = [&](const glm::dvec3& p) { return glm::vec3(p - camera); };
+    // Appends the chunk's plants that survive thinning; returns how many.
+    auto appendThinned = [&](const Chunk& chunk) {
+        size_t count = chunk.plants.size(), appended = 0;
+        for (size_t i = 0; i < count; ++i) {
+            const PlantInstance& plant = chunk.plants[i];
+            glm::dvec3 base(plant.base);
+            glm::vec3 offset = relative(base);
+            float distance = std::sqrt(offset.x * offset.x + offset.z * offset.z);
+            // Plants come in random order, so keeping a prefix rank below the fraction thins
+            // evenly, and a plant appears or vanishes alone as the camera moves.
+            float rank = (float(i) + 0.5f) / float(count);
+            if (rank >= drawnFraction(settings, distance)) continue;
+            list.instances.push_back({glm::vec4(offset, plant.size), glm::vec4(plant.tint, plant.windPhase),
+                                      float(plant.variant)});
+            ++appended;
+        }
+        return appended;
+    };
+    for (const auto& [key, chunk] : chunks_) {
+        if (chunk.plants.empty() || !inRange({key.first, key.second}, camera, settings.drawDistance)) continue;
+        if (!boxMeetsFrustum(viewProjection, relative(chunk.bounds.low), relative(chunk.bounds.high))) continue;
+        stats_.chunksVisible++;
+        list.directCount += appendThinned(chunk);
+    }
+    if (withReflection) {
+        double mirror = 2.0 * double(waterLevel);
+        for (const auto& [key, chunk] : chunks_) {
+            if (chunk.plants.empty() || !inRange({key.first, key.second}, camera, settings.drawDistance))
+                continue;
+            glm::dvec3 low(chunk.bounds.low.x, mirror - chunk.bounds.high.y, chunk.bounds.low.z);
+            glm::dvec3 high(chunk.bounds.high.x, mirror - chunk.bounds.low.y, chunk.bounds.high.z);
+            if (!boxMeetsFrustum(viewProjection, relative(low), relative(high))) continue;
+            stats_.chunksMirrored++;
+            list.mirroredCount += appendThinned(chunk);
+        }
+    }
+    stats_.plantsDrawn = list.directCount;
+    stats_.plantsDrawnMirrored = list.mirroredCount;
+}
+
+std::vector<PlantInstance> VegetationField::placedPlants() const {
+    std::vector<PlantInstance> plants;
+    for (const auto& entry : chunks_) plants.insert(plants.end(), entry.second.plants.begin(), entry.second.plants.end());
+    return plants;
+}
+
+}  // namespace oasis
