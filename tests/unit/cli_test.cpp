@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cli/options.h"
+#include "commands/session.h"
 #include "debug/debug_views.h"
 #include "render/gbuffer_layout.h"
 
@@ -93,6 +94,20 @@ TEST(Cli, BadInputNamesTheOption) {
         EXPECT_FALSE(r.ok) << arguments.back();
         EXPECT_NE(r.error.find(option), std::string::npos) << "'" << r.error << "' should name " << option;
     }
+}
+
+TEST(Cli, VegetationOptions) {
+    Options defaults = parse({}).options;
+    EXPECT_TRUE(defaults.scene.vegetation.enabled);
+    EXPECT_EQ(defaults.scene.vegetation.density, 1.0f);
+    Options o = parse({"render", "--vegetation", "off", "--vegetation-density", "2.5", "--wind", "0"}).options;
+    EXPECT_FALSE(o.scene.vegetation.enabled);
+    EXPECT_EQ(o.scene.vegetation.density, 2.5f);
+    EXPECT_EQ(o.scene.vegetation.windStrength, 0.0f);
+    SceneSettings scene = sceneSettingsFrom(o.scene);
+    EXPECT_FALSE(scene.vegetation.enabled);
+    EXPECT_EQ(scene.vegetation.density, 2.5f);
+    EXPECT_NE(usage(Command::Render).find("--vegetation-density"), std::string::npos);
 }
 
 TEST(Cli, ValueParsers) {
@@ -367,6 +382,11 @@ TEST(ParseCommandLine, ErrorsNameTheOption) {
     expectError({"--water-level", "2e6"}, "--water-level");
     expectError({"--ripples", "-0.1"}, "--ripples");
     expectError({"--absorption", "-1"}, "--absorption");
+    expectError({"--vegetation", "maybe"}, "--vegetation");
+    expectError({"--vegetation-density", "4.5"}, "--vegetation-density");
+    expectError({"--vegetation-density", "-1"}, "--vegetation-density");
+    expectError({"--wind", "gale"}, "--wind");
+    expectError({"--wind", "3.01"}, "--wind");
     expectError({"compare", "--frames", "0"}, "--frames");
     expectError({"compare", "--frames", "1001"}, "--frames");
     expectError({"compare", "--frames", "many"}, "--frames");
