@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Produces the README's timing tables: median ms per frame of each pipeline (wall time around
-# glFinish) beside the floor measured in the same run, for each size, layout and reflection setting.
+# glFinish) beside the floor measured in the same run, for each size, layout and reflection setting,
+# then the cost of vegetation at several densities.
 # usage: docs/measure.sh [path/to/oasis] [frames]   (run on an idle machine; prints markdown)
 set -euo pipefail
 oasis=${1:-build/oasis}
@@ -22,6 +23,19 @@ for size in 1280x720 640x360; do
                size, layout, bpp, refl, f, d, floor, f / floor, d / floor, psnr }'
     done
   done
+done
+echo
+echo "| vegetation (1280x720, standard, reflections on) | plants placed | drawn (+ reflected) | forward ms | deferred ms | floor ms | PSNR fwd vs def |"
+echo "| --- | --- | --- | --- | --- | --- | --- |"
+for vegetation in "off" "on 0.5" "on 1" "on 2" "on 4"; do
+  set -- $vegetation
+  json=$("$oasis" compare --size 1280x720 --vegetation "$1" --vegetation-density "${2:-1}" \
+         --frames "$frames" --json --out-dir "$out")
+  label="$1${2:+, density $2}"
+  awk -v label="$label" -v placed="$(field plants_placed "$json")" -v drawn="$(field plants_drawn "$json")" \
+      -v mirrored="$(field plants_drawn_mirrored "$json")" -v f="$(field forward_ms "$json")" \
+      -v d="$(field deferred_ms "$json")" -v floor="$(field floor_ms "$json")" -v psnr="$(field psnr_db "$json")" 'BEGIN {
+    printf "| %s | %d | %d (+ %d) | %.1f | %.1f | %.1f | %.1f dB |\n", label, placed, drawn, mirrored, f, d, floor, psnr }'
 done
 echo
 echo "renderer: $(field renderer "$json"); medians of $frames frames; $(nproc) cores"
