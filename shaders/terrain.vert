@@ -15,7 +15,7 @@ void main() {
     float radius = ring == 0.0 ? 0.0 : frame.terrainGrid.z * pow(frame.terrainGrid.w, ring - 1.0);
     float azimuth = frame.terrainGrid.x + (2.0 * gridCoordinate.y - 1.0) * frame.terrainGrid.y;
     vec2 offset = radius * vec2(sin(azimuth), -cos(azimuth));
-    vec3 height = terrainHeight(frame.cameraPosition.xz + offset);
+    vec3 height = terrainHeightFromCamera(offset);
     vec3 relative = vec3(offset.x, height.x - frame.cameraPosition.y, offset.y);
     vNormal = normalize(vec3(-height.y, 1.0, -height.z));
 #if defined(MIRRORED)

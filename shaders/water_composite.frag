@@ -9,8 +9,7 @@ in vec3 vRelativePosition;
 layout(location = 0) out vec4 outColour;
 
 void main() {
-    vec3 world = vRelativePosition + frame.cameraPosition.xyz;
-    vec3 normal = waterNormal(world.xz);
+    vec3 normal = waterNormal(vRelativePosition.xz);
     vec3 toCamera = normalize(-vRelativePosition);
     float fresnel = fresnelSchlick(dot(normal, toCamera));
     vec3 reflected = reflectionsActive()

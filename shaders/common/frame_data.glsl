@@ -3,6 +3,7 @@
 
 #ifndef OASIS_FRAME_DATA_GLSL
 #define OASIS_FRAME_DATA_GLSL
+#include "common/shared_constants.glsl"
 
 struct FrameData {
     mat4 viewProjection;         // world (camera-relative) -> clip
@@ -21,6 +22,10 @@ struct FrameData {
     vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
     vec4 vegetation;             // x wind strength, y flutter phase (rad), z gust drift (noise units), w unused
     vec4 vegetationAtlas;        // x atlas columns, y atlas rows, zw unused
+    // The camera's terrain-noise coordinates per octave, split in the skewed simplex lattice:
+    // xy the fraction, zw the integer cell (exact in float to 2^24). See noise.glsl.
+    vec4 terrainNoiseOrigins[OASIS_NOISE_MAX_OCTAVES];
+    vec4 rippleNoiseOrigins[2];  // the same for the water's two ripple layers (broad, fine)
 };
 
 #endif

@@ -1,9 +1,12 @@
-// 2D simplex noise with its analytic gradient, and the fractal sum the terrain is built from.
-// src/scene/noise.cpp is the same arithmetic in C++; tests hold the two within 1e-4 in height.
+// 2D simplex noise with its analytic gradient, and the fractal sum the terrain is built from,
+// evaluated around an exactly known origin (the camera) so that far from the world's origin the
+// heights keep their precision. src/scene/noise.cpp is the same arithmetic in C++; tests hold the
+// two within 1e-4 in height, also 1e5 units out.
 // Gradients come from an integer hash (exact on CPU and GPU), not from a float permutation.
 
 #ifndef OASIS_NOISE_GLSL
 #define OASIS_NOISE_GLSL
+#include "common/shared_constants.glsl"
 
 const float SIMPLEX_SKEW = 0.36602540378;    // (sqrt(3) - 1) / 2
 const float SIMPLEX_UNSKEW = 0.21132486540;  // (3 - sqrt(3)) / 6
@@ -42,11 +45,14 @@ vec3 simplexCorner(vec2 x, ivec2 cell) {
     return vec3(t4 * gx, t4 * g - 8.0 * t2 * t * gx * x);
 }
 
-// Returns (noise, d noise / dx, d noise / dy); noise in [-1, 1].
-vec3 simplexNoise(vec2 p) {
-    vec2 skewed = floor(p + (p.x + p.y) * SIMPLEX_SKEW);
-    ivec2 cell = ivec2(skewed);
-    vec2 x0 = p - skewed + (skewed.x + skewed.y) * SIMPLEX_UNSKEW;
+// Simplex noise at the point whose skewed coordinates are baseCell + skewedOffset: the integer
+// part stays an integer (exact however far from the origin), only the small offset is a float.
+// Returns (noise, d noise / dx, d noise / dy) in unskewed coordinates; noise in [-1, 1].
+vec3 simplexNoiseSkewed(ivec2 baseCell, vec2 skewedOffset) {
+    vec2 whole = floor(skewedOffset);
+    ivec2 cell = baseCell + ivec2(whole);
+    vec2 f = skewedOffset - whole;
+    vec2 x0 = f - (f.x + f.y) * SIMPLEX_UNSKEW;  // unskewed, from the cell's first corner
     ivec2 step = x0.x > x0.y ? ivec2(1, 0) : ivec2(0, 1);
     vec2 x1 = x0 - vec2(step) + SIMPLEX_UNSKEW;
     vec2 x2 = x0 - 1.0 + 2.0 * SIMPLEX_UNSKEW;
@@ -55,26 +61,37 @@ vec3 simplexNoise(vec2 p) {
     return SIMPLEX_SCALE * sum;
 }
 
-// Fractal sum of `octaves` simplex layers, each rotated by (0.8, 0.6) and doubled in frequency
-// so lattice directions do not line up. Returns (sum, d sum / dx, d sum / dy).
-// Each octave's small offset is added at evaluation, not carried into the next octave: carried,
-// it doubles with every octave and the finest layer would be evaluated near 2000, where a float
-// step is 1e-4 and CPU and GPU rounding visibly disagree.
-vec3 fractalNoise(vec2 p, int octaves) {
+vec2 simplexSkew(vec2 p) { return p + (p.x + p.y) * SIMPLEX_SKEW; }
+
+// Noise at an absolute point, for small coordinates (materials, ripples).
+vec3 simplexNoise(vec2 p) { return simplexNoiseSkewed(ivec2(0), simplexSkew(p)); }
+
+// The fractal sum's octaves: each rotated by (0.8, 0.6), doubled in frequency and shifted by
+// (17, -31) per octave, so lattice directions do not line up.
+vec2 nextOctave(vec2 q) { return vec2(1.6 * q.x - 1.2 * q.y, 1.2 * q.x + 1.6 * q.y); }
+
+// Fractal sum of `octaves` simplex layers at noise coordinates `origin + local`, where each
+// octave's image of `origin` is given exactly, split in the skewed lattice into an integer cell
+// (zw) and a fraction (xy): octaveOrigins[o] (src/scene/noise.h computes them in double). Only
+// `local` (small: the offset from the camera) is carried in float, so the precision does not
+// depend on how far the origin is from zero. Returns (sum, d sum / dx, d sum / dy) per unit of
+// `local`.
+vec3 fractalNoiseFrom(vec4 octaveOrigins[OASIS_NOISE_MAX_OCTAVES], vec2 local, int octaves) {
     vec3 result = vec3(0.0);
     float amplitude = 1.0;
-    // Jacobian of the octave's coordinates with respect to p, as columns (jx, jy).
+    // Jacobian of the octave's coordinates with respect to `local`, as columns (jx, jy).
     vec2 jx = vec2(1.0, 0.0);
     vec2 jy = vec2(0.0, 1.0);
-    vec2 q = p;
+    vec2 q = local;
     for (int octave = 0; octave < octaves; ++octave) {
-        vec3 n = simplexNoise(q + vec2(17.0, -31.0) * float(octave));
+        vec4 origin = octaveOrigins[octave];
+        vec3 n = simplexNoiseSkewed(ivec2(origin.zw), origin.xy + simplexSkew(q));
         result.x += amplitude * n.x;
         result.y += amplitude * dot(n.yz, jx);
         result.z += amplitude * dot(n.yz, jy);
-        q = vec2(1.6 * q.x - 1.2 * q.y, 1.2 * q.x + 1.6 * q.y);
-        jx = vec2(1.6 * jx.x - 1.2 * jx.y, 1.2 * jx.x + 1.6 * jx.y);
-        jy = vec2(1.6 * jy.x - 1.2 * jy.y, 1.2 * jy.x + 1.6 * jy.y);
+        q = nextOctave(q);
+        jx = nextOctave(jx);
+        jy = nextOctave(jy);
         amplitude *= 0.5;
     }
     return result;

@@ -5,6 +5,8 @@
 
 // Terrain height = amplitude * (n + k n^2) + base: flat valleys for the water, sharper ridges.
 #define OASIS_TERRAIN_VALLEY_FLATTENING 0.3
+// The most octaves the fractal noise sums (FrameData holds an origin per octave).
+#define OASIS_NOISE_MAX_OCTAVES 8
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
 // Surface flags stored in the info target (info.b * 255).

@@ -7,10 +7,12 @@
 
 #include "common/shared_constants.glsl"
 
-// (height, d height / dx, d height / dz) at world (x, z).
-vec3 terrainHeight(vec2 worldXZ) {
+// (height, d height / dx, d height / dz) at the point `relativeXZ` (world units) from the camera.
+// The noise is taken around the camera's exactly known noise coordinates (FrameData's origins),
+// so a camera 1e5 units out gets the same precision as one at the origin.
+vec3 terrainHeightFromCamera(vec2 relativeXZ) {
     vec4 shape = frame.terrainShape;  // frequency, amplitude, base height, octaves
-    vec3 n = fractalNoise(worldXZ * shape.x, int(shape.w));
+    vec3 n = fractalNoiseFrom(frame.terrainNoiseOrigins, relativeXZ * shape.x, int(shape.w));
     // h = amplitude * (n + k n^2): broad flat valleys for the water, sharper ridges above.
     const float k = OASIS_TERRAIN_VALLEY_FLATTENING;
     float slopeScale = shape.y * shape.x * (1.0 + 2.0 * k * n.x);

@@ -38,13 +38,16 @@ vec3 throughWater(vec3 radiance, float length) {
     return radiance * transmittance + waterScatter() * (vec3(1.0) - transmittance);
 }
 
-// Surface normal with two layers of drifting ripples, scaled by the ripple strength.
-vec3 waterNormal(vec2 worldXZ) {
+// Surface normal with two layers of drifting ripples, scaled by the ripple strength, at the point
+// `relativeXZ` from the camera. Each layer is noise around its origin, the camera's drifted
+// coordinates that the CPU computes in double (src/render/frame_setup.cpp), so neither distance
+// nor hours of drift cost precision.
+vec3 waterNormal(vec2 relativeXZ) {
     float strength = frame.water.z;
     if (strength == 0.0) return vec3(0.0, 1.0, 0.0);
-    float t = frame.depthRange.z;
-    vec3 broad = simplexNoise(worldXZ * 0.12 + vec2(0.05, 0.03) * t);
-    vec3 fine = simplexNoise(worldXZ * 0.55 - vec2(0.11, -0.07) * t);
+    vec4 broadOrigin = frame.rippleNoiseOrigins[0], fineOrigin = frame.rippleNoiseOrigins[1];
+    vec3 broad = simplexNoiseSkewed(ivec2(broadOrigin.zw), broadOrigin.xy + simplexSkew(relativeXZ * 0.12));
+    vec3 fine = simplexNoiseSkewed(ivec2(fineOrigin.zw), fineOrigin.xy + simplexSkew(relativeXZ * 0.55));
     vec2 slope = strength * (0.08 * 0.12 * broad.yz + 0.025 * 0.55 * fine.yz);
     return normalize(vec3(-slope.x, 1.0, -slope.y));
 }

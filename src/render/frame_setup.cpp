@@ -30,7 +30,7 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     d.skyHorizon = glm::vec4(setup.sky.skyHorizon, 0.0f);
     d.groundAmbient = glm::vec4(setup.sky.groundAmbient, 0.0f);
     d.terrainShape = glm::vec4(scene.terrain.frequency, scene.terrain.amplitude, scene.terrain.baseHeight,
-                               float(scene.terrain.octaves));
+                               float(std::clamp(scene.terrain.octaves, 0, kMaxNoiseOctaves)));
     d.terrainGrid = glm::vec4(setup.wedge.centralAzimuth, setup.wedge.halfWidth,
                               scene.grid.firstRingRadius, setup.wedge.ringRatio);
     d.terrainGridCounts = glm::vec4(float(scene.grid.rings), float(scene.grid.segments), scene.fogStart,
@@ -47,6 +47,13 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     d.vegetation = glm::vec4(wind, float(std::fmod(scene.timeSeconds * 2.3, kTwoPi)),
                              float(std::fmod(scene.timeSeconds * 0.6, 10000.0)), 0.0f);
     d.vegetationAtlas = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the renderer fills in its atlas
+    // Noise origins around the camera, in double: see shaders/common/noise.glsl.
+    glm::dvec2 cameraXZ(setup.view.pose.position.x, setup.view.pose.position.z);
+    NoiseOrigins terrain = terrainNoiseOrigins(scene.terrain, cameraXZ);
+    std::copy(terrain.begin(), terrain.end(), d.terrainNoiseOrigins);
+    // The ripple layers drift with time; the drift joins the origin, so it never costs precision.
+    d.rippleNoiseOrigins[0] = skewedOrigin(cameraXZ * 0.12 + glm::dvec2(0.05, 0.03) * scene.timeSeconds);
+    d.rippleNoiseOrigins[1] = skewedOrigin(cameraXZ * 0.55 - glm::dvec2(0.11, -0.07) * scene.timeSeconds);
     return setup;
 }
 

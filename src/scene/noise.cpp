@@ -1,6 +1,7 @@
 // CPU twin of shaders/common/noise.glsl. Keep the two in step: tests compare them.
 #include "scene/noise.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace oasis {
@@ -45,10 +46,13 @@ uint32_t hashCell(glm::ivec2 cell) {
     return h;
 }
 
-glm::vec3 simplexNoise(glm::vec2 p) {
-    glm::vec2 skewed = glm::floor(p + (p.x + p.y) * kSkew);
-    glm::ivec2 cell = glm::ivec2(skewed);
-    glm::vec2 x0 = p - skewed + (skewed.x + skewed.y) * kUnskew;
+glm::vec2 simplexSkew(glm::vec2 p) { return p + (p.x + p.y) * kSkew; }
+
+glm::vec3 simplexNoiseSkewed(glm::ivec2 baseCell, glm::vec2 skewedOffset) {
+    glm::vec2 whole = glm::floor(skewedOffset);
+    glm::ivec2 cell = baseCell + glm::ivec2(whole);
+    glm::vec2 f = skewedOffset - whole;
+    glm::vec2 x0 = f - (f.x + f.y) * kUnskew;
     glm::ivec2 step = x0.x > x0.y ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
     glm::vec2 x1 = x0 - glm::vec2(step) + kUnskew;
     glm::vec2 x2 = x0 - 1.0f + 2.0f * kUnskew;
@@ -57,22 +61,57 @@ glm::vec3 simplexNoise(glm::vec2 p) {
     return kScale * sum;
 }
 
-glm::vec3 fractalNoise(glm::vec2 p, int octaves) {
+glm::vec3 simplexNoise(glm::vec2 p) { return simplexNoiseSkewed(glm::ivec2(0), simplexSkew(p)); }
+
+glm::vec4 skewedOrigin(glm::dvec2 p) {
+    // The skew in double: F2 = (sqrt(3) - 1) / 2 to double precision.
+    const double skew = 0.36602540378443865;
+    glm::dvec2 skewed = p + (p.x + p.y) * skew;
+    glm::dvec2 cell = glm::floor(skewed);
+    glm::dvec2 fraction = skewed - cell;
+    return {float(fraction.x), float(fraction.y), float(cell.x), float(cell.y)};
+}
+
+namespace {
+template <typename Vec2>
+Vec2 nextOctave(Vec2 q) {
+    return Vec2(1.6f * q.x - 1.2f * q.y, 1.2f * q.x + 1.6f * q.y);
+}
+glm::dvec2 nextOctaveExact(glm::dvec2 q) { return {1.6 * q.x - 1.2 * q.y, 1.2 * q.x + 1.6 * q.y}; }
+int clampOctaves(int octaves) { return std::clamp(octaves, 0, kMaxNoiseOctaves); }
+}  // namespace
+
+NoiseOrigins fractalNoiseOrigins(glm::dvec2 p, int octaves) {
+    NoiseOrigins origins{};
+    glm::dvec2 q = p;
+    for (int octave = 0; octave < clampOctaves(octaves); ++octave) {
+        origins[size_t(octave)] = skewedOrigin(q + glm::dvec2(17.0, -31.0) * double(octave));
+        q = nextOctaveExact(q);
+    }
+    return origins;
+}
+
+glm::vec3 fractalNoiseFrom(const NoiseOrigins& origins, glm::vec2 local, int octaves) {
     glm::vec3 result(0.0f);
     float amplitude = 1.0f;
-    glm::vec2 jx(1.0f, 0.0f), jy(0.0f, 1.0f), q = p;
-    for (int octave = 0; octave < octaves; ++octave) {
-        glm::vec3 n = simplexNoise(q + glm::vec2(17.0f, -31.0f) * float(octave));
+    glm::vec2 jx(1.0f, 0.0f), jy(0.0f, 1.0f), q = local;
+    for (int octave = 0; octave < clampOctaves(octaves); ++octave) {
+        const glm::vec4& origin = origins[size_t(octave)];
+        glm::vec3 n = simplexNoiseSkewed(glm::ivec2(origin.z, origin.w), glm::vec2(origin) + simplexSkew(q));
         glm::vec2 g(n.y, n.z);
         result.x += amplitude * n.x;
         result.y += amplitude * glm::dot(g, jx);
         result.z += amplitude * glm::dot(g, jy);
-        q = glm::vec2(1.6f * q.x - 1.2f * q.y, 1.2f * q.x + 1.6f * q.y);
-        jx = glm::vec2(1.6f * jx.x - 1.2f * jx.y, 1.2f * jx.x + 1.6f * jx.y);
-        jy = glm::vec2(1.6f * jy.x - 1.2f * jy.y, 1.2f * jy.x + 1.6f * jy.y);
+        q = nextOctave(q);
+        jx = nextOctave(jx);
+        jy = nextOctave(jy);
         amplitude *= 0.5f;
     }
     return result;
+}
+
+glm::vec3 fractalNoise(glm::dvec2 p, int octaves) {
+    return fractalNoiseFrom(fractalNoiseOrigins(p, octaves), glm::vec2(0.0f), octaves);
 }
 
 }  // namespace oasis

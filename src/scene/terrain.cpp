@@ -13,14 +13,28 @@ namespace {
 constexpr float kValleyFlattening = float(OASIS_TERRAIN_VALLEY_FLATTENING);
 }  // namespace
 
-glm::vec3 terrainHeight(const TerrainShape& shape, glm::vec2 worldXZ) {
-    glm::vec3 n = fractalNoise(worldXZ * shape.frequency, shape.octaves);
+NoiseOrigins terrainNoiseOrigins(const TerrainShape& shape, glm::dvec2 worldXZ) {
+    return fractalNoiseOrigins(worldXZ * double(shape.frequency), shape.octaves);
+}
+
+namespace {
+// h = amplitude * (n + k n^2) + base and its gradient, from the noise and its gradient.
+glm::vec3 heightFromNoise(const TerrainShape& shape, glm::vec3 n) {
     const float k = kValleyFlattening;
     float slopeScale = shape.amplitude * shape.frequency * (1.0f + 2.0f * k * n.x);
     return {shape.amplitude * (n.x + k * n.x * n.x) + shape.baseHeight, slopeScale * n.y, slopeScale * n.z};
 }
+}  // namespace
 
-glm::vec3 terrainNormal(const TerrainShape& shape, glm::vec2 worldXZ) {
+glm::vec3 terrainHeight(const TerrainShape& shape, glm::dvec2 worldXZ) {
+    return heightFromNoise(shape, fractalNoise(worldXZ * double(shape.frequency), shape.octaves));
+}
+
+glm::vec3 terrainHeightFromCamera(const TerrainShape& shape, const NoiseOrigins& origins, glm::vec2 relativeXZ) {
+    return heightFromNoise(shape, fractalNoiseFrom(origins, relativeXZ * shape.frequency, shape.octaves));
+}
+
+glm::vec3 terrainNormal(const TerrainShape& shape, glm::dvec2 worldXZ) {
     glm::vec3 h = terrainHeight(shape, worldXZ);
     return glm::normalize(glm::vec3(-h.y, 1.0f, -h.z));
 }

@@ -187,15 +187,18 @@ inline std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Rend
     return atlas;
 }
 
-// terrainHeight() as the GPU evaluates it (shaders/height_probe.frag) at each world point:
-// (h, dh/dx, dh/dz). Uses the FrameBlock of the renderer's last frame (its terrain shape).
-inline std::vector<glm::vec3> probeGpuHeights(ShaderLibrary& shaders, const Renderer& renderer,
-                                              const std::vector<glm::vec2>& points) {
+// The terrain height as the GPU evaluates it (shaders/height_probe.frag) at each world point:
+// (h, dh/dx, dh/dz). Uses the FrameBlock of the renderer's last frame (its terrain shape and its
+// camera: points go to the GPU relative to the camera, subtracted in double, as vertices do).
+template <typename Point>
+std::vector<glm::vec3> probeGpuHeights(ShaderLibrary& shaders, const Renderer& renderer,
+                                       const std::vector<Point>& points) {
     const int side = std::max(1, int(std::ceil(std::sqrt(double(points.size())))));
+    const glm::dvec3 camera = renderer.lastFrame().view.pose.position;
     std::vector<float> input(size_t(side) * size_t(side) * 4, 0.0f);
     for (size_t i = 0; i < points.size(); ++i) {
-        input[i * 4] = points[i].x;
-        input[i * 4 + 1] = points[i].y;
+        input[i * 4] = float(double(points[i].x) - camera.x);
+        input[i * 4 + 1] = float(double(points[i].y) - camera.z);
     }
     gl::Texture source = gl::createTargetTexture(GL_RGBA32F, side, side);
     glBindTexture(GL_TEXTURE_2D, source.name());

@@ -1,6 +1,10 @@
-// CPU and GPU terrain agree: shaders/height_probe.frag evaluates terrainHeight() at 4096 points
-// over +-3 km (negative coordinates included) and matches src/scene/terrain.cpp: height within
-// 1e-4, gradient within the relative tolerance below; for the default and a non-default shape.
+// CPU and GPU terrain agree: shaders/height_probe.frag evaluates terrainHeightFromCamera() at
+// 4096 points within +-3 km of the camera (negative coordinates included) and matches
+// src/scene/terrain.cpp twice over: its float twin of the GPU's arithmetic (same origins, same
+// float offsets) within 1e-4 in height and the relative gradient tolerance below, everywhere;
+// and the exact reference (every noise coordinate in double) within 1e-4 inside 500 units of the
+// camera, the float offset's rounding beyond. Cameras at the default flight, 1e5 and 1e6 units
+// out: the errors must not grow with the camera's distance from the world's origin.
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -8,32 +12,60 @@ namespace {
 
 constexpr int kSide = 64;  // 64 x 64 sample points, one per probe pixel
 
-// Sample points: a jittered grid over [-3000, 3000]^2 plus a few special points in the first row
-// (origin, just either side of zero, the default flight's start, far negative corner).
-std::vector<glm::vec2> samplePoints() {
-    std::vector<glm::vec2> points;
+// Sample points: a jittered grid over the camera's +-3000 square plus, for a camera near the
+// origin, a few special points in the first row (origin, just either side of zero, the default
+// flight's start, a far corner).
+std::vector<glm::dvec2> samplePoints(glm::dvec2 camera) {
+    std::vector<glm::dvec2> points;
     uint32_t state = 12345u;
     auto random = [&] {  // deterministic LCG in [0, 1)
         state = state * 1664525u + 1013904223u;
-        return float(state >> 8) / float(1u << 24);
+        return double(state >> 8) / double(1u << 24);
     };
     for (int j = 0; j < kSide; ++j)
         for (int i = 0; i < kSide; ++i) {
-            float step = 6000.0f / kSide;
-            points.emplace_back(-3000.0f + (float(i) + random()) * step, -3000.0f + (float(j) + random()) * step);
+            double step = 6000.0 / kSide;
+            points.push_back(camera + glm::dvec2(-3000.0 + (i + random()) * step, -3000.0 + (j + random()) * step));
         }
-    const glm::vec2 special[] = {{0.0f, 0.0f}, {-0.001f, -0.001f}, {0.001f, -0.5f}, {-1.0f, 1.0f},
-                                 {210.0f, -120.0f}, {-2999.5f, -2999.5f}, {2999.5f, -1.25f}, {-650.0f, 650.0f}};
-    for (size_t k = 0; k < std::size(special); ++k) points[k] = special[k];
+    if (glm::length(camera) < 1000.0) {
+        const glm::dvec2 special[] = {{0.0, 0.0}, {-0.001, -0.001}, {0.001, -0.5}, {-1.0, 1.0},
+                                      {210.0, -120.0}, {-2999.5, -2999.5}, {2999.5, -1.25}, {-650.0, 650.0}};
+        for (size_t k = 0; k < std::size(special); ++k) points[k] = special[k];
+    }
     return points;
 }
 
+struct Errors {
+    double worstHeight = 0.0, worstGradient = 0.0;
+    int badHeights = 0, badGradients = 0;
+    std::string firstBad;
+    void note(glm::dvec2 at, glm::vec3 cpu, glm::vec3 gpu, double heightTolerance, bool checkGradient) {
+        double heightError = std::fabs(double(gpu.x) - cpu.x);
+        double gradientError = glm::length(glm::dvec2(gpu.y - cpu.y, gpu.z - cpu.z));
+        double gradientScale = glm::length(glm::dvec2(cpu.y, cpu.z));
+        worstHeight = std::max(worstHeight, heightError);
+        worstGradient = std::max(worstGradient, gradientError / (gradientScale + 1e-3));
+        bool heightOk = heightError <= heightTolerance;
+        bool gradientOk = !checkGradient || gradientError <= 1e-3 * gradientScale + 1e-6;
+        badHeights += heightOk ? 0 : 1;
+        badGradients += gradientOk ? 0 : 1;
+        if ((!heightOk || !gradientOk) && firstBad.empty()) {
+            char text[256];
+            std::snprintf(text, sizeof(text), "at (%.3f, %.3f): cpu (%.6f, %.6f, %.6f) gpu (%.6f, %.6f, %.6f)", at.x,
+                          at.y, cpu.x, cpu.y, cpu.z, gpu.x, gpu.y, gpu.z);
+            firstBad = text;
+        }
+    }
+};
+
 class TerrainHeight : public GpuTest {
 protected:
-    // Renders a frame with `shape` (uploads FrameBlock), then runs the probe over `points`.
-    std::vector<glm::vec3> gpuHeights(const TerrainShape& shape, const std::vector<glm::vec2>& points) {
+    // Renders a frame with `shape` from `camera` (uploads FrameBlock), then probes `points`.
+    std::vector<glm::vec3> gpuHeights(const TerrainShape& shape, glm::dvec3 camera,
+                                      const std::vector<glm::dvec2>& points) {
         SceneSettings scene;
         scene.terrain = shape;
+        scene.camera = CameraPose{camera, 30.0f, -10.0f};
         Renderer renderer(*shaders_, scene);
         renderer.configure(64, 36, layoutNamed("standard"));
         renderer.setPipeline(PipelineKind::Deferred);
@@ -41,59 +73,63 @@ protected:
         return probeGpuHeights(*shaders_, renderer, points);
     }
 
-    // Height within 1e-4 (absolute, world units): the contract shaders/common/noise.glsl states.
-    // Gradient (dh/dx, dh/dz) within 1e-3 relative to its magnitude plus 1e-6 absolute for flat
-    // spots: the two sides are meant to be the same float32 arithmetic, so only rounding may differ,
-    // while a chain-rule mistake (frequency, octave Jacobian, valley term) is tens of percent off.
-    void compare(const TerrainShape& shape, const char* label) {
-        std::vector<glm::vec2> points = samplePoints();
-        std::vector<glm::vec3> gpu = gpuHeights(shape, points);
+    // Twin: the GPU's float arithmetic from the same origins — height within 1e-4 (absolute, world
+    // units), gradient (dh/dx, dh/dz) within 1e-3 relative plus 1e-6 absolute for flat spots: only
+    // rounding may differ, while a chain-rule mistake (frequency, octave Jacobian, valley term) or a
+    // wrong origin is tens of percent off. Reference: every octave's coordinate in double — within
+    // 1e-4 near the camera; beyond, the float offset's rounding, allowed 1e-4 + 1e-6 per unit of
+    // distance (measured about 3.7e-7 per unit at the default shape's seven octaves).
+    void compare(const TerrainShape& shape, glm::dvec2 cameraXZ, const char* label) {
+        glm::dvec3 camera(cameraXZ.x, terrainHeight(shape, cameraXZ).x + 30.0, cameraXZ.y);
+        std::vector<glm::dvec2> points = samplePoints(cameraXZ);
+        std::vector<glm::vec3> gpu = gpuHeights(shape, camera, points);
         ASSERT_EQ(gpu.size(), points.size());
-        double worstHeight = 0.0, worstGradient = 0.0, minHeight = 1e9, maxHeight = -1e9;
-        int badHeights = 0, badGradients = 0;
-        std::string firstBad;
+        NoiseOrigins origins = terrainNoiseOrigins(shape, cameraXZ);
+        Errors twin, exactNear, exactFar;
+        double minHeight = 1e9, maxHeight = -1e9;
         for (size_t i = 0; i < points.size(); ++i) {
-            glm::vec3 cpu = terrainHeight(shape, points[i]);
-            minHeight = std::min(minHeight, double(cpu.x));
-            maxHeight = std::max(maxHeight, double(cpu.x));
-            double heightError = std::fabs(double(gpu[i].x) - cpu.x);
-            double gradientError = glm::length(glm::dvec2(gpu[i].y - cpu.y, gpu[i].z - cpu.z));
-            double gradientScale = glm::length(glm::dvec2(cpu.y, cpu.z));
-            worstHeight = std::max(worstHeight, heightError);
-            worstGradient = std::max(worstGradient, gradientError / (gradientScale + 1e-3));
-            bool heightOk = heightError <= 1e-4;
-            bool gradientOk = gradientError <= 1e-3 * gradientScale + 1e-6;
-            badHeights += heightOk ? 0 : 1;
-            badGradients += gradientOk ? 0 : 1;
-            if ((!heightOk || !gradientOk) && firstBad.empty()) {
-                char text[256];
-                std::snprintf(text, sizeof(text), "at (%.3f, %.3f): cpu (%.6f, %.6f, %.6f) gpu (%.6f, %.6f, %.6f)",
-                              points[i].x, points[i].y, cpu.x, cpu.y, cpu.z, gpu[i].x, gpu[i].y, gpu[i].z);
-                firstBad = text;
-            }
+            glm::dvec2 offset = points[i] - cameraXZ;
+            glm::vec3 mirrored = terrainHeightFromCamera(shape, origins, glm::vec2(offset));
+            glm::vec3 exact = terrainHeight(shape, points[i]);
+            minHeight = std::min(minHeight, double(exact.x));
+            maxHeight = std::max(maxHeight, double(exact.x));
+            twin.note(points[i], mirrored, gpu[i], 1e-4, true);
+            double distance = glm::length(offset);
+            if (distance < 500.0) exactNear.note(points[i], exact, gpu[i], 1e-4, false);
+            else exactFar.note(points[i], exact, gpu[i], 1e-4 + 1e-6 * distance, false);
         }
-        std::printf("[terrain] %s: heights %.1f..%.1f, worst height error %.3g (%d of %zu points > 1e-4), "
-                    "worst gradient error %.3g relative (%d > tolerance)\n",
-                    label, minHeight, maxHeight, worstHeight, badHeights, points.size(), worstGradient, badGradients);
+        std::printf("[terrain] %s, camera (%.0f, %.0f): heights %.1f..%.1f; vs twin worst %.3g (gradient %.3g rel); "
+                    "vs exact worst %.3g within 500 units, %.3g beyond\n",
+                    label, cameraXZ.x, cameraXZ.y, minHeight, maxHeight, twin.worstHeight, twin.worstGradient,
+                    exactNear.worstHeight, exactFar.worstHeight);
         EXPECT_GT(maxHeight - minHeight, 20.0) << "the samples do not span the terrain's relief";
-        EXPECT_EQ(badHeights, 0) << label << ": heights off by more than 1e-4; first " << firstBad;
-        EXPECT_EQ(badGradients, 0) << label << ": gradients off by more than 1e-3 relative; first " << firstBad;
+        EXPECT_EQ(twin.badHeights, 0) << label << ": heights off the GPU twin by more than 1e-4; first " << twin.firstBad;
+        EXPECT_EQ(twin.badGradients, 0) << label << ": gradients off by more than 1e-3 relative; first " << twin.firstBad;
+        EXPECT_GT(exactNear.worstHeight + exactFar.worstHeight, 0.0) << "no samples compared";
+        EXPECT_EQ(exactNear.badHeights, 0) << label << ": near heights off the exact ones by more than 1e-4; first "
+                                           << exactNear.firstBad;
+        EXPECT_EQ(exactFar.badHeights, 0) << label << ": far heights off the exact ones; first " << exactFar.firstBad;
     }
 };
 
-TEST_F(TerrainHeight, GpuMatchesCpuForTheDefaultShape) { compare(TerrainShape{}, "default shape"); }
+TEST_F(TerrainHeight, GpuMatchesCpuForTheDefaultShape) { compare(TerrainShape{}, {210.0, -120.0}, "default shape"); }
+
+// The far lands: 1e5 and 1e6 units out, the camera's noise coordinates are large, but only the
+// offsets from the camera are floats, so the same tolerances hold.
+TEST_F(TerrainHeight, GpuMatchesCpuFarFromTheOrigin) {
+    compare(TerrainShape{}, {1.0e5, -7.0e4}, "default shape, 1e5 out");
+    compare(TerrainShape{}, {-6.0e5, 8.0e5}, "default shape, 1e6 out");
+}
 
 // The shape reaches the shader through FrameBlock: a different frequency, amplitude, base height
-// and octave count must all be followed. One octave keeps every coordinate small (|q| < 11), where
-// float32 evaluation is well conditioned, so this holds to 1e-4 independently of the default
-// shape's seven octaves (whose finest octave is evaluated at |q| ~ 2000).
+// and octave count must all be followed.
 TEST_F(TerrainHeight, GpuFollowsTheShapeInFrameBlock) {
     TerrainShape shape;
     shape.frequency = 1.0f / 300.0f;
     shape.amplitude = 65.0f;
     shape.baseHeight = -7.5f;
     shape.octaves = 1;
-    compare(shape, "one-octave shape");
+    compare(shape, {210.0, -120.0}, "one-octave shape");
 }
 
 }  // namespace
