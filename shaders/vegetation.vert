@@ -3,7 +3,7 @@
 // of noise drifting with the wind plus each plant's own flutter. The base never moves.
 // MIRRORED: the mirror image across the water plane, clipped to what lies above the water.
 #include "common/frame_block.glsl"
-#include "common/noise.glsl"
+#include "common/detail_noise.glsl"
 #include "common/shared_constants.glsl"
 
 layout(location = 0) in vec4 baseSize;   // xyz base minus camera, w billboard height (world units)
@@ -16,12 +16,12 @@ out vec3 vNormal;
 out vec3 vTint;
 
 // Sideways displacement of a plant's top per unit of its height: at most 0.24 * wind strength
-// (scene/vegetation.cpp bounds chunks by 0.3 per unit of strength).
-vec2 windBend(vec2 worldXZ, float phase) {
+// (scene/vegetation.cpp bounds chunks by 0.3 per unit of strength). The gusts are a detail noise
+// layer drifting with the wind (its direction and speed are in frame_setup.cpp's layer table).
+vec2 windBend(vec2 relativeXZ, float phase) {
     const vec2 windDirection = vec2(0.943, 0.333);  // unit, blowing east-north-east
     float strength = frame.vegetation.x;
-    // frame.vegetation.z is the gusts' drift, wrapped on the CPU so long runs keep precision.
-    float gust = 0.5 + 0.5 * simplexNoise(worldXZ * 0.012 - windDirection * frame.vegetation.z).x;
+    float gust = 0.5 + 0.5 * detailNoise(OASIS_DETAIL_WIND_GUSTS, relativeXZ).x;
     float flutter = sin(frame.vegetation.y + phase);
     return windDirection * strength * (0.18 * gust + 0.06 * flutter);
 }
@@ -41,7 +41,7 @@ void main() {
     vec3 relative = base + right * ((corner.x - 0.5) * size) + vec3(0.0, aboveRoot, 0.0);
     // Bend grows with the square of the height above the root: a stem bends, its root does not.
     float bend = max(corner.y - rootV, 0.0) / (1.0 - rootV);
-    relative.xz += windBend(base.xz + frame.cameraPosition.xz, tintPhase.w) * size * bend * bend;
+    relative.xz += windBend(base.xz, tintPhase.w) * size * bend * bend;
 
     // Lit as a tuft: mostly up, partly towards the camera, so plants take the ground's light.
     vNormal = normalize(vec3(0.0, 1.0, 0.0) + 0.6 * vec3(facing.x, 0.0, facing.y));

@@ -20,12 +20,13 @@ struct FrameData {
     vec4 depthRange;             // x near, y far, z time (s), w exposure
     vec4 water;                  // x level (world y), y absorption per unit, z ripple strength, w flags
     vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
-    vec4 vegetation;             // x wind strength, y flutter phase (rad), z gust drift (noise units), w unused
+    vec4 vegetation;             // x wind strength, y flutter phase (rad), zw unused
     vec4 vegetationAtlas;        // x atlas columns, y atlas rows, zw unused
     // The camera's terrain-noise coordinates per octave, split in the skewed simplex lattice:
     // xy the fraction, zw the integer cell (exact in float to 2^24). See noise.glsl.
     vec4 terrainNoiseOrigins[OASIS_NOISE_MAX_OCTAVES];
-    vec4 rippleNoiseOrigins[2];  // the same for the water's two ripple layers (broad, fine)
+    vec4 detailNoiseOrigins[OASIS_DETAIL_LAYERS];  // the same for each detail layer (shared_constants.glsl)
+    vec4 detailNoiseScales[2];   // noise units per world unit of layer i: [i / 4][i % 4]
 };
 
 #endif

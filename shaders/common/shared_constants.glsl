@@ -7,6 +7,15 @@
 #define OASIS_TERRAIN_VALLEY_FLATTENING 0.3
 // The most octaves the fractal noise sums (FrameData holds an origin per octave).
 #define OASIS_NOISE_MAX_OCTAVES 8
+// Detail noise layers (single octaves of simplex noise, some drifting with time) evaluated around
+// the camera like the terrain: FrameData.detailNoiseOrigins[layer]. Their scales and drifts are
+// one table in src/render/frame_setup.cpp.
+#define OASIS_DETAIL_RIPPLE_BROAD 0
+#define OASIS_DETAIL_RIPPLE_FINE 1
+#define OASIS_DETAIL_GROUND_BROAD 2
+#define OASIS_DETAIL_GROUND_FINE 3
+#define OASIS_DETAIL_WIND_GUSTS 4
+#define OASIS_DETAIL_LAYERS 5
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
 // Surface flags stored in the info target (info.b * 255).

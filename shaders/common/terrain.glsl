@@ -2,6 +2,7 @@
 // water, grass on gentle ground, rock on steep or high ground, broken up by noise.
 #ifndef OASIS_TERRAIN_GLSL
 #define OASIS_TERRAIN_GLSL
+#include "common/detail_noise.glsl"
 #include "common/noise.glsl"
 #include "common/surface.glsl"
 
@@ -24,9 +25,10 @@ Surface terrainSurface(vec3 relativePosition, vec3 normal, bool reflected) {
     vec3 world = relativePosition + frame.cameraPosition.xyz;
     if (reflected) world.y = 2.0 * frame.water.x - world.y;
     float aboveWater = world.y - frame.water.x;
-    float broad = simplexNoise(world.xz * 0.02).x;
+    float broad = detailNoise(OASIS_DETAIL_GROUND_BROAD, relativePosition.xz).x;
     // Fine variation fades out with distance, where a pixel spans many of its cycles.
-    float fine = simplexNoise(world.xz * 0.25).x * (1.0 - smoothstep(40.0, 250.0, length(relativePosition)));
+    float fine = detailNoise(OASIS_DETAIL_GROUND_FINE, relativePosition.xz).x *
+                 (1.0 - smoothstep(40.0, 250.0, length(relativePosition)));
     float slope = 1.0 - normal.y;
 
     vec3 sand = vec3(0.40, 0.29, 0.14);

@@ -2,7 +2,7 @@
 // the rippled normal of its surface, and Schlick's Fresnel reflectance.
 #ifndef OASIS_WATER_GLSL
 #define OASIS_WATER_GLSL
-#include "common/noise.glsl"
+#include "common/detail_noise.glsl"
 #include "common/shared_constants.glsl"
 
 float waterLevel() { return frame.water.x; }
@@ -38,17 +38,15 @@ vec3 throughWater(vec3 radiance, float length) {
     return radiance * transmittance + waterScatter() * (vec3(1.0) - transmittance);
 }
 
-// Surface normal with two layers of drifting ripples, scaled by the ripple strength, at the point
-// `relativeXZ` from the camera. Each layer is noise around its origin, the camera's drifted
-// coordinates that the CPU computes in double (src/render/frame_setup.cpp), so neither distance
-// nor hours of drift cost precision.
+// Surface normal with two layers of drifting ripples (detail noise around the camera), scaled by
+// the ripple strength, at the point `relativeXZ` from the camera.
 vec3 waterNormal(vec2 relativeXZ) {
     float strength = frame.water.z;
     if (strength == 0.0) return vec3(0.0, 1.0, 0.0);
-    vec4 broadOrigin = frame.rippleNoiseOrigins[0], fineOrigin = frame.rippleNoiseOrigins[1];
-    vec3 broad = simplexNoiseSkewed(ivec2(broadOrigin.zw), broadOrigin.xy + simplexSkew(relativeXZ * 0.12));
-    vec3 fine = simplexNoiseSkewed(ivec2(fineOrigin.zw), fineOrigin.xy + simplexSkew(relativeXZ * 0.55));
-    vec2 slope = strength * (0.08 * 0.12 * broad.yz + 0.025 * 0.55 * fine.yz);
+    vec3 broad = detailNoise(OASIS_DETAIL_RIPPLE_BROAD, relativeXZ);
+    vec3 fine = detailNoise(OASIS_DETAIL_RIPPLE_FINE, relativeXZ);
+    vec2 slope = strength * (0.08 * detailNoiseScale(OASIS_DETAIL_RIPPLE_BROAD) * broad.yz +
+                             0.025 * detailNoiseScale(OASIS_DETAIL_RIPPLE_FINE) * fine.yz);
     return normalize(vec3(-slope.x, 1.0, -slope.y));
 }
 

@@ -7,6 +7,26 @@
 #include "common/shared_constants.glsl"
 
 namespace oasis {
+namespace {
+
+// The detail noise layers (shaders/common/detail_noise.glsl): noise units per world unit and
+// drift in noise units per second.
+struct DetailNoiseLayer {
+    int index;
+    double scale;
+    glm::dvec2 drift;
+};
+const DetailNoiseLayer kDetailNoiseLayers[] = {
+    {OASIS_DETAIL_RIPPLE_BROAD, 0.12, {0.05, 0.03}},
+    {OASIS_DETAIL_RIPPLE_FINE, 0.55, {-0.11, 0.07}},
+    {OASIS_DETAIL_GROUND_BROAD, 0.02, {0.0, 0.0}},
+    {OASIS_DETAIL_GROUND_FINE, 0.25, {0.0, 0.0}},
+    // Gusts drift with the wind (vegetation.vert's direction, 0.943 0.333) at 0.6 noise units a second.
+    {OASIS_DETAIL_WIND_GUSTS, 0.012, {-0.943 * 0.6, -0.333 * 0.6}},
+};
+static_assert(std::size(kDetailNoiseLayers) == OASIS_DETAIL_LAYERS, "one table row per detail layer");
+
+}  // namespace
 
 FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     FrameSetup setup;
@@ -40,20 +60,20 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     d.water = glm::vec4(scene.water.level, scene.water.absorption, scene.water.rippleStrength,
                         setup.reflectionsActive ? float(OASIS_WATER_REFLECTIONS_FLAG) : 0.0f);
     d.waterTint = glm::vec4(scene.water.tint, scene.water.fresnelF0);
-    // Wind phases grow with time; wrapped here in double, the shader's floats stay precise after
-    // days of animation (the flutter exactly, the gusts with one jump every 4.6 hours).
+    // The flutter phase grows with time; wrapped here in double, it stays exact after days.
     const double kTwoPi = 6.283185307179586;
     float wind = std::clamp(scene.vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
-    d.vegetation = glm::vec4(wind, float(std::fmod(scene.timeSeconds * 2.3, kTwoPi)),
-                             float(std::fmod(scene.timeSeconds * 0.6, 10000.0)), 0.0f);
+    d.vegetation = glm::vec4(wind, float(std::fmod(scene.timeSeconds * 2.3, kTwoPi)), 0.0f, 0.0f);
     d.vegetationAtlas = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the renderer fills in its atlas
     // Noise origins around the camera, in double: see shaders/common/noise.glsl.
     glm::dvec2 cameraXZ(setup.view.pose.position.x, setup.view.pose.position.z);
     NoiseOrigins terrain = terrainNoiseOrigins(scene.terrain, cameraXZ);
     std::copy(terrain.begin(), terrain.end(), d.terrainNoiseOrigins);
-    // The ripple layers drift with time; the drift joins the origin, so it never costs precision.
-    d.rippleNoiseOrigins[0] = skewedOrigin(cameraXZ * 0.12 + glm::dvec2(0.05, 0.03) * scene.timeSeconds);
-    d.rippleNoiseOrigins[1] = skewedOrigin(cameraXZ * 0.55 - glm::dvec2(0.11, -0.07) * scene.timeSeconds);
+    // Detail layers: a drift joins the origin, so hours of it never cost precision.
+    for (const DetailNoiseLayer& layer : kDetailNoiseLayers) {
+        d.detailNoiseOrigins[layer.index] = skewedOrigin(cameraXZ * layer.scale + layer.drift * scene.timeSeconds);
+        d.detailNoiseScales[layer.index / 4][layer.index % 4] = float(layer.scale);
+    }
     return setup;
 }
 
