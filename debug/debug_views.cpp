@@ -19,6 +19,8 @@ const std::vector<DebugView> kViews = {
      "the mirrored scene alone, tone-mapped; black outside the water or with reflections off"},
     {"atlas", ViewSource::PlantAtlas, "VIEW_COLOUR",
      "the plant atlas, stretched to the view: a cell per L-system variant, brown base to green tips, on black"},
+    {"light-volumes", ViewSource::Position, "VIEW_LIGHT_VOLUMES",
+     "how many point lights reach each surface: black 0, blue 1, then green, yellow, red, white at 16+"},
 };
 
 }  // namespace

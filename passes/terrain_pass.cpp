@@ -1,6 +1,8 @@
 // Terrain: depth-tested, back faces culled; direct draws mark kStencilTerrain.
 #include "passes/terrain_pass.h"
 
+#include "render/light_paths.h"
+
 namespace oasis {
 
 void TerrainPass::execute(PassContext& context) {
@@ -17,7 +19,10 @@ void TerrainPass::execute(PassContext& context) {
         glStencilMask(0xFF);
     }
     beginMirroredDraw(mirroring_);
-    glUseProgram(context.shaders.program(variantName("terrain", output_, mirroring_)));
+    // Shaded here (forward), the fragments loop over the point lights through the frame's light path.
+    std::string program = variantName("terrain", output_, mirroring_);
+    if (output_ == SurfaceOutput::Forward) program += lightsVariantSuffix(context.frame.lightsPath);
+    glUseProgram(context.shaders.program(program));
     context.geometry.drawTerrain();
     endMirroredDraw(mirroring_);
     glDisable(GL_STENCIL_TEST);

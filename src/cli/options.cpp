@@ -39,6 +39,10 @@ const char* kSceneOptionsHelp =
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
     "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
+    "  --lights N                point lights (lanterns, fireflies) around the lake, 0..4096 (default 0);\n"
+    "                            they glow at night, e.g. --hour 21\n"
+    "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
+    "                            where the context has SSBOs, else ubo)\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -132,7 +136,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
-            "--absorption", "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames"};
+            "--absorption", "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames",
+            "--lights", "--lights-path"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
@@ -178,6 +183,14 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                            : flag == "--ripples"   ? options.scene.water.rippleStrength
                                                    : options.scene.water.absorption;
             field = float(number);
+        } else if (flag == "--lights") {
+            if (!parseInt(value, options.scene.lights) || options.scene.lights < 0 || options.scene.lights > kMaxLights)
+                return fail("--lights expects an integer from 0 to " + std::to_string(kMaxLights) + ", got '" + value + "'");
+        } else if (flag == "--lights-path") {
+            LightsPath path;
+            if (!parseLightsPath(value, path))
+                return fail("--lights-path expects one of " + lightsPathNames() + ", got '" + value + "'");
+            options.scene.lightsPath = path;
         } else if (flag == "--gbuffer") {
             if (!findGBufferLayout(value))
                 return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");

@@ -21,6 +21,8 @@ struct SceneOptions {
     std::string gbuffer = "standard";
     WaterSettings water;
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
+    int lights = 0;                          // point lights, 0..kMaxLights
+    std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context
 };
 
 enum class Command { Default, Window, Render, Compare };

@@ -16,6 +16,8 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.hour = options.hour;
     scene.camera = options.camera;
     scene.water = options.water;
+    scene.lights.count = options.lights;
+    scene.lights.path = options.lightsPath;
     return scene;
 }
 
@@ -63,6 +65,14 @@ std::string describePlantAtlas(const RenderSession& session) {
     std::snprintf(timing, sizeof(timing), ", atlas %dx%d in %.1f ms (segments %.1f ms)", atlas.width(),
                   atlas.height(), atlas.totalMs(), atlas.interpretMs());
     return "plants: " + session.plantPathReason + timing;
+}
+
+std::string describeLights(const Renderer& renderer) {
+    std::string text = "lights: " + std::to_string(renderer.lightsDrawn()) + ", path " + renderer.lightsPathReason();
+    if (renderer.lightsDropped() > 0)
+        text += "; WARNING: " + std::to_string(renderer.lightsDropped()) + " lights dropped (the ubo path holds " +
+                std::to_string(renderer.uboLights().maxLights()) + ")";
+    return text;
 }
 
 namespace {

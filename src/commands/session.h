@@ -30,6 +30,9 @@ struct RenderSession {
 // "plants: gpu (compute shaders and SSBOs present), atlas 1280x512 in 12.3 ms" for the commands' output.
 std::string describePlantAtlas(const RenderSession& session);
 
+// "lights: 64, path ssbo (GL 4.3 / ...)" for the last frame, with a warning when lights were dropped.
+std::string describeLights(const Renderer& renderer);
+
 // Median wall-clock milliseconds of `frames` frames of the active pipeline, each ended by
 // glFinish (GPU timer queries are not trustworthy on software rasterisers), after two warm-ups.
 double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames);

@@ -36,6 +36,14 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
     d.water = glm::vec4(scene.water.level, scene.water.absorption, scene.water.rippleStrength,
                         setup.reflectionsActive ? float(OASIS_WATER_REFLECTIONS_FLAG) : 0.0f);
     d.waterTint = glm::vec4(scene.water.tint, scene.water.fresnelF0);
+
+    std::vector<WorldPointLight> world = scene.lights.list
+        ? *scene.lights.list
+        : scenePointLights(scene.lights.count, scene.timeSeconds, scene.terrain, scene.water.level);
+    setup.lights.reserve(world.size());
+    for (const WorldPointLight& light : world)
+        setup.lights.push_back(PointLight{glm::vec4(glm::vec3(light.position - setup.view.pose.position), light.radius),
+                                          glm::vec4(light.colour, light.intensity)});
     return setup;
 }
 

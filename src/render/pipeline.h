@@ -1,9 +1,10 @@
 // A pipeline: an ordered list of passes over the shared frame targets.
-//   deferred: Clear(G) Terrain(G) WaterMask Lighting | ReflectionClear(G) Terrain(G, mirrored)
-//             Lighting(mirrored) | WaterComposite ToneMap
+//   deferred: Clear(G) Terrain(G) Lighting LightVolumes WaterMask | ReflectionClear(G)
+//             Terrain(G, mirrored) Lighting(mirrored) LightVolumes(mirrored) | WaterComposite ToneMap
 //   forward:  Clear(Radiance) Terrain Sky WaterMask | ReflectionClear Terrain(mirrored)
 //             Sky(mirrored) | WaterComposite ToneMap
-// The passes between the bars run only with reflections on and the camera above the water.
+// The passes between the bars run only with reflections on and the camera above the water; the
+// light volumes only when there are point lights.
 #pragma once
 #include <functional>
 #include <memory>

@@ -2,6 +2,7 @@
 #include "render/shader_variants.h"
 
 #include "debug/debug_views.h"
+#include "render/light_paths.h"
 
 namespace oasis {
 namespace {
@@ -30,6 +31,20 @@ std::vector<ProgramVariant> buildVariants() {
         {"lsystem.compose", "", "", {"PASS_COMPOSE_ROUND"}, "lsystem_interpret.comp"},
         {"lsystem.segments", "", "", {"PASS_EMIT_SEGMENTS"}, "lsystem_interpret.comp"},
     };
+    // Point lights, once per light path (render/light_paths.h): the forward terrain's light loop and
+    // the deferred light volumes (stencil marking, then shading), direct and mirrored.
+    for (LightsPath path : {LightsPath::Ssbo, LightsPath::SsboCount, LightsPath::Ubo}) {
+        std::string suffix = lightsVariantSuffix(path), define = lightsPathDefine(path);
+        variants.push_back({"terrain.forward" + suffix, "terrain.vert", "terrain.frag", {"OUTPUT_FORWARD", define}});
+        variants.push_back({"terrain.forward.mirrored" + suffix, "terrain.vert", "terrain.frag",
+                            {"OUTPUT_FORWARD", "MIRRORED", define}});
+        variants.push_back({"light.mark" + suffix, "light_volume.vert", "light_volume.frag", {"MARK_ONLY", define}});
+        variants.push_back({"light.mark.mirrored" + suffix, "light_volume.vert", "light_volume.frag",
+                            {"MARK_ONLY", "MIRRORED", define}});
+        variants.push_back({"light.shade" + suffix, "light_volume.vert", "light_volume.frag", {define}});
+        variants.push_back({"light.shade.mirrored" + suffix, "light_volume.vert", "light_volume.frag",
+                            {"MIRRORED", define}});
+    }
     for (const DebugView& view : debugViews())
         variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});
     return variants;
