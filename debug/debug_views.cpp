@@ -20,7 +20,7 @@ const std::vector<DebugView> kViews = {
     {"atlas", ViewSource::PlantAtlas, "VIEW_COLOUR",
      "the plant atlas, stretched to the view: a cell per L-system variant, brown base to green tips, on black"},
     {"light-volumes", ViewSource::Position, "VIEW_LIGHT_VOLUMES",
-     "how many point lights reach each surface: black 0, blue 1, then green, yellow, red, white at 16+"},
+     "how many point lights reach each surface: dark grey 0, blue 1, green 2, yellow 4, red 8, white 16+; black sky"},
 };
 
 }  // namespace

@@ -89,9 +89,9 @@ vec3 viewColour() {
 #define LIGHTS_UBO
 #include "common/lights.glsl"
 uniform sampler2D gPosition;
+uniform sampler2D gNormal;
 uniform sampler2D gInfo;
 vec3 heat(float count) {
-    if (count <= 0.0) return vec3(0.0);
     const vec3 stops[6] = vec3[6](vec3(0.0, 0.0, 0.0), vec3(0.1, 0.2, 0.9), vec3(0.1, 0.8, 0.3),
                                   vec3(0.95, 0.9, 0.1), vec3(0.95, 0.15, 0.05), vec3(1.0, 1.0, 1.0));
     float t = clamp(log2(count) / 4.0, 0.0, 1.0) * 4.0 + 1.0;  // 1 -> blue, 2, 4, 8, 16+ -> white
@@ -109,6 +109,8 @@ vec3 viewColour() {
     int touching = 0;
     for (int i = 0; i < lightCount(); ++i)
         if (lightTouches(position, lightAt(i))) ++touching;
+    // Surfaces no light reaches stay visible, dark grey shaded by their slope.
+    if (touching == 0) return vec3(0.05 + 0.1 * clamp(texture(gNormal, vScreenUv).y, 0.0, 1.0));
     return heat(float(touching));
 }
 
