@@ -305,6 +305,12 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         EXPECT_EQ(s, 1) << "only terrain (1) and water (2) write stencil";
         return std::make_pair(glm::ivec3(242, 158, 31), 2);  // terrain (0.95, 0.62, 0.12)
     };
+    expected["light-volumes"] = [&](int x, int y) {
+        // No lights in this frame: dark grey by the normal's slope on surfaces, black sky.
+        if (infoFlags(texel(info, kWidth, x, y)) & kSurfaceSky) return std::make_pair(glm::ivec3(0), 0);
+        float grey = 0.05f + 0.1f * std::clamp(texel(normal, kWidth, x, y).y, 0.0f, 1.0f);
+        return std::make_pair(to8bit(glm::vec3(grey)), 1);
+    };
     expected["reflection"] = [&](int x, int y) {
         // Tone-mapped like Final (shaders/common/output.glsl); black outside the water.
         glm::vec3 r(texel(reflection, kWidth, x, y));
