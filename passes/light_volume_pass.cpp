@@ -50,8 +50,7 @@ void LightVolumePass::execute(PassContext& context) {
     for (int i = 0; i < int(context.frame.lights.size()); ++i) {
         glm::vec4 sphere = context.frame.lights[size_t(i)].positionRadius;
         if (mirrored) sphere.y = 2.0f * (frame.water.x - frame.cameraPosition.y) - sphere.y;  // as light_volume.vert
-        // Off screen: no pixel to light (the far plane is not a limit: the volumes are depth-clamped,
-        // and the lights lie well inside it).
+        // Wholly outside one of the frustum's planes: no surface in view lies inside the sphere.
         if (!sphereInFrustum(frame.viewProjection, glm::vec3(sphere), sphere.w * 1.01f)) continue;
         // 1. Mark: no colour, both faces, invert the bit where the depth test fails.
         glUseProgram(mark);
