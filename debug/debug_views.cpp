@@ -21,6 +21,8 @@ const std::vector<DebugView> kViews = {
      "the plants alone: the lit frame where a plant billboard is the nearest surface, black elsewhere"},
     {"atlas", ViewSource::PlantAtlas, "VIEW_COLOUR",
      "the plant atlas, stretched to the view: a cell per L-system variant, brown base to green tips, on black"},
+    {"light-volumes", ViewSource::Position, "VIEW_LIGHT_VOLUMES",
+     "how many point lights reach each surface: dark grey 0, blue 1, green 2, yellow 4, red 8, white 16+; black sky"},
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Helpers shared by the passes that draw surfaces.
 #include "passes/pass.h"
 
+#include "render/light_paths.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -54,6 +55,12 @@ void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const 
         glStencilMask(0xFF);
     }
     beginMirroredDraw(mirroring_);
+}
+
+GLuint SurfacePass::surfaceProgram(PassContext& context, const std::string& shaderBase) const {
+    std::string program = variantName(shaderBase, output_, mirroring_);
+    if (output_ == SurfaceOutput::Forward) program += lightsVariantSuffix(context.frame.lightsPath);
+    return context.shaders.program(program);
 }
 
 void SurfacePass::endSurfaceDraw() const {

@@ -60,6 +60,9 @@ protected:
     // draws stay inside the water (beginMirroredDraw). endSurfaceDraw restores the defaults.
     void beginSurfaceDraw(PassContext& context, int stencilMark) const;
     void endSurfaceDraw() const;
+    // The program of a surface shader ("terrain", "vegetation") for this pass: shaded here
+    // (forward), its fragments loop over the point lights through the frame's light path.
+    GLuint surfaceProgram(PassContext& context, const std::string& shaderBase) const;
 
     SurfaceOutput output_;
     Mirroring mirroring_;

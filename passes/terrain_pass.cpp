@@ -7,7 +7,7 @@ void TerrainPass::execute(PassContext& context) {
     beginSurfaceDraw(context, kStencilTerrain);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    glUseProgram(context.shaders.program(variantName("terrain", output_, mirroring_)));
+    glUseProgram(surfaceProgram(context, "terrain"));
     context.geometry.drawTerrain();
     glDisable(GL_CULL_FACE);
     endSurfaceDraw();

@@ -7,7 +7,7 @@ namespace oasis {
 void VegetationPass::execute(PassContext& context) {
     beginSurfaceDraw(context, kStencilVegetation);
     glDisable(GL_CULL_FACE);
-    glUseProgram(context.shaders.program(variantName("vegetation", output_, mirroring_)));
+    glUseProgram(surfaceProgram(context, "vegetation"));
     context.vegetation.draw(mirroring_);
     endSurfaceDraw();
 }

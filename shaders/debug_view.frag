@@ -92,6 +92,38 @@ vec3 viewColour() {
     return clamp(abs(mod(hue * 6.0 + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);
 }
 
+#elif defined(VIEW_LIGHT_VOLUMES)
+// Light complexity: the lights whose sphere contains the G-buffer surface (where a reflection is
+// stored, its real position), counted over the whole list read through the UBO path (the
+// renderer binds every path's buffers each frame), as a heat map.
+#define LIGHTS_UBO
+#include "common/lights.glsl"
+uniform sampler2D gPosition;
+uniform sampler2D gNormal;
+uniform sampler2D gInfo;
+vec3 heat(float count) {
+    const vec3 stops[6] = vec3[6](vec3(0.0, 0.0, 0.0), vec3(0.1, 0.2, 0.9), vec3(0.1, 0.8, 0.3),
+                                  vec3(0.95, 0.9, 0.1), vec3(0.95, 0.15, 0.05), vec3(1.0, 1.0, 1.0));
+    float t = clamp(log2(count) / 4.0, 0.0, 1.0) * 4.0 + 1.0;  // 1 -> blue, 2, 4, 8, 16+ -> white
+    int i = min(int(floor(t)), 4);
+    return mix(stops[i], stops[i + 1], t - float(i));
+}
+vec3 viewColour() {
+    // The view may be drawn into a tile of the overview: sample by screen position, not pixel.
+    vec4 info = texture(gInfo, vScreenUv);
+    if ((infoFlags(info) & SURFACE_SKY) != 0u) return vec3(0.0);
+    Surface s;
+    s.relativePosition = texture(gPosition, vScreenUv).xyz;
+    s.flags = infoFlags(info);
+    vec3 position = litPosition(s);
+    int touching = 0;
+    for (int i = 0; i < lightCount(); ++i)
+        if (lightTouches(position, lightAt(i))) ++touching;
+    // Surfaces no light reaches stay visible, dark grey shaded by their slope.
+    if (touching == 0) return vec3(0.05 + 0.1 * clamp(texture(gNormal, vScreenUv).y, 0.0, 1.0));
+    return heat(float(touching));
+}
+
 #else
 #error "define one VIEW_* remapping"
 #endif

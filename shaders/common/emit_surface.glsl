@@ -1,5 +1,6 @@
 // Where a surface goes once the material has built it, chosen by the variant's #define:
-// OUTPUT_GBUFFER stores it in the four G-buffer targets; OUTPUT_FORWARD shades it now (linear).
+// OUTPUT_GBUFFER stores it in the four G-buffer targets; OUTPUT_FORWARD shades it now (linear),
+// looping over the point lights of the variant's LIGHTS_* path.
 #ifndef OASIS_EMIT_SURFACE_GLSL
 #define OASIS_EMIT_SURFACE_GLSL
 #include "common/surface.glsl"
@@ -17,9 +18,11 @@ void emitSurface(Surface s) {
 }
 #elif defined(OUTPUT_FORWARD)
 #include "common/lighting.glsl"
+#include "common/lights.glsl"
 layout(location = 0) out vec4 outColour;
 void emitSurface(Surface s) {
-    outColour = vec4(shadeSurface(s), 1.0);
+    // The sun and sky, then every point light (none unless the variant defines a LIGHTS_* path).
+    outColour = vec4(shadeSurface(s) + allPointLights(s), 1.0);
 }
 #else
 #error "define OUTPUT_GBUFFER or OUTPUT_FORWARD"

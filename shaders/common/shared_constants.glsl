@@ -16,6 +16,8 @@
 #define OASIS_DETAIL_GROUND_FINE 3
 #define OASIS_DETAIL_WIND_GUSTS 4
 #define OASIS_DETAIL_LAYERS 5
+// The UBO light path's most uniform blocks (shaders/common/lights.glsl picks each by a constant index).
+#define OASIS_LIGHTS_UBO_MAX_BLOCKS 8
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
 // Surface flags stored in the info target (info.b * 255).

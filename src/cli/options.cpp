@@ -42,6 +42,10 @@ const char* kSceneOptionsHelp =
     "  --vegetation-density D    plants per unit of ground, 0..4 times the default (default 1)\n"
     "  --wind S                  wind strength bending the plants, 0..3 (default 1)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
+    "  --lights N                point lights (lanterns, fireflies) around the lake, 0..4096 (default 0);\n"
+    "                            they glow at night, e.g. --hour 21\n"
+    "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
+    "                            where the context has SSBOs, else ubo)\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -135,7 +139,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
-            "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames"};
+            "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
+            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
@@ -192,6 +197,14 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!parseDouble(value, number) || number < 0.0 || number > highest)
                 return fail(flag + " expects a number from 0 to " + std::to_string(int(highest)) + ", got '" + value + "'");
             (density ? options.scene.vegetation.density : options.scene.vegetation.windStrength) = float(number);
+        } else if (flag == "--lights") {
+            if (!parseInt(value, options.scene.lights) || options.scene.lights < 0 || options.scene.lights > kMaxLights)
+                return fail("--lights expects an integer from 0 to " + std::to_string(kMaxLights) + ", got '" + value + "'");
+        } else if (flag == "--lights-path") {
+            LightsPath path;
+            if (!parseLightsPath(value, path))
+                return fail("--lights-path expects one of " + lightsPathNames() + ", got '" + value + "'");
+            options.scene.lightsPath = path;
         } else if (flag == "--gbuffer") {
             if (!findGBufferLayout(value))
                 return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");

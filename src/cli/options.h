@@ -22,6 +22,8 @@ struct SceneOptions {
     WaterSettings water;
     VegetationSettings vegetation;
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
+    int lights = 0;                          // point lights, 0..kMaxLights
+    std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context
 };
 
 enum class Command { Default, Window, Render, Compare };

@@ -83,6 +83,7 @@ void printSummary(const Options& options, const RenderSession& session, const Co
                 session.renderer->geometry().terrainTriangles());
     std::printf("  %s\n", describePlantAtlas(session).c_str());
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
+    std::printf("  %s\n", describeLights(*session.renderer).c_str());
     for (const auto& [pipeline, passes] : {std::pair{"forward", &c.forwardPasses}, {"deferred", &c.deferredPasses}}) {
         if (passes->empty()) continue;
         std::printf("  %s per pass (median ms, glFinish after each):\n", pipeline);
@@ -112,12 +113,15 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
-                "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f%s%s}\n",
+                "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
+                "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
                 targets.width(), targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
                 options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
                 stencilViewPathName(session.renderer->stencilViewPath()), session.shaders->directory().c_str(),
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
+                session.renderer->lightsDrawn(), lightsPathName(session.renderer->lightsPath()),
+                session.renderer->lightsPathReason().c_str(), session.renderer->lightsDropped(),
                 passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
                 passTimesJson("deferred_passes_ms", c.deferredPasses).c_str());
 }
@@ -153,6 +157,7 @@ int runRenderCommand(const Options& options) {
                     renderer.targets().height());
         std::printf("oasis: %s\n", describePlantAtlas(session).c_str());
         std::printf("oasis: %s\n", describeVegetation(renderer).c_str());
+        std::printf("oasis: %s\n", describeLights(renderer).c_str());
         return 0;
     });
 }

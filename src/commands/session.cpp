@@ -17,6 +17,8 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.camera = options.camera;
     scene.water = options.water;
     scene.vegetation = options.vegetation;
+    scene.lights.count = options.lights;
+    scene.lights.path = options.lightsPath;
     return scene;
 }
 
@@ -75,6 +77,14 @@ std::string describeVegetation(const Renderer& renderer) {
                   "thinned with distance) and %zu in the reflection (%zu chunks)",
                   stats.plantsPlaced, stats.chunksInRange, stats.plantsDrawn, stats.chunksVisible,
                   stats.plantsDrawnMirrored, stats.chunksMirrored);
+    return text;
+}
+
+std::string describeLights(const Renderer& renderer) {
+    std::string text = "lights: " + std::to_string(renderer.lightsDrawn()) + ", path " + renderer.lightsPathReason();
+    if (renderer.lightsDropped() > 0)
+        text += "; WARNING: " + std::to_string(renderer.lightsDropped()) + " lights dropped (the ubo path holds " +
+                std::to_string(renderer.uboLights().maxLights()) + ")";
     return text;
 }
 

@@ -32,6 +32,8 @@ std::string describePlantAtlas(const RenderSession& session);
 
 // "vegetation: 24312 plants placed in ...; drawn 5321 ..." for the last frame, or "vegetation: off".
 std::string describeVegetation(const Renderer& renderer);
+// "lights: 64, path ssbo (GL 4.3 / ...)" for the last frame, with a warning when lights were dropped.
+std::string describeLights(const Renderer& renderer);
 
 // Median wall-clock milliseconds of `frames` frames of the active pipeline, each ended by
 // glFinish (GPU timer queries are not trustworthy on software rasterisers), after two warm-ups.

@@ -71,6 +71,21 @@ void moveFreeCamera(GLFWwindow* window, CameraPose& pose, float seconds) {
                                    -89.0f, 89.0f);
 }
 
+// Point lights: the count, the path (automatic or forced) and which path is active and why.
+void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
+    if (!ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ImGui::SliderInt("point lights", &scene.lights.count, 0, kMaxLights);
+    const char* choices[] = {"automatic", "ssbo", "ssbo-count", "ubo"};
+    int choice = scene.lights.path ? 1 + int(*scene.lights.path) : 0;
+    if (ImGui::Combo("light path", &choice, choices, 4))
+        scene.lights.path = choice == 0 ? std::nullopt : std::optional<LightsPath>(LightsPath(choice - 1));
+    ImGui::TextWrapped("active: %s", renderer.lightsPathReason().c_str());
+    ImGui::Text("%d lights drawn; ubo holds %d x %d", renderer.lightsDrawn(), renderer.uboLights().blocks,
+                renderer.uboLights().capacity);
+    if (renderer.lightsDropped() > 0)
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.2f, 1.0f), "WARNING: %d lights dropped", renderer.lightsDropped());
+}
+
 void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oasis");
@@ -134,6 +149,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         ImGui::SliderFloat("thinning from", &vegetation.thinningStart, 10.0f, 600.0f, "%.0f");
         ImGui::TextWrapped("%s", describeVegetation(renderer).c_str());
     }
+    drawLightsPanel(renderer, scene);
     ImGui::Separator();
     ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),

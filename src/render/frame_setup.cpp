@@ -74,6 +74,14 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
         d.detailNoiseOrigins[layer.index] = skewedOrigin(cameraXZ * layer.scale + layer.drift * scene.timeSeconds);
         d.detailNoiseScales[layer.index / 4][layer.index % 4] = float(layer.scale);
     }
+
+    std::vector<WorldPointLight> world = scene.lights.list
+        ? *scene.lights.list
+        : scenePointLights(scene.lights.count, scene.timeSeconds, scene.terrain, scene.water.level);
+    setup.lights.reserve(world.size());
+    for (const WorldPointLight& light : world)
+        setup.lights.push_back(PointLight{glm::vec4(glm::vec3(light.position - setup.view.pose.position), light.radius),
+                                          glm::vec4(light.colour, light.intensity)});
     return setup;
 }
 

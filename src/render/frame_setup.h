@@ -2,9 +2,13 @@
 // sky state, the terrain wedge and the FrameData uploaded to the GPU. No GL here.
 #pragma once
 #include <optional>
+#include <vector>
 
 #include "render/frame_data.h"
+#include "render/light_data.h"
+#include "render/light_paths.h"
 #include "scene/camera.h"
+#include "scene/point_lights.h"
 #include "scene/sky.h"
 #include "scene/terrain.h"
 #include "scene/vegetation.h"
@@ -21,6 +25,14 @@ struct WaterSettings {
     bool reflections = true;                           // the mirrored scene; off: the sky alone is reflected
 };
 
+// The point lights: how many (scene/point_lights.h places and animates them) and, when forced
+// (--lights-path, the panel), how shaders read them; otherwise the context's capabilities decide.
+struct LightSettings {
+    int count = 0;                                    // 0..kMaxLights
+    std::optional<LightsPath> path;                   // forced path; empty = automatic
+    std::optional<std::vector<WorldPointLight>> list; // replaces the generated lights (tests, tools)
+};
+
 struct SceneSettings {
     double timeSeconds = 0.0;
     std::optional<double> hour;          // overrides the clock's hour of day
@@ -33,6 +45,7 @@ struct SceneSettings {
     float exposure = 1.0f;
     WaterSettings water;
     VegetationSettings vegetation;
+    LightSettings lights;
 };
 
 struct FrameSetup {
@@ -44,6 +57,8 @@ struct FrameSetup {
     bool reflectionsActive = true;  // reflections on and the camera above the water
     bool vegetationEnabled = true;
     FrameData data;
+    std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)
+    LightsPath lightsPath = LightsPath::Ubo;  // set by the renderer from the context and the settings
 };
 
 FrameSetup prepareFrame(const SceneSettings& scene, int width, int height);

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "passes/clear_pass.h"
+#include "passes/light_volume_pass.h"
 #include "passes/lighting_pass.h"
 #include "passes/reflection_clear_pass.h"
 #include "passes/sky_pass.h"
@@ -29,12 +30,16 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         add(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));
-        add(std::make_unique<WaterMaskPass>());
         add(std::make_unique<LightingPass>());
+        // Before the water mask: the depth under the water is still the terrain's, which the
+        // volumes test against (the G-buffer there holds that terrain).
+        add(std::make_unique<LightVolumePass>());
+        add(std::make_unique<WaterMaskPass>());
         add(std::make_unique<ReflectionClearPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
         add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
         add(std::make_unique<LightingPass>(Mirroring::Mirrored));
+        add(std::make_unique<LightVolumePass>(Mirroring::Mirrored));
     } else {
         add(std::make_unique<ClearPass>(SurfaceOutput::Forward));
         add(std::make_unique<TerrainPass>(SurfaceOutput::Forward));

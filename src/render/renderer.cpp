@@ -15,6 +15,55 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
+
+    // Point lights: what the context offers decides the path and the UBO path's block size.
+    ssboAvailable_ = epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_ARB_shader_storage_buffer_object");
+    GLint maxBlockSize = 16384, maxVertexBlocks = 12, maxFragmentBlocks = 12;
+    glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
+    glGetIntegerv(GL_MAX_VERTEX_UNIFORM_BLOCKS, &maxVertexBlocks);
+    glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_BLOCKS, &maxFragmentBlocks);
+    uboLights_ = uboLightLayout(maxBlockSize, std::min(maxVertexBlocks, maxFragmentBlocks));
+    shaders_.setContextDefines({"LIGHTS_UBO_CAPACITY " + std::to_string(uboLights_.capacity),
+                                "LIGHTS_UBO_BLOCKS " + std::to_string(uboLights_.blocks)});
+    lightList_ = gl::createBuffer();
+    lightCount_ = gl::createBuffer();
+    glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(std::max(kMaxLights, uboLights_.maxLights()) * sizeof(PointLight)),
+                 nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, lightCount_.name());
+    glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path);
+}
+
+// Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
+// count, for .length()), as the UBO block array, and the count for the other two paths.
+void Renderer::uploadLights() {
+    lightsDropped_ = 0;
+    if (frame_.lightsPath == LightsPath::Ubo && int(frame_.lights.size()) > uboLights_.maxLights()) {
+        lightsDropped_ = int(frame_.lights.size()) - uboLights_.maxLights();
+        frame_.lights.resize(size_t(uboLights_.maxLights()));
+    }
+    GLsizeiptr bytes = GLsizeiptr(frame_.lights.size() * sizeof(PointLight));
+    glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
+    if (bytes > 0) glBufferSubData(GL_UNIFORM_BUFFER, 0, bytes, frame_.lights.data());
+    const GLuint count[4] = {GLuint(frame_.lights.size()), 0, 0, 0};
+    glBindBuffer(GL_UNIFORM_BUFFER, lightCount_.name());
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(count), count);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    GLsizeiptr blockBytes = GLsizeiptr(uboLights_.capacity) * GLsizeiptr(sizeof(PointLight));
+    for (int k = 0; k < uboLights_.blocks; ++k)
+        glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(kLightBlockFirstBinding + k), lightList_.name(), k * blockBytes,
+                          blockBytes);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightCountBlockBinding, lightCount_.name());
+    if (ssboAvailable_) {
+        // .length() is the bound range's size over 32 bytes; an empty list binds an empty range.
+        if (bytes > 0)
+            glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightStorageBinding, lightList_.name(), 0, bytes);
+        else
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightStorageBinding, 0);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightCountStorageBinding, lightCount_.name());
+    }
 }
 
 void Renderer::configure(int width, int height, const GBufferLayout& layout) {
@@ -89,6 +138,9 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     frame_ = prepareFrame(scene, targets_->width(), targets_->height());
     prepareVegetation(scene);
+    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path);
+    frame_.lightsPath = lightsChoice_.path;
+    uploadLights();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());
@@ -114,17 +166,21 @@ void Renderer::renderView(const std::string& viewName) {
         throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
     bool needsGBuffer = viewName == kOverviewName || (view && readsGBuffer(*view));
     if (needsGBuffer && !gbufferCurrent_) {
-        // Forward draws no G-buffer: fill it for the view with the deferred passes that come before
-        // lighting (the direct scene), each only if its forward counterpart ran this frame, so a
-        // frame stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
+        // Forward draws no G-buffer: fill it for the view with the deferred passes of the direct scene
+        // that do not shade, each only if its forward counterpart ran this frame, so a frame
+        // stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
         auto ranInForward = [&](std::string name) {
             size_t suffix = name.find(".gbuffer");
             if (suffix != std::string::npos) name.replace(suffix, 8, ".forward");
             return std::find(passesRan_.begin(), passesRan_.end(), name) != passesRan_.end();
         };
+        auto writes = [](const Pass& pass, Target target) {
+            std::vector<Target> written = pass.writes();
+            return std::find(written.begin(), written.end(), target) != written.end();
+        };
         for (const auto& pass : deferred_.passes()) {
-            std::vector<Target> written = pass->writes();
-            if (std::find(written.begin(), written.end(), Target::Radiance) != written.end()) break;
+            if (writes(*pass, Target::Reflection)) break;  // the mirrored half
+            if (writes(*pass, Target::Radiance)) continue;  // shading
             if (ranInForward(pass->name())) pass->run(passContext);
         }
         gbufferCurrent_ = true;

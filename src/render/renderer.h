@@ -3,6 +3,7 @@
 // headless commands and the tests all drive this same object.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,16 @@ public:
     // The plants placed around the last frame's camera and what that frame drew of them.
     const VegetationField& vegetation() const { return vegetationField_; }
     const VegetationStats& vegetationStats() const { return vegetationField_.stats(); }
+    // How shaders read the point lights, decided each frame from SceneSettings::lights.path (forced)
+    // or else the context (SSBOs present or not); a forced SSBO path the context lacks falls back
+    // to ubo. The path and the reason of the last frame (of construction before any frame).
+    LightsPath lightsPath() const { return lightsChoice_.path; }
+    const std::string& lightsPathReason() const { return lightsChoice_.reason; }
+    bool ssboAvailable() const { return ssboAvailable_; }
+    const UboLightLayout& uboLights() const { return uboLights_; }
+    // Lights the last frame drew, and how many the UBO path had to drop (0 on the SSBO paths).
+    int lightsDrawn() const { return int(frame_.lights.size()); }
+    int lightsDropped() const { return lightsDropped_; }
 
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
@@ -68,6 +79,7 @@ public:
 private:
     PassContext context();
     void prepareVegetation(const SceneSettings& scene);
+    void uploadLights();
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
@@ -86,6 +98,11 @@ private:
     FloorPass floor_;
     PresentPass present_;
     gl::Buffer frameUniforms_;
+    gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
+    bool ssboAvailable_ = false;
+    UboLightLayout uboLights_;
+    LightsPathChoice lightsChoice_;
+    int lightsDropped_ = 0;
     FrameSetup frame_;
     bool gbufferCurrent_ = false;  // whether the G-buffer holds the last frame
     std::vector<std::string> passesRan_;  // names of the passes the last frame ran

@@ -1,6 +1,8 @@
 // Uploads the terrain grid; draws it and full-screen triangles.
 #include "render/scene_geometry.h"
 
+#include "scene/point_lights.h"
+
 namespace oasis {
 
 SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(density) {
@@ -20,6 +22,17 @@ SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(densi
                  GL_STATIC_DRAW);
     glBindVertexArray(0);
     emptyVao_ = gl::createVertexArray();
+
+    std::vector<glm::vec3> sphere = lightVolumeMesh();
+    lightVolumeVertexCount_ = int(sphere.size());
+    lightVolumeVao_ = gl::createVertexArray();
+    lightVolumeVertices_ = gl::createBuffer();
+    glBindVertexArray(lightVolumeVao_.name());
+    glBindBuffer(GL_ARRAY_BUFFER, lightVolumeVertices_.name());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(sphere.size() * sizeof(glm::vec3)), sphere.data(), GL_STATIC_DRAW);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+    glBindVertexArray(0);
 }
 
 void SceneGeometry::drawTerrain() const {

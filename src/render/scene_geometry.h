@@ -15,12 +15,18 @@ public:
     void drawFullscreenTriangle() const;
     void drawWaterQuad() const;  // four vertices generated in water.vert
     int terrainTriangles() const { return indexCount_ / 3; }
+    // The light volume (scene/point_lights.h lightVolumeMesh): bind once, then draw per light.
+    void bindLightVolume() const { glBindVertexArray(lightVolumeVao_.name()); }
+    void drawBoundLightVolume() const { glDrawArrays(GL_TRIANGLES, 0, lightVolumeVertexCount_); }
 
 private:
     TerrainGridDensity density_;
     gl::VertexArray terrainVao_, emptyVao_;
     gl::Buffer terrainVertices_, terrainIndices_;
     int indexCount_ = 0;
+    gl::VertexArray lightVolumeVao_;
+    gl::Buffer lightVolumeVertices_;
+    int lightVolumeVertexCount_ = 0;
 };
 
 }  // namespace oasis

@@ -70,6 +70,27 @@ bool expandIncludes(const std::string& root, const std::string& file, Preprocess
     return true;
 }
 
+// The light list's blocks (render/texture_units.h), whichever of them the program declares.
+void bindLightBlocks(GLuint program) {
+    GLuint count = glGetUniformBlockIndex(program, kLightCountBlockName);
+    if (count != GL_INVALID_INDEX) glUniformBlockBinding(program, count, kLightCountBlockBinding);
+    for (int k = 0;; ++k) {
+        std::string name = std::string(kLightBlockName) + "[" + std::to_string(k) + "]";
+        GLuint block = glGetUniformBlockIndex(program, name.c_str());
+        if (block == GL_INVALID_INDEX) break;
+        glUniformBlockBinding(program, block, GLuint(kLightBlockFirstBinding + k));
+    }
+    if (epoxy_gl_version() < 43 && !(epoxy_has_gl_extension("GL_ARB_shader_storage_buffer_object") &&
+                                     epoxy_has_gl_extension("GL_ARB_program_interface_query")))
+        return;
+    const std::pair<const char*, int> storage[] = {{kLightStorageName, kLightStorageBinding},
+                                                   {kLightCountStorageName, kLightCountStorageBinding}};
+    for (auto [blockName, binding] : storage) {
+        GLuint index = glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, blockName);
+        if (index != GL_INVALID_INDEX) glShaderStorageBlockBinding(program, index, GLuint(binding));
+    }
+}
+
 }  // namespace
 
 std::string PreprocessedShader::annotateLog(const std::string& log) const {
@@ -122,12 +143,22 @@ GlslDialect glslDialectForCurrentContext() {
 ShaderLibrary::ShaderLibrary(std::string directory, GlslDialect dialect)
     : directory_(std::move(directory)), dialect_(std::move(dialect)) {}
 
+void ShaderLibrary::setContextDefines(std::vector<std::string> defines) {
+    if (defines == contextDefines_) return;
+    // Programs built before the first context defines use none of them (only the light programs
+    // do, and the renderer sets the defines before it builds any): they stay valid.
+    bool rebuild = !contextDefines_.empty();
+    contextDefines_ = std::move(defines);
+    if (rebuild) programs_.clear();
+}
+
 bool ShaderLibrary::preprocess(const std::string& file, const std::vector<std::string>& defines,
                                PreprocessedShader& out, std::string& error) const {
     out = {};
     out.text = dialect_.versionLine + "\n";
     for (const std::string& extension : dialect_.extensionLines) out.text += extension + "\n";
     for (const std::string& define : defines) out.text += "#define " + define + "\n";
+    for (const std::string& define : contextDefines_) out.text += "#define " + define + "\n";
     return expandIncludes(directory_, file, out, 0, error);
 }
 
@@ -178,6 +209,7 @@ bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::
     // Bindings come from texture_units.h rather than layout(binding) so GLSL 3.30 works too.
     GLuint block = glGetUniformBlockIndex(program.name(), kFrameBlockName);
     if (block != GL_INVALID_INDEX) glUniformBlockBinding(program.name(), block, kFrameBlockBinding);
+    bindLightBlocks(program.name());
     glUseProgram(program.name());
     for (const SamplerBinding& binding : kSamplerBindings) {
         GLint location = glGetUniformLocation(program.name(), binding.uniformName);

@@ -39,6 +39,10 @@ public:
 
     const std::string& directory() const { return directory_; }
     const GlslDialect& dialect() const { return dialect_; }
+    // Defines whose values the context decides (e.g. "LIGHTS_UBO_CAPACITY 2048"), added after every
+    // variant's own; changing them drops the built programs so the next request rebuilds them.
+    void setContextDefines(std::vector<std::string> defines);
+    const std::vector<std::string>& contextDefines() const { return contextDefines_; }
 
     // Preprocesses one stage of a variant; returns false with a message on a missing file.
     bool preprocess(const std::string& file, const std::vector<std::string>& defines,
@@ -59,6 +63,7 @@ private:
 
     std::string directory_;
     GlslDialect dialect_;
+    std::vector<std::string> contextDefines_;
     std::map<std::string, gl::Program> programs_;
 };
 

@@ -2,6 +2,7 @@
 #include "render/shader_variants.h"
 
 #include "debug/debug_views.h"
+#include "render/light_paths.h"
 
 namespace oasis {
 namespace {
@@ -9,13 +10,9 @@ namespace {
 std::vector<ProgramVariant> buildVariants() {
     std::vector<ProgramVariant> variants = {
         {"terrain.gbuffer", "terrain.vert", "terrain.frag", {"OUTPUT_GBUFFER"}},
-        {"terrain.forward", "terrain.vert", "terrain.frag", {"OUTPUT_FORWARD"}},
         {"terrain.gbuffer.mirrored", "terrain.vert", "terrain.frag", {"OUTPUT_GBUFFER", "MIRRORED"}},
-        {"terrain.forward.mirrored", "terrain.vert", "terrain.frag", {"OUTPUT_FORWARD", "MIRRORED"}},
         {"vegetation.gbuffer", "vegetation.vert", "vegetation.frag", {"OUTPUT_GBUFFER"}},
-        {"vegetation.forward", "vegetation.vert", "vegetation.frag", {"OUTPUT_FORWARD"}},
         {"vegetation.gbuffer.mirrored", "vegetation.vert", "vegetation.frag", {"OUTPUT_GBUFFER", "MIRRORED"}},
-        {"vegetation.forward.mirrored", "vegetation.vert", "vegetation.frag", {"OUTPUT_FORWARD", "MIRRORED"}},
         {"sky.forward", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE"}},
         {"sky.forward.mirrored", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE", "MIRRORED"}},
         {"lighting", "fullscreen.vert", "lighting.frag", {}},
@@ -34,6 +31,24 @@ std::vector<ProgramVariant> buildVariants() {
         {"lsystem.compose", "", "", {"PASS_COMPOSE_ROUND"}, "lsystem_interpret.comp"},
         {"lsystem.segments", "", "", {"PASS_EMIT_SEGMENTS"}, "lsystem_interpret.comp"},
     };
+    // Point lights, once per light path (render/light_paths.h): the forward surfaces' light loop
+    // (terrain and plants) and the deferred light volumes (stencil marking, then shading), direct
+    // and mirrored.
+    for (LightsPath path : {LightsPath::Ssbo, LightsPath::SsboCount, LightsPath::Ubo}) {
+        std::string suffix = lightsVariantSuffix(path), define = lightsPathDefine(path);
+        variants.push_back({"terrain.forward" + suffix, "terrain.vert", "terrain.frag", {"OUTPUT_FORWARD", define}});
+        variants.push_back({"terrain.forward.mirrored" + suffix, "terrain.vert", "terrain.frag",
+                            {"OUTPUT_FORWARD", "MIRRORED", define}});
+        variants.push_back({"vegetation.forward" + suffix, "vegetation.vert", "vegetation.frag", {"OUTPUT_FORWARD", define}});
+        variants.push_back({"vegetation.forward.mirrored" + suffix, "vegetation.vert", "vegetation.frag",
+                            {"OUTPUT_FORWARD", "MIRRORED", define}});
+        variants.push_back({"light.mark" + suffix, "light_volume.vert", "light_volume.frag", {"MARK_ONLY", define}});
+        variants.push_back({"light.mark.mirrored" + suffix, "light_volume.vert", "light_volume.frag",
+                            {"MARK_ONLY", "MIRRORED", define}});
+        variants.push_back({"light.shade" + suffix, "light_volume.vert", "light_volume.frag", {define}});
+        variants.push_back({"light.shade.mirrored" + suffix, "light_volume.vert", "light_volume.frag",
+                            {"MIRRORED", define}});
+    }
     for (const DebugView& view : debugViews())
         variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});
     return variants;

@@ -35,4 +35,16 @@ inline constexpr std::array<SamplerBinding, 8> kSamplerBindings{{
 inline constexpr const char* kFrameBlockName = "FrameBlock";
 inline constexpr int kFrameBlockBinding = 0;
 
+// The point lights (shaders/common/lights.glsl): the UBO path's count block and its block array
+// (LightBlock[k] at kLightBlockFirstBinding + k), and the SSBO paths' storage blocks. The storage
+// bindings stay below 8, the GL 4.3 minimum of GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS.
+inline constexpr const char* kLightCountBlockName = "LightCountBlock";
+inline constexpr int kLightCountBlockBinding = 1;
+inline constexpr const char* kLightBlockName = "LightBlock";
+inline constexpr int kLightBlockFirstBinding = 2;
+inline constexpr const char* kLightStorageName = "LightBuffer";
+inline constexpr int kLightStorageBinding = 6;
+inline constexpr const char* kLightCountStorageName = "LightCountBuffer";
+inline constexpr int kLightCountStorageBinding = 7;
+
 }  // namespace oasis

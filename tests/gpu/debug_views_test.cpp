@@ -304,6 +304,12 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         bool plant = (flags & kSurfacePlant) && !(flags & kSurfaceReflected);
         return std::make_pair(plant ? to8bit(glm::vec3(texel(final, kWidth, x, y))) : glm::ivec3(0), 0);
     };
+    expected["light-volumes"] = [&](int x, int y) {
+        // No lights in this frame: dark grey by the normal's slope on surfaces, black sky.
+        if (infoFlags(texel(info, kWidth, x, y)) & kSurfaceSky) return std::make_pair(glm::ivec3(0), 0);
+        float grey = 0.05f + 0.1f * std::clamp(texel(normal, kWidth, x, y).y, 0.0f, 1.0f);
+        return std::make_pair(to8bit(glm::vec3(grey)), 1);
+    };
     expected["reflection"] = [&](int x, int y) {
         // Tone-mapped like Final (shaders/common/output.glsl); black outside the water.
         glm::vec3 r(texel(reflection, kWidth, x, y));

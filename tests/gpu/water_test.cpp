@@ -394,7 +394,7 @@ TEST_F(Water, StencilMaskIsWhereTheWaterIsNearest) {
         std::vector<uint8_t> deferredStencil;
         for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
             SCOPED_TRACE(pipelineName(kind));
-            const std::string afterMask = kind == PipelineKind::Deferred ? "LightingPass" : "ReflectionClearPass.forward";
+            const std::string afterMask = kind == PipelineKind::Deferred ? "ReflectionClearPass.gbuffer" : "ReflectionClearPass.forward";
             FrameReadback terrain = renderAndRead(renderer, scene, kind, "WaterMaskPass");
             FrameReadback masked = renderAndRead(renderer, scene, kind, afterMask);
             FrameReadback full = renderAndRead(renderer, scene, kind);

@@ -1,6 +1,8 @@
 // Covers the tables: G-buffer layouts (gbuffer_layout.h), debug views (debug_views.h) and program variants (shader_variants.h) with their shader files.
 #include <gtest/gtest.h>
 
+#include "render/light_paths.h"
+
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -127,10 +129,11 @@ TEST(DebugViewTable, NamesListEndsWithOverview) {
     EXPECT_EQ(debugViewNames(), expected + "overview");
 }
 
-TEST(DebugViewTable, ReadsGBufferExactlyForTheFourColourTargetsAndTheVegetationMask) {
+TEST(DebugViewTable, ReadsGBufferExactlyForTheColourTargetsAndTheViewsMaskedOrCountedByThem) {
     for (const DebugView& view : debugViews()) {
+        // light-volumes counts the lights at the G-buffer's positions; vegetation masks by its flags.
         bool gbuffer = view.name == "albedo" || view.name == "normal" || view.name == "position" ||
-                       view.name == "info" || view.name == "vegetation";
+                       view.name == "info" || view.name == "vegetation" || view.name == "light-volumes";
         EXPECT_EQ(readsGBuffer(view), gbuffer) << view.name;
     }
 }
@@ -179,10 +182,16 @@ TEST(ProgramVariantTable, EveryProgramThePassesRequestExists) {
     for (const char* name : {"floor.write", "floor.read", "gbuffer.clear", "tonemap", "lighting",
                              "lighting.mirrored", "present", "water.mask", "water.composite", "probe.height"})
         EXPECT_NE(findProgramVariant(name), nullptr) << name;
-    for (SurfaceOutput output : {SurfaceOutput::GBuffer, SurfaceOutput::Forward})
-        for (Mirroring mirroring : {Mirroring::Direct, Mirroring::Mirrored})
-            EXPECT_NE(findProgramVariant(variantName("terrain", output, mirroring)), nullptr)
-                << variantName("terrain", output, mirroring);
+    // Surfaces: G-buffer variants, and forward ones per light path (SurfacePass::surfaceProgram).
+    for (const char* surface : {"terrain", "vegetation"})
+        for (Mirroring mirroring : {Mirroring::Direct, Mirroring::Mirrored}) {
+            std::string gbuffer = variantName(surface, SurfaceOutput::GBuffer, mirroring);
+            EXPECT_NE(findProgramVariant(gbuffer), nullptr) << gbuffer;
+            for (LightsPath path : {LightsPath::Ssbo, LightsPath::SsboCount, LightsPath::Ubo}) {
+                std::string forward = variantName(surface, SurfaceOutput::Forward, mirroring) + lightsVariantSuffix(path);
+                EXPECT_NE(findProgramVariant(forward), nullptr) << forward;
+            }
+        }
     for (Mirroring mirroring : {Mirroring::Direct, Mirroring::Mirrored})
         EXPECT_NE(findProgramVariant(variantName("sky", SurfaceOutput::Forward, mirroring)), nullptr)
             << variantName("sky", SurfaceOutput::Forward, mirroring);

@@ -1,0 +1,37 @@
+// LightVolumePass: the deferred pipeline's point lights. Per light, its volume is marked in the
+// stencil buffer (both faces, depth-fail, toggling one upper bit) and then shaded only where
+// marked, added to Radiance; the shading draw resets the bit, so nothing clears the whole stencil
+// and the cost of a light follows the pixels its volume covers. Mirrored: the lights' mirror
+// images over the mirrored G-buffer, inside the water only, added to Reflection.
+#pragma once
+#include "passes/pass.h"
+
+namespace oasis {
+
+// The stencil bit the light volumes use; the low bits keep the surface marks (passes/pass.h).
+inline constexpr int kStencilLightVolumeBit = 0x80;
+
+class LightVolumePass : public Pass {
+public:
+    explicit LightVolumePass(Mirroring mirroring = Mirroring::Direct) : mirroring_(mirroring) {}
+    std::string name() const override {
+        return mirroring_ == Mirroring::Mirrored ? "LightVolumePass.mirrored" : "LightVolumePass";
+    }
+    std::vector<Target> reads() const override {
+        return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
+    }
+    std::vector<Target> writes() const override {
+        return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
+    }
+    bool active(const FrameSetup& frame) const override {
+        return !frame.lights.empty() && mirroredPassActive(frame, mirroring_);
+    }
+
+protected:
+    void execute(PassContext& context) override;
+
+private:
+    Mirroring mirroring_;
+};
+
+}  // namespace oasis

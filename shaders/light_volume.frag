@@ -1,0 +1,31 @@
+// Deferred point light, one per draw: shades the G-buffer surface under each pixel of the light's
+// volume that the stencil marked, with the function the forward pipeline loops over; the result is
+// added to Radiance (or Reflection). MARK_ONLY: the stencil-marking draw, no colour.
+#include "common/frame_block.glsl"
+#include "common/lights.glsl"
+
+#if defined(MARK_ONLY)
+void main() {}
+#else
+uniform sampler2D gAlbedo;
+uniform sampler2D gNormal;
+uniform sampler2D gPosition;
+uniform sampler2D gInfo;
+uniform int lightIndex;
+layout(location = 0) out vec4 outColour;
+
+void main() {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 info = texelFetch(gInfo, pixel, 0);
+    if ((infoFlags(info) & SURFACE_SKY) != 0u) {
+        outColour = vec4(0.0);
+        return;
+    }
+    Surface s;
+    s.albedo = texelFetch(gAlbedo, pixel, 0).rgb;
+    s.normal = texelFetch(gNormal, pixel, 0).xyz;
+    s.relativePosition = texelFetch(gPosition, pixel, 0).xyz;
+    decodeInfo(info, s);
+    outColour = vec4(pointLightRadiance(s, lightAt(lightIndex)) * pointLightTransfer(s), 0.0);
+}
+#endif

@@ -1,0 +1,17 @@
+// A light's volume: the unit sphere mesh (circumscribed, so it contains the whole sphere of
+// influence) scaled to the light's radius around its camera-relative position. MIRRORED: around
+// the light's mirror image across the water, for the mirrored G-buffer.
+#include "common/frame_block.glsl"
+#include "common/lights.glsl"
+
+layout(location = 0) in vec3 unitSpherePosition;
+uniform int lightIndex;
+
+void main() {
+    PointLight light = lightAt(lightIndex);
+    vec3 centre = light.positionRadius.xyz;
+#if defined(MIRRORED)
+    centre.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - centre.y;
+#endif
+    gl_Position = frame.viewProjection * vec4(centre + unitSpherePosition * light.positionRadius.w, 1.0);
+}
