@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "debug/debug_view_pass.h"
+#include "gl/capabilities.h"
 #include "render/frame_setup.h"
 #include "render/pipeline.h"
 #include "scene/camera.h"
@@ -21,9 +22,10 @@ struct SceneOptions {
     std::string gbuffer = "standard";
     WaterSettings water;
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
+    gl::ForcedFallbacks force;  // --force: capabilities switched off even where the driver has them
 };
 
-enum class Command { Default, Window, Render, Compare };
+enum class Command { Default, Window, Render, Compare, Caps };
 
 struct Options {
     Command command = Command::Default;

@@ -63,7 +63,7 @@ glm::ivec3 atlasTexelFor(const Image& atlas, int x, int y, int width, int height
 // The atlas the app would build on this context, for a renderer made in a test.
 std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Renderer& renderer) {
     std::string reason;
-    auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(false, reason));
+    auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(gl::measureCapabilities(), false, reason));
     renderer.setPlantAtlas(atlas.get());
     return atlas;
 }
