@@ -125,7 +125,8 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
                 renderer.geometry().terrainTriangles());
-    if (!state.fallbacks.empty() && ImGui::CollapsingHeader("fallbacks (this driver or --force)")) {
+    if (!state.fallbacks.empty() &&
+        ImGui::CollapsingHeader("fallbacks (this driver or --force)", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const std::string& line : state.fallbacks) ImGui::BulletText("%s", line.c_str());
     }
     if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
