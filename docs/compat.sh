@@ -58,6 +58,7 @@ for setup in "${setups[@]}"; do
     fi
   fi
   summary=$(sed -E 's/^ *//; s/, 0 tests failed out of/ of/' <<<"$summary")
+  summary=${summary//|/\\|}  # a regex's | must not end the Markdown cell
   # shellcheck disable=SC2086
   cmp=$("${envwords[@]}" "$oasis" compare --size 640x360 --frames "$setupFrames" --json --out-dir "$out" $extra 2>/dev/null) || cmp=""
   printf "| %s | %s.%s (%s) | %s | %s | %s | %s | %s | %.1f | %.1f |\n" "$name" "$(field major "$caps")" \
