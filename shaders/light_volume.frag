@@ -11,7 +11,8 @@ uniform sampler2D gAlbedo;
 uniform sampler2D gNormal;
 uniform sampler2D gPosition;
 uniform sampler2D gInfo;
-uniform int lightIndex;
+flat in vec4 vLightPositionRadius;   // the light, fetched by the vertex stage (light_volume.vert)
+flat in vec4 vLightColourIntensity;
 layout(location = 0) out vec4 outColour;
 
 void main() {
@@ -26,6 +27,6 @@ void main() {
     s.normal = texelFetch(gNormal, pixel, 0).xyz;
     s.relativePosition = texelFetch(gPosition, pixel, 0).xyz;
     decodeInfo(info, s);
-    outColour = vec4(pointLightRadiance(s, lightAt(lightIndex)) * pointLightTransfer(s), 0.0);
+    outColour = vec4(pointLightRadiance(s, PointLight(vLightPositionRadius, vLightColourIntensity)) * pointLightTransfer(s), 0.0);
 }
 #endif

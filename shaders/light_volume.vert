@@ -6,9 +6,15 @@
 
 layout(location = 0) in vec3 unitSpherePosition;
 uniform int lightIndex;
+// The light, fetched once here through the variant's path and handed to the fragments: lavapipe
+// (zink) crashed fetching it from the UBO block array in the fragment stage.
+flat out vec4 vLightPositionRadius;
+flat out vec4 vLightColourIntensity;
 
 void main() {
     PointLight light = lightAt(lightIndex);
+    vLightPositionRadius = light.positionRadius;
+    vLightColourIntensity = light.colourIntensity;
     vec3 centre = light.positionRadius.xyz;
 #if defined(MIRRORED)
     centre.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - centre.y;

@@ -10,6 +10,7 @@ in vec2 vAtlasUv;
 in vec3 vRelativePosition;
 in vec3 vNormal;
 in vec3 vTint;
+in float vAtlasLod;  // the mip level from the billboard's projected size (vegetation.vert)
 
 void main() {
 #if defined(MIRRORED)
@@ -17,14 +18,15 @@ void main() {
 #else
     const bool reflected = false;
 #endif
-    // The mip level the sampler picks. The atlas's lines are a texel wide, so level L keeps about
-    // 2^-L of their coverage: lowering the threshold with it keeps a far plant about a pixel thick
-    // instead of letting it dissolve (the coverage preservation of alpha-tested mipmaps).
-    vec2 texels = vAtlasUv * vec2(textureSize(plantAtlas, 0));
-    float footprint = max(dot(dFdx(texels), dFdx(texels)), dot(dFdy(texels), dFdy(texels)));
-    float lod = max(0.5 * log2(max(footprint, 1e-8)), 0.0);
-    vec4 texel = texture(plantAtlas, vAtlasUv);
-    if (texel.a < max(0.5 * exp2(-lod), 0.12)) discard;
+    // The atlas's lines are a texel wide, so mip level L keeps about 2^-L of their coverage:
+    // lowering the threshold with it keeps a far plant about a pixel thick instead of letting it
+    // dissolve (the coverage preservation of alpha-tested mipmaps).
+    float lod = max(vAtlasLod, 0.0);
+    vec4 texel = textureLod(plantAtlas, vAtlasUv, lod);
+    bool transparent = texel.a < max(0.5 * exp2(-lod), 0.12);
+#if !defined(LIGHTS_UBO)
+    if (transparent) discard;
+#endif
 
     // The atlas colour is display-encoded; the plant's albedo is linear and at most 1.
     vec3 colour = texel.rgb / texel.a;
@@ -36,4 +38,12 @@ void main() {
     s.specularIntensity = quantiseUnit(0.04);
     s.flags = SURFACE_PLANT | (reflected ? SURFACE_REFLECTED : 0u);
     emitSurface(s);
+#if defined(LIGHTS_UBO)
+    // Driver workaround: llvmpipe (Mesa 22.3) read wrong lights from the uniform block array,
+    // indexed in the light loop, in fragments that ran on after a discard (found by the lights
+    // tests: ubo differed from ssbo); taking every fragment through the loop first and discarding
+    // afterwards keeps ubo = ssbo bit for bit. Costs the shading of the billboards' transparent
+    // texels on this fallback path only.
+    if (transparent) discard;
+#endif
 }

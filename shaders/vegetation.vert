@@ -14,6 +14,7 @@ out vec2 vAtlasUv;
 out vec3 vRelativePosition;
 out vec3 vNormal;
 out vec3 vTint;
+out float vAtlasLod;
 
 // Sideways displacement of a plant's top per unit of its height: at most 0.24 * wind strength
 // (scene/vegetation.cpp bounds chunks by 0.3 per unit of strength). The gusts are a detail noise
@@ -56,4 +57,10 @@ void main() {
 #endif
     vRelativePosition = relative;
     gl_Position = frame.viewProjection * vec4(relative, 1.0);
+    // The mip level: atlas texels per screen pixel along the billboard's height. Computed here from
+    // the projected size rather than from derivatives in the fragment shader, whose dFdx with the
+    // alpha test's discard and the UBO light blocks crashed lavapipe (zink).
+    float texelsPerUnit = frame.vegetationAtlas.z / size;
+    float pixelsPerUnit = frame.vegetationAtlas.w / max(gl_Position.w, 1e-3);
+    vAtlasLod = log2(max(texelsPerUnit / pixelsPerUnit, 1e-6));
 }

@@ -21,7 +21,7 @@ struct FrameData {
     vec4 water;                  // x level (world y), y absorption per unit, z ripple strength, w flags
     vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
     vec4 vegetation;             // x wind strength, y flutter phase (rad), zw unused
-    vec4 vegetationAtlas;        // x atlas columns, y atlas rows, zw unused
+    vec4 vegetationAtlas;        // x atlas columns, y atlas rows, z texels per cell side, w pixels per world unit at unit eye distance
     // The camera's terrain-noise coordinates per octave, split in the skewed simplex lattice:
     // xy the fraction, zw the integer cell (exact in float to 2^24). See noise.glsl.
     vec4 terrainNoiseOrigins[OASIS_NOISE_MAX_OCTAVES];

@@ -44,12 +44,14 @@ layout(std140) uniform LightCountBlock {
     uvec4 lightCountValue;  // x = number of lights (at most LIGHTS_UBO_CAPACITY * LIGHTS_UBO_BLOCKS)
 };
 int lightCount() { return int(lightCountValue.x); }
-// Each block by a constant index: indexing the block array with a variable (dynamically uniform,
-// which GLSL 4.0 allows) read wrong lights on llvmpipe in fragments after a discard (the plants'
-// alpha test), so the block is chosen by branches the compiler can resolve per block.
+#if __VERSION__ >= 400
+// i is dynamically uniform wherever this is called (a loop bound by the count, or a per-draw index).
+PointLight lightAt(int i) { return lightBlocks[i / LIGHTS_UBO_CAPACITY].lights[i % LIGHTS_UBO_CAPACITY]; }
+#else
+// Before GLSL 4.00 a block array takes constant indices only: one branch per block (at most
+// OASIS_LIGHTS_UBO_MAX_BLOCKS, which src/render/light_paths.cpp respects).
 PointLight lightAt(int i) {
     int block = i / LIGHTS_UBO_CAPACITY, index = i % LIGHTS_UBO_CAPACITY;
-    // Up to OASIS_LIGHTS_UBO_MAX_BLOCKS (8) blocks.
 #if LIGHTS_UBO_BLOCKS > 7
     if (block == 7) return lightBlocks[7].lights[index];
 #endif
@@ -73,6 +75,7 @@ PointLight lightAt(int i) {
 #endif
     return lightBlocks[0].lights[index];
 }
+#endif
 
 #else
 int lightCount() { return 0; }

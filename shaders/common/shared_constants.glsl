@@ -16,7 +16,7 @@
 #define OASIS_DETAIL_GROUND_FINE 3
 #define OASIS_DETAIL_WIND_GUSTS 4
 #define OASIS_DETAIL_LAYERS 5
-// The UBO light path's most uniform blocks (shaders/common/lights.glsl picks each by a constant index).
+// The UBO light path's most uniform blocks (lights.glsl indexes them by constants before GLSL 4.00).
 #define OASIS_LIGHTS_UBO_MAX_BLOCKS 8
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u

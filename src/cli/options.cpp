@@ -46,6 +46,9 @@ const char* kSceneOptionsHelp =
     "                            they glow at night, e.g. --hour 21\n"
     "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
     "                            where the context has SSBOs, else ubo)\n"
+    "  --force LIST              switch capabilities off even where the driver has them, to reproduce\n"
+    "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,gl33\n"
+    "                            (gl33: an OpenGL 3.3 core context); each fallback is reported once\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -56,6 +59,7 @@ const char* commandName(Command command) {
         case Command::Window: return "window";
         case Command::Render: return "render";
         case Command::Compare: return "compare";
+        case Command::Caps: return "caps";
     }
     return "";
 }
@@ -101,6 +105,10 @@ std::string usage(Command command) {
                    "  median ms per frame of each (wall time around glFinish over N frames, default 9);\n"
                    "  writes forward.png, deferred.png and difference.png to DIR (default oasis-out);\n"
                    "  --passes adds each pass's median ms (glFinish after every pass)\n" + scene;
+        case Command::Caps:
+            return "usage: oasis caps [--json] [--force LIST]\n"
+                   "  the context's GL version, vendor, renderer, GLSL version, the limits and extensions that\n"
+                   "  matter to oasis, and for each feature oasis can use whether it is used here and why not\n" + scene;
         case Command::Window:
             return "usage: oasis window [scene options]\n"
                    "  opens the interactive window (what `oasis` does when a display exists)\n" + scene;
@@ -114,6 +122,7 @@ std::string usage(Command command) {
            "  window     the interactive window\n"
            "  render     one frame, one debug view, to a PNG\n"
            "  compare    forward against deferred: image difference and time\n"
+           "  caps       what this driver offers and which paths oasis takes on it (--json)\n"
            "  oasis SUBCOMMAND --help for its options\n" + scene +
            "  --out-dir DIR             where the main job writes (default oasis-out)\n";
 }
@@ -132,7 +141,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (name == "render") options.command = Command::Render;
         else if (name == "compare") options.command = Command::Compare;
         else if (name == "window") options.command = Command::Window;
-        else return fail("unknown subcommand '" + name + "' (expected render, compare or window)");
+        else if (name == "caps") options.command = Command::Caps;
+        else return fail("unknown subcommand '" + name + "' (expected render, compare, caps or window)");
         ++i;
     }
     for (; i < arguments.size(); ++i) {
@@ -140,11 +150,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
-            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path"};
+            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
+        if (flag == "--json" && options.command == Command::Caps) { options.json = true; continue; }
         bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
-        if (compareOnly && (options.command == Command::Render || options.command == Command::Window))
+        if (compareOnly && (options.command == Command::Render || options.command == Command::Window ||
+                            options.command == Command::Caps))
             return fail("option " + flag + " belongs to `oasis compare` and the main job");
         if (flag == "--json") { options.json = true; continue; }
         if (flag == "--passes") { options.passTimes = true; continue; }
@@ -220,6 +232,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value == "texturing") options.stencilView = StencilViewPath::Texturing;
             else if (value == "read-back") options.stencilView = StencilViewPath::ReadBack;
             else return fail("--stencil-view expects texturing or read-back, got '" + value + "'");
+        } else if (flag == "--force") {
+            std::string error;
+            if (!parseForcedFallbacks(value, options.scene.force, error)) return fail("--force: " + error);
         } else if (flag == "--stop-before") {
             options.stopBefore = value;  // checked against the pipeline's passes when it runs
         } else if (flag == "--out") {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "debug/debug_view_pass.h"
+#include "gl/capabilities.h"
 #include "render/frame_setup.h"
 #include "render/pipeline.h"
 #include "scene/camera.h"
@@ -24,9 +25,10 @@ struct SceneOptions {
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
     int lights = 0;                          // point lights, 0..kMaxLights
     std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context
+    gl::ForcedFallbacks force;  // --force: capabilities switched off even where the driver has them
 };
 
-enum class Command { Default, Window, Render, Compare };
+enum class Command { Default, Window, Render, Compare, Caps };
 
 struct Options {
     Command command = Command::Default;

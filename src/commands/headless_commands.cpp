@@ -130,7 +130,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
 template <typename Body>
 int withHeadlessSession(const Options& options, Body body) {
     try {
-        HeadlessContext context;
+        HeadlessContext context(maxGlVersionFor(options.scene));
         RenderSession session(options);
         return body(session);
     } catch (const std::exception& error) {

@@ -22,32 +22,43 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     return scene;
 }
 
-StencilViewPath chooseStencilViewPath(std::optional<StencilViewPath> forced, std::string& reason) {
-    bool supported = epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_ARB_stencil_texturing");
+StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optional<StencilViewPath> forced,
+                                      std::string& reason) {
+    std::string why;
+    bool supported = caps.stencilTexturingAvailable(&why);
     if (forced) {
         if (*forced == StencilViewPath::Texturing && !supported) {
-            reason = "stencil texturing was asked for but this context lacks GL 4.3 / ARB_stencil_texturing: read-back";
+            reason = "read-back (stencil texturing was asked for but " + why + ")";
             return StencilViewPath::ReadBack;
         }
-        reason = std::string("forced on the command line: ") + stencilViewPathName(*forced);
+        reason = std::string(stencilViewPathName(*forced)) + " (--stencil-view)";
         return *forced;
     }
-    reason = supported ? "stencil texturing (GL 4.3 or ARB_stencil_texturing present)"
-                       : "read-back (no GL 4.3 / ARB_stencil_texturing)";
+    reason = supported ? "stencil-texturing (" + why + ")" : "read-back (" + why + ")";
     return supported ? StencilViewPath::Texturing : StencilViewPath::ReadBack;
 }
 
-RenderSession::RenderSession(const Options& options) : scene(sceneSettingsFrom(options.scene)) {
+MaxGlVersion maxGlVersionFor(const SceneOptions& options) {
+    return options.force.gl33 ? MaxGlVersion{3, 3} : MaxGlVersion{};
+}
+
+RenderSession::RenderSession(const Options& options)
+    : caps(gl::measureCapabilities(options.scene.force)), scene(sceneSettingsFrom(options.scene)) {
     std::string searched;
     std::string directory = findShaderDirectory(&searched);
     if (directory.empty())
         throw std::runtime_error("cannot find oasis's shaders (looked in: " + searched +
                                  "); set OASIS_SHADER_DIR to the shaders/ directory");
-    shaders = std::make_unique<ShaderLibrary>(directory, glslDialectForCurrentContext());
+    GlslDialect dialect = glslDialectForCurrentContext();
+    if (caps.forced.gl33) dialect.versionLine = "#version 330 core";
+    shaders = std::make_unique<ShaderLibrary>(directory, dialect);
     renderer = std::make_unique<Renderer>(*shaders, scene);
+    std::string whyNoSsbo;
+    bool ssbo = caps.ssboAvailable(&whyNoSsbo);
+    renderer->setSsboAvailable(ssbo, whyNoSsbo, scene.lights.path);
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
-    renderer->setStencilViewPath(chooseStencilViewPath(options.stencilView, stencilPathReason));
-    PlantInterpretation plantPath = choosePlantInterpretation(options.scene.noCompute, plantPathReason);
+    renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
+    PlantInterpretation plantPath = choosePlantInterpretation(caps, options.scene.noCompute, plantPathReason);
     try {
         plantAtlas = std::make_unique<PlantAtlas>(*shaders, plantPath);
     } catch (const std::runtime_error& error) {
@@ -58,6 +69,48 @@ RenderSession::RenderSession(const Options& options) : scene(sceneSettingsFrom(o
         plantAtlas = std::make_unique<PlantAtlas>(*shaders, PlantInterpretation::Cpu);
     }
     renderer->setPlantAtlas(plantAtlas.get());
+    for (const std::string& line : fallbacks()) std::fprintf(stderr, "oasis: fallback: %s\n", line.c_str());
+}
+
+std::vector<gl::FeatureReport> RenderSession::features() const {
+    std::vector<gl::FeatureReport> list;
+    std::string why;
+    // The light list: the renderer's path choice (from the capabilities above and --lights-path).
+    bool ssbo = renderer->lightsPath() != LightsPath::Ubo;
+    list.push_back({"ssbo-light-list", ssbo, ssbo ? "SSBO light list, path " + renderer->lightsPathReason()
+                                                  : "fallback: UBO light list, path " + renderer->lightsPathReason()});
+    bool gpuPlants = plantAtlas && plantAtlas->path() == PlantInterpretation::Gpu;
+    list.push_back({"compute-plant-interpretation", gpuPlants,
+                    gpuPlants ? plantPathReason : "fallback: " + plantPathReason});
+    bool texturing = renderer->stencilViewPath() == StencilViewPath::Texturing;
+    list.push_back({"stencil-texturing", texturing,
+                    texturing ? "stencil view by " + stencilPathReason : "fallback: stencil view by " + stencilPathReason});
+    bool floats = caps.floatRenderTargetsAvailable(&why);
+    list.push_back({"float-render-targets", floats, floats ? "Radiance, Reflection and the G-buffer: " + why
+                                                           : "required and missing: " + why});
+    caps.dsaAvailable(&why);
+    list.push_back({"direct-state-access", false,
+                    "not used: oasis edits GL objects through glBind* on every context, so no path depends "
+                    "on it (driver: " + (caps.driverHasDsa() ? std::string("has it") : "lacks it") +
+                    (caps.forced.noDsa ? "; --force no-dsa accepted, nothing changes)" : ")")});
+    bool debug = caps.debugOutputAvailable(&why);
+    list.push_back({"debug-output", debug, debug ? "GL errors to stderr and a debug group per pass: " + why
+                                                 : "fallback: no debug messages or groups (" + why + ")"});
+    return list;
+}
+
+std::vector<std::string> RenderSession::fallbacks() const {
+    std::vector<std::string> lines;
+    for (const gl::FeatureReport& feature : features())
+        if (!feature.used && feature.name != "direct-state-access") {
+            const std::string prefix = "fallback: ";
+            bool prefixed = feature.reason.compare(0, prefix.size(), prefix) == 0;
+            lines.push_back(feature.name + ": " + feature.reason.substr(prefixed ? prefix.size() : 0));
+        }
+    if (caps.forced.noDsa) lines.push_back("direct-state-access: --force no-dsa accepted; oasis never uses DSA");
+    if (caps.forced.gl33) lines.push_back("context: OpenGL " + std::to_string(caps.major) + "." +
+                                          std::to_string(caps.minor) + " core (--force gl33)");
+    return lines;
 }
 
 std::string describePlantAtlas(const RenderSession& session) {

@@ -4,19 +4,28 @@
 #include <memory>
 #include <string>
 
+#include "context/gl_context.h"
+
 #include "cli/options.h"
+#include "gl/capabilities.h"
 #include "render/renderer.h"
 
 namespace oasis {
 
 SceneSettings sceneSettingsFrom(const SceneOptions& options);
 
-// Stencil texturing needs GL 4.3 or ARB_stencil_texturing; `reason` says why the path was chosen.
-StencilViewPath chooseStencilViewPath(std::optional<StencilViewPath> forced, std::string& reason);
+// Stencil texturing where the capabilities allow it (GL 4.3 or ARB_stencil_texturing, not switched
+// off by --force no-stencil-texturing); `reason` says why the path was chosen.
+StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optional<StencilViewPath> forced,
+                                      std::string& reason);
+
+// The context a command should make for these options: at most 3.3 with --force gl33.
+MaxGlVersion maxGlVersionFor(const SceneOptions& options);
 
 // Everything a command renders with, on the current context. Throws std::runtime_error with a
 // readable message when the shaders cannot be found or the targets cannot be allocated.
 struct RenderSession {
+    gl::Capabilities caps;  // measured once from the context, with --force applied
     std::unique_ptr<ShaderLibrary> shaders;
     std::unique_ptr<Renderer> renderer;
     SceneSettings scene;
@@ -25,6 +34,12 @@ struct RenderSession {
     std::string plantPathReason;            // which interpretation path and why, e.g. "gpu (...)"
 
     explicit RenderSession(const Options& options);
+
+    // Every feature oasis can use: used here or not, and why (what `oasis caps` prints).
+    std::vector<gl::FeatureReport> features() const;
+    // The fallbacks this session took, one line each ("stencil view: read-back (...)"); the
+    // constructor prints each once to stderr, the window shows them in its panel.
+    std::vector<std::string> fallbacks() const;
 };
 
 // "plants: gpu (compute shaders and SSBOs present), atlas 1280x512 in 12.3 ms" for the commands' output.

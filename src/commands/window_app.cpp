@@ -26,6 +26,7 @@ struct WindowState {
     bool freeCamera = false;
     double frameMs = 0.0, smoothedMs = 0.0;
     std::string message;  // last reload result or error, shown in the panel
+    std::vector<std::string> fallbacks;  // the session's fallbacks (printed once at start-up too)
     size_t layoutIndex = 0;
 };
 
@@ -154,6 +155,10 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
                 renderer.geometry().terrainTriangles());
+    if (!state.fallbacks.empty() &&
+        ImGui::CollapsingHeader("fallbacks (this driver or --force)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const std::string& line : state.fallbacks) ImGui::BulletText("%s", line.c_str());
+    }
     if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
     if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
     ImGui::End();
@@ -163,7 +168,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
 
 int runWindowApp(const Options& options) {
     try {
-        WindowContext window(options.scene.width, options.scene.height, "oasis");
+        WindowContext window(options.scene.width, options.scene.height, "oasis", maxGlVersionFor(options.scene));
         RenderSession session(options);
         Renderer& renderer = *session.renderer;
         renderer.setPipeline(options.pipeline);
@@ -178,6 +183,7 @@ int runWindowApp(const Options& options) {
         ImGui_ImplOpenGL3_Init("#version 330 core");
 
         WindowState state;
+        state.fallbacks = session.fallbacks();
         for (size_t i = 0; i < gbufferLayouts().size(); ++i)
             if (gbufferLayouts()[i].name == options.scene.gbuffer) state.layoutIndex = i;
         SceneSettings& scene = session.scene;

@@ -8,12 +8,29 @@
 #include <cstdio>
 #include <cstdlib>
 #include <set>
+#include <string>
 #include <stdexcept>
 
 namespace oasis {
 namespace {
 
 const std::pair<int, int> kVersionsToTry[] = {{4, 6}, {4, 5}, {4, 3}, {4, 2}, {4, 1}, {3, 3}};
+
+bool allowed(MaxGlVersion max, int major, int minor) {
+    return major < max.major || (major == max.major && minor <= max.minor);
+}
+
+// Mesa gives the newest core version whatever is asked for (a core context may be newer than
+// requested); below 4.x its version overrides make the context really report the cap. Set before
+// the driver is loaded, and never over a value the user set. Other drivers are capped by
+// gl::Capabilities instead.
+void capMesaVersion(MaxGlVersion max) {
+    if (max.major >= 4) return;
+    std::string gl = std::to_string(max.major) + "." + std::to_string(max.minor);
+    std::string glsl = std::to_string(max.major * 100 + max.minor * 10);
+    setenv("MESA_GL_VERSION_OVERRIDE", gl.c_str(), 0);
+    setenv("MESA_GLSL_VERSION_OVERRIDE", glsl.c_str(), 0);
+}
 
 std::string glString(GLenum name) {
     const GLubyte* text = glGetString(name);
@@ -55,7 +72,8 @@ void installDebugOutput() {
     glDebugMessageCallback(printDebugMessage, nullptr);
 }
 
-HeadlessContext::HeadlessContext() {
+HeadlessContext::HeadlessContext(MaxGlVersion max) {
+    capMesaVersion(max);
     if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
         throw std::runtime_error("EGL has no EGL_MESA_platform_surfaceless (need Mesa's libegl-mesa0)");
     EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
@@ -71,6 +89,7 @@ HeadlessContext::HeadlessContext() {
     bool noConfig = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
     if (configCount < 1 && !noConfig) throw std::runtime_error("EGL has no OpenGL-renderable config");
     for (auto [glMajor, glMinor] : kVersionsToTry) {
+        if (!allowed(max, glMajor, glMinor)) continue;
         EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION_KHR, glMajor, EGL_CONTEXT_MINOR_VERSION_KHR, glMinor,
                                EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR,
                                EGL_CONTEXT_FLAGS_KHR, EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR, EGL_NONE};
@@ -102,9 +121,11 @@ bool WindowContext::displayAvailable() {
     return (x11 && *x11) || (wayland && *wayland);
 }
 
-WindowContext::WindowContext(int width, int height, const std::string& title) {
+WindowContext::WindowContext(int width, int height, const std::string& title, MaxGlVersion max) {
+    capMesaVersion(max);
     if (!glfwInit()) throw std::runtime_error("cannot open a window: " + glfwLastError());
     for (auto [glMajor, glMinor] : kVersionsToTry) {
+        if (!allowed(max, glMajor, glMinor)) continue;
         glfwDefaultWindowHints();
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, glMajor);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, glMinor);

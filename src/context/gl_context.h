@@ -1,5 +1,6 @@
 // An OpenGL context made current on this thread: headless through EGL (no display needed) or a
-// GLFW window. Both ask for the newest core profile the driver gives, down to 3.3.
+// GLFW window. Both ask for the newest core profile the driver gives, down to 3.3, or at most
+// the version asked for (--force gl33 makes a 3.3 core context on any driver).
 #pragma once
 #include <memory>
 #include <string>
@@ -18,10 +19,15 @@ ContextInfo queryContextInfo();
 // Routes GL debug output (errors and warnings; notifications are dropped) to stderr.
 void installDebugOutput();
 
+// The newest core version a context may have: {4, 6} by default, {3, 3} with --force gl33.
+struct MaxGlVersion {
+    int major = 4, minor = 6;
+};
+
 class HeadlessContext {
 public:
     // Throws std::runtime_error naming what is missing when no context can be made.
-    HeadlessContext();
+    explicit HeadlessContext(MaxGlVersion max = {});
     ~HeadlessContext();
     HeadlessContext(const HeadlessContext&) = delete;
     HeadlessContext& operator=(const HeadlessContext&) = delete;
@@ -34,7 +40,7 @@ private:
 class WindowContext {
 public:
     // Throws std::runtime_error (with GLFW's reason) when no window can be opened.
-    WindowContext(int width, int height, const std::string& title);
+    WindowContext(int width, int height, const std::string& title, MaxGlVersion max = {});
     ~WindowContext();
     WindowContext(const WindowContext&) = delete;
     WindowContext& operator=(const WindowContext&) = delete;

@@ -3,6 +3,7 @@
 
 #include "common/shared_constants.glsl"
 
+
 #include <algorithm>
 
 #include "render/light_data.h"
@@ -37,16 +38,16 @@ std::string lightsVariantSuffix(LightsPath path) { return std::string(".lights-"
 
 std::string lightsPathNames() { return "ssbo, ssbo-count, ubo"; }
 
-LightsPathChoice chooseLightsPath(bool ssboAvailable, std::optional<LightsPath> forced) {
+LightsPathChoice chooseLightsPath(bool ssboAvailable, std::optional<LightsPath> forced,
+                                  const std::string& whyNoSsbo) {
     if (forced) {
         if (*forced != LightsPath::Ubo && !ssboAvailable)
-            return {LightsPath::Ubo, std::string("ubo (") + lightsPathName(*forced) +
-                                         " was asked for but this context has no GL 4.3 / "
-                                         "ARB_shader_storage_buffer_object)"};
+            return {LightsPath::Ubo, std::string("ubo (") + lightsPathName(*forced) + " was asked for but: " +
+                                         whyNoSsbo + ")"};
         return {*forced, std::string(lightsPathName(*forced)) + " (forced)"};
     }
     if (ssboAvailable) return {LightsPath::Ssbo, "ssbo (GL 4.3 / ARB_shader_storage_buffer_object present)"};
-    return {LightsPath::Ubo, "ubo (no GL 4.3 / ARB_shader_storage_buffer_object)"};
+    return {LightsPath::Ubo, "ubo (" + whyNoSsbo + ")"};
 }
 
 UboLightLayout uboLightLayout(int maxUniformBlockSize, int maxUniformBlocksPerStage, int wantedLights) {

@@ -24,7 +24,9 @@ struct LightsPathChoice {
 };
 // `forced` (the CLI or the panel) wins unless it asks for an SSBO path the context lacks, which
 // falls back to ubo and says so.
-LightsPathChoice chooseLightsPath(bool ssboAvailable, std::optional<LightsPath> forced = {});
+// `whyNoSsbo` is the capability report's reason when SSBOs are unavailable (e.g. --force no-ssbo).
+LightsPathChoice chooseLightsPath(bool ssboAvailable, std::optional<LightsPath> forced = {},
+                                  const std::string& whyNoSsbo = "no GL 4.3 / ARB_shader_storage_buffer_object");
 
 // The UBO path: lights per uniform block (GL_MAX_UNIFORM_BLOCK_SIZE / 32, a multiple of 8 so each
 // block's offset is 256-byte aligned) and how many blocks, as a block array, hold kMaxLights —

@@ -73,17 +73,15 @@ const char* plantInterpretationName(PlantInterpretation path) {
     return path == PlantInterpretation::Gpu ? "gpu" : "cpu";
 }
 
-PlantInterpretation choosePlantInterpretation(bool forceCpu, std::string& reason) {
+PlantInterpretation choosePlantInterpretation(const gl::Capabilities& caps, bool forceCpu, std::string& reason) {
     if (forceCpu) {
         reason = "cpu (forced with --no-compute)";
         return PlantInterpretation::Cpu;
     }
-    if (!contextHasComputeShaders()) {
-        reason = "cpu (no GL 4.3 / ARB_compute_shader + ARB_shader_storage_buffer_object)";
-        return PlantInterpretation::Cpu;
-    }
-    reason = "gpu (compute shaders and SSBOs present)";
-    return PlantInterpretation::Gpu;
+    std::string why;
+    bool compute = caps.computeAvailable(&why);
+    reason = (compute ? "gpu (" : "cpu (") + why + ")";
+    return compute ? PlantInterpretation::Gpu : PlantInterpretation::Cpu;
 }
 
 const std::vector<PlantAtlasVariant>& plantAtlasVariants() {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/capabilities.h"
 #include "gl/objects.h"
 #include "render/image.h"
 #include "render/plant_interpreter.h"
@@ -16,8 +17,9 @@ namespace oasis {
 enum class PlantInterpretation { Gpu, Cpu };
 const char* plantInterpretationName(PlantInterpretation path);  // "gpu" | "cpu"
 
-// GPU when the context has compute shaders and SSBOs and the CPU is not forced; `reason` says why.
-PlantInterpretation choosePlantInterpretation(bool forceCpu, std::string& reason);
+// GPU when the capabilities allow compute (shaders and SSBOs, not switched off by --force) and
+// --no-compute is not given; `reason` says why.
+PlantInterpretation choosePlantInterpretation(const gl::Capabilities& caps, bool forceCpu, std::string& reason);
 
 // One cell of the atlas: a preset at an iteration count. Cells run left to right, top to bottom.
 struct PlantAtlasVariant {

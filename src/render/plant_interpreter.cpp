@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "gl/capabilities.h"
+
 namespace oasis {
 namespace {
 
@@ -53,10 +55,7 @@ void dispatch(GLuint program, uint32_t count, float angleDegrees, float startHea
 
 }  // namespace
 
-bool contextHasComputeShaders() {
-    return epoxy_gl_version() >= 43 || (epoxy_has_gl_extension("GL_ARB_compute_shader") &&
-                                        epoxy_has_gl_extension("GL_ARB_shader_storage_buffer_object"));
-}
+bool contextHasComputeShaders() { return gl::measureCapabilities().computeAvailable(); }
 
 SegmentBuffer uploadSegments(const std::vector<Segment2D>& segments) {
     SegmentBuffer result;

@@ -11,7 +11,8 @@
 
 namespace oasis {
 
-// Compute shaders and shader storage buffers: GL 4.3, or both ARB extensions.
+// Compute shaders and shader storage buffers on the current context, no fallback forced
+// (gl::Capabilities::computeAvailable: GL 4.3, or the ARB extensions the interpreter needs).
 bool contextHasComputeShaders();
 
 // The segments of one plant in a GL buffer: `count` Segment2D records, 24 bytes each (std430).

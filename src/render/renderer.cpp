@@ -36,6 +36,12 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path);
 }
 
+void Renderer::setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced) {
+    ssboAvailable_ = available;
+    if (!available) ssboMissingReason_ = reason;
+    lightsChoice_ = chooseLightsPath(ssboAvailable_, forced, ssboMissingReason_);
+}
+
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
 // count, for .length()), as the UBO block array, and the count for the other two paths.
 void Renderer::uploadLights() {
@@ -91,8 +97,12 @@ PassContext Renderer::context() {
 }
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {
-    frame_.data.vegetationAtlas =
-        glm::vec4(float(vegetationBuffers_.atlasColumns()), float(vegetationBuffers_.atlasRows()), 0.0f, 0.0f);
+    // The billboards pick their atlas mip level from their projected size (vegetation.vert).
+    float cellTexels = plantAtlas_ ? float(plantAtlas_->cellSize()) : 1.0f;
+    float pixelsPerUnit = float(targets_->height()) /
+                          (2.0f * std::tan(glm::radians(frame_.view.projection.verticalFovDegrees) * 0.5f));
+    frame_.data.vegetationAtlas = glm::vec4(float(vegetationBuffers_.atlasColumns()),
+                                            float(vegetationBuffers_.atlasRows()), cellTexels, pixelsPerUnit);
     vegetationList_.instances.clear();
     vegetationList_.directCount = vegetationList_.mirroredCount = 0;
     if (frame_.vegetationEnabled && plantAtlas_) {
@@ -138,7 +148,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     frame_ = prepareFrame(scene, targets_->width(), targets_->height());
     prepareVegetation(scene);
-    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path);
+    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     frame_.lightsPath = lightsChoice_.path;
     uploadLights();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());

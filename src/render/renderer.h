@@ -45,6 +45,9 @@ public:
     LightsPath lightsPath() const { return lightsChoice_.path; }
     const std::string& lightsPathReason() const { return lightsChoice_.reason; }
     bool ssboAvailable() const { return ssboAvailable_; }
+    // The session's capability report decides (it honours --force no-ssbo); the constructor's
+    // default asks the context directly.
+    void setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced);
     const UboLightLayout& uboLights() const { return uboLights_; }
     // Lights the last frame drew, and how many the UBO path had to drop (0 on the SSBO paths).
     int lightsDrawn() const { return int(frame_.lights.size()); }
@@ -100,6 +103,7 @@ private:
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
     bool ssboAvailable_ = false;
+    std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
     UboLightLayout uboLights_;
     LightsPathChoice lightsChoice_;
     int lightsDropped_ = 0;

@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -91,7 +92,30 @@ void bindLightBlocks(GLuint program) {
     }
 }
 
+// The GLSL version number of a "#version 330 core" line (450 if it cannot be read).
+int glslVersionNumber(const std::string& versionLine) {
+    int number = 0;
+    return std::sscanf(versionLine.c_str(), "#version %d", &number) == 1 ? number : 450;
+}
+
+void insertAfterVersionLine(std::string& text, const std::string& lines) {
+    size_t end = text.find('\n');
+    text.insert(end == std::string::npos ? text.size() : end + 1, lines);
+}
+
 }  // namespace
+
+std::string computeExtensionLines(const GlslDialect& dialect) {
+    // What gl::Capabilities::computeAvailable checks for, enabled for a compute stage below GLSL 4.30:
+    // compute and storage blocks, layout(binding) (420pack) and `precise` (gpu_shader5).
+    int version = glslVersionNumber(dialect.versionLine);
+    std::string lines;
+    if (version < 430)
+        lines += "#extension GL_ARB_compute_shader : require\n#extension GL_ARB_shader_storage_buffer_object : require\n";
+    if (version < 420) lines += "#extension GL_ARB_shading_language_420pack : require\n";
+    if (version < 400) lines += "#extension GL_ARB_gpu_shader5 : require\n";
+    return lines;
+}
 
 std::string PreprocessedShader::annotateLog(const std::string& log) const {
     // Mesa writes "0:12(5): error", glslang "ERROR: 0:12: ...", NVIDIA "0(12) : error".
@@ -167,6 +191,13 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
                                  std::string& error) const {
     PreprocessedShader source;
     if (!preprocess(file, defines, source, error)) return false;
+    if (stage == GL_COMPUTE_SHADER) insertAfterVersionLine(source.text, computeExtensionLines(dialect_));
+    // The SSBO light paths below GLSL 4.30 (a 3.3 context with the extension): storage blocks.
+    bool storageLights = std::any_of(defines.begin(), defines.end(), [](const std::string& define) {
+        return define == "LIGHTS_SSBO" || define == "LIGHTS_SSBO_COUNT";
+    });
+    if (storageLights && glslVersionNumber(dialect_.versionLine) < 430)
+        insertAfterVersionLine(source.text, "#extension GL_ARB_shader_storage_buffer_object : require\n");
     gl::Shader shader(glCreateShader(stage));
     const char* text = source.text.c_str();
     glShaderSource(shader.name(), 1, &text, nullptr);

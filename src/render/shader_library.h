@@ -33,6 +33,9 @@ struct GlslDialect {
 // context, e.g. llvmpipe without compute shaders), so the same shaders run there; 450 otherwise.
 GlslDialect glslDialectForCurrentContext();
 
+// The #extension lines a compute stage needs in this dialect (none at GLSL 4.30 and later).
+std::string computeExtensionLines(const GlslDialect& dialect);
+
 class ShaderLibrary {
 public:
     explicit ShaderLibrary(std::string directory, GlslDialect dialect = {});

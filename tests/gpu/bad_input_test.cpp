@@ -153,7 +153,7 @@ protected:
     void breakAndRestore(const std::string& file, const std::vector<std::string>& programs) {
         SCOPED_TRACE("broken " + file);
         ShaderDirCopy copy(shaderDir_);
-        ShaderLibrary library(copy.root.string());
+        ShaderLibrary library(copy.root.string(), glslDialectForCurrentContext());
         NamedPose pose = defaultPose();
         Renderer renderer(library, pose.scene);
         renderer.configure(160, 90, layoutNamed("standard"));

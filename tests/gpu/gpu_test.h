@@ -31,21 +31,24 @@ namespace oasis::gputest {
 struct GpuState {
     std::unique_ptr<HeadlessContext> context;
     std::string error;        // why there is no context
+    std::string skipReason;   // the driver set-up asked for ($OASIS_GPU_SETUP) is not available here
     ContextInfo info;
     std::vector<std::string> glErrors;  // GL_DEBUG_TYPE_ERROR messages (API source) since the last clear
 };
 GpuState& gpuState();
 
-// Every GPU test derives from this: it fails (never skips) without a context, gives each test a
+// Every GPU test derives from this: it fails without a context (skips, with the reason, only when
+// the driver set-up named by $OASIS_GPU_SETUP is not available on this machine), gives each test a
 // shader library on the real shader directory, and fails a test that left a GL error behind.
 class GpuTest : public ::testing::Test {
 protected:
     void SetUp() override {
+        if (!gpuState().skipReason.empty()) GTEST_SKIP() << gpuState().skipReason;
         if (!gpuState().context) GTEST_FAIL() << "no headless OpenGL context: " << gpuState().error;
         std::string searched;
         shaderDir_ = findShaderDirectory(&searched);
         ASSERT_FALSE(shaderDir_.empty()) << "shader directory not found (searched " << searched << ")";
-        shaders_ = std::make_unique<ShaderLibrary>(shaderDir_);
+        shaders_ = std::make_unique<ShaderLibrary>(shaderDir_, glslDialectForCurrentContext());
         while (glGetError() != GL_NO_ERROR) {}
         gpuState().glErrors.clear();
     }
@@ -182,7 +185,7 @@ inline Image renderView(Renderer& renderer, const SceneSettings& scene, Pipeline
 // its frames draw vegetation). The caller keeps it alive as long as the renderer draws.
 inline std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Renderer& renderer) {
     std::string reason;
-    auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(false, reason));
+    auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(gl::measureCapabilities(), false, reason));
     renderer.setPlantAtlas(atlas.get());
     return atlas;
 }

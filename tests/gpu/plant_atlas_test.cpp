@@ -27,7 +27,8 @@ float plantExtent(const std::vector<Segment2D>& segments) {
 }
 
 TEST_F(PlantAtlasTest, GpuSegmentsEqualCpuCompositionForEveryPresetUpToSixRewrites) {
-    ASSERT_TRUE(contextHasComputeShaders()) << "this test needs compute shaders (GL 4.3)";
+    std::string why;
+    if (!gl::measureCapabilities().computeAvailable(&why)) GTEST_SKIP() << "this context has no compute path: " << why;
     GpuTurtleInterpreter gpu(*shaders_);
     size_t total = 0, identical = 0;
     for (const PlantPreset& preset : plantPresets()) {
@@ -67,10 +68,17 @@ TEST_F(PlantAtlasTest, GpuRoundsMatchTheCpuComposition) {
 
 TEST_F(PlantAtlasTest, PathChoiceFollowsTheContextAndTheFlag) {
     std::string reason;
-    EXPECT_EQ(choosePlantInterpretation(true, reason), PlantInterpretation::Cpu);
+    gl::Capabilities caps = gl::measureCapabilities();
+    EXPECT_EQ(choosePlantInterpretation(caps, true, reason), PlantInterpretation::Cpu);
     EXPECT_NE(reason.find("--no-compute"), std::string::npos) << reason;
-    PlantInterpretation automatic = choosePlantInterpretation(false, reason);
+    PlantInterpretation automatic = choosePlantInterpretation(caps, false, reason);
     EXPECT_EQ(automatic, contextHasComputeShaders() ? PlantInterpretation::Gpu : PlantInterpretation::Cpu) << reason;
+    if (automatic != PlantInterpretation::Gpu) return;  // nothing to switch off on this context
+    for (gl::ForcedFallbacks forced : {gl::ForcedFallbacks{true}, gl::ForcedFallbacks{false, true}}) {
+        caps.forced = forced;  // --force no-ssbo, --force no-compute
+        EXPECT_EQ(choosePlantInterpretation(caps, false, reason), PlantInterpretation::Cpu) << forced.list();
+        EXPECT_NE(reason.find("--force " + forced.list()), std::string::npos) << reason;
+    }
 }
 
 // Mean colour of the plant's pixels in a band of rows of one cell (rows counted from the top).
@@ -120,7 +128,8 @@ TEST_F(PlantAtlasTest, EveryCellHasAPlantBrownAtTheBaseAndGreenAtTheTips) {
 }
 
 TEST_F(PlantAtlasTest, CpuPathDrawsTheSameAtlasAsTheGpuPath) {
-    ASSERT_TRUE(contextHasComputeShaders()) << "this test needs compute shaders (GL 4.3)";
+    std::string why;
+    if (!gl::measureCapabilities().computeAvailable(&why)) GTEST_SKIP() << "this context has no compute path: " << why;
     PlantAtlas gpu(*shaders_, PlantInterpretation::Gpu), cpu(*shaders_, PlantInterpretation::Cpu);
     ASSERT_EQ(gpu.segments().size(), cpu.segments().size());
     bool sameSegments = true;

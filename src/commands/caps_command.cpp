@@ -1,0 +1,119 @@
+// The capability report, as text or one JSON object, from a real session on a headless context
+// (so "used" is what the renderer really took, including a compute path that failed to build).
+#include "commands/caps_command.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "commands/session.h"
+#include "context/gl_context.h"
+
+namespace oasis {
+namespace {
+
+std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        switch (c) {
+            case '"': out += "\\\""; break;
+            case '\\': out += "\\\\"; break;
+            case '\n': out += "\\n"; break;
+            case '\t': out += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    char escaped[8];
+                    std::snprintf(escaped, sizeof(escaped), "\\u%04x", c);
+                    out += escaped;
+                } else {
+                    out += c;
+                }
+        }
+    }
+    return out + "\"";
+}
+
+std::vector<std::pair<std::string, std::string>> limitRows(const gl::Limits& l) {
+    auto triple = [](const int v[3]) {
+        return std::to_string(v[0]) + "," + std::to_string(v[1]) + "," + std::to_string(v[2]);
+    };
+    return {{"max_uniform_block_size", std::to_string(l.maxUniformBlockSize)},
+            {"max_shader_storage_block_size", std::to_string(l.maxShaderStorageBlockSize)},
+            {"max_draw_buffers", std::to_string(l.maxDrawBuffers)},
+            {"max_color_attachments", std::to_string(l.maxColorAttachments)},
+            {"max_texture_size", std::to_string(l.maxTextureSize)},
+            {"max_samples", std::to_string(l.maxSamples)},
+            {"max_compute_work_group_invocations", std::to_string(l.maxComputeWorkGroupInvocations)},
+            {"max_compute_work_group_count", triple(l.maxComputeWorkGroupCount)},
+            {"max_compute_work_group_size", triple(l.maxComputeWorkGroupSize)},
+            {"max_compute_shared_memory_size", std::to_string(l.maxComputeSharedMemorySize)}};
+}
+
+void printText(const RenderSession& session) {
+    const gl::Capabilities& caps = session.caps;
+    std::printf("oasis caps: OpenGL %s\n", caps.version.c_str());
+    std::printf("  vendor    %s\n  renderer  %s\n  GLSL      %s\n  forced    %s\n", caps.vendor.c_str(),
+                caps.renderer.c_str(), caps.glslVersion.c_str(),
+                caps.forced.any() ? caps.forced.list().c_str() : "nothing (--force LIST to switch features off)");
+    std::printf("limits (0: the context has no such query):\n");
+    for (const auto& [name, value] : limitRows(caps.limits)) std::printf("  %-36s %s\n", name.c_str(), value.c_str());
+    std::printf("extensions that matter (GL %d.%d has some in core):\n", caps.major, caps.minor);
+    for (const auto& [name, present] : caps.relevantExtensions())
+        std::printf("  %-36s %s\n", name.c_str(), present ? "yes" : "no");
+    std::printf("features:\n");
+    for (const gl::FeatureReport& feature : session.features())
+        std::printf("  %-30s %-8s %s\n", feature.name.c_str(), feature.used ? "used" : "NOT used", feature.reason.c_str());
+}
+
+void printJson(const RenderSession& session) {
+    const gl::Capabilities& caps = session.caps;
+    std::string json = "{\"version\": " + jsonString(caps.version) + ", \"vendor\": " + jsonString(caps.vendor) +
+                       ", \"renderer\": " + jsonString(caps.renderer) + ", \"glsl_version\": " +
+                       jsonString(caps.glslVersion) + ", \"major\": " + std::to_string(caps.major) +
+                       ", \"minor\": " + std::to_string(caps.minor) + ", \"forced\": " + jsonString(caps.forced.list());
+    json += ", \"limits\": {";
+    bool first = true;
+    for (const auto& [name, value] : limitRows(caps.limits)) {
+        bool triple = value.find(',') != std::string::npos;
+        json += (first ? "\"" : ", \"") + name + "\": " + (triple ? "[" + value + "]" : value);
+        first = false;
+    }
+    json += "}, \"extensions\": {";
+    first = true;
+    for (const auto& [name, present] : caps.relevantExtensions()) {
+        json += (first ? "\"" : ", \"") + name + "\": " + (present ? "true" : "false");
+        first = false;
+    }
+    json += "}, \"features\": {";
+    first = true;
+    for (const gl::FeatureReport& feature : session.features()) {
+        json += (first ? "\"" : ", \"") + feature.name + "\": {\"used\": " + (feature.used ? "true" : "false") +
+                ", \"reason\": " + jsonString(feature.reason) + "}";
+        first = false;
+    }
+    json += "}, \"fallbacks\": [";
+    first = true;
+    for (const std::string& line : session.fallbacks()) {
+        json += (first ? "" : ", ") + jsonString(line);
+        first = false;
+    }
+    std::printf("%s]}\n", json.c_str());
+}
+
+}  // namespace
+
+int runCapsCommand(const Options& options) {
+    try {
+        HeadlessContext context(maxGlVersionFor(options.scene));
+        RenderSession session(options);
+        if (options.json) printJson(session);
+        else printText(session);
+        return 0;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "oasis: %s\n", error.what());
+        return 1;
+    }
+}
+
+}  // namespace oasis

@@ -1,0 +1,83 @@
+// What the current OpenGL context can do, measured once (version, strings, limits, extensions),
+// combined with the fallbacks forced on the command line (--force). Every capability-dependent
+// path choice asks this one object, so a user's driver can be reproduced by switching features off.
+#pragma once
+#include <set>
+#include <string>
+#include <vector>
+
+namespace oasis::gl {
+
+// Fallbacks forced even where the driver has the feature: --force no-ssbo,no-compute,...
+struct ForcedFallbacks {
+    bool noSsbo = false;
+    bool noCompute = false;
+    bool noStencilTexturing = false;
+    bool noDsa = false;
+    bool gl33 = false;  // create the context at OpenGL 3.3 core (the context's job, before measuring)
+
+    bool any() const { return noSsbo || noCompute || noStencilTexturing || noDsa || gl33; }
+    std::string list() const;  // "no-ssbo,gl33" ("" when none)
+};
+// The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa, gl33".
+const char* forcedFallbackNames();
+// Parses a comma-separated list into `forced` (adding to what is there); false with `error` on a bad name.
+bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std::string& error);
+
+// The limits that matter to oasis (0 where the context has no such query).
+struct Limits {
+    int maxUniformBlockSize = 0;         // bytes: a UBO light list's ceiling
+    int maxShaderStorageBlockSize = 0;   // bytes: an SSBO light list's ceiling
+    int maxDrawBuffers = 0;              // the G-buffer writes 4 at once
+    int maxColorAttachments = 0;
+    int maxTextureSize = 0;              // the largest frame
+    int maxSamples = 0;
+    int maxComputeWorkGroupInvocations = 0;
+    int maxComputeWorkGroupCount[3] = {0, 0, 0};
+    int maxComputeWorkGroupSize[3] = {0, 0, 0};
+    int maxComputeSharedMemorySize = 0;
+};
+
+// One feature oasis can use: whether it is used here, and why (why not when not).
+struct FeatureReport {
+    std::string name;    // "ssbo-light-list", "compute-plant-interpretation", ...
+    bool used = false;
+    std::string reason;  // "SSBOs present (GL 4.3)" / "fallback: UBO light list (no GL 4.3 / ...)"
+};
+
+struct Capabilities {
+    std::string version, vendor, renderer, glslVersion;
+    int major = 0, minor = 0;
+    Limits limits;
+    std::set<std::string> extensions;  // every extension the context lists
+    ForcedFallbacks forced;
+
+    bool atLeast(int wantMajor, int wantMinor) const {
+        return major > wantMajor || (major == wantMajor && minor >= wantMinor);
+    }
+    bool hasExtension(const std::string& name) const { return extensions.count(name) != 0; }
+
+    // The driver's own answer, ignoring --force: core version or extension.
+    bool driverHasSsbo() const;
+    bool driverHasCompute() const;
+    bool driverHasStencilTexturing() const;
+    bool driverHasDsa() const;
+    bool driverHasDebugOutput() const;
+    bool driverHasFloatRenderTargets() const;
+
+    // The driver's answer with the forced fallbacks applied; `reason` (optional) says why.
+    bool ssboAvailable(std::string* reason = nullptr) const;
+    bool computeAvailable(std::string* reason = nullptr) const;  // compute shaders and SSBOs both
+    bool stencilTexturingAvailable(std::string* reason = nullptr) const;
+    bool dsaAvailable(std::string* reason = nullptr) const;
+    bool debugOutputAvailable(std::string* reason = nullptr) const;
+    bool floatRenderTargetsAvailable(std::string* reason = nullptr) const;
+
+    // The extensions oasis cares about (each with whether the context lists it), in a fixed order.
+    std::vector<std::pair<std::string, bool>> relevantExtensions() const;
+};
+
+// Measures the current context (needs one made current); `forced` is kept alongside.
+Capabilities measureCapabilities(const ForcedFallbacks& forced = {});
+
+}  // namespace oasis::gl
