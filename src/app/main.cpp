@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cli/options.h"
+#include "commands/bench.h"
 #include "commands/headless_commands.h"
 #include "commands/window_app.h"
 #include "context/gl_context.h"
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     switch (options.command) {
         case Command::Render: return runRenderCommand(options);
         case Command::Compare: return runCompareCommand(options);
+        case Command::Bench: return runBenchCommand(options);
         case Command::Window: return runWindowApp(options);
         case Command::Default:
             return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);

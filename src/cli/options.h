@@ -24,7 +24,7 @@ struct SceneOptions {
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
 };
 
-enum class Command { Default, Window, Render, Compare };
+enum class Command { Default, Window, Render, Compare, Bench };
 
 struct Options {
     Command command = Command::Default;
@@ -37,6 +37,9 @@ struct Options {
     bool json = false;
     bool passTimes = false;  // compare / main job: per-pass medians too
     int timingFrames = 9;
+    bool timingFramesGiven = false;  // --frames on the command line (bench has its own default)
+    bool outDirGiven = false;        // --out-dir on the command line (bench writes to oasis-out/bench)
+    bool quick = false;              // bench: the short smoke-test run
     std::optional<StencilViewPath> stencilView;
     std::string stopBefore;  // render: end the frame before this pass
 };
