@@ -215,9 +215,9 @@ std::string benchSvg(const std::vector<BenchResult>& results, const std::string&
         }
         std::string label = (r.config.layout == kNoLayout ? std::string() : r.config.layout + " ") + r.variation;
         panels[panelOf[size]].points.push_back(
-            {r.msMedian, r.rmse, pipelineName(r.config.pipeline), label, r.pareto});
+            {r.msMedian, r.rmse, pipelineName(r.config.pipeline), label, r.pareto, r.paretoInPipeline});
     }
-    PlotText text{"oasis bench: time against error (Pareto frontier per size)",
+    PlotText text{"oasis bench: time against error (Pareto frontiers per size, and per pipeline)",
                   "median ms per frame (wall time around glFinish)",
                   "RMSE against the reference (8-bit RGB)",
                   "reference: deferred, full layout, every knob at its highest; " + renderer};

@@ -120,6 +120,24 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
         double yLabelX = ox + 18, yLabelY = oy + kTop + plotH / 2;
         svg += "<text x=\"" + number(yLabelX) + "\" y=\"" + number(yLabelY) + "\" text-anchor=\"middle\" transform=\"rotate(-90 " +
                number(yLabelX) + " " + number(yLabelY) + ")\">" + escape(text.yLabel) + "</text>\n";
+        // Each series' own frontier: a thin line of its colour; its points are labelled too.
+        std::vector<const PlotPoint*> labelled;
+        for (const std::string& series : seriesOrder) {
+            std::vector<const PlotPoint*> own;
+            for (const PlotPoint& q : panel.points)
+                if (q.seriesFrontier && q.series == series) own.push_back(&q);
+            std::sort(own.begin(), own.end(), [](const PlotPoint* a, const PlotPoint* b) {
+                return a->x != b->x ? a->x < b->x : a->y > b->y;
+            });
+            if (own.size() < 2) continue;
+            svg += "<polyline class=\"pareto-series\" fill=\"none\" stroke=\"" + colourOf[series] +
+                   "\" stroke-width=\"1\" stroke-dasharray=\"2 2\" points=\"";
+            for (const PlotPoint* q : own) {
+                svg += number(sx(q->x)) + "," + number(sy(q->y)) + " ";
+                if (!q->frontier) labelled.push_back(q);
+            }
+            svg += "\"/>\n";
+        }
         // The frontier: a polyline through its points in order of x.
         std::vector<const PlotPoint*> frontier;
         for (const PlotPoint& q : panel.points)
@@ -139,11 +157,10 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
                    (q.frontier ? "1" : "0.55") + "\"" + (q.frontier ? " stroke=\"black\" stroke-width=\"1.5\"" : "") +
                    "><title>" + escape(q.series + " " + q.label) + "</title></circle>\n";
         }
-        for (size_t i = 0; i < frontier.size(); ++i) {
-            const PlotPoint& q = *frontier[i];
-            svg += "<text x=\"" + number(sx(q.x) + 8) + "\" y=\"" + number(sy(q.y) - 6 - 0.0 * double(i)) +
-                   "\" font-size=\"10\" fill=\"#222\">" + escape(q.label) + "</text>\n";
-        }
+        labelled.insert(labelled.end(), frontier.begin(), frontier.end());
+        for (const PlotPoint* q : labelled)
+            svg += "<text x=\"" + number(sx(q->x) + 8) + "\" y=\"" + number(sy(q->y) - 6) + "\" font-size=\"10\" fill=\"" +
+                   (q->frontier ? "#222" : colourOf[q->series]) + "\">" + escape(q->label) + "</text>\n";
         svg += "</g>\n";
     }
     // Legend: one swatch per series, and the frontier's mark.
@@ -156,6 +173,10 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
     svg += "<line x1=\"" + number(lx) + "\" y1=\"" + number(ly) + "\" x2=\"" + number(lx + 30) + "\" y2=\"" + number(ly) +
            "\" stroke=\"#444\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\"/><text x=\"" + number(lx + 36) + "\" y=\"" +
            number(ly + 4) + "\">Pareto frontier (outlined points)</text>\n";
+    lx += 250;
+    svg += "<line x1=\"" + number(lx) + "\" y1=\"" + number(ly) + "\" x2=\"" + number(lx + 30) + "\" y2=\"" + number(ly) +
+           "\" stroke=\"#888\" stroke-width=\"1\" stroke-dasharray=\"2 2\"/><text x=\"" + number(lx + 36) + "\" y=\"" +
+           number(ly + 4) + "\">frontier within one series (its colour)</text>\n";
     if (!text.footnote.empty())
         svg += "<text x=\"20\" y=\"" + number(ly + 20) + "\" font-size=\"10\" fill=\"#555\">" + escape(text.footnote) +
                "</text>\n";

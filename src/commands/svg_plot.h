@@ -1,5 +1,5 @@
 // A small SVG scatter-plot writer for the bench: side-by-side panels, axes with ticks, points
-// coloured by series with a legend, and a marked frontier (a polyline through its points, labelled).
+// coloured by series with a legend, and marked frontiers (the panel's, and each series' own).
 #pragma once
 #include <string>
 #include <vector>
@@ -10,7 +10,8 @@ struct PlotPoint {
     double x = 0.0, y = 0.0;
     std::string series;  // picks the colour (first series seen gets the first colour)
     std::string label;   // drawn beside frontier points
-    bool frontier = false;
+    bool frontier = false;        // on the panel's frontier: outlined, joined by the dashed grey line
+    bool seriesFrontier = false;  // on its series' own frontier: joined by a thin line of its colour
 };
 
 struct PlotPanel {

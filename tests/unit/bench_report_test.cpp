@@ -206,14 +206,17 @@ TEST(SvgPlot, NiceTicksCoverTheRange) {
 }
 
 TEST(SvgPlot, DrawsEveryPointTheFrontierAndTheLegend) {
-    PlotPanel a{"1280x720", {{10, 3, "forward", "default", true}, {20, 1, "deferred", "full default", true},
-                             {25, 2, "deferred", "standard x<y", false}}};
-    PlotPanel b{"640x360", {{5, 4, "forward", "default", true}}};
+    PlotPanel a{"1280x720", {{10, 3, "forward", "default", true, true}, {20, 1, "deferred", "full default", true, true},
+                             {25, 2, "deferred", "standard x<y", false, true}, {30, 4, "deferred", "off", false, false}}};
+    PlotPanel b{"640x360", {{5, 4, "forward", "default", true, true}}};
     std::string svg = scatterPlotSvg({a, b}, {"title", "ms", "RMSE", "note"});
     EXPECT_EQ(svg.rfind("<svg", 0), 0u);
     EXPECT_NE(svg.find("</svg>"), std::string::npos);
-    EXPECT_EQ(count(svg, "<circle cx"), 4u + 2u);  // four points, two legend swatches
+    EXPECT_EQ(count(svg, "<circle cx"), 5u + 2u);  // five points, two legend swatches
     EXPECT_EQ(count(svg, "class=\"pareto\""), 2u);
+    EXPECT_EQ(count(svg, "class=\"pareto-series\""), 1u);  // deferred's own frontier in the first panel
+    EXPECT_NE(svg.find(">standard x&lt;y</text>"), std::string::npos);  // on its series' frontier: labelled
+    EXPECT_EQ(svg.find(">off</text>"), std::string::npos);              // on no frontier: not labelled
     EXPECT_NE(svg.find("1280x720"), std::string::npos);
     EXPECT_NE(svg.find("x&lt;y"), std::string::npos);  // labels are escaped
     EXPECT_EQ(svg.find("x<y"), std::string::npos);
