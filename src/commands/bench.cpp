@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -71,21 +72,18 @@ Image renderFinalImage(Renderer& renderer, const SceneSettings& scene) {
     return renderer.readDisplay();
 }
 
-// One configuration over every fixed frame: error against the references, then its timings.
 double pooledPsnr(double meanSquaredError) {
     return meanSquaredError > 0.0 ? std::min(kPsnrIdentical, 10.0 * std::log10(255.0 * 255.0 / meanSquaredError))
                                   : kPsnrIdentical;
 }
 
-// One configuration over every fixed frame: error against the references (and, where given, against
-// the reference layout's frames with the same knobs), then its timings. `images` gets its frames.
-BenchResult measureConfig(Renderer& renderer, const SceneSettings& base, const BenchConfig& config,
-                          const std::vector<BenchFrame>& frames, const std::vector<Image>& references,
-                          const std::vector<Image>* sameKnobs, const BenchPlan& plan, std::vector<Image>& images) {
+// A configuration's error over every fixed frame: against the references and, where given, against
+// the reference layout's frames with the same knobs; also its memory. `images` gets its frames.
+BenchResult measureError(Renderer& renderer, const SceneSettings& base, const BenchConfig& config,
+                         const std::vector<BenchFrame>& frames, const std::vector<Image>& references,
+                         const std::vector<Image>* sameKnobs, std::vector<Image>& images) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
-    const GBufferLayout& layout =
-        config.layout == kNoLayout ? defaultGBufferLayout() : *findGBufferLayout(config.layout);
-    renderer.configure(config.width, config.height, layout);
+    const GBufferLayout& layout = renderer.targets().layout();
     renderer.setPipeline(config.pipeline);
     BenchResult result;
     result.config = config;
@@ -93,12 +91,8 @@ BenchResult measureConfig(Renderer& renderer, const SceneSettings& base, const B
     result.knobSettings = config.knobSettings(knobs);
     double squaredError = 0.0, ssimSum = 0.0, sameKnobsSquared = 0.0;
     images.clear();
-    std::vector<double> samples;
-    std::vector<std::string> passOrder;
-    std::map<std::string, std::vector<double>> passSamples;
     for (size_t f = 0; f < frames.size(); ++f) {
-        SceneSettings scene = frameScene(base, knobs, config.levels, frames[f]);
-        Image image = renderFinalImage(renderer, scene);  // also the first warm-up
+        Image image = renderFinalImage(renderer, frameScene(base, knobs, config.levels, frames[f]));
         ImageDifference difference = compareImages(image, references[f]);
         squaredError += difference.rmse * difference.rmse;
         result.maxAbs = std::max(result.maxAbs, difference.maxAbs);
@@ -109,19 +103,6 @@ BenchResult measureConfig(Renderer& renderer, const SceneSettings& base, const B
             result.sameKnobsMaxAbs = std::max(result.sameKnobsMaxAbs, own.maxAbs);
         }
         images.push_back(std::move(image));
-        renderer.renderFrame(scene);
-        glFinish();
-        for (int i = 0; i < plan.timedFrames; ++i) {
-            Clock::time_point start = Clock::now();
-            renderer.renderFrame(scene);
-            glFinish();
-            samples.push_back(elapsedMs(start));
-        }
-        for (int i = 0; i < plan.passFrames; ++i)
-            for (const auto& [name, ms] : renderer.renderFrameTimingPasses(scene)) {
-                if (!passSamples.count(name)) passOrder.push_back(name);
-                passSamples[name].push_back(ms);
-            }
     }
     // Error pooled over the frames (all the same size): PSNR and RMSE from the mean squared error.
     double mse = squaredError / double(frames.size());
@@ -129,10 +110,6 @@ BenchResult measureConfig(Renderer& renderer, const SceneSettings& base, const B
     result.psnrDb = pooledPsnr(mse);
     result.sameKnobsPsnrDb = sameKnobs ? pooledPsnr(sameKnobsSquared / double(frames.size())) : kPsnrIdentical;
     result.ssim = ssimSum / double(frames.size());
-    result.msMedian = median(samples);
-    result.msMin = *std::min_element(samples.begin(), samples.end());
-    result.msMax = *std::max_element(samples.begin(), samples.end());
-    for (const std::string& name : passOrder) result.passesMs.emplace_back(name, median(passSamples[name]));
     int sharedBytes = layout.format(Target::Radiance).bytesPerPixel + layout.format(Target::Reflection).bytesPerPixel +
                       layout.format(Target::Final).bytesPerPixel;
     bool deferred = config.pipeline == PipelineKind::Deferred;
@@ -141,6 +118,53 @@ BenchResult measureConfig(Renderer& renderer, const SceneSettings& base, const B
                                                    : layout.format(Target::DepthStencil).bytesPerPixel);
     result.targetMiB = double(result.bytesPerPixel) * config.width * config.height / (1024.0 * 1024.0);
     return result;
+}
+
+// Times the configurations of one knob setting together: at each fixed frame, after two warm-up
+// frames each, their timed frames interleave (one frame of each in turn), so load that changes
+// during the run reaches all of them alike; then each one's per-pass frames.
+struct Timed {
+    Renderer* renderer;
+    BenchResult* result;
+};
+void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base, const std::vector<BenchFrame>& frames,
+                     const BenchPlan& plan) {
+    const std::vector<QualityKnob>& knobs = qualityKnobs();
+    std::vector<std::vector<double>> samples(group.size());
+    std::vector<std::vector<std::string>> passOrder(group.size());
+    std::vector<std::map<std::string, std::vector<double>>> passSamples(group.size());
+    for (const BenchFrame& frame : frames) {
+        std::vector<SceneSettings> scenes;
+        for (const Timed& t : group) {
+            scenes.push_back(frameScene(base, knobs, t.result->config.levels, frame));
+            t.renderer->setPipeline(t.result->config.pipeline);
+            for (int warm = 0; warm < 2; ++warm) t.renderer->renderFrame(scenes.back());
+        }
+        glFinish();
+        for (int i = 0; i < plan.timedFrames; ++i)
+            for (size_t c = 0; c < group.size(); ++c) {
+                group[c].renderer->setPipeline(group[c].result->config.pipeline);
+                Clock::time_point start = Clock::now();
+                group[c].renderer->renderFrame(scenes[c]);
+                glFinish();
+                samples[c].push_back(elapsedMs(start));
+            }
+        for (size_t c = 0; c < group.size(); ++c) {
+            group[c].renderer->setPipeline(group[c].result->config.pipeline);
+            for (int i = 0; i < plan.passFrames; ++i)
+                for (const auto& [name, ms] : group[c].renderer->renderFrameTimingPasses(scenes[c])) {
+                    if (!passSamples[c].count(name)) passOrder[c].push_back(name);
+                    passSamples[c][name].push_back(ms);
+                }
+        }
+    }
+    for (size_t c = 0; c < group.size(); ++c) {
+        BenchResult& result = *group[c].result;
+        result.msMedian = median(samples[c]);
+        result.msMin = *std::min_element(samples[c].begin(), samples[c].end());
+        result.msMax = *std::max_element(samples[c].begin(), samples[c].end());
+        for (const std::string& name : passOrder[c]) result.passesMs.emplace_back(name, median(passSamples[c][name]));
+    }
 }
 
 std::string sizeName(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
@@ -278,6 +302,20 @@ int runBenchCommand(const Options& options) {
         std::fprintf(tableOut, "oasis bench: %zu configurations (%zu sizes x %zu frames), %s\n  timing: %s\n  %s\n",
                      configs.size(), plan.sizes.size(), frames.size(), queryContextInfo().summary().c_str(),
                      timingNote(rendererName).c_str(), describePlantAtlas(session).c_str());
+        // A renderer per layout (the session's for the default one), so that configurations timed
+        // in turn never reallocate targets; forward uses the default layout's.
+        std::map<std::string, Renderer*> renderers;
+        std::vector<std::unique_ptr<Renderer>> extraRenderers;
+        for (const GBufferLayout& layout : gbufferLayouts()) {
+            if (layout.name == defaultGBufferLayout().name) {
+                renderers[layout.name] = &renderer;
+                continue;
+            }
+            extraRenderers.push_back(std::make_unique<Renderer>(*session.shaders, session.scene));
+            extraRenderers.back()->setPlantAtlas(session.plantAtlas.get());
+            extraRenderers.back()->setStencilViewPath(renderer.stencilViewPath());
+            renderers[layout.name] = extraRenderers.back().get();
+        }
         Clock::time_point runStart = Clock::now();
         std::vector<BenchResult> results;
         std::vector<Floor> floors;
@@ -297,22 +335,43 @@ int runBenchCommand(const Options& options) {
             }
             std::fprintf(stderr, "oasis bench: %dx%d reference rendered, floor %.2f ms (%s)\n", width, height,
                          defaultFloor, defaultGBufferLayout().name.c_str());
-            std::map<std::string, std::vector<Image>> referenceLayoutImages;  // by variation, at this size
-            for (const BenchConfig& config : configs) {
-                if (config.width != width || config.height != height) continue;
-                std::string variation = config.variation(knobs);
-                bool isReferenceLayout = config.pipeline == PipelineKind::Deferred && config.layout == reference.name;
-                auto sameKnobs = referenceLayoutImages.find(variation);
-                std::vector<Image> images;
-                BenchResult result = measureConfig(renderer, session.scene, config, frames, references,
-                                                   sameKnobs == referenceLayoutImages.end() ? nullptr : &sameKnobs->second,
-                                                   plan, images);
-                if (isReferenceLayout) referenceLayoutImages[variation] = std::move(images);
-                result.floorMs = defaultFloor;
-                results.push_back(result);
-                std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", results.size(),
-                             configs.size(), pipelineName(config.pipeline), config.layout.c_str(), width, height,
-                             result.variation.c_str(), result.msMedian, result.psnrDb, elapsedMs(runStart) / 1000.0);
+            for (auto& [name, layoutRenderer] : renderers) layoutRenderer->configure(width, height, *findGBufferLayout(name));
+            // One knob setting at a time (its configurations are consecutive): errors, then times.
+            std::vector<BenchConfig> sized;
+            for (const BenchConfig& config : configs)
+                if (config.width == width && config.height == height) sized.push_back(config);
+            for (size_t first = 0; first < sized.size();) {
+                std::string variation = sized[first].variation(knobs);
+                size_t end = first;
+                while (end < sized.size() && sized[end].variation(knobs) == variation) ++end;
+                std::vector<Image> referenceLayoutImages;  // deferred with the reference layout, these knobs
+                size_t groupStart = results.size();
+                std::vector<Renderer*> groupRenderers;
+                for (size_t i = first; i < end; ++i) {
+                    const BenchConfig& config = sized[i];
+                    Renderer& own = *renderers.at(config.layout == kNoLayout ? defaultGBufferLayout().name : config.layout);
+                    bool isReferenceLayout = config.pipeline == PipelineKind::Deferred && config.layout == reference.name;
+                    std::vector<Image> images;
+                    BenchResult result = measureError(own, session.scene, config, frames, references,
+                                                      referenceLayoutImages.empty() ? nullptr : &referenceLayoutImages,
+                                                      images);
+                    if (isReferenceLayout) referenceLayoutImages = std::move(images);
+                    result.floorMs = defaultFloor;
+                    results.push_back(result);
+                    groupRenderers.push_back(&own);
+                }
+                std::vector<Timed> group;
+                for (size_t i = groupStart; i < results.size(); ++i)
+                    group.push_back({groupRenderers[i - groupStart], &results[i]});
+                timeInterleaved(group, session.scene, frames, plan);
+                for (size_t i = groupStart; i < results.size(); ++i) {
+                    const BenchResult& result = results[i];
+                    std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", i + 1,
+                                 configs.size(), pipelineName(result.config.pipeline), result.config.layout.c_str(),
+                                 width, height, result.variation.c_str(), result.msMedian, result.psnrDb,
+                                 elapsedMs(runStart) / 1000.0);
+                }
+                first = end;
             }
         }
         markParetoFrontiers(results);
