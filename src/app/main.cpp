@@ -5,6 +5,7 @@
 
 #include "cli/options.h"
 #include "commands/caps_command.h"
+#include "commands/bench.h"
 #include "commands/headless_commands.h"
 #include "commands/window_app.h"
 #include "context/gl_context.h"
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
         case Command::Render: return runRenderCommand(options);
         case Command::Compare: return runCompareCommand(options);
         case Command::Caps: return runCapsCommand(options);
+        case Command::Bench: return runBenchCommand(options);
         case Command::Window: return runWindowApp(options);
         case Command::Default:
             return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);

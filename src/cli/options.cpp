@@ -60,6 +60,7 @@ const char* commandName(Command command) {
         case Command::Render: return "render";
         case Command::Compare: return "compare";
         case Command::Caps: return "caps";
+        case Command::Bench: return "bench";
     }
     return "";
 }
@@ -109,6 +110,19 @@ std::string usage(Command command) {
             return "usage: oasis caps [--json] [--force LIST]\n"
                    "  the context's GL version, vendor, renderer, GLSL version, the limits and extensions that\n"
                    "  matter to oasis, and for each feature oasis can use whether it is used here and why not\n" + scene;
+        case Command::Bench:
+            return "usage: oasis bench [--quick] [--out-dir DIR] [--json] [--frames N] [scene options]\n"
+                   "  times every configuration of pipeline x G-buffer layout x quality knob (grid, octaves,\n"
+                   "  vegetation, reflections; each knob alone at each level) x size over fixed frames of the\n"
+                   "  camera path, and its error against the reference (full layout, every knob at its highest):\n"
+                   "  median/min/max ms (wall time around glFinish), per-pass ms, ratio to the floor measured in\n"
+                   "  the same run, PSNR, RMSE, max abs, SSIM, bytes per pixel, target memory, Pareto frontier.\n"
+                   "  Prints a table; writes bench.csv, bench.json and bench.svg to DIR (default oasis-out/bench)\n"
+                   "  --quick                   one frame at 320x180, each knob's cheapest level, 3 timed frames\n"
+                   "  --json                    print the JSON to stdout (the table goes to stderr)\n"
+                   "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"
+                   "  the bench sets --size, --time, --camera, --gbuffer and the knobs itself; other scene\n"
+                   "  options (e.g. --hour, --ripples) set the scene every configuration starts from\n" + scene;
         case Command::Window:
             return "usage: oasis window [scene options]\n"
                    "  opens the interactive window (what `oasis` does when a display exists)\n" + scene;
@@ -123,6 +137,7 @@ std::string usage(Command command) {
            "  render     one frame, one debug view, to a PNG\n"
            "  compare    forward against deferred: image difference and time\n"
            "  caps       what this driver offers and which paths oasis takes on it (--json)\n"
+           "  bench      time against error over pipelines, layouts, quality knobs and sizes\n"
            "  oasis SUBCOMMAND --help for its options\n" + scene +
            "  --out-dir DIR             where the main job writes (default oasis-out)\n";
 }
@@ -142,7 +157,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         else if (name == "compare") options.command = Command::Compare;
         else if (name == "window") options.command = Command::Window;
         else if (name == "caps") options.command = Command::Caps;
-        else return fail("unknown subcommand '" + name + "' (expected render, compare, caps or window)");
+        else if (name == "bench") options.command = Command::Bench;
+        else return fail("unknown subcommand '" + name + "' (expected render, compare, bench, caps or window)");
         ++i;
     }
     for (; i < arguments.size(); ++i) {
@@ -157,7 +173,19 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
         if (compareOnly && (options.command == Command::Render || options.command == Command::Window ||
                             options.command == Command::Caps))
-            return fail("option " + flag + " belongs to `oasis compare` and the main job");
+            return fail("option " + flag + " belongs to `oasis compare`, `oasis bench` and the main job");
+        if (flag == "--quick") {
+            if (options.command != Command::Bench) return fail("option --quick belongs to `oasis bench`");
+            options.quick = true;
+            continue;
+        }
+        if (flag == "--passes" && options.command == Command::Bench)
+            return fail("option --passes belongs to `oasis compare` (bench always times each pass)");
+        static const std::vector<std::string> kSetByBench = {"--size", "--time", "--camera", "--gbuffer", "--reflections",
+                                                             "--vegetation", "--vegetation-density"};
+        if (options.command == Command::Bench &&
+            std::find(kSetByBench.begin(), kSetByBench.end(), flag) != kSetByBench.end())
+            return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts and knobs)");
         if (flag == "--json") { options.json = true; continue; }
         if (flag == "--passes") { options.passTimes = true; continue; }
         if (flag == "--no-compute") { options.scene.noCompute = true; continue; }
@@ -241,7 +269,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.out = value;
         } else if (flag == "--out-dir") {
             options.outDir = value;
+            options.outDirGiven = true;
         } else if (flag == "--frames") {
+            options.timingFramesGiven = true;
             if (!parseInt(value, options.timingFrames) || options.timingFrames < 1 || options.timingFrames > 1000)
                 return fail("--frames expects an integer from 1 to 1000, got '" + value + "'");
         } else {

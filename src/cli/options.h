@@ -28,7 +28,7 @@ struct SceneOptions {
     gl::ForcedFallbacks force;  // --force: capabilities switched off even where the driver has them
 };
 
-enum class Command { Default, Window, Render, Compare, Caps };
+enum class Command { Default, Window, Render, Compare, Caps, Bench };
 
 struct Options {
     Command command = Command::Default;
@@ -41,6 +41,9 @@ struct Options {
     bool json = false;
     bool passTimes = false;  // compare / main job: per-pass medians too
     int timingFrames = 9;
+    bool timingFramesGiven = false;  // --frames on the command line (bench has its own default)
+    bool outDirGiven = false;        // --out-dir on the command line (bench writes to oasis-out/bench)
+    bool quick = false;              // bench: the short smoke-test run
     std::optional<StencilViewPath> stencilView;
     std::string stopBefore;  // render: end the frame before this pass
 };

@@ -71,3 +71,76 @@ Image differenceHeatmap(const Image& a, const Image& b, int fullScale) {
 }
 
 }  // namespace oasis
+
+namespace oasis {
+namespace {
+
+std::vector<double> luminance(const Image& image) {
+    std::vector<double> y(size_t(image.width) * size_t(image.height));
+    for (size_t i = 0; i < y.size(); ++i) {
+        const uint8_t* p = &image.rgba[i * 4];
+        y[i] = 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
+    }
+    return y;
+}
+
+// Separable Gaussian filter over the windows that fit wholly in the image ("valid" positions);
+// the result is (width - size + 1) x (height - size + 1).
+std::vector<double> gaussianValid(const std::vector<double>& in, int width, int height,
+                                  const std::vector<double>& kernel) {
+    int size = int(kernel.size());
+    int outW = width - size + 1, outH = height - size + 1;
+    std::vector<double> rows(size_t(outW) * size_t(height));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < outW; ++x) {
+            double sum = 0.0;
+            for (int k = 0; k < size; ++k) sum += kernel[k] * in[size_t(y) * width + x + k];
+            rows[size_t(y) * outW + x] = sum;
+        }
+    std::vector<double> out(size_t(outW) * size_t(outH));
+    for (int y = 0; y < outH; ++y)
+        for (int x = 0; x < outW; ++x) {
+            double sum = 0.0;
+            for (int k = 0; k < size; ++k) sum += kernel[k] * rows[size_t(y + k) * outW + x];
+            out[size_t(y) * outW + x] = sum;
+        }
+    return out;
+}
+
+}  // namespace
+
+double ssim(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("ssim: images differ in size");
+    if (a.width < 1 || a.height < 1) throw std::invalid_argument("ssim: empty images");
+    const double c1 = (0.01 * 255.0) * (0.01 * 255.0), c2 = (0.03 * 255.0) * (0.03 * 255.0);
+    // 11 taps, sigma 1.5; a smaller image gets a window as large as it (one window, clipped).
+    int size = std::min({11, a.width, a.height});
+    std::vector<double> kernel(size_t(size), 0.0);
+    double total = 0.0;
+    for (int k = 0; k < size; ++k) {
+        double d = k - (size - 1) * 0.5;
+        total += kernel[k] = std::exp(-d * d / (2.0 * 1.5 * 1.5));
+    }
+    for (double& k : kernel) k /= total;
+    std::vector<double> x = luminance(a), y = luminance(b);
+    std::vector<double> xx(x.size()), yy(x.size()), xy(x.size());
+    for (size_t i = 0; i < x.size(); ++i) {
+        xx[i] = x[i] * x[i];
+        yy[i] = y[i] * y[i];
+        xy[i] = x[i] * y[i];
+    }
+    int w = a.width, h = a.height;
+    std::vector<double> mx = gaussianValid(x, w, h, kernel), my = gaussianValid(y, w, h, kernel);
+    std::vector<double> sxx = gaussianValid(xx, w, h, kernel), syy = gaussianValid(yy, w, h, kernel);
+    std::vector<double> sxy = gaussianValid(xy, w, h, kernel);
+    double sum = 0.0;
+    for (size_t i = 0; i < mx.size(); ++i) {
+        double varX = sxx[i] - mx[i] * mx[i], varY = syy[i] - my[i] * my[i], cov = sxy[i] - mx[i] * my[i];
+        sum += ((2.0 * mx[i] * my[i] + c1) * (2.0 * cov + c2)) /
+               ((mx[i] * mx[i] + my[i] * my[i] + c1) * (varX + varY + c2));
+    }
+    return sum / double(mx.size());
+}
+
+}  // namespace oasis

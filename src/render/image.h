@@ -31,6 +31,13 @@ struct ImageDifference {
 // Over the RGB channels of same-sized images. Throws std::invalid_argument if sizes differ.
 ImageDifference compareImages(const Image& a, const Image& b);
 
+// Mean structural similarity (Wang et al. 2004) of the luminance (Rec. 601: 0.299 R + 0.587 G +
+// 0.114 B, 0..255) of same-sized images: 11x11 Gaussian windows (sigma 1.5), C1 = (0.01*255)^2,
+// C2 = (0.03*255)^2, averaged over every window that lies wholly inside the image (images smaller
+// than a window use one window clipped to the image). 1 for identical images, symmetric in a and b.
+// Throws std::invalid_argument if sizes differ or the images are empty.
+double ssim(const Image& a, const Image& b);
+
 // Per pixel max channel difference on a black-red-yellow-white scale that saturates at `fullScale`.
 // Throws std::invalid_argument if sizes differ.
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale = 16);

@@ -146,6 +146,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     if (!stopBefore.empty() && !pipeline.hasPass(stopBefore))
         throw std::invalid_argument("the " + std::string(pipelineName(active_)) + " pipeline has no pass '" +
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
+    if (!sameGridDensity(scene.grid, geometry_.density())) geometry_ = SceneGeometry(scene.grid);
     frame_ = prepareFrame(scene, targets_->width(), targets_->height());
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);

@@ -54,6 +54,7 @@ public:
     int lightsDropped() const { return lightsDropped_; }
 
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
+    // A scene whose terrain grid density differs from the last frame's rebuilds the grid first.
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
     // std::invalid_argument (listing the pipeline's passes) if no pass has that name.
     void renderFrame(const SceneSettings& scene, const std::string& stopBefore = {});

@@ -36,6 +36,9 @@ struct TerrainGridDensity {
     int segments = 128;     // angular segments across the wedge
     float firstRingRadius = 0.25f;
 };
+inline bool sameGridDensity(const TerrainGridDensity& a, const TerrainGridDensity& b) {
+    return a.rings == b.rings && a.segments == b.segments && a.firstRingRadius == b.firstRingRadius;
+}
 
 // The wedge of azimuths the grid spans this frame: centred on the camera's heading,
 // widened to the frustum's footprint, or a full circle when looking steeply up or down.

@@ -137,6 +137,32 @@ TEST_F(Resources, TwentySizeAndLayoutRoundTripsLeakNothing) {
     EXPECT_TRUE(hasContent(image));
 }
 
+// A frame whose scene asks for another terrain grid density rebuilds the grid (what `oasis bench`'s
+// grid knob relies on), draws with it, and round trips leave no GL objects behind.
+TEST_F(Resources, GridDensityChangesRebuildTheGridAndLeakNothing) {
+    NamedPose pose = defaultPose();
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(64, 36, layoutNamed("standard"));
+    SceneSettings coarse = pose.scene;
+    coarse.grid.rings = 40;
+    coarse.grid.segments = 32;
+    const int defaultTriangles = int(buildTerrainGrid(pose.scene.grid).indices.size() / 3);
+    const int coarseTriangles = int(buildTerrainGrid(coarse.grid).indices.size() / 3);
+    ASSERT_NE(defaultTriangles, coarseTriangles);
+    renderFinal(renderer, pose.scene, PipelineKind::Deferred);  // builds the final view's program too
+    EXPECT_EQ(renderer.geometry().terrainTriangles(), defaultTriangles);
+    const LiveCounts countsBefore = liveCounts();
+    for (int i = 0; i < 5; ++i) {
+        Image image = renderFinal(renderer, coarse, PipelineKind::Deferred);
+        EXPECT_EQ(renderer.geometry().terrainTriangles(), coarseTriangles);
+        EXPECT_TRUE(hasContent(image));
+        renderer.renderFrame(pose.scene);
+        EXPECT_EQ(renderer.geometry().terrainTriangles(), defaultTriangles);
+    }
+    glFinish();
+    EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over grid density round trips";
+}
+
 // A renderer that is destroyed gives back everything it made, its label overlay (ImGui) included;
 // the shader library keeps its programs.
 TEST_F(Resources, DestroyedRendererReleasesItsObjects) {

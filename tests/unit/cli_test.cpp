@@ -423,5 +423,31 @@ TEST(ParseCommandLine, UnknownOptionLastIsReportedAsUnknown) {
     EXPECT_NE(r.error.find("unknown option"), std::string::npos) << r.error;
 }
 
+TEST(Cli, BenchOptions) {
+    ParseResult bench = parse({"bench", "--quick", "--json", "--out-dir", "x", "--frames", "4", "--hour", "17"});
+    ASSERT_TRUE(bench.ok) << bench.error;
+    EXPECT_EQ(bench.options.command, Command::Bench);
+    EXPECT_TRUE(bench.options.quick);
+    EXPECT_TRUE(bench.options.json);
+    EXPECT_TRUE(bench.options.outDirGiven);
+    EXPECT_TRUE(bench.options.timingFramesGiven);
+    EXPECT_EQ(bench.options.timingFrames, 4);
+    EXPECT_FALSE(parse({"bench"}).options.outDirGiven);
+    EXPECT_FALSE(parse({"bench"}).options.quick);
+    EXPECT_NE(usage(Command::Bench).find("usage: oasis bench"), std::string::npos);
+    // What the bench sets itself is refused, naming the option; --quick belongs to bench alone.
+    for (const char* flag : {"--size", "--time", "--camera", "--gbuffer", "--reflections", "--vegetation-density"}) {
+        ParseResult refused = parse({"bench", flag, "1"});
+        EXPECT_FALSE(refused.ok) << flag;
+        EXPECT_NE(refused.error.find(flag), std::string::npos) << refused.error;
+    }
+    for (const char* command : {"render", "compare", "window"}) {
+        ParseResult refused = parse({command, "--quick"});
+        EXPECT_FALSE(refused.ok) << command;
+        EXPECT_NE(refused.error.find("--quick"), std::string::npos) << refused.error;
+    }
+    EXPECT_FALSE(parse({"bench", "--passes"}).ok);
+}
+
 }  // namespace
 }  // namespace oasis

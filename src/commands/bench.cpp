@@ -1,0 +1,406 @@
+// `oasis bench` on a surfaceless EGL context: the reference renders, the floors, then every
+// configuration's images (error) and timings, the Pareto frontiers and the outputs.
+#include "commands/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "commands/bench_report.h"
+#include "commands/session.h"
+#include "commands/svg_plot.h"
+#include "context/gl_context.h"
+#include "render/gbuffer_layout.h"
+#include "render/image.h"
+
+namespace oasis {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double elapsedMs(Clock::time_point since) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+struct BenchFrame {
+    double time = 0.0;
+    CameraPose pose;
+};
+
+struct Floor {
+    int width, height;
+    std::string layout;
+    double ms;
+};
+
+// How the run was timed, in words: timer queries are never used; on software rasterisers they are
+// known to be wrong (llvmpipe's GL_TIME_ELAPSED reads 0.01-0.15 ms for passes of many ms).
+std::string timingNote(const std::string& renderer) {
+    bool software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
+                    renderer.find("lavapipe") != std::string::npos || renderer.find("swrast") != std::string::npos;
+    return software ? "wall clock around glFinish; GPU timer queries not used: they are not trustworthy on " +
+                          renderer + " (a software rasteriser)"
+                    : "wall clock around glFinish; GPU timer queries not used (" + renderer +
+                          " is not a known software rasteriser, but one method keeps runs comparable)";
+}
+
+SceneSettings frameScene(const SceneSettings& base, const std::vector<QualityKnob>& knobs,
+                         const std::vector<int>& levels, const BenchFrame& frame) {
+    SceneSettings scene = applyKnobs(base, knobs, levels);
+    scene.timeSeconds = frame.time;
+    scene.camera = frame.pose;
+    return scene;
+}
+
+Image renderFinalImage(Renderer& renderer, const SceneSettings& scene) {
+    renderer.renderFrame(scene);
+    renderer.renderView("final");
+    return renderer.readDisplay();
+}
+
+double pooledPsnr(double meanSquaredError) {
+    return meanSquaredError > 0.0 ? std::min(kPsnrIdentical, 10.0 * std::log10(255.0 * 255.0 / meanSquaredError))
+                                  : kPsnrIdentical;
+}
+
+// A configuration's error over every fixed frame: against the references and, where given, against
+// the reference layout's frames with the same knobs; also its memory. `images` gets its frames.
+BenchResult measureError(Renderer& renderer, const SceneSettings& base, const BenchConfig& config,
+                         const std::vector<BenchFrame>& frames, const std::vector<Image>& references,
+                         const std::vector<Image>* sameKnobs, std::vector<Image>& images) {
+    const std::vector<QualityKnob>& knobs = qualityKnobs();
+    const GBufferLayout& layout = renderer.targets().layout();
+    renderer.setPipeline(config.pipeline);
+    BenchResult result;
+    result.config = config;
+    result.variation = config.variation(knobs);
+    result.knobSettings = config.knobSettings(knobs);
+    double squaredError = 0.0, ssimSum = 0.0, sameKnobsSquared = 0.0;
+    images.clear();
+    for (size_t f = 0; f < frames.size(); ++f) {
+        Image image = renderFinalImage(renderer, frameScene(base, knobs, config.levels, frames[f]));
+        ImageDifference difference = compareImages(image, references[f]);
+        squaredError += difference.rmse * difference.rmse;
+        result.maxAbs = std::max(result.maxAbs, difference.maxAbs);
+        ssimSum += ssim(image, references[f]);
+        if (sameKnobs) {
+            ImageDifference own = compareImages(image, (*sameKnobs)[f]);
+            sameKnobsSquared += own.rmse * own.rmse;
+            result.sameKnobsMaxAbs = std::max(result.sameKnobsMaxAbs, own.maxAbs);
+        }
+        images.push_back(std::move(image));
+    }
+    // Error pooled over the frames (all the same size): PSNR and RMSE from the mean squared error.
+    double mse = squaredError / double(frames.size());
+    result.rmse = std::sqrt(mse);
+    result.psnrDb = pooledPsnr(mse);
+    result.sameKnobsPsnrDb = sameKnobs ? pooledPsnr(sameKnobsSquared / double(frames.size())) : kPsnrIdentical;
+    result.ssim = ssimSum / double(frames.size());
+    int sharedBytes = layout.format(Target::Radiance).bytesPerPixel + layout.format(Target::Reflection).bytesPerPixel +
+                      layout.format(Target::Final).bytesPerPixel;
+    bool deferred = config.pipeline == PipelineKind::Deferred;
+    result.gbufferBytesPerPixel = deferred ? layout.bytesPerPixel() : 0;
+    result.bytesPerPixel = sharedBytes + (deferred ? layout.bytesPerPixel()
+                                                   : layout.format(Target::DepthStencil).bytesPerPixel);
+    result.targetMiB = double(result.bytesPerPixel) * config.width * config.height / (1024.0 * 1024.0);
+    return result;
+}
+
+// Times the configurations of one knob setting together: at each fixed frame, after two warm-up
+// frames each, their timed frames interleave (one frame of each in turn), so load that changes
+// during the run reaches all of them alike; then each one's per-pass frames.
+struct Timed {
+    Renderer* renderer;
+    BenchResult* result;
+};
+void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base, const std::vector<BenchFrame>& frames,
+                     const BenchPlan& plan) {
+    const std::vector<QualityKnob>& knobs = qualityKnobs();
+    std::vector<std::vector<double>> samples(group.size());
+    std::vector<std::vector<std::string>> passOrder(group.size());
+    std::vector<std::map<std::string, std::vector<double>>> passSamples(group.size());
+    for (const BenchFrame& frame : frames) {
+        std::vector<SceneSettings> scenes;
+        for (const Timed& t : group) {
+            scenes.push_back(frameScene(base, knobs, t.result->config.levels, frame));
+            t.renderer->setPipeline(t.result->config.pipeline);
+            for (int warm = 0; warm < 2; ++warm) t.renderer->renderFrame(scenes.back());
+        }
+        glFinish();
+        for (int i = 0; i < plan.timedFrames; ++i)
+            for (size_t c = 0; c < group.size(); ++c) {
+                group[c].renderer->setPipeline(group[c].result->config.pipeline);
+                Clock::time_point start = Clock::now();
+                group[c].renderer->renderFrame(scenes[c]);
+                glFinish();
+                samples[c].push_back(elapsedMs(start));
+            }
+        for (size_t c = 0; c < group.size(); ++c) {
+            group[c].renderer->setPipeline(group[c].result->config.pipeline);
+            for (int i = 0; i < plan.passFrames; ++i)
+                for (const auto& [name, ms] : group[c].renderer->renderFrameTimingPasses(scenes[c])) {
+                    if (!passSamples[c].count(name)) passOrder[c].push_back(name);
+                    passSamples[c][name].push_back(ms);
+                }
+        }
+    }
+    for (size_t c = 0; c < group.size(); ++c) {
+        BenchResult& result = *group[c].result;
+        result.msMedian = median(samples[c]);
+        result.msMin = *std::min_element(samples[c].begin(), samples[c].end());
+        result.msMax = *std::max_element(samples[c].begin(), samples[c].end());
+        for (const std::string& name : passOrder[c]) result.passesMs.emplace_back(name, median(passSamples[c][name]));
+    }
+}
+
+std::string sizeName(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+std::string tableText(const std::vector<BenchResult>& results) {
+    std::string text;
+    char line[320];
+    std::snprintf(line, sizeof(line), "%-9s %-8s %-8s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %s\n", "size",
+                  "pipeline", "layout", "variation", "ms med", "ms min", "ms max", "xfloor", "PSNR dB", "RMSE", "max",
+                  "SSIM", "own dB", "B/px", "MiB", "pareto");
+    text += line;
+    for (const BenchResult& r : results) {
+        const BenchConfig& c = r.config;
+        const char* pareto = r.pareto ? "yes" : r.paretoInPipeline ? "in pipeline" : "";
+        std::snprintf(line, sizeof(line), "%-9s %-8s %-8s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %s\n",
+                      sizeName(c.width, c.height).c_str(), pipelineName(c.pipeline), c.layout.c_str(),
+                      r.variation.c_str(), r.msMedian, r.msMin, r.msMax, r.floorRatio(), r.psnrDb, r.rmse, r.maxAbs,
+                      r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, pareto);
+        text += line;
+    }
+    return text;
+}
+
+std::string benchJson(const std::vector<BenchResult>& results, const std::vector<Floor>& floors,
+                      const std::vector<BenchFrame>& frames, const BenchPlan& plan, const Options& options,
+                      const std::string& renderer, const std::string& referenceLayout) {
+    const std::vector<QualityKnob>& knobs = qualityKnobs();
+    std::string json = "{\"renderer\": " + jsonString(renderer) + ", \"timing\": \"wall clock around glFinish\"" +
+                       ", \"timing_note\": " + jsonString(timingNote(renderer)) +
+                       ", \"quick\": " + (options.quick ? "true" : "false") +
+                       ", \"timed_frames_per_frame\": " + std::to_string(plan.timedFrames) +
+                       ", \"pass_frames_per_frame\": " + std::to_string(plan.passFrames) + ", \"frames\": [";
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const CameraPose& p = frames[i].pose;
+        json += std::string(i ? ", " : "") + "{\"time\": " + jsonNumber(frames[i].time, 2) + ", \"camera\": [" +
+                jsonNumber(p.position.x, 3) + ", " + jsonNumber(p.position.y, 3) + ", " + jsonNumber(p.position.z, 3) +
+                ", " + jsonNumber(p.yawDegrees, 3) + ", " + jsonNumber(p.pitchDegrees, 3) + "]}";
+    }
+    json += "], \"reference\": {\"pipeline\": \"deferred\", \"layout\": " + jsonString(referenceLayout) +
+            ", \"knobs\": " + jsonString(BenchConfig{PipelineKind::Deferred, referenceLayout, 0, 0, highestLevels(knobs), -1}
+                                             .knobSettings(knobs)) +
+            "}, \"error\": \"against the reference at the same frame and size, pooled over the frames: PSNR and RMSE "
+            "from the mean squared error of 8-bit RGB, max_abs the worst, ssim the mean over frames (luminance, "
+            "11x11 Gaussian windows)\", \"floor\": \"full-screen G-buffer write + read with the default layout (" +
+            defaultGBufferLayout().name + "), per size; floor_ratio = ms_median / floor_ms\", \"default_layout\": " +
+            jsonString(defaultGBufferLayout().name) + ", \"knobs\": [";
+    for (size_t k = 0; k < knobs.size(); ++k) {
+        json += std::string(k ? ", " : "") + "{\"name\": " + jsonString(knobs[k].name) +
+                ", \"description\": " + jsonString(knobs[k].description) + ", \"levels\": [";
+        for (size_t l = 0; l < knobs[k].levels.size(); ++l)
+            json += std::string(l ? ", " : "") + jsonString(knobs[k].levels[l].label);
+        json += "], \"default\": " + jsonString(knobs[k].levels[size_t(knobs[k].defaultLevel)].label) + "}";
+    }
+    json += "], \"floors\": [";
+    for (size_t i = 0; i < floors.size(); ++i)
+        json += std::string(i ? ", " : "") + "{\"width\": " + std::to_string(floors[i].width) + ", \"height\": " +
+                std::to_string(floors[i].height) + ", \"layout\": " + jsonString(floors[i].layout) +
+                ", \"floor_ms\": " + jsonNumber(floors[i].ms) + "}";
+    json += "], \"configs\": [\n";
+    for (size_t i = 0; i < results.size(); ++i) json += (i ? ",\n  " : "  ") + benchConfigJson(results[i]);
+    return json + "\n]}\n";
+}
+
+std::string benchSvg(const std::vector<BenchResult>& results, const std::string& renderer) {
+    std::vector<PlotPanel> panels;
+    std::map<std::string, size_t> panelOf;
+    for (const BenchResult& r : results) {
+        std::string size = sizeName(r.config.width, r.config.height);
+        if (!panelOf.count(size)) {
+            panelOf[size] = panels.size();
+            panels.push_back({size, {}});
+        }
+        std::string label = (r.config.layout == kNoLayout ? std::string() : r.config.layout + " ") + r.variation;
+        panels[panelOf[size]].points.push_back(
+            {r.msMedian, r.rmse, pipelineName(r.config.pipeline), label, r.pareto, r.paretoInPipeline});
+    }
+    PlotText text{"oasis bench: time against error (Pareto frontiers per size, and per pipeline)",
+                  "median ms per frame (wall time around glFinish)",
+                  "RMSE against the reference (8-bit RGB)",
+                  "reference: deferred, full layout, every knob at its highest; " + renderer};
+    return scatterPlotSvg(panels, text);
+}
+
+bool writeText(const std::string& path, const std::string& text, std::string& error) {
+    std::ofstream file(path, std::ios::binary);
+    file << text;
+    file.close();
+    if (!file) {
+        error = "cannot write " + path;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+BenchPlan benchPlan(const Options& options) {
+    BenchPlan plan;
+    if (options.quick) {
+        plan.sizes = {{320, 180}};
+        plan.frameTimes = {0.0};
+        plan.timedFrames = 3;
+        plan.passFrames = 1;
+        plan.floorFrames = 3;
+        plan.cheapestOnly = true;
+    } else {
+        plan.sizes = {{1280, 720}, {640, 360}};
+        plan.frameTimes = {0.0, 30.0, 40.0};  // each with water, plants and hills in view
+    }
+    if (options.timingFramesGiven) plan.timedFrames = options.timingFrames;
+    return plan;
+}
+
+int runBenchCommand(const Options& options) {
+    try {
+        HeadlessContext context;
+        RenderSession session(options);
+        Renderer& renderer = *session.renderer;
+        std::string rendererName = queryContextInfo().renderer;
+        BenchPlan plan = benchPlan(options);
+        const std::vector<QualityKnob>& knobs = qualityKnobs();
+        const GBufferLayout& reference = findGBufferLayout("full") ? *findGBufferLayout("full") : gbufferLayouts()[0];
+        std::vector<std::string> layouts = {reference.name};  // first: the others are compared with it
+        for (const GBufferLayout& layout : gbufferLayouts())
+            if (layout.name != reference.name) layouts.push_back(layout.name);
+        std::vector<BenchConfig> configs = benchConfigs(knobs, layouts, plan.sizes, plan.cheapestOnly);
+        // The fixed frames: poses on the default flight over the default terrain, so every
+        // configuration (whatever its terrain octaves) looks from the same place.
+        std::vector<BenchFrame> frames;
+        for (double time : plan.frameTimes) frames.push_back({time, defaultCameraPath(TerrainShape{}, time)});
+        std::string outDir = options.outDirGiven ? options.outDir : "oasis-out/bench";
+        std::filesystem::create_directories(outDir);
+
+        std::FILE* tableOut = options.json ? stderr : stdout;
+        std::fprintf(tableOut, "oasis bench: %zu configurations (%zu sizes x %zu frames), %s\n  timing: %s\n  %s\n",
+                     configs.size(), plan.sizes.size(), frames.size(), queryContextInfo().summary().c_str(),
+                     timingNote(rendererName).c_str(), describePlantAtlas(session).c_str());
+        // A renderer per layout (the session's for the default one), so that configurations timed
+        // in turn never reallocate targets; forward uses the default layout's.
+        std::map<std::string, Renderer*> renderers;
+        std::vector<std::unique_ptr<Renderer>> extraRenderers;
+        for (const GBufferLayout& layout : gbufferLayouts()) {
+            if (layout.name == defaultGBufferLayout().name) {
+                renderers[layout.name] = &renderer;
+                continue;
+            }
+            extraRenderers.push_back(std::make_unique<Renderer>(*session.shaders, session.scene));
+            extraRenderers.back()->setPlantAtlas(session.plantAtlas.get());
+            extraRenderers.back()->setStencilViewPath(renderer.stencilViewPath());
+            renderers[layout.name] = extraRenderers.back().get();
+        }
+        Clock::time_point runStart = Clock::now();
+        std::vector<BenchResult> results;
+        std::vector<Floor> floors;
+        for (const auto& [width, height] : plan.sizes) {
+            // The reference for each frame at this size, then the floors of every layout.
+            renderer.configure(width, height, reference);
+            renderer.setPipeline(PipelineKind::Deferred);
+            std::vector<Image> references;
+            for (const BenchFrame& frame : frames)
+                references.push_back(renderFinalImage(renderer, frameScene(session.scene, knobs, highestLevels(knobs), frame)));
+            double defaultFloor = 0.0;
+            for (const GBufferLayout& layout : gbufferLayouts()) {
+                renderer.configure(width, height, layout);
+                double ms = medianFloorMs(renderer, plan.floorFrames);
+                floors.push_back({width, height, layout.name, ms});
+                if (layout.name == defaultGBufferLayout().name) defaultFloor = ms;
+            }
+            std::fprintf(stderr, "oasis bench: %dx%d reference rendered, floor %.2f ms (%s)\n", width, height,
+                         defaultFloor, defaultGBufferLayout().name.c_str());
+            for (auto& [name, layoutRenderer] : renderers) layoutRenderer->configure(width, height, *findGBufferLayout(name));
+            // One knob setting at a time (its configurations are consecutive): errors, then times.
+            std::vector<BenchConfig> sized;
+            for (const BenchConfig& config : configs)
+                if (config.width == width && config.height == height) sized.push_back(config);
+            for (size_t first = 0; first < sized.size();) {
+                std::string variation = sized[first].variation(knobs);
+                size_t end = first;
+                while (end < sized.size() && sized[end].variation(knobs) == variation) ++end;
+                std::vector<Image> referenceLayoutImages;  // deferred with the reference layout, these knobs
+                size_t groupStart = results.size();
+                std::vector<Renderer*> groupRenderers;
+                for (size_t i = first; i < end; ++i) {
+                    const BenchConfig& config = sized[i];
+                    Renderer& own = *renderers.at(config.layout == kNoLayout ? defaultGBufferLayout().name : config.layout);
+                    bool isReferenceLayout = config.pipeline == PipelineKind::Deferred && config.layout == reference.name;
+                    std::vector<Image> images;
+                    BenchResult result = measureError(own, session.scene, config, frames, references,
+                                                      referenceLayoutImages.empty() ? nullptr : &referenceLayoutImages,
+                                                      images);
+                    if (isReferenceLayout) referenceLayoutImages = std::move(images);
+                    result.floorMs = defaultFloor;
+                    results.push_back(result);
+                    groupRenderers.push_back(&own);
+                }
+                std::vector<Timed> group;
+                for (size_t i = groupStart; i < results.size(); ++i)
+                    group.push_back({groupRenderers[i - groupStart], &results[i]});
+                timeInterleaved(group, session.scene, frames, plan);
+                for (size_t i = groupStart; i < results.size(); ++i) {
+                    const BenchResult& result = results[i];
+                    std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", i + 1,
+                                 configs.size(), pipelineName(result.config.pipeline), result.config.layout.c_str(),
+                                 width, height, result.variation.c_str(), result.msMedian, result.psnrDb,
+                                 elapsedMs(runStart) / 1000.0);
+                }
+                first = end;
+            }
+        }
+        markParetoFrontiers(results);
+
+        std::string csv = benchCsvHeader() + "\n";
+        for (const BenchResult& r : results) csv += benchCsvRow(r) + "\n";
+        std::string json = benchJson(results, floors, frames, plan, options, rendererName, reference.name);
+        std::string error;
+        for (const auto& [file, text] : {std::pair<std::string, std::string>{"bench.csv", csv}, {"bench.json", json},
+                                         {"bench.svg", benchSvg(results, rendererName)}})
+            if (!writeText(outDir + "/" + file, text, error)) throw std::runtime_error(error);
+        std::fputs(tableText(results).c_str(), tableOut);
+        for (const Floor& floor : floors)
+            std::fprintf(tableOut, "floor %dx%d %s: %.2f ms\n", floor.width, floor.height, floor.layout.c_str(), floor.ms);
+        std::fprintf(tableOut,
+                     "ms: wall time around glFinish, %d timed frames per fixed frame (times:", plan.timedFrames);
+        for (const BenchFrame& frame : frames) std::fprintf(tableOut, " %.0f s", frame.time);
+        std::fprintf(tableOut, "); xfloor: against the %s layout's floor; error pooled over the frames against "
+                               "deferred/%s with every knob at its highest; own dB: PSNR against deferred/%s with the same knobs; pareto: per size (\"in pipeline\": "
+                               "only among its pipeline's configurations)\n",
+                     defaultGBufferLayout().name.c_str(), reference.name.c_str(), reference.name.c_str());
+        std::fprintf(tableOut, "wrote %s/bench.csv, %s/bench.json, %s/bench.svg in %.0f s\n", outDir.c_str(),
+                     outDir.c_str(), outDir.c_str(), elapsedMs(runStart) / 1000.0);
+        if (options.json) std::fputs(json.c_str(), stdout);
+        return 0;
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "oasis: %s\n", error.what());
+        return 1;
+    }
+}
+
+}  // namespace oasis

@@ -1,0 +1,216 @@
+// The bench's knob table, configurations, Pareto frontier and CSV/JSON formatting (no GL).
+#include "commands/bench_report.h"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace oasis {
+namespace {
+
+KnobLevel gridLevel(const char* label, int rings, int segments) {
+    return {label, [rings, segments](SceneSettings& scene) {
+                scene.grid.rings = rings;
+                scene.grid.segments = segments;
+            }};
+}
+
+KnobLevel octaveLevel(const char* label, int octaves) {
+    return {label, [octaves](SceneSettings& scene) { scene.terrain.octaves = octaves; }};
+}
+
+KnobLevel vegetationLevel(const char* label, bool enabled, float density) {
+    return {label, [enabled, density](SceneSettings& scene) {
+                scene.vegetation.enabled = enabled;
+                scene.vegetation.density = density;
+            }};
+}
+
+KnobLevel reflectionLevel(const char* label, bool on) {
+    return {label, [on](SceneSettings& scene) { scene.water.reflections = on; }};
+}
+
+const std::vector<QualityKnob> kKnobs = {
+    {"grid", "terrain grid rings x segments (38,400 triangles at medium)",
+     {gridLevel("coarse", 75, 64), gridLevel("medium", 150, 128), gridLevel("fine", 300, 256)}, 1},
+    {"octaves", "simplex-noise octaves of the terrain height", {octaveLevel("3", 3), octaveLevel("5", 5),
+     octaveLevel("7", 7)}, 2},
+    {"vegetation", "plant density (off, or times the default candidates per chunk)",
+     {vegetationLevel("off", false, 1.0f), vegetationLevel("0.5", true, 0.5f), vegetationLevel("1", true, 1.0f)}, 2},
+    {"reflections", "the mirrored scene in the water", {reflectionLevel("off", false), reflectionLevel("on", true)}, 1},
+};
+
+std::string format(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof(text), pattern, value);
+    return text;
+}
+
+std::string passesText(const BenchResult& result) {
+    std::string text;
+    for (const auto& [name, ms] : result.passesMs) text += (text.empty() ? "" : ";") + name + "=" + format("%.3f", ms);
+    return text;
+}
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+}  // namespace
+
+const std::vector<QualityKnob>& qualityKnobs() { return kKnobs; }
+
+std::string BenchConfig::variation(const std::vector<QualityKnob>& knobs) const {
+    if (variedKnob < 0) return "default";
+    const QualityKnob& knob = knobs[size_t(variedKnob)];
+    return knob.name + "=" + knob.levels[size_t(levels[size_t(variedKnob)])].label;
+}
+
+std::string BenchConfig::knobSettings(const std::vector<QualityKnob>& knobs) const {
+    std::string text;
+    for (size_t i = 0; i < knobs.size(); ++i)
+        text += (i ? " " : "") + knobs[i].name + "=" + knobs[i].levels[size_t(levels[i])].label;
+    return text;
+}
+
+std::vector<int> highestLevels(const std::vector<QualityKnob>& knobs) {
+    std::vector<int> levels;
+    for (const QualityKnob& knob : knobs) levels.push_back(int(knob.levels.size()) - 1);
+    return levels;
+}
+
+std::vector<int> defaultLevels(const std::vector<QualityKnob>& knobs) {
+    std::vector<int> levels;
+    for (const QualityKnob& knob : knobs) levels.push_back(knob.defaultLevel);
+    return levels;
+}
+
+SceneSettings applyKnobs(SceneSettings scene, const std::vector<QualityKnob>& knobs, const std::vector<int>& levels) {
+    for (size_t i = 0; i < knobs.size(); ++i) knobs[i].levels[size_t(levels[i])].apply(scene);
+    return scene;
+}
+
+std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, const std::vector<std::string>& layouts,
+                                      const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly) {
+    std::vector<std::pair<int, std::vector<int>>> settings = {{-1, defaultLevels(knobs)}};
+    for (size_t k = 0; k < knobs.size(); ++k)
+        for (int level = 0; level < int(knobs[k].levels.size()); ++level) {
+            if (level == knobs[k].defaultLevel || (cheapestOnly && level != 0)) continue;
+            std::vector<int> levels = defaultLevels(knobs);
+            levels[k] = level;
+            settings.emplace_back(int(k), levels);
+        }
+    std::vector<BenchConfig> configs;
+    for (const auto& [width, height] : sizes)
+        for (const auto& [varied, levels] : settings) {
+            BenchConfig config;
+            config.width = width;
+            config.height = height;
+            config.levels = levels;
+            config.variedKnob = varied;
+            config.pipeline = PipelineKind::Deferred;
+            for (const std::string& layout : layouts) {
+                config.layout = layout;
+                configs.push_back(config);
+            }
+            config.pipeline = PipelineKind::Forward;
+            config.layout = kNoLayout;
+            configs.push_back(config);
+        }
+    return configs;
+}
+
+std::vector<bool> paretoFrontier(const std::vector<ParetoPoint>& points) {
+    std::vector<bool> frontier(points.size(), true);
+    for (size_t i = 0; i < points.size(); ++i)
+        for (size_t j = 0; j < points.size() && frontier[i]; ++j) {
+            const ParetoPoint &a = points[i], &b = points[j];
+            bool noWorse = b.cost <= a.cost && b.error <= a.error;
+            bool better = b.cost < a.cost || b.error < a.error;
+            if (j != i && noWorse && better) frontier[i] = false;
+        }
+    return frontier;
+}
+
+void markParetoFrontiers(std::vector<BenchResult>& results) {
+    // Groups: a size (every configuration), and a size within one pipeline.
+    std::map<std::string, std::vector<size_t>> bySize, byPipeline;
+    for (size_t i = 0; i < results.size(); ++i) {
+        const BenchConfig& c = results[i].config;
+        std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
+        bySize[size].push_back(i);
+        byPipeline[size + pipelineName(c.pipeline)].push_back(i);
+    }
+    auto mark = [&](const std::map<std::string, std::vector<size_t>>& groups, bool BenchResult::*flag) {
+        for (const auto& [key, members] : groups) {
+            std::vector<ParetoPoint> points;
+            for (size_t i : members) points.push_back({results[i].msMedian, results[i].rmse});
+            std::vector<bool> frontier = paretoFrontier(points);
+            for (size_t m = 0; m < members.size(); ++m) results[members[m]].*flag = frontier[m];
+        }
+    };
+    mark(bySize, &BenchResult::pareto);
+    mark(byPipeline, &BenchResult::paretoInPipeline);
+}
+
+std::string jsonNumber(double value, int decimals) {
+    if (!std::isfinite(value)) return "null";
+    char text[64];
+    std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+    return text;
+}
+
+std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\', out += c;
+        else if (static_cast<unsigned char>(c) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof(escaped), "\\u%04x", c);
+            out += escaped;
+        } else out += c;
+    }
+    return out + "\"";
+}
+
+std::string benchCsvHeader() {
+    return "pipeline,layout,width,height,variation,knobs,ms_median,ms_min,ms_max,floor_ms,floor_ratio,"
+           "psnr_db,rmse,max_abs,ssim,same_knobs_psnr_db,same_knobs_max_abs,bytes_per_pixel,gbuffer_bytes_per_pixel,target_mib,pareto,"
+           "pareto_in_pipeline,passes_ms";
+}
+
+std::string benchCsvRow(const BenchResult& r) {
+    const BenchConfig& c = r.config;
+    return std::string(pipelineName(c.pipeline)) + "," + csvField(c.layout) + "," + std::to_string(c.width) + "," +
+           std::to_string(c.height) + "," + csvField(r.variation) + "," + csvField(r.knobSettings) + "," +
+           format("%.3f", r.msMedian) + "," + format("%.3f", r.msMin) + "," + format("%.3f", r.msMax) + "," +
+           format("%.3f", r.floorMs) + "," + format("%.3f", r.floorRatio()) + "," + format("%.3f", r.psnrDb) + "," +
+           format("%.4f", r.rmse) + "," + std::to_string(r.maxAbs) + "," + format("%.5f", r.ssim) + "," + format("%.3f", r.sameKnobsPsnrDb) + "," + std::to_string(r.sameKnobsMaxAbs) + "," +
+           std::to_string(r.bytesPerPixel) + "," + std::to_string(r.gbufferBytesPerPixel) + "," +
+           format("%.2f", r.targetMiB) + "," + (r.pareto ? "true" : "false") + "," +
+           (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r));
+}
+
+std::string benchConfigJson(const BenchResult& r) {
+    const BenchConfig& c = r.config;
+    std::string passes;
+    for (const auto& [name, ms] : r.passesMs) passes += (passes.empty() ? "" : ", ") + jsonString(name) + ": " + jsonNumber(ms);
+    return "{\"pipeline\": " + jsonString(pipelineName(c.pipeline)) + ", \"layout\": " + jsonString(c.layout) +
+           ", \"width\": " + std::to_string(c.width) + ", \"height\": " + std::to_string(c.height) +
+           ", \"variation\": " + jsonString(r.variation) + ", \"knobs\": " + jsonString(r.knobSettings) +
+           ", \"ms_median\": " + jsonNumber(r.msMedian) + ", \"ms_min\": " + jsonNumber(r.msMin) +
+           ", \"ms_max\": " + jsonNumber(r.msMax) + ", \"floor_ms\": " + jsonNumber(r.floorMs) +
+           ", \"floor_ratio\": " + jsonNumber(r.floorRatio()) + ", \"psnr_db\": " + jsonNumber(r.psnrDb) +
+           ", \"rmse\": " + jsonNumber(r.rmse, 6) + ", \"max_abs\": " + std::to_string(r.maxAbs) +
+           ", \"ssim\": " + jsonNumber(r.ssim, 6) + ", \"same_knobs_psnr_db\": " + jsonNumber(r.sameKnobsPsnrDb) +
+           ", \"same_knobs_max_abs\": " + std::to_string(r.sameKnobsMaxAbs) + ", \"bytes_per_pixel\": " + std::to_string(r.bytesPerPixel) +
+           ", \"gbuffer_bytes_per_pixel\": " + std::to_string(r.gbufferBytesPerPixel) +
+           ", \"target_mib\": " + jsonNumber(r.targetMiB, 3) + ", \"passes_ms\": {" + passes + "}" +
+           ", \"pareto\": " + (r.pareto ? "true" : "false") +
+           ", \"pareto_in_pipeline\": " + (r.paretoInPipeline ? "true" : "false") + "}";
+}
+
+}  // namespace oasis

@@ -1,0 +1,99 @@
+// `oasis bench` without GL: the quality-knob table, the configurations a run measures, the
+// Pareto frontier of time against error, and one configuration's CSV row and JSON object.
+#pragma once
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/frame_setup.h"
+#include "render/pipeline.h"
+
+namespace oasis {
+
+// One level of a quality knob: its label and how it changes the scene.
+struct KnobLevel {
+    std::string label;
+    std::function<void(SceneSettings&)> apply;
+};
+
+// A quality knob: levels ordered from cheapest to highest quality; the reference render uses the
+// last level of every knob; `defaultLevel` is what SceneSettings holds by default.
+struct QualityKnob {
+    std::string name;
+    std::string description;
+    std::vector<KnobLevel> levels;
+    int defaultLevel = 0;
+};
+
+// The one table of knobs the bench varies (a new knob is one entry here).
+const std::vector<QualityKnob>& qualityKnobs();
+
+// The layout name of a forward configuration: forward writes no G-buffer, so no layout applies.
+constexpr const char* kNoLayout = "none";
+
+struct BenchConfig {
+    PipelineKind pipeline = PipelineKind::Deferred;
+    std::string layout;      // a gbufferLayouts() name, or kNoLayout for forward
+    int width = 0, height = 0;
+    std::vector<int> levels;  // one level index per knob of `knobs`
+    int variedKnob = -1;      // the knob set away from its default, -1 for every knob at its default
+
+    // "default" or e.g. "grid=coarse": what this configuration changes.
+    std::string variation(const std::vector<QualityKnob>& knobs) const;
+    // Every knob's level, e.g. "grid=medium octaves=7 vegetation=1 reflections=on".
+    std::string knobSettings(const std::vector<QualityKnob>& knobs) const;
+};
+
+// Every knob at its highest level: the reference's settings.
+std::vector<int> highestLevels(const std::vector<QualityKnob>& knobs);
+std::vector<int> defaultLevels(const std::vector<QualityKnob>& knobs);
+// The scene with each knob's chosen level applied in table order.
+SceneSettings applyKnobs(SceneSettings scene, const std::vector<QualityKnob>& knobs, const std::vector<int>& levels);
+
+// Per size: every knob at its default, then each knob alone at each other level (`cheapestOnly`:
+// only its cheapest level); for each of those, deferred with every layout (in the order given),
+// then forward once (it writes no G-buffer, so the layout does not change it).
+std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, const std::vector<std::string>& layouts,
+                                      const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly);
+
+// Minimise both: a point is on the frontier when no other point is at most as costly and at most as
+// wrong while better in one of them. Identical points are all on it (none beats another).
+struct ParetoPoint {
+    double cost = 0.0;
+    double error = 0.0;
+};
+std::vector<bool> paretoFrontier(const std::vector<ParetoPoint>& points);
+
+struct BenchResult {
+    BenchConfig config;
+    std::string variation, knobSettings;
+    double msMedian = 0.0, msMin = 0.0, msMax = 0.0;
+    double floorMs = 0.0;   // the floor this size's ratios are taken against
+    double psnrDb = 0.0, rmse = 0.0, ssim = 0.0;
+    int maxAbs = 0;
+    // Against the reference layout's deferred frame with the same knobs (the pipeline and layout's
+    // own error, without the knobs'): pooled PSNR and the worst max abs.
+    double sameKnobsPsnrDb = 0.0;
+    int sameKnobsMaxAbs = 0;
+    int bytesPerPixel = 0;         // render targets the pipeline's frame writes
+    int gbufferBytesPerPixel = 0;  // of those, the G-buffer colour targets and depth-stencil (0 forward)
+    double targetMiB = 0.0;        // bytesPerPixel x width x height
+    std::vector<std::pair<std::string, double>> passesMs;  // median ms of each pass, in order
+    bool pareto = false;            // on the frontier of every configuration of its size
+    bool paretoInPipeline = false;  // on the frontier of its size and pipeline
+
+    double floorRatio() const { return floorMs > 0.0 ? msMedian / floorMs : 0.0; }
+};
+
+// Marks `pareto` and `paretoInPipeline` (cost: median ms; error: RMSE, which orders like PSNR).
+void markParetoFrontiers(std::vector<BenchResult>& results);
+
+std::string benchCsvHeader();
+std::string benchCsvRow(const BenchResult& result);
+std::string benchConfigJson(const BenchResult& result);
+// A number as JSON: finite values with `decimals`, anything else as null.
+std::string jsonNumber(double value, int decimals = 4);
+std::string jsonString(const std::string& text);
+
+}  // namespace oasis

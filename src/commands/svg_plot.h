@@ -1,0 +1,31 @@
+// A small SVG scatter-plot writer for the bench: side-by-side panels, axes with ticks, points
+// coloured by series with a legend, and marked frontiers (the panel's, and each series' own).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace oasis {
+
+struct PlotPoint {
+    double x = 0.0, y = 0.0;
+    std::string series;  // picks the colour (first series seen gets the first colour)
+    std::string label;   // drawn beside frontier points
+    bool frontier = false;        // on the panel's frontier: outlined, joined by the dashed grey line
+    bool seriesFrontier = false;  // on its series' own frontier: joined by a thin line of its colour
+};
+
+struct PlotPanel {
+    std::string title;
+    std::vector<PlotPoint> points;
+};
+
+struct PlotText {
+    std::string title, xLabel, yLabel, footnote;
+};
+
+// "Nice" tick values (steps of 1, 2 or 5 times a power of ten) covering [low, high], about `count`.
+std::vector<double> niceTicks(double low, double high, int count = 5);
+
+std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText& text);
+
+}  // namespace oasis
