@@ -75,7 +75,7 @@ struct NamedPose {
     bool smoothSky = false;     // the whole frame is a smooth sky gradient (content check relaxed)
 };
 
-inline double groundAt(double x, double z) { return terrainHeight(TerrainShape{}, glm::vec2(float(x), float(z))).x; }
+inline double groundAt(double x, double z) { return terrainHeight(TerrainShape{}, glm::dvec2(x, z)).x; }
 
 inline SceneSettings sceneAt(double x, double z, double aboveGround, float yaw, float pitch) {
     SceneSettings scene;
