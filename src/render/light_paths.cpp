@@ -1,42 +1,53 @@
 // Light paths: names, the capability-driven choice, the UBO layout.
 #include "render/light_paths.h"
 
-#include "common/shared_constants.glsl"
-
-
 #include <algorithm>
 
+#include "common/shared_constants.glsl"
 #include "render/light_data.h"
 
 namespace oasis {
 
-const char* lightsPathName(LightsPath path) {
-    switch (path) {
-        case LightsPath::Ssbo: return "ssbo";
-        case LightsPath::SsboCount: return "ssbo-count";
-        case LightsPath::Ubo: return "ubo";
-    }
-    return "";
+namespace {
+
+// The one table of light paths: the CLI and panel name, and the #define that selects it in
+// shaders/common/lights.glsl.
+struct LightsPathEntry {
+    LightsPath path;
+    const char* name;
+    const char* define;
+};
+constexpr LightsPathEntry kLightsPaths[] = {
+    {LightsPath::Ssbo, "ssbo", "LIGHTS_SSBO"},
+    {LightsPath::SsboCount, "ssbo-count", "LIGHTS_SSBO_COUNT"},
+    {LightsPath::Ubo, "ubo", "LIGHTS_UBO"},
+};
+
+const LightsPathEntry& entryOf(LightsPath path) {
+    for (const LightsPathEntry& entry : kLightsPaths)
+        if (entry.path == path) return entry;
+    return kLightsPaths[0];
 }
 
+}  // namespace
+
+const char* lightsPathName(LightsPath path) { return entryOf(path).name; }
+
 bool parseLightsPath(const std::string& text, LightsPath& out) {
-    for (LightsPath path : {LightsPath::Ssbo, LightsPath::SsboCount, LightsPath::Ubo})
-        if (text == lightsPathName(path)) { out = path; return true; }
+    for (const LightsPathEntry& entry : kLightsPaths)
+        if (text == entry.name) { out = entry.path; return true; }
     return false;
 }
 
-const char* lightsPathDefine(LightsPath path) {
-    switch (path) {
-        case LightsPath::Ssbo: return "LIGHTS_SSBO";
-        case LightsPath::SsboCount: return "LIGHTS_SSBO_COUNT";
-        case LightsPath::Ubo: return "LIGHTS_UBO";
-    }
-    return "";
-}
+const char* lightsPathDefine(LightsPath path) { return entryOf(path).define; }
 
 std::string lightsVariantSuffix(LightsPath path) { return std::string(".lights-") + lightsPathName(path); }
 
-std::string lightsPathNames() { return "ssbo, ssbo-count, ubo"; }
+std::string lightsPathNames() {
+    std::string names;
+    for (const LightsPathEntry& entry : kLightsPaths) names += std::string(names.empty() ? "" : ", ") + entry.name;
+    return names;
+}
 
 LightsPathChoice chooseLightsPath(bool ssboAvailable, std::optional<LightsPath> forced,
                                   const std::string& whyNoSsbo) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "gl/capabilities.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -16,8 +17,9 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 
-    // Point lights: what the context offers decides the path and the UBO path's block size.
-    ssboAvailable_ = epoxy_gl_version() >= 43 || epoxy_has_gl_extension("GL_ARB_shader_storage_buffer_object");
+    // Point lights: what the context offers decides the path and the UBO path's block size (a
+    // session replaces the availability with its --force-aware report: setSsboAvailable).
+    ssboAvailable_ = gl::measureCapabilities().ssboAvailable(&ssboMissingReason_);
     GLint maxBlockSize = 16384, maxVertexBlocks = 12, maxFragmentBlocks = 12;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
     glGetIntegerv(GL_MAX_VERTEX_UNIFORM_BLOCKS, &maxVertexBlocks);
@@ -33,7 +35,7 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBindBuffer(GL_UNIFORM_BUFFER, lightCount_.name());
     glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
-    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path);
+    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
 }
 
 void Renderer::setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced) {

@@ -61,7 +61,7 @@ bool VegetationField::inRange(glm::ivec2 chunk, const glm::dvec3& camera, float 
     return dx * dx + dz * dz <= double(distance) * double(distance);
 }
 
-void VegetationField::placeChunk(const TerrainShape& shape, glm::ivec2 chunk) {
+VegetationField::ChunkMap::iterator VegetationField::placeChunk(const TerrainShape& shape, glm::ivec2 chunk) {
     Chunk placed;
     placed.plants = placePlantsInChunk(shape, placement_, chunk);
     double size = placement_.chunkSize;
@@ -74,7 +74,7 @@ void VegetationField::placeChunk(const TerrainShape& shape, glm::ivec2 chunk) {
     double sway = kSwayPerHeight * tallest * double(VegetationSettings::kMaxWindStrength);
     placed.bounds.low = {chunk.x * size - sway, lowY, chunk.y * size - sway};
     placed.bounds.high = {(chunk.x + 1) * size + sway, highY, (chunk.y + 1) * size + sway};
-    chunks_[{chunk.x, chunk.y}] = std::move(placed);
+    return chunks_.insert_or_assign({chunk.x, chunk.y}, std::move(placed)).first;
 }
 
 void VegetationField::update(const TerrainShape& shape, float waterLevel, const VegetationSettings& settings,
@@ -112,9 +112,9 @@ void VegetationField::update(const TerrainShape& shape, float waterLevel, const 
             glm::ivec2 chunk(x, z);
             if (!inRange(chunk, camera, settings.drawDistance)) continue;
             auto found = chunks_.find({x, z});
-            if (found == chunks_.end()) placeChunk(shape, chunk);
+            if (found == chunks_.end()) found = placeChunk(shape, chunk);
             stats_.chunksInRange++;
-            stats_.plantsPlaced += chunks_[{x, z}].plants.size();
+            stats_.plantsPlaced += found->second.plants.size();
         }
 }
 

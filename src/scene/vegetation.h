@@ -94,11 +94,12 @@ private:
         std::vector<PlantInstance> plants;
         ChunkBounds bounds;
     };
-    void placeChunk(const TerrainShape& shape, glm::ivec2 chunk);
+    using ChunkMap = std::map<std::pair<int, int>, Chunk>;
+    ChunkMap::iterator placeChunk(const TerrainShape& shape, glm::ivec2 chunk);
     bool inRange(glm::ivec2 chunk, const glm::dvec3& camera, float distance) const;
 
     PlantPlacementSettings basePlacement_, placement_;
-    std::map<std::pair<int, int>, Chunk> chunks_;
+    ChunkMap chunks_;
     // What the placed chunks were placed with; a change re-places them all.
     TerrainShape placedShape_;
     float placedWaterLevel_ = 0.0f, placedDensity_ = -1.0f;
