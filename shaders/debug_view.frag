@@ -68,15 +68,14 @@ vec3 viewColour() {
 }
 
 #elif defined(VIEW_DEPTH)
+#include "common/depth.glsl"
 uniform sampler2D gDepth;
 vec3 viewColour() {
     // Window depth back to eye distance, then a log scale from the near to the far plane.
     float depth = texture(gDepth, vScreenUv).r;
-    if (depth >= 1.0) return vec3(0.0);
+    if (depthAtFarPlane(depth)) return vec3(0.0);
     float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
-    float ndc = depth * 2.0 - 1.0;
-    float eyeDistance = 2.0 * nearPlane * farPlane / (farPlane + nearPlane - ndc * (farPlane - nearPlane));
-    return ramp(log(eyeDistance / nearPlane) / log(farPlane / nearPlane));
+    return ramp(log(eyeDepthFromWindowDepth(depth) / nearPlane) / log(farPlane / nearPlane));
 }
 
 #elif defined(VIEW_STENCIL)

@@ -18,6 +18,8 @@ struct FrameData {
     vec4 terrainGrid;            // x central azimuth, y half-width (rad), z first ring radius, w ring ratio
     vec4 terrainGridCounts;      // x rings, y segments, z fog start, w fog end
     vec4 depthRange;             // x near, y far, z time (s), w exposure
+    vec4 depthConvention;        // x 1 when depth is reversed (near 1, far 0), y NDC z of the near plane,
+                                 // z window depth of the far plane; w unused. See common/depth.glsl.
     vec4 water;                  // x level (world y), y absorption per unit, z ripple strength, w flags
     vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
     vec4 vegetation;             // x wind strength, y flutter phase (rad), zw unused

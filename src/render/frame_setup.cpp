@@ -57,6 +57,8 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
                                     scene.viewDistance);
     d.depthRange = glm::vec4(scene.projection.nearPlane, scene.projection.farPlane,
                              float(scene.timeSeconds), scene.exposure);
+    // OpenGL's default: window depth 0 at the near plane, 1 at the far one, NDC z from -1.
+    d.depthConvention = glm::vec4(0.0f, -1.0f, 1.0f, 0.0f);
     d.water = glm::vec4(scene.water.level, scene.water.absorption, scene.water.rippleStrength,
                         setup.reflectionsActive ? float(OASIS_WATER_REFLECTIONS_FLAG) : 0.0f);
     d.waterTint = glm::vec4(scene.water.tint, scene.water.fresnelF0);
