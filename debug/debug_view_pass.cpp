@@ -41,12 +41,14 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
         case ViewSource::PlantAtlas: bind(kUnitSource, plantAtlasTexture_); break;
         case ViewSource::Vegetation:
             bind(kUnitSource, targets.texture(Target::Final));
-            bind(kUnitInfo, targets.texture(Target::Info));
+            bindGBufferInputs(targets);
             break;
-        case ViewSource::Albedo: bind(kUnitAlbedo, targets.texture(Target::Albedo)); break;
-        case ViewSource::Normal: bind(kUnitNormal, targets.texture(Target::Normal)); break;
-        case ViewSource::Position: bind(kUnitPosition, targets.texture(Target::Position)); break;
-        case ViewSource::Info: bind(kUnitInfo, targets.texture(Target::Info)); break;
+        // The G-buffer views decode through common/gbuffer.glsl, which may read any target (the
+        // compact layout: intensity in albedo, position from depth; pixel size from info).
+        case ViewSource::Albedo:
+        case ViewSource::Normal:
+        case ViewSource::Position:
+        case ViewSource::Info: bindGBufferInputs(targets); break;
         case ViewSource::Depth:
             bind(kUnitDepth, depthStencil);
             glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
@@ -71,7 +73,7 @@ void DebugViewPass::drawTile(PassContext& context, const DebugView& view, Stenci
     glViewport(x, y, width, height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
-    glUseProgram(context.shaders.program(debugProgramName(view)));
+    glUseProgram(context.shaders.program(context.targets.layout().program(debugProgramName(view))));
     context.geometry.drawFullscreenTriangle();
     if (view.source == ViewSource::Stencil && stencilPath == StencilViewPath::Texturing) {
         // Leave the depth-stencil texture in its default mode for the depth view and the passes.

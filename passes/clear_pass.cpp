@@ -13,10 +13,11 @@ void ClearPass::execute(PassContext& context) {
     glDisable(GL_SCISSOR_TEST);
     const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     if (output_ == SurfaceOutput::GBuffer) {
-        // CLEARED_INFO in surface.glsl: the sky flag, stored as flags / 255.
-        const GLfloat skyInfo[4] = {0.0f, 0.0f, float(OASIS_SURFACE_SKY) / 255.0f, 0.0f};
-        for (int attachment = 0; attachment < 3; ++attachment) glClearBufferfv(GL_COLOR, attachment, nothing);
-        glClearBufferfv(GL_COLOR, 3, skyInfo);
+        // clearedInfo() in gbuffer.glsl: the sky flag in the layout's flags channel.
+        glm::vec4 skyInfo = context.targets.layout().clearedInfo();
+        const FrameTargets& targets = context.targets;
+        for (int slot = 0; slot < targets.gbufferSlotCount(); ++slot) glClearBufferfv(GL_COLOR, slot, nothing);
+        glClearBufferfv(GL_COLOR, targets.gbufferSlot(Target::Info), &skyInfo[0]);
     } else {
         glClearBufferfv(GL_COLOR, 0, nothing);
     }

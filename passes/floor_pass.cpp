@@ -9,13 +9,13 @@ void FloorPass::execute(PassContext& context) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
-    glUseProgram(context.shaders.program("floor.write"));
+    glUseProgram(context.shaders.program(targets.layout().program("floor.write")));
     context.geometry.drawFullscreenTriangle();
     glDisable(GL_DEPTH_TEST);
 
     glBindFramebuffer(GL_FRAMEBUFFER, targets.finalFramebuffer());
     bindGBufferInputs(targets);
-    glUseProgram(context.shaders.program("floor.read"));
+    glUseProgram(context.shaders.program(targets.layout().program("floor.read")));
     context.geometry.drawFullscreenTriangle();
 }
 

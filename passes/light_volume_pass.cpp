@@ -32,7 +32,7 @@ void LightVolumePass::execute(PassContext& context) {
     bindGBufferInputs(targets);
     std::string suffix = (mirrored ? ".mirrored" : "") + lightsVariantSuffix(context.frame.lightsPath);
     GLuint mark = context.shaders.program("light.mark" + suffix);
-    GLuint shade = context.shaders.program("light.shade" + suffix);
+    GLuint shade = context.shaders.program(targets.layout().program("light.shade" + suffix));
     GLint markIndex = glGetUniformLocation(mark, "lightIndex");
     GLint shadeIndex = glGetUniformLocation(shade, "lightIndex");
 

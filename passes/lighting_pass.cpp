@@ -8,7 +8,8 @@ void LightingPass::execute(PassContext& context) {
     glDisable(GL_DEPTH_TEST);
     bindGBufferInputs(context.targets);
     beginMirroredDraw(mirroring_);
-    glUseProgram(context.shaders.program(mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting"));
+    glUseProgram(context.shaders.program(
+        context.targets.layout().program(mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting")));
     context.geometry.drawFullscreenTriangle();
     endMirroredDraw(mirroring_);
 }

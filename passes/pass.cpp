@@ -60,6 +60,7 @@ void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const 
 GLuint SurfacePass::surfaceProgram(PassContext& context, const std::string& shaderBase) const {
     std::string program = variantName(shaderBase, output_, mirroring_);
     if (output_ == SurfaceOutput::Forward) program += lightsVariantSuffix(context.frame.lightsPath);
+    else program = context.targets.layout().program(program);
     return context.shaders.program(program);
 }
 
@@ -80,6 +81,12 @@ void bindGBufferInputs(const FrameTargets& targets) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_2D, targets.texture(target));
     }
+    if (targets.layout().positionFromDepth()) {
+        // DepthCopyPass's copy, never the depth-stencil target these passes draw with.
+        glActiveTexture(GL_TEXTURE0 + kUnitDepth);
+        glBindTexture(GL_TEXTURE_2D, targets.texture(Target::SceneDepth));
+        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    }
 }
 
 const char* surfaceOutputName(SurfaceOutput output) {
@@ -87,7 +94,7 @@ const char* surfaceOutputName(SurfaceOutput output) {
 }
 
 std::vector<Target> surfaceOutputTargets(SurfaceOutput output, Mirroring mirroring) {
-    if (output == SurfaceOutput::GBuffer)
+    if (output == SurfaceOutput::GBuffer)  // Position too, though a layout may not store it
         return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
     return {mirroring == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
 }

@@ -19,7 +19,7 @@ void ReflectionClearPass::execute(PassContext& context) {
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     beginMirroredDraw(Mirroring::Mirrored);
-    glUseProgram(context.shaders.program("gbuffer.clear"));
+    glUseProgram(context.shaders.program(targets.layout().program("gbuffer.clear")));
     context.geometry.drawFullscreenTriangle();
     endMirroredDraw(Mirroring::Mirrored);
     glDisable(GL_DEPTH_TEST);

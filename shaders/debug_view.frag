@@ -1,7 +1,7 @@
 // Debug views: one G-buffer, depth or stencil target remapped to a colour a person can read.
 // The variant's VIEW_* define picks the remapping; debug/debug_views.cpp lists which view uses which.
 #include "common/frame_block.glsl"
-#include "common/surface.glsl"
+#include "common/gbuffer.glsl"
 
 in vec2 vScreenUv;
 layout(location = 0) out vec4 outColour;
@@ -19,10 +19,9 @@ vec3 viewColour() { return texture(sourceTexture, vScreenUv).rgb; }
 
 #elif defined(VIEW_VEGETATION)
 uniform sampler2D sourceTexture;
-uniform sampler2D gInfo;
 vec3 viewColour() {
     // Direct plant pixels only: in the deferred G-buffer the water holds the mirrored scene.
-    uint flags = infoFlags(texture(gInfo, vScreenUv));
+    uint flags = gbufferFlagsAt(gbufferPixelAt(vScreenUv));
     bool plant = (flags & SURFACE_PLANT) != 0u && (flags & SURFACE_REFLECTED) == 0u;
     return plant ? texture(sourceTexture, vScreenUv).rgb : vec3(0.0);
 }
@@ -33,43 +32,42 @@ uniform sampler2D sourceTexture;
 vec3 viewColour() { return displayEncode(texture(sourceTexture, vScreenUv).rgb); }
 
 #elif defined(VIEW_ALBEDO)
-uniform sampler2D gAlbedo;
 vec3 viewColour() {
     // Linear reflectance, gamma-encoded so it reads like the frame; black where nothing was drawn.
-    return pow(clamp(texture(gAlbedo, vScreenUv).rgb, 0.0, 1.0), vec3(1.0 / 2.2));
+    return pow(clamp(texelFetch(gAlbedo, gbufferPixelAt(vScreenUv), 0).rgb, 0.0, 1.0), vec3(1.0 / 2.2));
 }
 
 #elif defined(VIEW_NORMAL)
-uniform sampler2D gNormal;
-vec3 viewColour() { return 0.5 + 0.5 * clamp(texture(gNormal, vScreenUv).xyz, -1.0, 1.0); }
+vec3 viewColour() {
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec3(0.5);  // the cleared normal, (0, 0, 0)
+    return 0.5 + 0.5 * clamp(gbufferNormalAt(pixel), -1.0, 1.0);
+}
 
 #elif defined(VIEW_POSITION)
-uniform sampler2D gPosition;
 vec3 viewColour() {
     // Camera-relative position on a signed log scale over the view distance: nearby detail and
-    // the far hills both stay visible. Grey is the camera; red +x, green +y, blue +z.
-    vec4 stored = texture(gPosition, vScreenUv);
-    if (stored.w == 0.0) return vec3(0.0);  // sky: no position
-    vec3 p = stored.xyz;
-    vec3 scaled = sign(p) * log(1.0 + abs(p)) / log(1.0 + frame.terrainGridCounts.w);  // black: sky
+    // the far hills both stay visible. Grey is the camera; red +x, green +y, blue +z. In layouts
+    // without a position target this is the position reconstructed from depth.
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec3(0.0);  // sky: no position
+    vec3 p = gbufferPositionAt(pixel);
+    vec3 scaled = sign(p) * log(1.0 + abs(p)) / log(1.0 + frame.terrainGridCounts.w);
     return 0.5 + 0.5 * clamp(scaled, -1.0, 1.0);
 }
 
 #elif defined(VIEW_INFO)
-uniform sampler2D gInfo;
 vec3 viewColour() {
     // Red: specular power (0..64), green: specular intensity (0..0.25),
     // blue: flags (full blue = sky, half blue = a reflected surface).
-    vec4 info = texture(gInfo, vScreenUv);
-    uint flags = infoFlags(info);
-    if ((flags & SURFACE_SKY) != 0u) return vec3(0.0, 0.0, 0.8);
-    float reflectedMark = (flags & SURFACE_REFLECTED) != 0u ? 0.5 : 0.0;
-    return vec3(round(info.r * 255.0) / 64.0, info.g / 0.25, reflectedMark);
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec3(0.0, 0.0, 0.8);
+    Surface s = readGBuffer(pixel);
+    float reflectedMark = (s.flags & SURFACE_REFLECTED) != 0u ? 0.5 : 0.0;
+    return vec3(s.specularPower / 64.0, s.specularIntensity / 0.25, reflectedMark);
 }
 
 #elif defined(VIEW_DEPTH)
-#include "common/depth.glsl"
-uniform sampler2D gDepth;
 vec3 viewColour() {
     // Window depth back to eye distance, then a log scale from the near to the far plane.
     float depth = texture(gDepth, vScreenUv).r;
@@ -97,9 +95,6 @@ vec3 viewColour() {
 // renderer binds every path's buffers each frame), as a heat map.
 #define LIGHTS_UBO
 #include "common/lights.glsl"
-uniform sampler2D gPosition;
-uniform sampler2D gNormal;
-uniform sampler2D gInfo;
 vec3 heat(float count) {
     const vec3 stops[6] = vec3[6](vec3(0.0, 0.0, 0.0), vec3(0.1, 0.2, 0.9), vec3(0.1, 0.8, 0.3),
                                   vec3(0.95, 0.9, 0.1), vec3(0.95, 0.15, 0.05), vec3(1.0, 1.0, 1.0));
@@ -108,18 +103,15 @@ vec3 heat(float count) {
     return mix(stops[i], stops[i + 1], t - float(i));
 }
 vec3 viewColour() {
-    // The view may be drawn into a tile of the overview: sample by screen position, not pixel.
-    vec4 info = texture(gInfo, vScreenUv);
-    if ((infoFlags(info) & SURFACE_SKY) != 0u) return vec3(0.0);
-    Surface s;
-    s.relativePosition = texture(gPosition, vScreenUv).xyz;
-    s.flags = infoFlags(info);
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec3(0.0);
+    Surface s = readGBuffer(pixel);
     vec3 position = litPosition(s);
     int touching = 0;
     for (int i = 0; i < lightCount(); ++i)
         if (lightTouches(position, lightAt(i))) ++touching;
     // Surfaces no light reaches stay visible, dark grey shaded by their slope.
-    if (touching == 0) return vec3(0.05 + 0.1 * clamp(texture(gNormal, vScreenUv).y, 0.0, 1.0));
+    if (touching == 0) return vec3(0.05 + 0.1 * clamp(s.normal.y, 0.0, 1.0));
     return heat(float(touching));
 }
 

@@ -7,26 +7,18 @@
 #if defined(MARK_ONLY)
 void main() {}
 #else
-uniform sampler2D gAlbedo;
-uniform sampler2D gNormal;
-uniform sampler2D gPosition;
-uniform sampler2D gInfo;
+#include "common/gbuffer.glsl"
 flat in vec4 vLightPositionRadius;   // the light, fetched by the vertex stage (light_volume.vert)
 flat in vec4 vLightColourIntensity;
 layout(location = 0) out vec4 outColour;
 
 void main() {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec4 info = texelFetch(gInfo, pixel, 0);
-    if ((infoFlags(info) & SURFACE_SKY) != 0u) {
+    if (gbufferSkyAt(pixel)) {
         outColour = vec4(0.0);
         return;
     }
-    Surface s;
-    s.albedo = texelFetch(gAlbedo, pixel, 0).rgb;
-    s.normal = texelFetch(gNormal, pixel, 0).xyz;
-    s.relativePosition = texelFetch(gPosition, pixel, 0).xyz;
-    decodeInfo(info, s);
+    Surface s = readGBuffer(pixel);
     outColour = vec4(pointLightRadiance(s, PointLight(vLightPositionRadius, vLightColourIntensity)) * pointLightTransfer(s), 0.0);
 }
 #endif

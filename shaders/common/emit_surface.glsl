@@ -1,21 +1,13 @@
 // Where a surface goes once the material has built it, chosen by the variant's #define:
-// OUTPUT_GBUFFER stores it in the four G-buffer targets; OUTPUT_FORWARD shades it now (linear),
+// OUTPUT_GBUFFER stores it in the G-buffer in the layout's encoding; OUTPUT_FORWARD shades it now (linear),
 // looping over the point lights of the variant's LIGHTS_* path.
 #ifndef OASIS_EMIT_SURFACE_GLSL
 #define OASIS_EMIT_SURFACE_GLSL
 #include "common/surface.glsl"
 
 #if defined(OUTPUT_GBUFFER)
-layout(location = 0) out vec4 outAlbedo;
-layout(location = 1) out vec4 outNormal;
-layout(location = 2) out vec4 outPosition;
-layout(location = 3) out vec4 outInfo;
-void emitSurface(Surface s) {
-    outAlbedo = vec4(s.albedo, 1.0);
-    outNormal = vec4(s.normal, 0.0);
-    outPosition = vec4(s.relativePosition, 1.0);  // w = 0 (the clear value) marks the sky
-    outInfo = encodeInfo(s);
-}
+#include "common/gbuffer.glsl"
+void emitSurface(Surface s) { writeGBuffer(s); }
 #elif defined(OUTPUT_FORWARD)
 #include "common/lighting.glsl"
 #include "common/lights.glsl"

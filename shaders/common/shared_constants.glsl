@@ -20,7 +20,10 @@
 #define OASIS_LIGHTS_UBO_MAX_BLOCKS 8
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
-// Surface flags stored in the info target (info.b * 255).
+// Surface flags stored in the info target, flags / 255 in this channel: b in the layouts that
+// store the surface as is, g in the compact layout's two-channel info (common/gbuffer.glsl).
+#define OASIS_INFO_FLAGS_CHANNEL 2
+#define OASIS_COMPACT_INFO_FLAGS_CHANNEL 1
 #define OASIS_SURFACE_SKY 1u
 #define OASIS_SURFACE_REFLECTED 2u
 #define OASIS_SURFACE_PLANT 4u

@@ -40,7 +40,8 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
                                  std::to_string(int(kMaxTargetBytes / double(1u << 30))) + " GiB");
     while (glGetError() != GL_NO_ERROR) {}
     for (int t = 0; t < int(Target::Count); ++t)
-        textures_[t] = gl::createTargetTexture(layout.format(Target(t)).internalFormat, width, height);
+        if (layout.stores(Target(t)))
+            textures_[t] = gl::createTargetTexture(layout.format(Target(t)).internalFormat, width, height);
     display_ = gl::createTargetTexture(GL_RGBA8, width, height);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         throw std::runtime_error("allocating " + std::to_string(width) + "x" + std::to_string(height) +
@@ -48,15 +49,20 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
 
     gbufferFbo_ = gl::createFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo_.name());
-    const Target colour[] = {Target::Albedo, Target::Normal, Target::Position, Target::Info};
+    // The stored colour targets on consecutive attachments, no gaps (gbuffer.glsl's output
+    // locations follow): zink leaves every column past 1024 unrendered at 1280x720 when a draw
+    // buffer in the middle is GL_NONE.
     GLenum drawBuffers[4];
-    for (int i = 0; i < 4; ++i) {
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + i, GL_TEXTURE_2D, texture(colour[i]), 0);
-        drawBuffers[i] = GL_COLOR_ATTACHMENT0 + i;
+    int slots = 0;
+    for (Target target : kGBufferColourTargets) {
+        if (!layout.stores(target)) continue;
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + slots, GL_TEXTURE_2D, texture(target), 0);
+        drawBuffers[slots] = GL_COLOR_ATTACHMENT0 + slots;
+        ++slots;
     }
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                            texture(Target::DepthStencil), 0);
-    glDrawBuffers(4, drawBuffers);
+    glDrawBuffers(slots, drawBuffers);
     checkComplete("G-buffer");
 
     auto colourWithDepthStencil = [&](gl::Framebuffer& fbo, Target colour, const char* what) {
@@ -75,11 +81,31 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Final), 0);
     checkComplete("final");
 
+    if (layout.stores(Target::SceneDepth)) {
+        sceneDepthFbo_ = gl::createFramebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, sceneDepthFbo_.name());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                               texture(Target::SceneDepth), 0);
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+        checkComplete("scene depth");
+    }
+
     displayFbo_ = gl::createFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, displayFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display_.name(), 0);
     checkComplete("display");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+int FrameTargets::gbufferSlot(Target target) const {
+    int slot = 0;
+    for (Target colour : kGBufferColourTargets) {
+        if (!layout_.stores(colour)) continue;
+        if (colour == target) return slot;
+        ++slot;
+    }
+    return -1;
 }
 
 }  // namespace oasis

@@ -13,6 +13,8 @@ namespace oasis {
 // Larger frames are refused with a message instead of risking the process on allocation.
 constexpr double kMaxTargetBytes = 4.0 * 1024 * 1024 * 1024;
 
+inline constexpr Target kGBufferColourTargets[] = {Target::Albedo, Target::Normal, Target::Position, Target::Info};
+
 class FrameTargets {
 public:
     // Throws std::runtime_error when the size is impossible or the framebuffer is incomplete.
@@ -23,11 +25,16 @@ public:
     const GBufferLayout& layout() const { return layout_; }
 
     GLuint texture(Target target) const { return textures_[size_t(target)].name(); }
+    // The G-buffer framebuffer's colour attachment (and draw buffer) of a stored target: the
+    // stored ones in kGBufferColourTargets order, no gaps. -1 for a target it does not hold.
+    int gbufferSlot(Target target) const;
+    int gbufferSlotCount() const { return gbufferSlot(Target::Info) + 1; }
     GLuint displayTexture() const { return display_.name(); }
     GLuint gbufferFramebuffer() const { return gbufferFbo_.name(); }
     GLuint radianceFramebuffer() const { return radianceFbo_.name(); }      // Radiance + depth-stencil
     GLuint reflectionFramebuffer() const { return reflectionFbo_.name(); }  // Reflection + depth-stencil
     GLuint finalFramebuffer() const { return finalFbo_.name(); }            // Final only
+    GLuint sceneDepthFramebuffer() const { return sceneDepthFbo_.name(); }  // SceneDepth; 0 if not stored
     GLuint displayFramebuffer() const { return displayFbo_.name(); }
 
 private:
@@ -35,7 +42,7 @@ private:
     int width_, height_;
     std::array<gl::Texture, size_t(Target::Count)> textures_;
     gl::Texture display_;
-    gl::Framebuffer gbufferFbo_, radianceFbo_, reflectionFbo_, finalFbo_, displayFbo_;
+    gl::Framebuffer gbufferFbo_, radianceFbo_, reflectionFbo_, finalFbo_, displayFbo_, sceneDepthFbo_;
 };
 
 }  // namespace oasis

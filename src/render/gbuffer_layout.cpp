@@ -1,22 +1,35 @@
 // The G-buffer format table and what follows from it.
 #include "render/gbuffer_layout.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "common/shared_constants.glsl"
+
 namespace oasis {
 namespace {
 
 constexpr TargetFormat kRGBA8{GL_RGBA8, 4};
 constexpr TargetFormat kRGBA16F{GL_RGBA16F, 8};
 constexpr TargetFormat kRGBA32F{GL_RGBA32F, 16};
+constexpr TargetFormat kRG16{GL_RG16, 4};
+constexpr TargetFormat kRG8{GL_RG8, 2};
+constexpr TargetFormat kNotStored{0, 0};
 constexpr TargetFormat kDepth24Stencil8{GL_DEPTH24_STENCIL8, 4};
 constexpr TargetFormat kFinalColour{GL_RGBA8, 4};
 constexpr TargetFormat kLinearLight{GL_RGBA16F, 8};
 
 // Positions are stored relative to the camera, so 32-bit floats keep sub-millimetre precision
 // near the viewer wherever the camera is; normals tolerate half floats (|n| error < 1e-3).
+// Compact: 16-bit octahedral normals (about 5e-5 rad steps) beat half floats; the position comes
+// back from a copy of depth (SceneDepth) with the depth format's error, which grows with distance.
 const std::vector<GBufferLayout> kLayouts = {
-    {"full", "32-bit float in every colour target: the reference", kRGBA32F, kRGBA32F, kRGBA32F, kRGBA32F},
+    {"full", "32-bit float in every colour target: the reference", kRGBA32F, kRGBA32F, kRGBA32F, kRGBA32F,
+     GBufferEncoding::AsIs},
     {"standard", "8-bit albedo and info, half-float normal, float position (the default)",
-     kRGBA8, kRGBA16F, kRGBA32F, kRGBA8},
+     kRGBA8, kRGBA16F, kRGBA32F, kRGBA8, GBufferEncoding::AsIs},
+    {"compact", "8-bit albedo + specular intensity, 16-bit octahedral normal, 8-bit power + flags; "
+     "position reconstructed from a copy of depth", kRGBA8, kRG16, kNotStored, kRG8, GBufferEncoding::Compact},
 };
 
 }  // namespace
@@ -31,6 +44,7 @@ const char* targetName(Target target) {
         case Target::Radiance: return "radiance";
         case Target::Reflection: return "reflection";
         case Target::Final: return "final";
+        case Target::SceneDepth: return "scene-depth";
         case Target::Count: break;
     }
     return "?";
@@ -45,13 +59,58 @@ TargetFormat GBufferLayout::format(Target target) const {
         case Target::DepthStencil: return kDepth24Stencil8;
         case Target::Radiance:
         case Target::Reflection: return kLinearLight;
+        case Target::SceneDepth: return positionFromDepth() ? kDepth24Stencil8 : kNotStored;
         default: return kFinalColour;
     }
 }
 
+std::string GBufferLayout::program(const std::string& base) const { return base + gbufferEncodingSuffix(encoding); }
+
+glm::vec4 GBufferLayout::clearedInfo() const {
+    glm::vec4 info(0.0f);
+    info[encoding == GBufferEncoding::Compact ? OASIS_COMPACT_INFO_FLAGS_CHANNEL : OASIS_INFO_FLAGS_CHANNEL] =
+        float(OASIS_SURFACE_SKY) / 255.0f;
+    return info;
+}
+
+glm::vec3 GBufferLayout::storedNormal(glm::vec4 texel) const {
+    if (encoding == GBufferEncoding::Compact) return octahedralDecode(glm::vec2(texel) * 2.0f - 1.0f);
+    return glm::vec3(texel);
+}
+
+unsigned GBufferLayout::storedFlags(glm::vec4 texel) const {
+    int channel = encoding == GBufferEncoding::Compact ? OASIS_COMPACT_INFO_FLAGS_CHANNEL : OASIS_INFO_FLAGS_CHANNEL;
+    return unsigned(std::lround(texel[channel] * 255.0f));
+}
+
+const char* gbufferEncodingDefine(GBufferEncoding encoding) {
+    return encoding == GBufferEncoding::Compact ? "GBUFFER_COMPACT" : "";
+}
+
+const char* gbufferEncodingSuffix(GBufferEncoding encoding) {
+    return encoding == GBufferEncoding::Compact ? ".compact" : "";
+}
+
+glm::vec2 octahedralEncode(glm::vec3 n) {
+    n /= std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z);
+    glm::vec2 folded(n.x, n.z);
+    if (n.y < 0.0f)  // the lower half folds over the diagonals
+        folded = (1.0f - glm::abs(glm::vec2(n.z, n.x))) *
+                 glm::vec2(n.x >= 0.0f ? 1.0f : -1.0f, n.z >= 0.0f ? 1.0f : -1.0f);
+    return folded;
+}
+
+glm::vec3 octahedralDecode(glm::vec2 e) {
+    glm::vec3 n(e.x, 1.0f - std::fabs(e.x) - std::fabs(e.y), e.y);
+    float fold = std::max(-n.y, 0.0f);
+    n.x += n.x >= 0.0f ? -fold : fold;
+    n.z += n.z >= 0.0f ? -fold : fold;
+    return glm::normalize(n);
+}
+
 int GBufferLayout::bytesPerPixel() const {
     return albedo.bytesPerPixel + normal.bytesPerPixel + position.bytesPerPixel + info.bytesPerPixel +
-           kDepth24Stencil8.bytesPerPixel;
+           kDepth24Stencil8.bytesPerPixel + format(Target::SceneDepth).bytesPerPixel;
 }
 
 const std::vector<GBufferLayout>& gbufferLayouts() { return kLayouts; }

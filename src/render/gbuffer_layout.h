@@ -1,7 +1,8 @@
-// The G-buffer layouts: the one table of target formats. `--gbuffer NAME` picks a row.
+// The G-buffer layouts: the one table of target formats and encodings. `--gbuffer NAME` picks a row.
 #pragma once
 #include <epoxy/gl.h>
 
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
 
@@ -10,26 +11,53 @@ namespace oasis {
 // The render targets of a frame. The G-buffer is the first four plus DepthStencil. Radiance and
 // Reflection hold linear HDR light (the frame, and the mirrored scene seen in the water);
 // Final is Radiance tone-mapped to 8 bits for display.
-enum class Target { Albedo, Normal, Position, Info, DepthStencil, Radiance, Reflection, Final, Count };
+// SceneDepth: a copy of depth for the layouts that reconstruct position from it (DepthCopyPass).
+enum class Target { Albedo, Normal, Position, Info, DepthStencil, Radiance, Reflection, Final, SceneDepth, Count };
 const char* targetName(Target target);
 
 struct TargetFormat {
-    GLenum internalFormat;
+    GLenum internalFormat;  // 0: the layout does not store this target
     int bytesPerPixel;
+};
+
+// How the surface is written into the targets (shaders/common/gbuffer.glsl).
+enum class GBufferEncoding {
+    AsIs,     // albedo rgb, normal xyz, camera-relative position xyz (w 1), info (power, intensity, flags)
+    Compact,  // albedo rgb + specular intensity, octahedral normal in rg, info (power, flags);
+              // no position: reconstructed from depth
 };
 
 struct GBufferLayout {
     std::string name;
     std::string description;
     TargetFormat albedo, normal, position, info;
+    GBufferEncoding encoding;
 
     TargetFormat format(Target target) const;  // targets outside the G-buffer are the same in every layout
-    int bytesPerPixel() const;                 // the four G-buffer colour targets plus depth-stencil
+    int bytesPerPixel() const;                 // the G-buffer colour targets it stores, depth-stencil, SceneDepth
+    bool stores(Target target) const { return format(target).internalFormat != 0; }
+    bool positionFromDepth() const { return position.internalFormat == 0; }
+    // The shader program of a G-buffer reader or writer for this layout: "lighting" ->
+    // "lighting.compact" where the encoding needs its own #define (shader_variants.cpp).
+    std::string program(const std::string& base) const;
+    // The value the clear leaves in the info target (the SKY flag in the layout's flags channel).
+    glm::vec4 clearedInfo() const;
+    // Reads the CPU copy of a texel back (readTarget's floats): the unit normal, the flags.
+    glm::vec3 storedNormal(glm::vec4 normalTexel) const;
+    unsigned storedFlags(glm::vec4 infoTexel) const;
 };
+
+// The #define and program-name suffix of an encoding ("" for AsIs: its shaders are the base ones).
+const char* gbufferEncodingDefine(GBufferEncoding encoding);
+const char* gbufferEncodingSuffix(GBufferEncoding encoding);
 
 const std::vector<GBufferLayout>& gbufferLayouts();
 const GBufferLayout* findGBufferLayout(const std::string& name);
 const GBufferLayout& defaultGBufferLayout();
-std::string gbufferLayoutNames();  // "full, standard" for help and error text
+std::string gbufferLayoutNames();  // "full, standard, compact" for help and error text
+
+// Octahedral unit-vector encoding (as shaders/common/gbuffer.glsl): [-1,1]^2 and back.
+glm::vec2 octahedralEncode(glm::vec3 unit);
+glm::vec3 octahedralDecode(glm::vec2 encoded);
 
 }  // namespace oasis

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "passes/clear_pass.h"
+#include "passes/depth_copy_pass.h"
 #include "passes/light_volume_pass.h"
 #include "passes/lighting_pass.h"
 #include "passes/reflection_clear_pass.h"
@@ -30,6 +31,7 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         add(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));
+        add(std::make_unique<DepthCopyPass>());
         add(std::make_unique<LightingPass>());
         // Before the water mask: the depth under the water is still the terrain's, which the
         // volumes test against (the G-buffer there holds that terrain).
@@ -38,6 +40,7 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         add(std::make_unique<ReflectionClearPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
         add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
+        add(std::make_unique<DepthCopyPass>(Mirroring::Mirrored));
         add(std::make_unique<LightingPass>(Mirroring::Mirrored));
         add(std::make_unique<LightVolumePass>(Mirroring::Mirrored));
     } else {

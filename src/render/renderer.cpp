@@ -150,6 +150,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     if (!sameGridDensity(scene.grid, geometry_.density())) geometry_ = SceneGeometry(scene.grid);
     frame_ = prepareFrame(scene, targets_->width(), targets_->height());
+    frame_.positionFromDepth = targets_->layout().positionFromDepth();
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     frame_.lightsPath = lightsChoice_.path;
@@ -191,10 +192,16 @@ void Renderer::renderView(const std::string& viewName) {
             std::vector<Target> written = pass.writes();
             return std::find(written.begin(), written.end(), target) != written.end();
         };
+        bool filled = false;
         for (const auto& pass : deferred_.passes()) {
             if (writes(*pass, Target::Reflection)) break;  // the mirrored half
             if (writes(*pass, Target::Radiance)) continue;  // shading
-            if (ranInForward(pass->name())) pass->run(passContext);
+            // The depth copy has no forward counterpart: it follows whatever the fill drew.
+            bool copiesDepth = writes(*pass, Target::SceneDepth);
+            if (copiesDepth ? filled && pass->active(frame_) : ranInForward(pass->name())) {
+                pass->run(passContext);
+                filled = true;
+            }
         }
         gbufferCurrent_ = true;
     }
@@ -225,9 +232,15 @@ Image Renderer::readDisplay() const {
 }
 
 std::vector<float> Renderer::readTarget(Target target) const {
+    if (target == Target::DepthStencil || target == Target::SceneDepth)
+        throw std::invalid_argument(std::string("readTarget reads colour targets; ") + targetName(target) +
+                                    " is read with readDepth()");
+    if (!targets_->layout().stores(target))
+        throw std::invalid_argument(std::string("the ") + targets_->layout().name + " G-buffer layout has no " +
+                                    targetName(target) + " target");
     std::vector<float> pixels(size_t(targets_->width()) * size_t(targets_->height()) * 4);
     GLuint fbo = targets_->gbufferFramebuffer();
-    int attachment = int(target) - int(Target::Albedo);
+    int attachment = targets_->gbufferSlot(target);
     if (target == Target::Final || target == Target::Radiance || target == Target::Reflection) {
         fbo = target == Target::Final      ? targets_->finalFramebuffer()
               : target == Target::Radiance ? targets_->radianceFramebuffer()
@@ -238,6 +251,30 @@ std::vector<float> Renderer::readTarget(Target target) const {
     glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
     glReadPixels(0, 0, targets_->width(), targets_->height(), GL_RGBA, GL_FLOAT, pixels.data());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
+    return pixels;
+}
+
+std::vector<float> Renderer::readSurfacePositions() {
+    int width = targets_->width(), height = targets_->height();
+    if (!positionsReadback_ || positionsReadbackWidth_ != width || positionsReadbackHeight_ != height) {
+        positionsReadback_ = gl::createTargetTexture(GL_RGBA32F, width, height);
+        positionsReadbackFbo_ = gl::createFramebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, positionsReadbackFbo_.name());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, positionsReadback_.name(), 0);
+        positionsReadbackWidth_ = width;
+        positionsReadbackHeight_ = height;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, positionsReadbackFbo_.name());
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    bindGBufferInputs(*targets_);
+    glUseProgram(shaders_.program(targets_->layout().program("gbuffer.positions")));
+    geometry_.drawFullscreenTriangle();
+    std::vector<float> pixels(size_t(width) * size_t(height) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, positionsReadbackFbo_.name());
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data());
     return pixels;
 }
 

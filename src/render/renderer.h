@@ -75,8 +75,13 @@ public:
     const SceneGeometry& geometry() const { return geometry_; }
 
     Image readDisplay() const;
-    // Any colour target as RGBA floats, bottom row first (GL order).
+    // A colour target as RGBA floats, bottom row first (GL order); throws std::invalid_argument
+    // for a target the layout does not store.
     std::vector<float> readTarget(Target target) const;
+    // The G-buffer's surface positions as lighting reads them (stored, or reconstructed from the
+    // depth copy DepthCopyPass last made: after a whole frame, the G-buffer's own surfaces):
+    // camera-relative xyz, w 1; 0 where the SKY flag is set. RGBA floats, bottom row first.
+    std::vector<float> readSurfacePositions();
     std::vector<float> readDepth() const;
     std::vector<uint8_t> readStencil() const;
 
@@ -101,6 +106,9 @@ private:
     DebugViewPass debugViews_;
     FloorPass floor_;
     PresentPass present_;
+    gl::Texture positionsReadback_;  // readSurfacePositions' float target, made on first use
+    gl::Framebuffer positionsReadbackFbo_;
+    int positionsReadbackWidth_ = 0, positionsReadbackHeight_ = 0;
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
     bool ssboAvailable_ = false;

@@ -1,11 +1,26 @@
 // The program variant table. Shader files are shared; variants differ only by #define.
 #include "render/shader_variants.h"
 
+#include <algorithm>
+
 #include "debug/debug_views.h"
+#include "render/gbuffer_layout.h"
 #include "render/light_paths.h"
 
 namespace oasis {
 namespace {
+
+// Programs that write or read the G-buffer, so need a variant per encoding: the surface writers,
+// the clear, the floor, the lighting and light-volume shading, and the debug views.
+bool touchesGBuffer(const ProgramVariant& variant) {
+    const auto& d = variant.defines;
+    bool writes = std::find(d.begin(), d.end(), "OUTPUT_GBUFFER") != d.end();
+    const std::string readers[] = {"lighting.frag", "light_volume.frag", "gbuffer_clear.frag", "floor.frag",
+                                   "debug_view.frag", "gbuffer_positions.frag"};
+    bool marksOnly = std::find(d.begin(), d.end(), "MARK_ONLY") != d.end();
+    return writes || (!marksOnly && std::find(std::begin(readers), std::end(readers), variant.fragmentFile) !=
+                                        std::end(readers));
+}
 
 std::vector<ProgramVariant> buildVariants() {
     std::vector<ProgramVariant> variants = {
@@ -23,6 +38,7 @@ std::vector<ProgramVariant> buildVariants() {
         {"tonemap", "fullscreen.vert", "tonemap.frag", {}},
         {"present", "fullscreen.vert", "debug_view.frag", {"VIEW_COLOUR"}},
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
+        {"gbuffer.positions", "fullscreen.vert", "gbuffer_positions.frag", {}},
         {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
         {"floor.read", "fullscreen.vert", "floor.frag", {"FLOOR_READ"}},
         {"plant.atlas", "plant_atlas.vert", "plant_atlas.frag", {}},
@@ -51,6 +67,21 @@ std::vector<ProgramVariant> buildVariants() {
     }
     for (const DebugView& view : debugViews())
         variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});
+    // Encodings other than the plain one: "<name>.compact" with GBUFFER_COMPACT, and so on.
+    std::vector<GBufferEncoding> encodings;
+    for (const GBufferLayout& layout : gbufferLayouts())
+        if (*gbufferEncodingDefine(layout.encoding) &&
+            std::find(encodings.begin(), encodings.end(), layout.encoding) == encodings.end())
+            encodings.push_back(layout.encoding);
+    size_t plain = variants.size();
+    for (GBufferEncoding encoding : encodings)
+        for (size_t i = 0; i < plain; ++i) {
+            if (!touchesGBuffer(variants[i])) continue;
+            ProgramVariant variant = variants[i];
+            variant.name += gbufferEncodingSuffix(encoding);
+            variant.defines.push_back(gbufferEncodingDefine(encoding));
+            variants.push_back(variant);
+        }
     return variants;
 }
 

@@ -226,14 +226,16 @@ class DebugViewSemantics : public GpuTest, public ::testing::WithParamInterface<
 TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed(GetParam()));
+    const GBufferLayout& layout = layoutNamed(GetParam());
+    renderer.configure(kWidth, kHeight, layout);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     const Image atlasImage = atlas->read();
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
     const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
     const std::vector<float> normal = renderer.readTarget(Target::Normal);
-    const std::vector<float> position = renderer.readTarget(Target::Position);
+    // Stored, or reconstructed from depth by the GPU as lighting does (the compact layout).
+    const std::vector<float> position = renderer.readSurfacePositions();
     const std::vector<float> info = renderer.readTarget(Target::Info);
     const std::vector<float> final = renderer.readTarget(Target::Final);
     const std::vector<float> reflection = renderer.readTarget(Target::Reflection);
@@ -243,6 +245,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     const float exposure = frame.depthRange.w;
     const float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
     const float viewDistance = frame.terrainGridCounts.w;
+    auto flagsAt = [&](int x, int y) { return layout.storedFlags(texel(info, kWidth, x, y)); };
+    auto normalAt = [&](int x, int y) { return layout.storedNormal(texel(normal, kWidth, x, y)); };
 
     std::map<std::string, Image> images;
     for (const DebugView& view : debugViews()) {
@@ -268,7 +272,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         return std::make_pair(to8bit(glm::pow(glm::clamp(a, 0.0f, 1.0f), glm::vec3(1.0f / 2.2f))), 1);
     };
     expected["normal"] = [&](int x, int y) {
-        glm::vec3 n(texel(normal, kWidth, x, y));
+        if (flagsAt(x, y) & kSurfaceSky) return std::make_pair(glm::ivec3(128), 1);  // the cleared (0, 0, 0)
+        glm::vec3 n = normalAt(x, y);
         return std::make_pair(to8bit(0.5f + 0.5f * glm::clamp(n, -1.0f, 1.0f)), 1);
     };
     expected["position"] = [&](int x, int y) {
@@ -280,9 +285,10 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     };
     expected["info"] = [&](int x, int y) {
         glm::vec4 i = texel(info, kWidth, x, y);
-        if (infoFlags(i) & kSurfaceSky) return std::make_pair(glm::ivec3(0, 0, 204), 0);
-        float reflectedMark = (infoFlags(i) & kSurfaceReflected) ? 0.5f : 0.0f;
-        return std::make_pair(to8bit({std::round(i.r * 255.0f) / 64.0f, i.g / 0.25f, reflectedMark}), 1);
+        if (flagsAt(x, y) & kSurfaceSky) return std::make_pair(glm::ivec3(0, 0, 204), 0);
+        float reflectedMark = (flagsAt(x, y) & kSurfaceReflected) ? 0.5f : 0.0f;
+        float intensity = layout.encoding == GBufferEncoding::Compact ? texel(albedo, kWidth, x, y).a : i.g;
+        return std::make_pair(to8bit({std::round(i.r * 255.0f) / 64.0f, intensity / 0.25f, reflectedMark}), 1);
     };
     expected["depth"] = [&](int x, int y) {
         float d = depth[size_t(y) * kWidth + size_t(x)];
@@ -300,14 +306,14 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         return std::make_pair(glm::ivec3(242, 158, 31), 2);  // terrain (0.95, 0.62, 0.12)
     };
     expected["vegetation"] = [&](int x, int y) {
-        unsigned flags = infoFlags(texel(info, kWidth, x, y));
+        unsigned flags = flagsAt(x, y);
         bool plant = (flags & kSurfacePlant) && !(flags & kSurfaceReflected);
         return std::make_pair(plant ? to8bit(glm::vec3(texel(final, kWidth, x, y))) : glm::ivec3(0), 0);
     };
     expected["light-volumes"] = [&](int x, int y) {
         // No lights in this frame: dark grey by the normal's slope on surfaces, black sky.
-        if (infoFlags(texel(info, kWidth, x, y)) & kSurfaceSky) return std::make_pair(glm::ivec3(0), 0);
-        float grey = 0.05f + 0.1f * std::clamp(texel(normal, kWidth, x, y).y, 0.0f, 1.0f);
+        if (flagsAt(x, y) & kSurfaceSky) return std::make_pair(glm::ivec3(0), 0);
+        float grey = 0.05f + 0.1f * std::clamp(normalAt(x, y).y, 0.0f, 1.0f);
         return std::make_pair(to8bit(glm::vec3(grey)), 1);
     };
     expected["reflection"] = [&](int x, int y) {
@@ -365,7 +371,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Layouts, DebugViewSemantics, ::testing::Values("full", "standard"),
+INSTANTIATE_TEST_SUITE_P(Layouts, DebugViewSemantics, ::testing::Values("full", "standard", "compact"),
                          [](const auto& info) { return info.param; });
 
 // The overview: a grid of every view, one per tile, each labelled. Each tile is the view sampled

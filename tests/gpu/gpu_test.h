@@ -332,6 +332,21 @@ inline std::string str(glm::ivec3 c) {
     return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ", " + std::to_string(c.z) + ")";
 }
 
+// Position tolerance from D24 depth. Window depth z_w = 0.5 + 0.5 z_ndc with
+// z_ndc = (f+n)/(f-n) - 2fn / ((f-n) d) for eye depth d, so one D24 step (1/(2^24-1) in z_w) moves
+// the reconstructed point along its ray by  step(d) = d^2 (f-n) / (f n (2^24-1))  ~=  d^2 / (n 2^24)
+// (n = 0.25, f = 6000: 0.06 at d = 500, 0.95 at d = 2000). The errors that scale the same way:
+// D24 rounding (<= 1 step), z_ndc computed in float32 in the vertex shader, where z_ndc is close
+// to 1 and its ulp is half a step (clip z and w and their divide: ~2 steps), and the float32
+// entries of inverseViewProjection used for the reconstruction (~1 step). Allowed: 5 steps, plus
+// 1e-4 relative for the float32 position/interpolation and 1 mm. Measured worst: 3.3 steps (default). A
+// position off by one pixel sideways (3.2 units at d = 500) or by a wrong origin is far outside.
+inline double depthStep(double eyeDistance, double nearPlane, double farPlane) {
+    return eyeDistance * eyeDistance * (farPlane - nearPlane) / (farPlane * nearPlane * 16777215.0);
+}
+inline double reconstructionTolerance(double eyeDistance, double nearPlane, double farPlane) {
+    return 5.0 * depthStep(eyeDistance, nearPlane, farPlane) + 1e-4 * eyeDistance + 1e-3;
+}
 // Surface flags of an info texel (shaders/common/surface.glsl: infoFlags).
 constexpr unsigned kSurfaceSky = 1u, kSurfaceReflected = 2u, kSurfacePlant = 4u;
 inline unsigned infoFlags(glm::vec4 info) { return unsigned(std::lround(info.b * 255.0f)); }

@@ -3,6 +3,9 @@
 
 #include "render/light_paths.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -25,6 +28,9 @@ int formatBytes(GLenum internalFormat) {
         case GL_RGBA16F: return 8;
         case GL_RGBA32F: return 16;
         case GL_DEPTH24_STENCIL8: return 4;
+        case GL_RG16: return 4;
+        case GL_RG8: return 2;
+        case 0: return 0;  // not stored
         default: return -1;
     }
 }
@@ -48,6 +54,7 @@ TEST(GBufferLayoutTable, NamesUniqueAndFindable) {
     EXPECT_EQ(gbufferLayoutNames(), joined);
     EXPECT_TRUE(names.count("full"));
     EXPECT_TRUE(names.count("standard"));
+    EXPECT_TRUE(names.count("compact"));
     EXPECT_EQ(findGBufferLayout("nope"), nullptr);
     EXPECT_EQ(findGBufferLayout(""), nullptr);
     EXPECT_EQ(findGBufferLayout("Standard"), nullptr);  // names are exact
@@ -56,15 +63,19 @@ TEST(GBufferLayoutTable, NamesUniqueAndFindable) {
 }
 
 TEST(GBufferLayoutTable, BytesPerPixel) {
-    // full: four RGBA32F (16 each) + D24S8 (4); standard: RGBA8 + RGBA16F + RGBA32F + RGBA8 + D24S8.
+    // full: four RGBA32F (16 each) + D24S8 (4); standard: RGBA8 + RGBA16F + RGBA32F + RGBA8 + D24S8;
+    // compact: RGBA8 + RG16 + no position + RG8 + D24S8 + a D24S8 copy of depth to read it from.
     ASSERT_NE(findGBufferLayout("full"), nullptr);
     ASSERT_NE(findGBufferLayout("standard"), nullptr);
+    ASSERT_NE(findGBufferLayout("compact"), nullptr);
     EXPECT_EQ(findGBufferLayout("full")->bytesPerPixel(), 68);
     EXPECT_EQ(findGBufferLayout("standard")->bytesPerPixel(), 36);
+    EXPECT_EQ(findGBufferLayout("compact")->bytesPerPixel(), 18);  // + the SceneDepth copy (D24S8)
 }
 
 TEST(GBufferLayoutTable, FormatBytesAgreeWithInternalFormats) {
-    const Target gbuffer[] = {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
+    const Target gbuffer[] = {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil,
+                              Target::SceneDepth};
     for (const GBufferLayout& layout : gbufferLayouts()) {
         int sum = 0;
         for (Target target : gbuffer) {
@@ -93,9 +104,80 @@ TEST(GBufferLayoutTable, TargetsOutsideTheGBufferAreTheSameInEveryLayout) {
                 << layout.name << " " << targetName(target);
             EXPECT_EQ(layout.format(target).bytesPerPixel, first.format(target).bytesPerPixel);
         }
-    // Positions are camera-relative floats in every layout (the precision argument in gbuffer_layout.cpp).
+    // Positions are camera-relative floats wherever they are stored (the precision argument in
+    // gbuffer_layout.cpp); a layout without them reconstructs them from depth.
+    for (const GBufferLayout& layout : gbufferLayouts()) {
+        if (layout.stores(Target::Position)) EXPECT_EQ(layout.position.internalFormat, GLenum(GL_RGBA32F)) << layout.name;
+        EXPECT_EQ(layout.positionFromDepth(), !layout.stores(Target::Position)) << layout.name;
+        EXPECT_TRUE(layout.stores(Target::Albedo) && layout.stores(Target::Normal) && layout.stores(Target::Info))
+            << layout.name;
+    }
+    EXPECT_TRUE(findGBufferLayout("compact")->positionFromDepth());
+    for (const GBufferLayout& layout : gbufferLayouts())  // the copy exactly where positions come from depth
+        EXPECT_EQ(layout.stores(Target::SceneDepth), layout.positionFromDepth()) << layout.name;
+    EXPECT_FALSE(findGBufferLayout("standard")->positionFromDepth());
+}
+
+// Each encoding's programs exist for every G-buffer reader and writer, with its #define; the plain
+// encoding's are the base programs themselves.
+TEST(GBufferLayoutTable, EveryLayoutHasItsGBufferPrograms) {
+    const char* bases[] = {"terrain.gbuffer", "vegetation.gbuffer.mirrored", "lighting", "lighting.mirrored",
+                           "gbuffer.clear", "floor.write", "floor.read", "light.shade.lights-ubo", "debug.position",
+                           "gbuffer.positions"};
     for (const GBufferLayout& layout : gbufferLayouts())
-        EXPECT_EQ(layout.position.internalFormat, GLenum(GL_RGBA32F)) << layout.name;
+        for (const char* base : bases) {
+            const ProgramVariant* variant = findProgramVariant(layout.program(base));
+            ASSERT_NE(variant, nullptr) << layout.name << " " << base;
+            std::string define = gbufferEncodingDefine(layout.encoding);
+            if (define.empty()) {
+                EXPECT_EQ(layout.program(base), base);
+            } else {
+                EXPECT_NE(std::find(variant->defines.begin(), variant->defines.end(), define), variant->defines.end())
+                    << variant->name;
+            }
+        }
+    // The stencil-marking draws and the forward surfaces never touch the G-buffer: no copies.
+    EXPECT_EQ(findProgramVariant("light.mark.lights-ubo.compact"), nullptr);
+    EXPECT_EQ(findProgramVariant("terrain.forward.lights-ssbo.compact"), nullptr);
+}
+
+// The cleared info texel carries the SKY flag where each encoding reads flags, and nothing else.
+TEST(GBufferLayoutTable, ClearedInfoIsTheSkyFlagInTheLayoutsFlagsChannel) {
+    for (const GBufferLayout& layout : gbufferLayouts()) {
+        glm::vec4 cleared = layout.clearedInfo();
+        EXPECT_EQ(layout.storedFlags(cleared), 1u) << layout.name;  // SURFACE_SKY
+        EXPECT_FLOAT_EQ(cleared.x + cleared.y + cleared.z + cleared.w, 1.0f / 255.0f) << layout.name;
+    }
+    EXPECT_EQ(findGBufferLayout("standard")->storedFlags({0.0f, 0.0f, 6.0f / 255.0f, 1.0f}), 6u);
+    EXPECT_EQ(findGBufferLayout("compact")->storedFlags({0.5f, 6.0f / 255.0f, 0.0f, 1.0f}), 6u);
+}
+
+// Octahedral normals: the round trip through 16-bit unorm channels (the compact layout's RG16)
+// keeps direction within 1e-4 rad over the sphere, poles, equator and fold lines included.
+TEST(OctahedralNormals, RoundTripThroughSixteenBitsKeepsDirection) {
+    std::vector<glm::vec3> directions = {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1},
+                                         {1, -1, 1}, {-1, -1, -1}, {1, 1e-7f, 0}, {0.3f, -1e-6f, -0.9f}};
+    uint32_t state = 12345u;
+    auto uniform = [&] { state = state * 1664525u + 1013904223u; return float(state >> 8) / float(1u << 24) * 2.0f - 1.0f; };
+    for (int i = 0; i < 20000; ++i) {
+        glm::vec3 v(uniform(), uniform(), uniform());
+        if (glm::length(v) > 1e-3f) directions.push_back(v);
+    }
+    double worst = 0.0;
+    for (glm::vec3 direction : directions) {
+        glm::vec3 n = glm::normalize(direction);
+        glm::vec2 e = octahedralEncode(n);
+        ASSERT_LE(std::max(std::fabs(e.x), std::fabs(e.y)), 1.0f + 1e-6f);
+        glm::vec2 stored = glm::round((e * 0.5f + 0.5f) * 65535.0f) / 65535.0f;  // RG16 unorm
+        glm::vec3 back = findGBufferLayout("compact")->storedNormal(glm::vec4(stored, 0.0f, 1.0f));
+        EXPECT_NEAR(glm::length(back), 1.0f, 1e-6f);
+        // The angle from cross and dot in double: acos of a float dot cannot resolve below 3e-4.
+        glm::dvec3 a(back), b(n);
+        double angle = std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+        worst = std::max(worst, angle);
+        if (angle > 1e-4) ADD_FAILURE() << "direction (" << n.x << ", " << n.y << ", " << n.z << ") off by " << angle;
+    }
+    std::printf("[octahedral] %zu directions, worst %.2e rad after 16-bit quantisation\n", directions.size(), worst);
 }
 
 TEST(GBufferLayoutTable, TargetNamesAreDistinct) {

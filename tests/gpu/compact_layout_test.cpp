@@ -1,0 +1,107 @@
+// The compact G-buffer layout against the full one (float targets: the reference), frame for
+// frame, after whole frames: inside the water both G-buffers hold the mirrored scene, and
+// compact's depth copy (DepthCopyPass.mirrored) its depth. Same surfaces (flags, specular power and intensity
+// exactly), albedo within 8-bit rounding, normals within 1e-4 rad (16-bit octahedral), and the
+// positions lighting reconstructs from D24 depth within the depth-step tolerance of gpu_test.h
+// of the stored ones, direct and mirrored. Then the whole frame: compact's deferred image agrees
+// with full's, and the targets compact does not store are neither allocated nor readable.
+#include "gpu_test.h"
+
+namespace oasis::gputest {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 180;
+
+struct GBufferRead {
+    std::vector<float> albedo, normal, info, position;
+};
+
+GBufferRead renderGBuffer(Renderer& renderer, const SceneSettings& scene, const std::string& layout) {
+    renderer.configure(kWidth, kHeight, layoutNamed(layout));
+    renderer.setPipeline(PipelineKind::Deferred);
+    renderer.renderFrame(scene);
+    return {renderer.readTarget(Target::Albedo), renderer.readTarget(Target::Normal),
+            renderer.readTarget(Target::Info), renderer.readSurfacePositions()};
+}
+
+class CompactLayout : public GpuTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
+    const NamedPose pose = poseNamed(GetParam());
+    Renderer renderer(*shaders_, pose.scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    const GBufferLayout& full = layoutNamed("full");
+    const GBufferLayout& compact = layoutNamed("compact");
+    const GBufferRead reference = renderGBuffer(renderer, pose.scene, "full");
+    const GBufferRead packed = renderGBuffer(renderer, pose.scene, "compact");
+    const float nearPlane = renderer.lastFrame().data.depthRange.x, farPlane = renderer.lastFrame().data.depthRange.y;
+
+    int surfaces = 0, mirrored = 0, flagsDiffer = 0, materialDiffers = 0, albedoOff = 0, normalOff = 0, positionOff = 0;
+    double worstAngle = 0.0, worstSteps = 0.0, worstFraction = 0.0;
+    std::string firstPositionOff;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            glm::vec4 infoFull = texel(reference.info, kWidth, x, y), infoCompact = texel(packed.info, kWidth, x, y);
+            unsigned flags = full.storedFlags(infoFull);
+            if (compact.storedFlags(infoCompact) != flags) ++flagsDiffer;
+            if (flags & kSurfaceSky) continue;
+            ++surfaces;
+            mirrored += (flags & kSurfaceReflected) ? 1 : 0;
+            // Power and intensity are multiples of 1/255 from the material: exact in both.
+            glm::vec4 albedoFull = texel(reference.albedo, kWidth, x, y), albedoCompact = texel(packed.albedo, kWidth, x, y);
+            if (std::lround(infoFull.r * 255.0f) != std::lround(infoCompact.r * 255.0f) ||
+                std::fabs(infoFull.g - albedoCompact.a) > 1e-6f)
+                ++materialDiffers;
+            glm::vec3 albedoError = glm::abs(glm::vec3(albedoFull) - glm::vec3(albedoCompact));
+            if (std::max({albedoError.x, albedoError.y, albedoError.z}) > 0.5f / 255.0f + 1e-6f) ++albedoOff;
+
+            glm::dvec3 n(full.storedNormal(texel(reference.normal, kWidth, x, y)));
+            glm::dvec3 m(compact.storedNormal(texel(packed.normal, kWidth, x, y)));
+            double angle = std::atan2(glm::length(glm::cross(n, m)), glm::dot(n, m));
+            worstAngle = std::max(worstAngle, angle);
+            normalOff += angle > 1e-4 ? 1 : 0;
+
+            glm::dvec3 stored(texel(reference.position, kWidth, x, y)), rebuilt(texel(packed.position, kWidth, x, y));
+            double distance = glm::length(stored), error = glm::length(rebuilt - stored);
+            double tolerance = reconstructionTolerance(distance, nearPlane, farPlane);
+            worstSteps = std::max(worstSteps, error / depthStep(distance, nearPlane, farPlane));
+            worstFraction = std::max(worstFraction, error / tolerance);
+            if (error > tolerance && positionOff++ == 0)
+                firstPositionOff = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + "): error " +
+                                   std::to_string(error) + " at distance " + std::to_string(distance);
+        }
+    std::printf("[compact] %s: %d surface pixels (%d mirrored), worst normal %.2e rad, worst position %.2f depth "
+                "steps (%.0f%% of the tolerance)\n",
+                pose.name.c_str(), surfaces, mirrored, worstAngle, worstSteps, 100.0 * worstFraction);
+    EXPECT_GT(surfaces, kWidth * kHeight / 10);
+    EXPECT_EQ(flagsDiffer, 0) << "surface flags differ from the full layout's";
+    EXPECT_EQ(materialDiffers, 0) << "specular power or intensity differ";
+    EXPECT_EQ(albedoOff, 0) << "albedo beyond 8-bit rounding";
+    EXPECT_EQ(normalOff, 0) << "normals more than 1e-4 rad off (worst " << worstAngle << ")";
+    EXPECT_EQ(positionOff, 0) << "reconstructed positions beyond the depth tolerance; first " << firstPositionOff;
+    if (pose.name == "lakeMirror") EXPECT_GT(mirrored, kWidth * kHeight / 20) << "the lake's mirrored scene";
+}
+
+INSTANTIATE_TEST_SUITE_P(Poses, CompactLayout, ::testing::Values("default", "meadow", "lakeMirror", "down", "sunset"),
+                         [](const auto& info) { return info.param; });
+
+TEST_F(GpuTest, CompactFrameAgreesWithTheFullLayoutAndStoresNoPosition) {
+    const NamedPose pose = poseNamed("meadow");
+    Renderer renderer(*shaders_, pose.scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(kWidth, kHeight, layoutNamed("full"));
+    Image full = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
+    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    Image compact = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
+    dumpImage("compact-meadow-deferred", compact);
+    ImageDifference difference = compareImages(full, compact);
+    std::printf("[compact] meadow: deferred compact vs full PSNR %.2f dB, max %d\n", difference.psnrDb,
+                difference.maxAbs);
+    EXPECT_GE(difference.psnrDb, 45.0);
+    EXPECT_TRUE(hasContent(compact));
+    EXPECT_EQ(renderer.targets().texture(Target::Position), 0u) << "compact allocates no position target";
+    EXPECT_THROW(renderer.readTarget(Target::Position), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace oasis::gputest
