@@ -76,6 +76,7 @@ void expectUnderWater(const CaseFrame& c) {
     // channel, 8-bit).
     for (const Image* image : {&c.forward, &c.deferred}) {
         RgbStats stats = rgbStats(*image, wholeImage(*image));
+        std::printf("[stability]   %s: %s\n", image == &c.forward ? "forward" : "deferred", describe(stats).c_str());
         EXPECT_GT(stats.maxMean(), 60.0) << "dark under water: " << describe(stats);
     }
 }
@@ -108,6 +109,7 @@ std::vector<HardCase> hardCases() {
     // beyond its eastern shore (about 570 units).
     cases.push_back({"grazingShore", above(420.0, 100.0, 1.0, 60.0f, 0.0f), 320, 180, [](const CaseFrame& c) {
                          expectViewOut(400.0)(c);
+                         std::printf("[stability]   water %d px\n", c.countStencil(kStencilWater));
                          EXPECT_GT(c.countStencil(kStencilWater), c.width * c.height / 10) << "the lake in view";
                      }});
     // 0.05 units above the water, looking level along the lake from its southern end: the plane
@@ -115,6 +117,7 @@ std::vector<HardCase> hardCases() {
     cases.push_back({"skimmingTheLake", inTheLake(0.05, 210.0, 0.0f, 0.0f), 320, 180, [](const CaseFrame& c) {
                          EXPECT_TRUE(c.frame.cameraAboveWater);
                          EXPECT_TRUE(c.frame.reflectionsActive);
+                         std::printf("[stability]   water %d px\n", c.countStencil(kStencilWater));
                          EXPECT_GT(c.countStencil(kStencilWater), c.width * c.height / 4) << "the lake fills the lower half";
                      }});
     for (double hour : {6.0, 18.0}) {
@@ -135,6 +138,7 @@ std::vector<HardCase> hardCases() {
                          int skyInWater = 0;
                          for (int y = 0; y < c.height; ++y)
                              for (int x = 0; x < c.width; ++x) skyInWater += (c.flags(x, y) & kSurfaceSky) ? 1 : 0;
+                         std::printf("[stability]   sky through the surface %d px\n", skyInWater);
                          EXPECT_GT(skyInWater, c.width * c.height / 2) << "the sky seen through the surface";
                      }});
     // The sun below the horizon: midnight (the lowest) and 3 minutes before sunrise, looking east
