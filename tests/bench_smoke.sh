@@ -1,6 +1,7 @@
 #!/bin/sh
 # CI smoke test of `oasis bench --quick`: exits 0, prints JSON whose `configs` each carry the
-# required keys, at least one configuration on the Pareto frontier, and writes non-empty CSV and SVG.
+# required keys, at two light counts at least, at least one configuration on the Pareto frontier, and
+# writes non-empty CSV and SVG.
 # usage: bench_smoke.sh OASIS OUT_DIR
 set -eu
 oasis=$1 out=$2
@@ -15,11 +16,13 @@ json="$out/bench.json"
 grep -q '"configs": \[' "$json" || { echo "no configs list"; exit 1; }
 configs=$(grep -c '^ *{"pipeline": ' "$json" || true)
 test "$configs" -ge 3 || { echo "expected at least 3 configs, found $configs"; exit 1; }
-for key in pipeline layout width height ms_median floor_ratio psnr_db bytes_per_pixel pareto; do
+for key in pipeline layout width height lights ms_median floor_ratio psnr_db bytes_per_pixel pareto; do
     n=$(grep '^ *{"pipeline": ' "$json" | grep -c "\"$key\": " || true)
     test "$n" -eq "$configs" || { echo "key $key in $n of $configs configs"; exit 1; }
 done
 grep -q '"pareto": true' "$json" || { echo "no configuration on the Pareto frontier"; exit 1; }
+counts=$(grep '^ *{"pipeline": ' "$json" | grep -o '"lights": [0-9]*' | sort -u | wc -l)
+test "$counts" -ge 2 || { echo "expected configurations at two light counts at least, found $counts"; exit 1; }
 grep -q '"ms_median": [0-9]' "$json" || { echo "ms_median is not a number"; exit 1; }
 test "$(wc -l < "$out/bench.csv")" -eq $((configs + 1)) || { echo "CSV rows do not match configs"; exit 1; }
 grep -q '<polyline class="pareto"' "$out/bench.svg" || { echo "SVG has no frontier"; exit 1; }

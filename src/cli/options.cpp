@@ -114,14 +114,17 @@ std::string usage(Command command) {
             return "usage: oasis bench [--quick] [--out-dir DIR] [--json] [--frames N] [scene options]\n"
                    "  times every configuration of pipeline x G-buffer layout x quality knob (grid, octaves,\n"
                    "  vegetation, reflections; each knob alone at each level) x size over fixed frames of the\n"
-                   "  camera path, and its error against the reference (full layout, every knob at its highest):\n"
+                   "  camera path, also with a few point-light counts (the default knobs only; each count its\n"
+                   "  own reference and frontiers), and its error against the reference (full layout, every\n"
+                   "  knob at its highest, the same lights):\n"
                    "  median/min/max ms (wall time around glFinish), per-pass ms, ratio to the floor measured in\n"
                    "  the same run, PSNR, RMSE, max abs, SSIM, bytes per pixel, target memory, Pareto frontier.\n"
                    "  Prints a table; writes bench.csv, bench.json and bench.svg to DIR (default oasis-out/bench)\n"
-                   "  --quick                   one frame at 320x180, each knob's cheapest level, 3 timed frames\n"
+                   "  --quick                   one frame at 320x180, each knob's cheapest level, the default and\n"
+                   "                            the most lights, 3 timed frames\n"
                    "  --json                    print the JSON to stdout (the table goes to stderr)\n"
                    "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"
-                   "  the bench sets --size, --time, --camera, --gbuffer and the knobs itself; other scene\n"
+                   "  the bench sets --size, --time, --camera, --gbuffer, --lights and the knobs itself; other scene\n"
                    "  options (e.g. --hour, --ripples) set the scene every configuration starts from\n" + scene;
         case Command::Window:
             return "usage: oasis window [scene options]\n"
@@ -182,7 +185,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (flag == "--passes" && options.command == Command::Bench)
             return fail("option --passes belongs to `oasis compare` (bench always times each pass)");
         static const std::vector<std::string> kSetByBench = {"--size", "--time", "--camera", "--gbuffer", "--reflections",
-                                                             "--vegetation", "--vegetation-density"};
+                                                             "--vegetation", "--vegetation-density", "--lights"};
         if (options.command == Command::Bench &&
             std::find(kSetByBench.begin(), kSetByBench.end(), flag) != kSetByBench.end())
             return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts and knobs)");

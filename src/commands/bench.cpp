@@ -59,8 +59,9 @@ std::string timingNote(const std::string& renderer) {
 }
 
 SceneSettings frameScene(const SceneSettings& base, const std::vector<QualityKnob>& knobs,
-                         const std::vector<int>& levels, const BenchFrame& frame) {
+                         const std::vector<int>& levels, int lights, const BenchFrame& frame) {
     SceneSettings scene = applyKnobs(base, knobs, levels);
+    scene.lights.count = lights;
     scene.timeSeconds = frame.time;
     scene.camera = frame.pose;
     return scene;
@@ -92,7 +93,7 @@ BenchResult measureError(Renderer& renderer, const SceneSettings& base, const Be
     double squaredError = 0.0, ssimSum = 0.0, sameKnobsSquared = 0.0;
     images.clear();
     for (size_t f = 0; f < frames.size(); ++f) {
-        Image image = renderFinalImage(renderer, frameScene(base, knobs, config.levels, frames[f]));
+        Image image = renderFinalImage(renderer, frameScene(base, knobs, config.levels, config.lights, frames[f]));
         ImageDifference difference = compareImages(image, references[f]);
         squaredError += difference.rmse * difference.rmse;
         result.maxAbs = std::max(result.maxAbs, difference.maxAbs);
@@ -136,7 +137,7 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
     for (const BenchFrame& frame : frames) {
         std::vector<SceneSettings> scenes;
         for (const Timed& t : group) {
-            scenes.push_back(frameScene(base, knobs, t.result->config.levels, frame));
+            scenes.push_back(frameScene(base, knobs, t.result->config.levels, t.result->config.lights, frame));
             t.renderer->setPipeline(t.result->config.pipeline);
             for (int warm = 0; warm < 2; ++warm) t.renderer->renderFrame(scenes.back());
         }
@@ -172,19 +173,25 @@ std::string sizeName(int width, int height) { return std::to_string(width) + "x"
 std::string tableText(const std::vector<BenchResult>& results) {
     std::string text;
     char line[320];
-    std::snprintf(line, sizeof(line), "%-9s %-8s %-8s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %s\n", "size",
-                  "pipeline", "layout", "variation", "ms med", "ms min", "ms max", "xfloor", "PSNR dB", "RMSE", "max",
+    std::snprintf(line, sizeof(line), "%-9s %6s %-8s %-8s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %s\n", "size",
+                  "lights", "pipeline", "layout", "variation", "ms med", "ms min", "ms max", "xfloor", "PSNR dB", "RMSE", "max",
                   "SSIM", "own dB", "B/px", "MiB", "pareto");
     text += line;
     for (const BenchResult& r : results) {
         const BenchConfig& c = r.config;
         const char* pareto = r.pareto ? "yes" : r.paretoInPipeline ? "in pipeline" : "";
-        std::snprintf(line, sizeof(line), "%-9s %-8s %-8s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %s\n",
-                      sizeName(c.width, c.height).c_str(), pipelineName(c.pipeline), c.layout.c_str(),
+        std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-8s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %s\n",
+                      sizeName(c.width, c.height).c_str(), c.lights, pipelineName(c.pipeline), c.layout.c_str(),
                       r.variation.c_str(), r.msMedian, r.msMin, r.msMax, r.floorRatio(), r.psnrDb, r.rmse, r.maxAbs,
                       r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, pareto);
         text += line;
     }
+    return text;
+}
+
+std::string lightCountsJson(const std::vector<int>& counts) {
+    std::string text;
+    for (int count : counts) text += (text.empty() ? "" : ", ") + std::to_string(count);
     return text;
 }
 
@@ -206,7 +213,8 @@ std::string benchJson(const std::vector<BenchResult>& results, const std::vector
     json += "], \"reference\": {\"pipeline\": \"deferred\", \"layout\": " + jsonString(referenceLayout) +
             ", \"knobs\": " + jsonString(BenchConfig{PipelineKind::Deferred, referenceLayout, 0, 0, highestLevels(knobs), -1}
                                              .knobSettings(knobs)) +
-            "}, \"error\": \"against the reference at the same frame and size, pooled over the frames: PSNR and RMSE "
+            ", \"lights\": \"the configuration's\"}, \"light_counts\": [" + lightCountsJson(plan.lightCounts) +
+            "], \"error\": \"against the reference at the same frame, size and light count, pooled over the frames: PSNR and RMSE "
             "from the mean squared error of 8-bit RGB, max_abs the worst, ssim the mean over frames (luminance, "
             "11x11 Gaussian windows)\", \"floor\": \"full-screen G-buffer write + read with the default layout (" +
             defaultGBufferLayout().name + "), per size; floor_ratio = ms_median / floor_ms\", \"default_layout\": " +
@@ -232,7 +240,9 @@ std::string benchSvg(const std::vector<BenchResult>& results, const std::string&
     std::vector<PlotPanel> panels;
     std::map<std::string, size_t> panelOf;
     for (const BenchResult& r : results) {
-        std::string size = sizeName(r.config.width, r.config.height);
+        // One panel per frontier: a size and a light count.
+        std::string size = sizeName(r.config.width, r.config.height) + ", " + std::to_string(r.config.lights) +
+                           (r.config.lights == 1 ? " light" : " lights");
         if (!panelOf.count(size)) {
             panelOf[size] = panels.size();
             panels.push_back({size, {}});
@@ -241,10 +251,10 @@ std::string benchSvg(const std::vector<BenchResult>& results, const std::string&
         panels[panelOf[size]].points.push_back(
             {r.msMedian, r.rmse, pipelineName(r.config.pipeline), label, r.pareto, r.paretoInPipeline});
     }
-    PlotText text{"oasis bench: time against error (Pareto frontiers per size, and per pipeline)",
+    PlotText text{"oasis bench: time against error (Pareto frontiers per size and light count, and per pipeline)",
                   "median ms per frame (wall time around glFinish)",
                   "RMSE against the reference (8-bit RGB)",
-                  "reference: deferred, full layout, every knob at its highest; " + renderer};
+                  "reference: deferred, full layout, every knob at its highest, the same lights; " + renderer};
     return scatterPlotSvg(panels, text);
 }
 
@@ -270,7 +280,9 @@ BenchPlan benchPlan(const Options& options) {
         plan.passFrames = 1;
         plan.floorFrames = 3;
         plan.cheapestOnly = true;
+        plan.lightCounts = quickLightCounts();
     } else {
+        plan.lightCounts = benchLightCounts();
         plan.sizes = {{1280, 720}, {640, 360}};
         plan.frameTimes = {0.0, 30.0, 40.0};  // each with water, plants and hills in view
     }
@@ -290,7 +302,7 @@ int runBenchCommand(const Options& options) {
         std::vector<std::string> layouts = {reference.name};  // first: the others are compared with it
         for (const GBufferLayout& layout : gbufferLayouts())
             if (layout.name != reference.name) layouts.push_back(layout.name);
-        std::vector<BenchConfig> configs = benchConfigs(knobs, layouts, plan.sizes, plan.cheapestOnly);
+        std::vector<BenchConfig> configs = benchConfigs(knobs, layouts, plan.sizes, plan.cheapestOnly, plan.lightCounts);
         // The fixed frames: poses on the default flight over the default terrain, so every
         // configuration (whatever its terrain octaves) looks from the same place.
         std::vector<BenchFrame> frames;
@@ -299,8 +311,11 @@ int runBenchCommand(const Options& options) {
         std::filesystem::create_directories(outDir);
 
         std::FILE* tableOut = options.json ? stderr : stdout;
-        std::fprintf(tableOut, "oasis bench: %zu configurations (%zu sizes x %zu frames), %s\n  timing: %s\n  %s\n",
-                     configs.size(), plan.sizes.size(), frames.size(), queryContextInfo().summary().c_str(),
+        std::fprintf(tableOut,
+                     "oasis bench: %zu configurations (%zu sizes x %zu light counts x %zu frames), %s\n  timing: %s\n"
+                     "  %s\n",
+                     configs.size(), plan.sizes.size(), plan.lightCounts.size(), frames.size(),
+                     queryContextInfo().summary().c_str(),
                      timingNote(rendererName).c_str(), describePlantAtlas(session).c_str());
         // A renderer per layout (the session's for the default one), so that configurations timed
         // in turn never reallocate targets; forward uses the default layout's.
@@ -320,12 +335,7 @@ int runBenchCommand(const Options& options) {
         std::vector<BenchResult> results;
         std::vector<Floor> floors;
         for (const auto& [width, height] : plan.sizes) {
-            // The reference for each frame at this size, then the floors of every layout.
-            renderer.configure(width, height, reference);
-            renderer.setPipeline(PipelineKind::Deferred);
-            std::vector<Image> references;
-            for (const BenchFrame& frame : frames)
-                references.push_back(renderFinalImage(renderer, frameScene(session.scene, knobs, highestLevels(knobs), frame)));
+            // The floors of every layout at this size, then per light count its references.
             double defaultFloor = 0.0;
             for (const GBufferLayout& layout : gbufferLayouts()) {
                 renderer.configure(width, height, layout);
@@ -333,45 +343,59 @@ int runBenchCommand(const Options& options) {
                 floors.push_back({width, height, layout.name, ms});
                 if (layout.name == defaultGBufferLayout().name) defaultFloor = ms;
             }
-            std::fprintf(stderr, "oasis bench: %dx%d reference rendered, floor %.2f ms (%s)\n", width, height,
-                         defaultFloor, defaultGBufferLayout().name.c_str());
-            for (auto& [name, layoutRenderer] : renderers) layoutRenderer->configure(width, height, *findGBufferLayout(name));
-            // One knob setting at a time (its configurations are consecutive): errors, then times.
-            std::vector<BenchConfig> sized;
-            for (const BenchConfig& config : configs)
-                if (config.width == width && config.height == height) sized.push_back(config);
-            for (size_t first = 0; first < sized.size();) {
-                std::string variation = sized[first].variation(knobs);
-                size_t end = first;
-                while (end < sized.size() && sized[end].variation(knobs) == variation) ++end;
-                std::vector<Image> referenceLayoutImages;  // deferred with the reference layout, these knobs
-                size_t groupStart = results.size();
-                std::vector<Renderer*> groupRenderers;
-                for (size_t i = first; i < end; ++i) {
-                    const BenchConfig& config = sized[i];
-                    Renderer& own = *renderers.at(config.layout == kNoLayout ? defaultGBufferLayout().name : config.layout);
-                    bool isReferenceLayout = config.pipeline == PipelineKind::Deferred && config.layout == reference.name;
-                    std::vector<Image> images;
-                    BenchResult result = measureError(own, session.scene, config, frames, references,
-                                                      referenceLayoutImages.empty() ? nullptr : &referenceLayoutImages,
-                                                      images);
-                    if (isReferenceLayout) referenceLayoutImages = std::move(images);
-                    result.floorMs = defaultFloor;
-                    results.push_back(result);
-                    groupRenderers.push_back(&own);
+            std::fprintf(stderr, "oasis bench: %dx%d floor %.2f ms (%s)\n", width, height, defaultFloor,
+                         defaultGBufferLayout().name.c_str());
+            for (int lights : plan.lightCounts) {
+                // The reference for each frame at this size with these lights.
+                renderer.configure(width, height, reference);
+                renderer.setPipeline(PipelineKind::Deferred);
+                std::vector<Image> references;
+                for (const BenchFrame& frame : frames)
+                    references.push_back(
+                        renderFinalImage(renderer, frameScene(session.scene, knobs, highestLevels(knobs), lights, frame)));
+                std::fprintf(stderr, "oasis bench: %dx%d reference with %d lights rendered\n", width, height, lights);
+                for (auto& [name, layoutRenderer] : renderers)
+                    layoutRenderer->configure(width, height, *findGBufferLayout(name));
+                // One knob setting at a time (its configurations are consecutive): errors, then times.
+                std::vector<BenchConfig> sized;
+                for (const BenchConfig& config : configs)
+                    if (config.width == width && config.height == height && config.lights == lights)
+                        sized.push_back(config);
+                for (size_t first = 0; first < sized.size();) {
+                    std::string variation = sized[first].variation(knobs);
+                    size_t end = first;
+                    while (end < sized.size() && sized[end].variation(knobs) == variation) ++end;
+                    std::vector<Image> referenceLayoutImages;  // deferred with the reference layout, these knobs
+                    size_t groupStart = results.size();
+                    std::vector<Renderer*> groupRenderers;
+                    for (size_t i = first; i < end; ++i) {
+                        const BenchConfig& config = sized[i];
+                        Renderer& own =
+                            *renderers.at(config.layout == kNoLayout ? defaultGBufferLayout().name : config.layout);
+                        bool isReferenceLayout =
+                            config.pipeline == PipelineKind::Deferred && config.layout == reference.name;
+                        std::vector<Image> images;
+                        BenchResult result = measureError(own, session.scene, config, frames, references,
+                                                          referenceLayoutImages.empty() ? nullptr : &referenceLayoutImages,
+                                                          images);
+                        if (isReferenceLayout) referenceLayoutImages = std::move(images);
+                        result.floorMs = defaultFloor;
+                        results.push_back(result);
+                        groupRenderers.push_back(&own);
+                    }
+                    std::vector<Timed> group;
+                    for (size_t i = groupStart; i < results.size(); ++i)
+                        group.push_back({groupRenderers[i - groupStart], &results[i]});
+                    timeInterleaved(group, session.scene, frames, plan);
+                    for (size_t i = groupStart; i < results.size(); ++i) {
+                        const BenchResult& result = results[i];
+                        std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", i + 1,
+                                     configs.size(), pipelineName(result.config.pipeline), result.config.layout.c_str(),
+                                     width, height, result.variation.c_str(), result.msMedian, result.psnrDb,
+                                     elapsedMs(runStart) / 1000.0);
+                    }
+                    first = end;
                 }
-                std::vector<Timed> group;
-                for (size_t i = groupStart; i < results.size(); ++i)
-                    group.push_back({groupRenderers[i - groupStart], &results[i]});
-                timeInterleaved(group, session.scene, frames, plan);
-                for (size_t i = groupStart; i < results.size(); ++i) {
-                    const BenchResult& result = results[i];
-                    std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", i + 1,
-                                 configs.size(), pipelineName(result.config.pipeline), result.config.layout.c_str(),
-                                 width, height, result.variation.c_str(), result.msMedian, result.psnrDb,
-                                 elapsedMs(runStart) / 1000.0);
-                }
-                first = end;
             }
         }
         markParetoFrontiers(results);
@@ -390,8 +414,9 @@ int runBenchCommand(const Options& options) {
                      "ms: wall time around glFinish, %d timed frames per fixed frame (times:", plan.timedFrames);
         for (const BenchFrame& frame : frames) std::fprintf(tableOut, " %.0f s", frame.time);
         std::fprintf(tableOut, "); xfloor: against the %s layout's floor; error pooled over the frames against "
-                               "deferred/%s with every knob at its highest; own dB: PSNR against deferred/%s with the same knobs; pareto: per size (\"in pipeline\": "
-                               "only among its pipeline's configurations)\n",
+                               "deferred/%s with every knob at its highest and the same lights; own dB: PSNR against "
+                               "deferred/%s with the same knobs and lights; pareto: per size and light count "
+                               "(\"in pipeline\": only among its pipeline's configurations)\n",
                      defaultGBufferLayout().name.c_str(), reference.name.c_str(), reference.name.c_str());
         std::fprintf(tableOut, "wrote %s/bench.csv, %s/bench.json, %s/bench.svg in %.0f s\n", outDir.c_str(),
                      outDir.c_str(), outDir.c_str(), elapsedMs(runStart) / 1000.0);

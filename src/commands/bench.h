@@ -9,9 +9,11 @@
 namespace oasis {
 
 // What a run measures: sizes, the fixed frames (times along the default camera path) and how many
-// frames it times. --quick: one frame at 320x180, each knob's cheapest level only, few timed frames.
+// frames it times. --quick: one frame at 320x180, each knob's cheapest level only, the default and
+// the most lights, few timed frames.
 struct BenchPlan {
     std::vector<std::pair<int, int>> sizes;
+    std::vector<int> lightCounts;    // bench_report.h: benchLightCounts()
     std::vector<double> frameTimes;  // seconds along defaultCameraPath; the pose is fixed per frame
     int timedFrames = 7;             // per fixed frame, after warm-up
     int passFrames = 3;              // per fixed frame, glFinish after every pass

@@ -1,6 +1,7 @@
-// The bench's knob table, configurations, Pareto frontier and CSV/JSON formatting (no GL).
+// The bench's knob table, light counts, configurations, Pareto frontier and CSV/JSON formatting (no GL).
 #include "commands/bench_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -40,6 +41,14 @@ const std::vector<QualityKnob> kKnobs = {
     {"reflections", "the mirrored scene in the water", {reflectionLevel("off", false), reflectionLevel("on", true)}, 1},
 };
 
+// Light counts: none (the default scene), 4 (where deferred starts to win on llvmpipe: the README's
+// lights table has the pipelines even at 1 and deferred ahead from 4) and 32. Not more: forward
+// shades every light in every fragment and its cost grows with the count, deferred pays each
+// volume's pixels. Measured in a full run on a loaded llvmpipe (2 cores) at 1280x720: forward 221,
+// 643 and 2404 ms a frame at 0, 4 and 32 lights, deferred (standard) 293, 381 and 364 ms; the 4-
+// and 32-light configurations took 222 s of the run's 660. 128 lights would add about 4x that.
+const std::vector<int> kLightCounts = {0, 4, 32};
+
 std::string format(const char* pattern, double value) {
     char text[64];
     std::snprintf(text, sizeof(text), pattern, value);
@@ -63,10 +72,22 @@ std::string csvField(const std::string& text) {
 
 const std::vector<QualityKnob>& qualityKnobs() { return kKnobs; }
 
+const std::vector<int>& benchLightCounts() { return kLightCounts; }
+int defaultLightCount() { return LightSettings{}.count; }
+std::vector<int> quickLightCounts() {
+    std::vector<int> counts = {defaultLightCount()};
+    int most = *std::max_element(kLightCounts.begin(), kLightCounts.end());
+    if (most != counts[0]) counts.push_back(most);
+    return counts;
+}
+
 std::string BenchConfig::variation(const std::vector<QualityKnob>& knobs) const {
-    if (variedKnob < 0) return "default";
-    const QualityKnob& knob = knobs[size_t(variedKnob)];
-    return knob.name + "=" + knob.levels[size_t(levels[size_t(variedKnob)])].label;
+    std::string text = lights != defaultLightCount() ? "lights=" + std::to_string(lights) : "";
+    if (variedKnob >= 0) {
+        const QualityKnob& knob = knobs[size_t(variedKnob)];
+        text += (text.empty() ? "" : " ") + knob.name + "=" + knob.levels[size_t(levels[size_t(variedKnob)])].label;
+    }
+    return text.empty() ? "default" : text;
 }
 
 std::string BenchConfig::knobSettings(const std::vector<QualityKnob>& knobs) const {
@@ -94,7 +115,8 @@ SceneSettings applyKnobs(SceneSettings scene, const std::vector<QualityKnob>& kn
 }
 
 std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, const std::vector<std::string>& layouts,
-                                      const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly) {
+                                      const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly,
+                                      const std::vector<int>& lightCounts) {
     std::vector<std::pair<int, std::vector<int>>> settings = {{-1, defaultLevels(knobs)}};
     for (size_t k = 0; k < knobs.size(); ++k)
         for (int level = 0; level < int(knobs[k].levels.size()); ++level) {
@@ -105,21 +127,24 @@ std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, con
         }
     std::vector<BenchConfig> configs;
     for (const auto& [width, height] : sizes)
-        for (const auto& [varied, levels] : settings) {
-            BenchConfig config;
-            config.width = width;
-            config.height = height;
-            config.levels = levels;
-            config.variedKnob = varied;
-            config.pipeline = PipelineKind::Deferred;
-            for (const std::string& layout : layouts) {
-                config.layout = layout;
+        for (int lights : lightCounts)
+            for (const auto& [varied, levels] : settings) {
+                if (lights != defaultLightCount() && varied >= 0) continue;
+                BenchConfig config;
+                config.width = width;
+                config.height = height;
+                config.levels = levels;
+                config.variedKnob = varied;
+                config.lights = lights;
+                config.pipeline = PipelineKind::Deferred;
+                for (const std::string& layout : layouts) {
+                    config.layout = layout;
+                    configs.push_back(config);
+                }
+                config.pipeline = PipelineKind::Forward;
+                config.layout = kNoLayout;
                 configs.push_back(config);
             }
-            config.pipeline = PipelineKind::Forward;
-            config.layout = kNoLayout;
-            configs.push_back(config);
-        }
     return configs;
 }
 
@@ -136,11 +161,13 @@ std::vector<bool> paretoFrontier(const std::vector<ParetoPoint>& points) {
 }
 
 void markParetoFrontiers(std::vector<BenchResult>& results) {
-    // Groups: a size (every configuration), and a size within one pipeline.
+    // Groups: a size and light count (every configuration), and those within one pipeline. Only
+    // configurations of the same light count share a frontier: their errors are against the same
+    // reference and their times are of the same work.
     std::map<std::string, std::vector<size_t>> bySize, byPipeline;
     for (size_t i = 0; i < results.size(); ++i) {
         const BenchConfig& c = results[i].config;
-        std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
+        std::string size = std::to_string(c.width) + "x" + std::to_string(c.height) + " " + std::to_string(c.lights);
         bySize[size].push_back(i);
         byPipeline[size + pipelineName(c.pipeline)].push_back(i);
     }
@@ -177,7 +204,7 @@ std::string jsonString(const std::string& text) {
 }
 
 std::string benchCsvHeader() {
-    return "pipeline,layout,width,height,variation,knobs,ms_median,ms_min,ms_max,floor_ms,floor_ratio,"
+    return "pipeline,layout,width,height,variation,knobs,lights,ms_median,ms_min,ms_max,floor_ms,floor_ratio,"
            "psnr_db,rmse,max_abs,ssim,same_knobs_psnr_db,same_knobs_max_abs,bytes_per_pixel,gbuffer_bytes_per_pixel,target_mib,pareto,"
            "pareto_in_pipeline,passes_ms";
 }
@@ -186,7 +213,7 @@ std::string benchCsvRow(const BenchResult& r) {
     const BenchConfig& c = r.config;
     return std::string(pipelineName(c.pipeline)) + "," + csvField(c.layout) + "," + std::to_string(c.width) + "," +
            std::to_string(c.height) + "," + csvField(r.variation) + "," + csvField(r.knobSettings) + "," +
-           format("%.3f", r.msMedian) + "," + format("%.3f", r.msMin) + "," + format("%.3f", r.msMax) + "," +
+           std::to_string(c.lights) + "," + format("%.3f", r.msMedian) + "," + format("%.3f", r.msMin) + "," + format("%.3f", r.msMax) + "," +
            format("%.3f", r.floorMs) + "," + format("%.3f", r.floorRatio()) + "," + format("%.3f", r.psnrDb) + "," +
            format("%.4f", r.rmse) + "," + std::to_string(r.maxAbs) + "," + format("%.5f", r.ssim) + "," + format("%.3f", r.sameKnobsPsnrDb) + "," + std::to_string(r.sameKnobsMaxAbs) + "," +
            std::to_string(r.bytesPerPixel) + "," + std::to_string(r.gbufferBytesPerPixel) + "," +
@@ -201,7 +228,7 @@ std::string benchConfigJson(const BenchResult& r) {
     return "{\"pipeline\": " + jsonString(pipelineName(c.pipeline)) + ", \"layout\": " + jsonString(c.layout) +
            ", \"width\": " + std::to_string(c.width) + ", \"height\": " + std::to_string(c.height) +
            ", \"variation\": " + jsonString(r.variation) + ", \"knobs\": " + jsonString(r.knobSettings) +
-           ", \"ms_median\": " + jsonNumber(r.msMedian) + ", \"ms_min\": " + jsonNumber(r.msMin) +
+           ", \"lights\": " + std::to_string(c.lights) + ", \"ms_median\": " + jsonNumber(r.msMedian) + ", \"ms_min\": " + jsonNumber(r.msMin) +
            ", \"ms_max\": " + jsonNumber(r.msMax) + ", \"floor_ms\": " + jsonNumber(r.floorMs) +
            ", \"floor_ratio\": " + jsonNumber(r.floorRatio()) + ", \"psnr_db\": " + jsonNumber(r.psnrDb) +
            ", \"rmse\": " + jsonNumber(r.rmse, 6) + ", \"max_abs\": " + std::to_string(r.maxAbs) +

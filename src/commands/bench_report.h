@@ -1,5 +1,5 @@
-// `oasis bench` without GL: the quality-knob table, the configurations a run measures, the
-// Pareto frontier of time against error, and one configuration's CSV row and JSON object.
+// `oasis bench` without GL: the quality-knob table, the light-count workloads, the configurations a
+// run measures, the Pareto frontiers of time against error, and one configuration's CSV row and JSON.
 #pragma once
 #include <functional>
 #include <string>
@@ -29,6 +29,15 @@ struct QualityKnob {
 // The one table of knobs the bench varies (a new knob is one entry here).
 const std::vector<QualityKnob>& qualityKnobs();
 
+// The light counts the bench renders: a workload, not a quality knob. More lights make a different
+// picture, not a more accurate one, so each count has its own reference (every knob at its highest,
+// the same lights) and its own Pareto frontiers: error keeps measuring what the pipeline, layout and
+// knobs lose, and time compares like with like. The default scene's count is one of them.
+const std::vector<int>& benchLightCounts();
+int defaultLightCount();  // SceneSettings' own
+// --quick: the default count and the most.
+std::vector<int> quickLightCounts();
+
 // The layout name of a forward configuration: forward writes no G-buffer, so no layout applies.
 constexpr const char* kNoLayout = "none";
 
@@ -38,8 +47,9 @@ struct BenchConfig {
     int width = 0, height = 0;
     std::vector<int> levels;  // one level index per knob of `knobs`
     int variedKnob = -1;      // the knob set away from its default, -1 for every knob at its default
+    int lights = defaultLightCount();  // point lights in every frame (and in its reference)
 
-    // "default" or e.g. "grid=coarse": what this configuration changes.
+    // "default" or e.g. "grid=coarse" or "lights=32": what this configuration changes.
     std::string variation(const std::vector<QualityKnob>& knobs) const;
     // Every knob's level, e.g. "grid=medium octaves=7 vegetation=1 reflections=on".
     std::string knobSettings(const std::vector<QualityKnob>& knobs) const;
@@ -51,11 +61,14 @@ std::vector<int> defaultLevels(const std::vector<QualityKnob>& knobs);
 // The scene with each knob's chosen level applied in table order.
 SceneSettings applyKnobs(SceneSettings scene, const std::vector<QualityKnob>& knobs, const std::vector<int>& levels);
 
-// Per size: every knob at its default, then each knob alone at each other level (`cheapestOnly`:
-// only its cheapest level); for each of those, deferred with every layout (in the order given),
-// then forward once (it writes no G-buffer, so the layout does not change it).
+// Per size and light count (in the order given): at the default light count, every knob at its
+// default, then each knob alone at each other level (`cheapestOnly`: only its cheapest level); at
+// any other count, every knob at its default only (a count is a workload, not crossed with every
+// knob). For each of those, deferred with every layout (in the order given), then forward once (it
+// writes no G-buffer, so the layout does not change it).
 std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, const std::vector<std::string>& layouts,
-                                      const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly);
+                                      const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly,
+                                      const std::vector<int>& lightCounts = {defaultLightCount()});
 
 // Minimise both: a point is on the frontier when no other point is at most as costly and at most as
 // wrong while better in one of them. Identical points are all on it (none beats another).
@@ -80,8 +93,8 @@ struct BenchResult {
     int gbufferBytesPerPixel = 0;  // of those, the G-buffer colour targets and depth-stencil (0 forward)
     double targetMiB = 0.0;        // bytesPerPixel x width x height
     std::vector<std::pair<std::string, double>> passesMs;  // median ms of each pass, in order
-    bool pareto = false;            // on the frontier of every configuration of its size
-    bool paretoInPipeline = false;  // on the frontier of its size and pipeline
+    bool pareto = false;            // on the frontier of every configuration of its size and light count
+    bool paretoInPipeline = false;  // on the frontier of its size, light count and pipeline
 
     double floorRatio() const { return floorMs > 0.0 ? msMedian / floorMs : 0.0; }
 };

@@ -1,4 +1,5 @@
-// Bad input: sizes beyond GL_MAX_TEXTURE_SIZE throw naming the size (and the renderer recovers),
+// Bad input: sizes beyond GL_MAX_TEXTURE_SIZE, and sizes inside it whose targets would exceed
+// kMaxTargetBytes, throw naming the size before anything is allocated (and the renderer recovers),
 // a 1x1 frame renders in both pipelines without NaN, and a shader reload with a broken file keeps
 // the previous programs (same image) and names the file; restoring it reloads cleanly.
 #include "gpu_test.h"
@@ -10,6 +11,7 @@
 #include <sstream>
 
 #include "debug/debug_views.h"
+#include "render/frame_targets.h"
 
 namespace oasis::gputest {
 namespace {
@@ -46,6 +48,47 @@ TEST_F(BadInput, SizeBeyondMaxTextureSizeThrowsNamingTheSize) {
     renderer.configure(maxSize, 4, layoutNamed("standard"));
     EXPECT_EQ(renderer.targets().width(), maxSize);
     renderer.configure(64, 36, layoutNamed("standard"));
+}
+
+// A size every side of which GL_MAX_TEXTURE_SIZE allows, but whose targets (all of the layout's
+// plus Display) would need more than kMaxTargetBytes: refused with the size and the GiB it needs,
+// before any texture is made (software drivers may abort instead of reporting GL_OUT_OF_MEMORY).
+TEST_F(BadInput, SizeWithinMaxTextureSizeButBeyondTheMemoryLimitThrows) {
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    NamedPose pose = defaultPose();
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(64, 36, layoutNamed("standard"));
+    for (const char* layoutName : {"full", "standard"}) {
+        const GBufferLayout& layout = layoutNamed(layoutName);
+        int bytesPerPixel = 4;  // Display
+        for (int t = 0; t < int(Target::Count); ++t) bytesPerPixel += layout.format(Target(t)).bytesPerPixel;
+        // The fewest rows of the widest frame that pass the limit.
+        const double rows = std::floor(kMaxTargetBytes / (double(maxSize) * bytesPerPixel)) + 1.0;
+        if (rows > maxSize) {
+            std::printf("[bad input] %s: %dx%d needs only %.1f GiB, within the limit: nothing to refuse here\n",
+                        layoutName, maxSize, maxSize, double(maxSize) * maxSize * bytesPerPixel / double(1u << 30));
+            continue;
+        }
+        const int height = int(rows);
+        const std::string size = std::to_string(maxSize) + "x" + std::to_string(height);
+        SCOPED_TRACE(std::string(layoutName) + " " + size);
+        const int liveBefore = gl::liveObjectCount();
+        try {
+            renderer.configure(maxSize, height, layout);
+            ADD_FAILURE() << "configure(" << size << ") did not throw (" << bytesPerPixel << " bytes per pixel)";
+        } catch (const std::runtime_error& error) {
+            std::printf("[bad input] %s: %s refused: %s\n", layoutName, size.c_str(), error.what());
+            EXPECT_NE(std::string(error.what()).find(size), std::string::npos) << error.what();
+            EXPECT_NE(std::string(error.what()).find("GiB"), std::string::npos) << error.what();
+        }
+        EXPECT_EQ(gl::liveObjectCount(), liveBefore) << "objects made for a refused size";
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "a refused size reached GL";
+        // One row fewer is within the limit: the check is the memory, not the side.
+        EXPECT_LE(double(maxSize) * (height - 1) * bytesPerPixel, kMaxTargetBytes);
+    }
+    EXPECT_EQ(renderer.targets().width(), 64) << "the old targets were not kept";
+    EXPECT_TRUE(hasContent(renderFinal(renderer, pose.scene, PipelineKind::Deferred)));
 }
 
 TEST_F(BadInput, OneByOneFrameRendersInBothPipelinesWithoutNaN) {

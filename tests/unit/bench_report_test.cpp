@@ -1,5 +1,6 @@
-// Covers src/commands/bench_report.h and svg_plot.h: the knob table, the configurations a run
-// measures, the Pareto frontier, a configuration's CSV row and JSON object, and the SVG plot.
+// Covers src/commands/bench_report.h and svg_plot.h: the knob table, the light counts, the
+// configurations a run measures, the Pareto frontiers (per size and light count), a configuration's
+// CSV row and JSON object, and the SVG plot.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -67,6 +68,21 @@ TEST(BenchKnobs, DefaultLevelsAreTheDefaultSceneAndTheHighestAreLast) {
     EXPECT_FALSE(cheapest.water.reflections);
 }
 
+TEST(BenchLights, CountsAreAscendingAndHoldTheDefaultScenes) {
+    const std::vector<int>& counts = benchLightCounts();
+    ASSERT_GE(counts.size(), 2u);
+    EXPECT_TRUE(std::is_sorted(counts.begin(), counts.end()));
+    EXPECT_EQ(std::set<int>(counts.begin(), counts.end()).size(), counts.size()) << "a count twice";
+    EXPECT_EQ(defaultLightCount(), SceneSettings{}.lights.count);
+    EXPECT_NE(std::find(counts.begin(), counts.end(), defaultLightCount()), counts.end());
+    for (int count : counts) {
+        EXPECT_GE(count, 0);
+        EXPECT_LE(count, kMaxLights);
+    }
+    // --quick: the default and the most.
+    EXPECT_EQ(quickLightCounts(), (std::vector<int>{defaultLightCount(), counts.back()}));
+}
+
 TEST(BenchConfigs, DefaultFirstThenEachKnobAloneDeferredLayoutsThenForward) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
     std::vector<std::string> layouts = {"full", "standard"};
@@ -96,6 +112,44 @@ TEST(BenchConfigs, DefaultFirstThenEachKnobAloneDeferredLayoutsThenForward) {
     EXPECT_EQ(quick.size(), quickSettings * 3);
     for (const BenchConfig& c : quick)
         if (c.variedKnob >= 0) EXPECT_EQ(c.levels[size_t(c.variedKnob)], 0);
+    // Without light counts given, every configuration has the default scene's.
+    for (const BenchConfig& c : configs) EXPECT_EQ(c.lights, defaultLightCount());
+}
+
+// Each further light count is a workload of the default knobs only (every layout, then forward),
+// after every configuration of the default count at that size.
+TEST(BenchConfigs, OtherLightCountsAtTheDefaultKnobsOnly) {
+    const std::vector<QualityKnob>& knobs = qualityKnobs();
+    std::vector<std::string> layouts = {"full", "standard"};
+    const std::vector<int> counts = {0, 4, 32};
+    ASSERT_EQ(defaultLightCount(), 0);
+    std::vector<BenchConfig> configs = benchConfigs(knobs, layouts, {{640, 360}, {32, 18}}, false, counts);
+    std::vector<BenchConfig> plain = benchConfigs(knobs, layouts, {{640, 360}, {32, 18}}, false);
+    const size_t perSetting = layouts.size() + 1;
+    ASSERT_EQ(configs.size(), plain.size() + 2 * 2 * perSetting);
+    const size_t perSize = plain.size() / 2 + 2 * perSetting;
+    for (size_t i = 0; i < configs.size(); ++i) {
+        const BenchConfig& c = configs[i];
+        size_t inSize = i % perSize;
+        int expectedLights = inSize < plain.size() / 2 ? 0 : counts[1 + (inSize - plain.size() / 2) / perSetting];
+        EXPECT_EQ(c.lights, expectedLights) << i;
+        EXPECT_EQ(c.width, i < perSize ? 640 : 32) << i;
+        if (c.lights != defaultLightCount()) {
+            EXPECT_EQ(c.variedKnob, -1) << "knobs are varied at the default light count only";
+            EXPECT_EQ(c.levels, defaultLevels(knobs));
+            EXPECT_EQ(c.variation(knobs), "lights=" + std::to_string(c.lights));
+        }
+    }
+    // The first configuration at 4 lights: deferred with each layout, then forward.
+    const size_t first4 = plain.size() / 2;
+    EXPECT_EQ(configs[first4].layout, "full");
+    EXPECT_EQ(configs[first4 + 1].layout, "standard");
+    EXPECT_EQ(configs[first4 + 2].pipeline, PipelineKind::Forward);
+    EXPECT_EQ(configs[0].variation(knobs), "default");
+
+    std::vector<BenchConfig> quick = benchConfigs(knobs, layouts, {{320, 180}}, true, quickLightCounts());
+    EXPECT_EQ(quick.back().lights, benchLightCounts().back());
+    EXPECT_EQ(quick.back().pipeline, PipelineKind::Forward);
 }
 
 TEST(Pareto, DominatedPointsAreOff) {
@@ -129,6 +183,27 @@ BenchResult sampleResult(PipelineKind pipeline, const std::string& layout, int w
     return r;
 }
 
+// Only configurations with the same light count share a frontier: a cheap frame with no lights
+// must not push a frame with many lights off its own.
+TEST(Pareto, MarkedPerLightCount) {
+    std::vector<BenchResult> results = {
+        sampleResult(PipelineKind::Forward, kNoLayout, 100, 10, 1.0),
+        sampleResult(PipelineKind::Deferred, "standard", 100, 12, 1.1),
+        sampleResult(PipelineKind::Forward, kNoLayout, 100, 200, 1.0),    // 32 lights: dearer, still on its own
+        sampleResult(PipelineKind::Deferred, "standard", 100, 30, 1.5),   // 32 lights
+        sampleResult(PipelineKind::Deferred, "full", 100, 40, 1.6),       // 32 lights: beaten by standard
+    };
+    for (size_t i = 2; i < results.size(); ++i) results[i].config.lights = 32;
+    markParetoFrontiers(results);
+    auto marks = [&](bool BenchResult::*flag) {
+        std::vector<bool> marked;
+        for (const BenchResult& r : results) marked.push_back(r.*flag);
+        return marked;
+    };
+    EXPECT_EQ(marks(&BenchResult::pareto), (std::vector<bool>{true, false, true, true, false}));
+    EXPECT_EQ(marks(&BenchResult::paretoInPipeline), (std::vector<bool>{true, true, true, true, false}));
+}
+
 TEST(Pareto, MarkedPerSizeAndPerPipeline) {
     std::vector<BenchResult> results = {
         sampleResult(PipelineKind::Forward, kNoLayout, 100, 10, 1.0),
@@ -156,6 +231,7 @@ TEST(BenchFormat, CsvRowMatchesTheHeader) {
     r.bytesPerPixel = 56;
     r.passesMs = {{"ClearPass.gbuffer", 1.5}, {"LightingPass", 20.25}};
     r.pareto = true;
+    r.config.lights = 32;
     std::vector<std::string> header = splitCsv(benchCsvHeader()), row = splitCsv(benchCsvRow(r));
     ASSERT_EQ(header.size(), row.size());
     auto field = [&](const std::string& name) {
@@ -172,6 +248,7 @@ TEST(BenchFormat, CsvRowMatchesTheHeader) {
     EXPECT_EQ(field("bytes_per_pixel"), "56");
     EXPECT_EQ(field("pareto"), "true");
     EXPECT_EQ(field("knobs"), r.knobSettings);
+    EXPECT_EQ(field("lights"), "32");
     EXPECT_EQ(field("passes_ms"), "ClearPass.gbuffer=1.500;LightingPass=20.250");
 }
 
@@ -180,11 +257,12 @@ TEST(BenchFormat, JsonHasTheRequiredKeys) {
     r.floorMs = 4.0;
     r.psnrDb = 100.0;
     r.passesMs = {{"ToneMapPass", 1.25}};
+    r.config.lights = 4;
     std::string json = benchConfigJson(r);
     for (const char* key : {"\"pipeline\": \"forward\"", "\"layout\": \"none\"", "\"width\": 640", "\"height\": 320",
                             "\"ms_median\": 20.0000", "\"floor_ratio\": 5.0000", "\"psnr_db\": 100.0000",
                             "\"bytes_per_pixel\": ", "\"ssim\": ", "\"rmse\": ", "\"max_abs\": ",
-                            "\"passes_ms\": {\"ToneMapPass\": 1.2500}", "\"pareto\": false"})
+                            "\"passes_ms\": {\"ToneMapPass\": 1.2500}", "\"pareto\": false", "\"lights\": 4"})
         EXPECT_NE(json.find(key), std::string::npos) << key << " in " << json;
     EXPECT_EQ(json.front(), '{');
     EXPECT_EQ(json.back(), '}');

@@ -436,7 +436,8 @@ TEST(Cli, BenchOptions) {
     EXPECT_FALSE(parse({"bench"}).options.quick);
     EXPECT_NE(usage(Command::Bench).find("usage: oasis bench"), std::string::npos);
     // What the bench sets itself is refused, naming the option; --quick belongs to bench alone.
-    for (const char* flag : {"--size", "--time", "--camera", "--gbuffer", "--reflections", "--vegetation-density"}) {
+    for (const char* flag :
+         {"--size", "--time", "--camera", "--gbuffer", "--reflections", "--vegetation-density", "--lights"}) {
         ParseResult refused = parse({"bench", flag, "1"});
         EXPECT_FALSE(refused.ok) << flag;
         EXPECT_NE(refused.error.find(flag), std::string::npos) << refused.error;
