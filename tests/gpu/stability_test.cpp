@@ -5,6 +5,7 @@
 // most (4096). In each: no NaN/Inf in any buffer, every surface normal unit length within 1e-3,
 // forward and deferred agree (>= 45 dB, the standard layout's threshold), the frame has content;
 // some cases check what they are about on top (the camera under the water, the sun down, ...).
+// The compact layout runs every case too (CompactLayoutFiniteAndAgrees).
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -218,6 +219,40 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
         hard.check(CaseFrame{renderer.lastFrame(), hard.width, hard.height, position, info, stencil, forward,
                              deferred, renderer.lightsDrawn()});
     }
+}
+
+// The same cases with the compact layout: positions reconstructed from the depth copy and
+// octahedral normals stay finite and unit, and deferred still agrees with forward.
+TEST_P(Stability, CompactLayoutFiniteAndAgrees) {
+    const HardCase& hard = GetParam();
+    Renderer renderer(*shaders_, hard.scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    const GBufferLayout& compact = layoutNamed("compact");
+    renderer.configure(hard.width, hard.height, compact);
+    Image forward = renderFinal(renderer, hard.scene, PipelineKind::Forward);
+    Image deferred = renderFinal(renderer, hard.scene, PipelineKind::Deferred);
+    for (Target target : {Target::Albedo, Target::Normal, Target::Info, Target::Radiance, Target::Reflection,
+                          Target::Final})
+        EXPECT_EQ(countNonFinite(renderer.readTarget(target)), 0) << "deferred " << targetName(target);
+    const std::vector<float> positions = renderer.readSurfacePositions();
+    EXPECT_EQ(countNonFinite(positions), 0) << "reconstructed positions";
+    const std::vector<float> normal = renderer.readTarget(Target::Normal);
+    const std::vector<float> info = renderer.readTarget(Target::Info);
+    int surfaces = 0, notUnit = 0;
+    for (int y = 0; y < hard.height; ++y)
+        for (int x = 0; x < hard.width; ++x) {
+            if (compact.storedFlags(texel(info, hard.width, x, y)) & kSurfaceSky) continue;
+            ++surfaces;
+            glm::vec3 n = compact.storedNormal(texel(normal, hard.width, x, y));
+            notUnit += !(std::fabs(glm::length(glm::dvec3(n)) - 1.0) <= 1e-3);  // NaN counts
+        }
+    ImageDifference difference = compareImages(forward, deferred);
+    std::printf("[stability] %s compact: %d surface pixels, forward vs deferred %.2f dB\n", hard.name.c_str(), surfaces,
+                difference.psnrDb);
+    EXPECT_GT(surfaces, 0);
+    EXPECT_EQ(notUnit, 0);
+    EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";
+    EXPECT_TRUE(hasContent(deferred));
 }
 
 INSTANTIATE_TEST_SUITE_P(HardCases, Stability, ::testing::ValuesIn(hardCases()),
