@@ -1,15 +1,24 @@
-// A depth-only blit between two D24S8 textures of the same size (GL 3.0: every tier has it).
+// A full-screen draw that writes each pixel's depth from the G-buffer's depth texture.
 #include "passes/depth_copy_pass.h"
+
+#include "render/texture_units.h"
 
 namespace oasis {
 
 void DepthCopyPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.gbufferFramebuffer());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targets.sceneDepthFramebuffer());
-    glBlitFramebuffer(0, 0, targets.width(), targets.height(), 0, 0, targets.width(), targets.height(),
-                      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.sceneDepthFramebuffer());
+    glViewport(0, 0, targets.width(), targets.height());
+    glActiveTexture(GL_TEXTURE0 + kUnitDepth);
+    glBindTexture(GL_TEXTURE_2D, targets.texture(Target::DepthStencil));
+    glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_STENCIL_TEST);
+    glUseProgram(context.shaders.program("depth.copy"));
+    context.geometry.drawFullscreenTriangle();
+    glDisable(GL_DEPTH_TEST);
 }
 
 }  // namespace oasis

@@ -1,5 +1,5 @@
 // DepthCopyPass: in layouts that reconstruct position from depth (compact), copies the G-buffer's
-// depth into the SceneDepth target before the passes that read it. They draw into framebuffers
+// depth into the SceneDepth target (a full-screen draw) before the passes that read it. They draw into framebuffers
 // with the depth-stencil target attached (stencil tests, the light volumes' depth test), so
 // sampling that same texture would be a feedback loop: undefined in GL, and visibly wrong on
 // zink at 1280x720. Mirrored, it copies the mirrored scene's depth for the reflection's lighting;

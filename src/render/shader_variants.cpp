@@ -39,6 +39,7 @@ std::vector<ProgramVariant> buildVariants() {
         {"present", "fullscreen.vert", "debug_view.frag", {"VIEW_COLOUR"}},
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
         {"gbuffer.positions", "fullscreen.vert", "gbuffer_positions.frag", {}},
+        {"depth.copy", "fullscreen.vert", "depth_copy.frag", {}},
         {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
         {"floor.read", "fullscreen.vert", "floor.frag", {"FLOOR_READ"}},
         {"plant.atlas", "plant_atlas.vert", "plant_atlas.frag", {}},
