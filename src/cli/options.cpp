@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "debug/debug_views.h"
+#include "render/depth_convention.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {
@@ -47,8 +48,11 @@ const char* kSceneOptionsHelp =
     "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
     "                            where the context has SSBOs, else ubo)\n"
     "  --force LIST              switch capabilities off even where the driver has them, to reproduce\n"
-    "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,gl33\n"
-    "                            (gl33: an OpenGL 3.3 core context); each fallback is reported once\n"
+    "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,\n"
+    "                            no-clip-control,gl33 (gl33: an OpenGL 3.3 core context; no-clip-control:\n"
+    "                            reversed-z depth falls back to standard); each fallback is reported once\n"
+    "  --depth CONVENTION        depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
+    "                            near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard)\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -121,7 +125,7 @@ std::string usage(Command command) {
                    "  --quick                   one frame at 320x180, each knob's cheapest level, 3 timed frames\n"
                    "  --json                    print the JSON to stdout (the table goes to stderr)\n"
                    "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"
-                   "  the bench sets --size, --time, --camera, --gbuffer and the knobs itself; other scene\n"
+                   "  the bench sets --size, --time, --camera, --gbuffer, --depth and the knobs itself; other scene\n"
                    "  options (e.g. --hour, --ripples) set the scene every configuration starts from\n" + scene;
         case Command::Window:
             return "usage: oasis window [scene options]\n"
@@ -166,7 +170,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
-            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force"};
+            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
+            "--depth"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (flag == "--json" && options.command == Command::Caps) { options.json = true; continue; }
@@ -182,10 +187,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (flag == "--passes" && options.command == Command::Bench)
             return fail("option --passes belongs to `oasis compare` (bench always times each pass)");
         static const std::vector<std::string> kSetByBench = {"--size", "--time", "--camera", "--gbuffer", "--reflections",
-                                                             "--vegetation", "--vegetation-density"};
+                                                             "--vegetation", "--vegetation-density", "--depth"};
         if (options.command == Command::Bench &&
             std::find(kSetByBench.begin(), kSetByBench.end(), flag) != kSetByBench.end())
-            return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts and knobs)");
+            return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts, depth conventions and knobs)");
         if (flag == "--json") { options.json = true; continue; }
         if (flag == "--passes") { options.passTimes = true; continue; }
         if (flag == "--no-compute") { options.scene.noCompute = true; continue; }
@@ -249,6 +254,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!findGBufferLayout(value))
                 return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");
             options.scene.gbuffer = value;
+        } else if (flag == "--depth") {
+            if (!findDepthConvention(value))
+                return fail("--depth: unknown convention '" + value + "' (one of: " + depthConventionNames() + ")");
+            options.scene.depth = value;
         } else if (flag == "--pipeline") {
             if (!parsePipelineKind(value, options.pipeline))
                 return fail("--pipeline expects forward or deferred, got '" + value + "'");
