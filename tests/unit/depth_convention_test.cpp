@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "cli/options.h"
 #include "render/depth_convention.h"
 #include "render/frame_setup.h"
 
@@ -116,6 +117,41 @@ TEST(FrustumPlanes, SameFrustumUnderEitherMapping) {
         EXPECT_EQ(inside(standard, p), inside(reversed, p)) << distance;
         EXPECT_EQ(inside(reversed, p), distance > 0.25f && distance < 6000.0f) << distance;
     }
+}
+
+TEST(DepthOption, ParsedCheckedAndLeftToTheBench) {
+    ParseResult ok = parseCommandLine({"render", "--depth", "reversed-z"});
+    ASSERT_TRUE(ok.ok) << ok.error;
+    EXPECT_EQ(ok.options.scene.depth, "reversed-z");
+    EXPECT_EQ(parseCommandLine({"render"}).options.scene.depth, "standard");
+    ParseResult bad = parseCommandLine({"render", "--depth", "nonsense"});
+    EXPECT_FALSE(bad.ok);
+    EXPECT_EQ(bad.error, "--depth: unknown convention 'nonsense' (one of: standard, reversed-z)");
+    EXPECT_FALSE(parseCommandLine({"bench", "--depth", "reversed-z"}).ok) << "the bench compares them itself";
+    ParseResult forced = parseCommandLine({"caps", "--force", "no-clip-control"});
+    ASSERT_TRUE(forced.ok) << forced.error;
+    EXPECT_TRUE(forced.options.scene.force.noClipControl);
+    EXPECT_EQ(forced.options.scene.force.list(), "no-clip-control");
+    EXPECT_NE(usage(Command::Render).find("--depth"), std::string::npos);
+}
+
+TEST(DepthOption, ClipControlFromVersionOrExtension) {
+    gl::Capabilities caps;
+    caps.major = 3;
+    caps.minor = 3;
+    std::string why;
+    EXPECT_FALSE(caps.clipControlAvailable(&why));
+    EXPECT_EQ(why, "no GL 4.5 / GL_ARB_clip_control");
+    caps.extensions.insert("GL_ARB_clip_control");
+    EXPECT_TRUE(caps.clipControlAvailable(&why));
+    caps.major = 4;
+    caps.minor = 5;
+    caps.extensions.clear();
+    EXPECT_TRUE(caps.clipControlAvailable(&why));
+    EXPECT_EQ(why, "clip control present (GL 4.5)");
+    caps.forced.noClipControl = true;
+    EXPECT_FALSE(caps.clipControlAvailable(&why));
+    EXPECT_EQ(why, "switched off by --force no-clip-control");
 }
 
 }  // namespace
