@@ -19,7 +19,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
 
     // Point lights: what the context offers decides the path and the UBO path's block size (a
     // session replaces the availability with its --force-aware report: setSsboAvailable).
-    ssboAvailable_ = gl::measureCapabilities().ssboAvailable(&ssboMissingReason_);
+    const gl::Capabilities caps = gl::measureCapabilities();
+    ssboAvailable_ = caps.ssboAvailable(&ssboMissingReason_);
     GLint maxBlockSize = 16384, maxVertexBlocks = 12, maxFragmentBlocks = 12;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
     glGetIntegerv(GL_MAX_VERTEX_UNIFORM_BLOCKS, &maxVertexBlocks);
@@ -36,7 +37,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
-    clipControlAvailable_ = gl::measureCapabilities().clipControlAvailable(&clipControlReason_);
+    // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
+    clipControlAvailable_ = caps.clipControlAvailable(&clipControlReason_);
     setDepthConvention(standardDepthConvention());
 }
 
