@@ -1,7 +1,6 @@
 #!/bin/sh
 # CI smoke test of `oasis bench --quick`: exits 0, prints JSON whose `configs` each carry the
-# required keys, at least one configuration on the Pareto frontier, and writes non-empty CSV and SVG;
-# the depth-precision list and its CSV agree.
+# required keys, at least one configuration on the Pareto frontier, and writes non-empty CSV and SVG.
 # usage: bench_smoke.sh OASIS OUT_DIR
 set -eu
 oasis=$1 out=$2
@@ -24,6 +23,7 @@ grep -q '"pareto": true' "$json" || { echo "no configuration on the Pareto front
 grep -q '"ms_median": [0-9]' "$json" || { echo "ms_median is not a number"; exit 1; }
 test "$(wc -l < "$out/bench.csv")" -eq $((configs + 1)) || { echo "CSV rows do not match configs"; exit 1; }
 grep -q '<polyline class="pareto"' "$out/bench.svg" || { echo "SVG has no frontier"; exit 1; }
+# The depth-precision comparison: its JSON list and its CSV agree.
 grep -q '"depth_precision": \[' "$json" || { echo "no depth_precision list"; exit 1; }
 test "$(grep -c '^ *{"depth": ' "$json")" -eq $(($(wc -l < "$out/depth_precision.csv") - 1)) ||
     { echo "depth_precision.csv rows do not match the JSON list"; exit 1; }

@@ -52,7 +52,8 @@ const char* kSceneOptionsHelp =
     "                            no-clip-control,gl33 (gl33: an OpenGL 3.3 core context; no-clip-control:\n"
     "                            reversed-z depth falls back to standard); each fallback is reported once\n"
     "  --depth CONVENTION        depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
-    "                            near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard)\n"
+    "                            near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard;\n"
+    "                            `oasis bench` times and compares both itself)\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -125,7 +126,7 @@ std::string usage(Command command) {
                    "  --quick                   one frame at 320x180, each knob's cheapest level, 3 timed frames\n"
                    "  --json                    print the JSON to stdout (the table goes to stderr)\n"
                    "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"
-                   "  the bench sets --size, --time, --camera, --gbuffer, --depth and the knobs itself; other scene\n"
+                   "  the bench sets --size, --time, --camera, --gbuffer and the knobs itself; other scene\n"
                    "  options (e.g. --hour, --ripples) set the scene every configuration starts from\n" + scene;
         case Command::Window:
             return "usage: oasis window [scene options]\n"
@@ -184,13 +185,15 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.quick = true;
             continue;
         }
+        if (flag == "--depth" && options.command == Command::Bench)
+            return fail("option --depth is set by `oasis bench` itself (it times and compares the depth conventions)");
         if (flag == "--passes" && options.command == Command::Bench)
             return fail("option --passes belongs to `oasis compare` (bench always times each pass)");
         static const std::vector<std::string> kSetByBench = {"--size", "--time", "--camera", "--gbuffer", "--reflections",
-                                                             "--vegetation", "--vegetation-density", "--depth"};
+                                                             "--vegetation", "--vegetation-density"};
         if (options.command == Command::Bench &&
             std::find(kSetByBench.begin(), kSetByBench.end(), flag) != kSetByBench.end())
-            return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts, depth conventions and knobs)");
+            return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts and knobs)");
         if (flag == "--json") { options.json = true; continue; }
         if (flag == "--passes") { options.passTimes = true; continue; }
         if (flag == "--no-compute") { options.scene.noCompute = true; continue; }

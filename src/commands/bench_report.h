@@ -38,12 +38,13 @@ struct BenchConfig {
     int width = 0, height = 0;
     std::vector<int> levels;  // one level index per knob of `knobs`
     int variedKnob = -1;      // the knob set away from its default, -1 for every knob at its default
-    std::string depth = "standard";  // a depthConventions() name (commands/bench_depth.h adds reversed-z)
 
     // "default" or e.g. "grid=coarse": what this configuration changes.
     std::string variation(const std::vector<QualityKnob>& knobs) const;
     // Every knob's level, e.g. "grid=medium octaves=7 vegetation=1 reflections=on".
     std::string knobSettings(const std::vector<QualityKnob>& knobs) const;
+
+    std::string depth = "standard";  // a depthConventions() name (commands/bench_depth.h adds reversed-z)
 };
 
 // Every knob at its highest level: the reference's settings.
