@@ -194,15 +194,6 @@ std::string tableText(const std::vector<BenchResult>& results) {
     return text;
 }
 
-// The depth-precision comparison's JSON fields: what was measured, then the `depth_precision` list.
-std::string depthPrecisionJsonField(const std::vector<DepthPrecision>& rows) {
-    return "\"depth_precision_note\": \"deferred, full layout (float camera-relative positions: the truth), "
-           "default knobs, the first size's frames: positions reconstructed on the CPU from the depth target as "
-           "common/depth.glsl does (in float), |reconstructed - stored| over terrain and plant pixels, absolute "
-           "(world units) and relative to the distance; bands by distance from the camera [from, to)\", "
-           "\"depth_precision\": " + depthPrecisionJson(rows);
-}
-
 std::string benchJson(const std::vector<BenchResult>& results, const std::vector<Floor>& floors,
                       const std::vector<BenchFrame>& frames, const BenchPlan& plan, const Options& options,
                       const std::string& renderer, const std::string& referenceLayout,
@@ -241,7 +232,7 @@ std::string benchJson(const std::vector<BenchResult>& results, const std::vector
                 ", \"floor_ms\": " + jsonNumber(floors[i].ms) + "}";
     json += "], \"configs\": [\n";
     for (size_t i = 0; i < results.size(); ++i) json += (i ? ",\n  " : "  ") + benchConfigJson(results[i]);
-    return json + "\n], " + depthPrecisionJsonField(depthPrecision) + "}\n";
+    return json + "\n], " + depthPrecisionJsonFields(depthPrecision) + "}\n";
 }
 
 std::string benchSvg(const std::vector<BenchResult>& results, const std::string& renderer) {
@@ -331,6 +322,10 @@ int runBenchCommand(const Options& options) {
         for (const GBufferLayout& layout : gbufferLayouts())
             if (layout.name != reference.name) layouts.push_back(layout.name);
         std::vector<BenchConfig> configs = benchConfigs(knobs, layouts, plan.sizes, plan.cheapestOnly);
+        // The fixed frames: poses on the default flight over the default terrain, so every
+        // configuration (whatever its terrain octaves) looks from the same place.
+        std::vector<BenchFrame> frames;
+        for (double time : plan.frameTimes) frames.push_back({time, defaultCameraPath(TerrainShape{}, time)});
         // Reversed-z beside the default layout's deferred configurations, where the context can draw it.
         std::vector<std::string> extraDepths;
         std::string clipControlWhy;
@@ -340,10 +335,6 @@ int runBenchCommand(const Options& options) {
         if (extraDepths.empty())
             std::fprintf(stderr, "oasis bench: no reversed-z configurations (%s)\n", clipControlWhy.c_str());
         insertDepthConfigs(configs, defaultGBufferLayout().name, extraDepths);
-        // The fixed frames: poses on the default flight over the default terrain, so every
-        // configuration (whatever its terrain octaves) looks from the same place.
-        std::vector<BenchFrame> frames;
-        for (double time : plan.frameTimes) frames.push_back({time, defaultCameraPath(TerrainShape{}, time)});
         std::string outDir = options.outDirGiven ? options.outDir : "oasis-out/bench";
         std::filesystem::create_directories(outDir);
 

@@ -139,6 +139,14 @@ std::string depthPrecisionJson(const std::vector<DepthPrecision>& rows) {
     return json + "\n]";
 }
 
+std::string depthPrecisionJsonFields(const std::vector<DepthPrecision>& rows) {
+    return "\"depth_precision_note\": \"deferred, full layout (float camera-relative positions: the truth), "
+           "default knobs, the first size's frames: positions reconstructed on the CPU from the depth target as "
+           "common/depth.glsl does (in float), |reconstructed - stored| over terrain and plant pixels, absolute "
+           "(world units) and relative to the distance; bands by distance from the camera [from, to)\", "
+           "\"depth_precision\": " + depthPrecisionJson(rows);
+}
+
 std::string depthPrecisionCsv(const std::vector<DepthPrecision>& rows) {
     std::string csv = "depth,band,from,to,pixels,median_abs,max_abs,median_relative,max_relative\n";
     for (const DepthPrecision& r : rows)

@@ -45,6 +45,8 @@ std::vector<DepthPrecision> measureDepthPrecision(Renderer& renderer, const std:
 
 std::string depthPrecisionTable(const std::vector<DepthPrecision>& rows);
 std::string depthPrecisionJson(const std::vector<DepthPrecision>& rows);  // a JSON list
+// bench.json's fields: "depth_precision_note" (what was measured) and "depth_precision" (the list).
+std::string depthPrecisionJsonFields(const std::vector<DepthPrecision>& rows);
 std::string depthPrecisionCsv(const std::vector<DepthPrecision>& rows);   // header and rows
 
 }  // namespace oasis
