@@ -21,7 +21,7 @@ void ClearPass::execute(PassContext& context) {
     } else {
         glClearBufferfv(GL_COLOR, 0, nothing);
     }
-    glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, kStencilNothing);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, context.targets.depth().farPlaneWindowDepth, kStencilNothing);
 }
 
 }  // namespace oasis

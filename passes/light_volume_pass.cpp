@@ -1,5 +1,5 @@
-// Stencil light volumes. Marking: both faces drawn with depth test LESS and no writes but the
-// stencil bit, INVERT on depth fail. A surface inside the volume is in front of its back face
+// Stencil light volumes. Marking: both faces drawn with depth test LESS (GREATER with reversed
+// depth: in front of the surface, either way) and no writes but the stencil bit, INVERT on depth fail. A surface inside the volume is in front of its back face
 // (one toggle) and behind its front face (none); in front of both is two toggles, behind both
 // none. With the camera inside, or the front face cut by the near plane, the back face alone
 // toggles, so there are no holes; depth clamping keeps back faces beyond the far plane. Shading:
@@ -12,11 +12,9 @@ namespace oasis {
 namespace {
 
 // Whether a sphere (camera-relative centre) can touch the view frustum: the six clip planes of
-// viewProjection (Gribb and Hartmann), normalised; a sphere wholly outside one plane is skipped.
-bool sphereInFrustum(const glm::mat4& viewProjection, glm::vec3 centre, float radius) {
-    glm::mat4 m = glm::transpose(viewProjection);  // rows of viewProjection as columns
-    const glm::vec4 planes[6] = {m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[3] + m[2], m[3] - m[2]};
-    for (const glm::vec4& plane : planes) {
+// the frame's view (scene/camera.h), normalised; a sphere wholly outside one plane is skipped.
+bool sphereInFrustum(const glm::mat4& viewProjection, DepthMapping mapping, glm::vec3 centre, float radius) {
+    for (const glm::vec4& plane : frustumPlanes(viewProjection, mapping)) {
         float length = glm::length(glm::vec3(plane));
         if (glm::dot(glm::vec3(plane), centre) + plane.w < -radius * length) return false;
     }
@@ -51,14 +49,14 @@ void LightVolumePass::execute(PassContext& context) {
         glm::vec4 sphere = context.frame.lights[size_t(i)].positionRadius;
         if (mirrored) sphere.y = 2.0f * (frame.water.x - frame.cameraPosition.y) - sphere.y;  // as light_volume.vert
         // Wholly outside one of the frustum's planes: no surface in view lies inside the sphere.
-        if (!sphereInFrustum(frame.viewProjection, glm::vec3(sphere), sphere.w * 1.01f)) continue;
+        if (!sphereInFrustum(frame.viewProjection, context.frame.view.depthMapping, glm::vec3(sphere), sphere.w * 1.01f)) continue;
         // 1. Mark: no colour, both faces, invert the bit where the depth test fails.
         glUseProgram(mark);
         glUniform1i(markIndex, i);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glDisable(GL_CULL_FACE);
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(targets.depth().nearerFunc);
         glStencilFunc(GL_EQUAL, surfaceRef, surfaceMask);
         glStencilOp(GL_KEEP, GL_INVERT, GL_KEEP);
         context.geometry.drawBoundLightVolume();
@@ -79,7 +77,7 @@ void LightVolumePass::execute(PassContext& context) {
     glCullFace(GL_BACK);
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(targets.depth().nearerFunc);
     glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);

@@ -46,7 +46,7 @@ bool SurfacePass::active(const FrameSetup& frame) const { return mirroredPassAct
 void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const {
     bindSurfaceOutput(context.targets, output_, mirroring_);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(context.targets.depth().nearerFunc);
     glDepthMask(GL_TRUE);
     if (mirroring_ == Mirroring::Direct) {
         glEnable(GL_STENCIL_TEST);

@@ -1,5 +1,5 @@
-// The sky is a full-screen triangle at the far plane: depth test LEQUAL against the cleared
-// depth of 1 keeps it only where nothing was drawn; it writes no depth and no stencil.
+// The sky is a full-screen triangle at the far plane: depth test LEQUAL (GEQUAL reversed) against
+// the cleared far-plane depth keeps it only where nothing was drawn; it writes no depth and no stencil.
 #include "passes/sky_pass.h"
 
 namespace oasis {
@@ -7,7 +7,7 @@ namespace oasis {
 void SkyPass::execute(PassContext& context) {
     bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
+    glDepthFunc(context.targets.depth().nearerOrEqualFunc);
     glDepthMask(GL_FALSE);
     beginMirroredDraw(mirroring_);
     glUseProgram(context.shaders.program(variantName("sky", SurfaceOutput::Forward, mirroring_)));

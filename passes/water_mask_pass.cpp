@@ -10,7 +10,7 @@ void WaterMaskPass::execute(PassContext& context) {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
-    glDepthFunc(GL_LESS);
+    glDepthFunc(context.targets.depth().nearerFunc);
     glDepthMask(GL_TRUE);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);

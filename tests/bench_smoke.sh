@@ -26,5 +26,9 @@ test "$counts" -ge 2 || { echo "expected configurations at two light counts at l
 grep -q '"ms_median": [0-9]' "$json" || { echo "ms_median is not a number"; exit 1; }
 test "$(wc -l < "$out/bench.csv")" -eq $((configs + 1)) || { echo "CSV rows do not match configs"; exit 1; }
 grep -q '<polyline class="pareto"' "$out/bench.svg" || { echo "SVG has no frontier"; exit 1; }
+# The depth-precision comparison: its JSON list and its CSV agree.
+grep -q '"depth_precision": \[' "$json" || { echo "no depth_precision list"; exit 1; }
+test "$(grep -c '^ *{"depth": ' "$json")" -eq $(($(wc -l < "$out/depth_precision.csv") - 1)) ||
+    { echo "depth_precision.csv rows do not match the JSON list"; exit 1; }
 grep -q '^\[[0-9]*/[0-9]*\] ' "$out/stderr.txt" || { echo "no progress lines on stderr"; exit 1; }
 echo "bench smoke: $configs configs OK"

@@ -19,7 +19,8 @@ struct FrameData {
     vec4 terrainGridCounts;      // x rings, y segments, z fog start, w fog end
     vec4 depthRange;             // x near, y far, z time (s), w exposure
     vec4 depthConvention;        // x 1 when depth is reversed (near 1, far 0), y NDC z of the near plane,
-                                 // z window depth of the far plane; w unused. See common/depth.glsl.
+                                 // z window depth of the far plane; w NDC z of the far plane (the
+                                 // sky's full-screen draw). See common/depth.glsl.
     vec4 water;                  // x level (world y), y absorption per unit, z ripple strength, w flags
     vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
     vec4 vegetation;             // x wind strength, y flutter phase (rad), zw unused

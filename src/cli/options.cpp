@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "debug/debug_views.h"
+#include "render/depth_convention.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {
@@ -47,8 +48,12 @@ const char* kSceneOptionsHelp =
     "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
     "                            where the context has SSBOs, else ubo)\n"
     "  --force LIST              switch capabilities off even where the driver has them, to reproduce\n"
-    "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,gl33\n"
-    "                            (gl33: an OpenGL 3.3 core context); each fallback is reported once\n"
+    "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,\n"
+    "                            no-clip-control,gl33 (gl33: an OpenGL 3.3 core context; no-clip-control:\n"
+    "                            reversed-z depth falls back to standard); each fallback is reported once\n"
+    "  --depth CONVENTION        depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
+    "                            near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard;\n"
+    "                            `oasis bench` times and compares both itself)\n"
     "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
@@ -169,7 +174,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
-            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force"};
+            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
+            "--depth"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (flag == "--json" && options.command == Command::Caps) { options.json = true; continue; }
@@ -182,6 +188,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.quick = true;
             continue;
         }
+        if (flag == "--depth" && options.command == Command::Bench)
+            return fail("option --depth is set by `oasis bench` itself (it times and compares the depth conventions)");
         if (flag == "--passes" && options.command == Command::Bench)
             return fail("option --passes belongs to `oasis compare` (bench always times each pass)");
         static const std::vector<std::string> kSetByBench = {"--size", "--time", "--camera", "--gbuffer", "--reflections",
@@ -252,6 +260,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!findGBufferLayout(value))
                 return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");
             options.scene.gbuffer = value;
+        } else if (flag == "--depth") {
+            if (!findDepthConvention(value))
+                return fail("--depth: unknown convention '" + value + "' (one of: " + depthConventionNames() + ")");
+            options.scene.depth = value;
         } else if (flag == "--pipeline") {
             if (!parsePipelineKind(value, options.pipeline))
                 return fail("--pipeline expects forward or deferred, got '" + value + "'");

@@ -20,6 +20,7 @@ struct SceneOptions {
     std::optional<double> hour;
     std::optional<CameraPose> camera;
     std::string gbuffer = "standard";
+    std::string depth = "standard";  // a depthConventions() name; reversed-z falls back without clip control
     WaterSettings water;
     VegetationSettings vegetation;
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "commands/bench_depth.h"
 #include "commands/bench_report.h"
 #include "commands/session.h"
 #include "commands/svg_plot.h"
@@ -111,12 +112,12 @@ BenchResult measureError(Renderer& renderer, const SceneSettings& base, const Be
     result.psnrDb = pooledPsnr(mse);
     result.sameKnobsPsnrDb = sameKnobs ? pooledPsnr(sameKnobsSquared / double(frames.size())) : kPsnrIdentical;
     result.ssim = ssimSum / double(frames.size());
+    const DepthConvention& depth = renderer.targets().depth();
     int sharedBytes = layout.format(Target::Radiance).bytesPerPixel + layout.format(Target::Reflection).bytesPerPixel +
                       layout.format(Target::Final).bytesPerPixel;
     bool deferred = config.pipeline == PipelineKind::Deferred;
-    result.gbufferBytesPerPixel = deferred ? layout.bytesPerPixel() : 0;
-    result.bytesPerPixel = sharedBytes + (deferred ? layout.bytesPerPixel()
-                                                   : layout.format(Target::DepthStencil).bytesPerPixel);
+    result.gbufferBytesPerPixel = deferred ? gbufferBytesPerPixel(layout, depth) : 0;
+    result.bytesPerPixel = sharedBytes + (deferred ? gbufferBytesPerPixel(layout, depth) : depth.depthStencil.bytesPerPixel);
     result.targetMiB = double(result.bytesPerPixel) * config.width * config.height / (1024.0 * 1024.0);
     return result;
 }
@@ -170,18 +171,23 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
 
 std::string sizeName(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
 
+// The layout, and the depth convention where it is not the standard one: "standard+reversed-z".
+std::string layoutLabel(const BenchConfig& config) {
+    return config.depth == standardDepthConvention().name ? config.layout : config.layout + "+" + config.depth;
+}
+
 std::string tableText(const std::vector<BenchResult>& results) {
     std::string text;
     char line[320];
-    std::snprintf(line, sizeof(line), "%-9s %6s %-8s %-8s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %s\n", "size",
+    std::snprintf(line, sizeof(line), "%-9s %6s %-8s %-19s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %s\n", "size",
                   "lights", "pipeline", "layout", "variation", "ms med", "ms min", "ms max", "xfloor", "PSNR dB", "RMSE", "max",
                   "SSIM", "own dB", "B/px", "MiB", "pareto");
     text += line;
     for (const BenchResult& r : results) {
         const BenchConfig& c = r.config;
         const char* pareto = r.pareto ? "yes" : r.paretoInPipeline ? "in pipeline" : "";
-        std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-8s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %s\n",
-                      sizeName(c.width, c.height).c_str(), c.lights, pipelineName(c.pipeline), c.layout.c_str(),
+        std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-19s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %s\n",
+                      sizeName(c.width, c.height).c_str(), c.lights, pipelineName(c.pipeline), layoutLabel(c).c_str(),
                       r.variation.c_str(), r.msMedian, r.msMin, r.msMax, r.floorRatio(), r.psnrDb, r.rmse, r.maxAbs,
                       r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, pareto);
         text += line;
@@ -197,7 +203,8 @@ std::string lightCountsJson(const std::vector<int>& counts) {
 
 std::string benchJson(const std::vector<BenchResult>& results, const std::vector<Floor>& floors,
                       const std::vector<BenchFrame>& frames, const BenchPlan& plan, const Options& options,
-                      const std::string& renderer, const std::string& referenceLayout) {
+                      const std::string& renderer, const std::string& referenceLayout,
+                      const std::vector<DepthPrecision>& depthPrecision) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
     std::string json = "{\"renderer\": " + jsonString(renderer) + ", \"timing\": \"wall clock around glFinish\"" +
                        ", \"timing_note\": " + jsonString(timingNote(renderer)) +
@@ -233,7 +240,7 @@ std::string benchJson(const std::vector<BenchResult>& results, const std::vector
                 ", \"floor_ms\": " + jsonNumber(floors[i].ms) + "}";
     json += "], \"configs\": [\n";
     for (size_t i = 0; i < results.size(); ++i) json += (i ? ",\n  " : "  ") + benchConfigJson(results[i]);
-    return json + "\n]}\n";
+    return json + "\n], " + depthPrecisionJsonFields(depthPrecision) + "}\n";
 }
 
 std::string benchSvg(const std::vector<BenchResult>& results, const std::string& renderer) {
@@ -247,7 +254,7 @@ std::string benchSvg(const std::vector<BenchResult>& results, const std::string&
             panelOf[size] = panels.size();
             panels.push_back({size, {}});
         }
-        std::string label = (r.config.layout == kNoLayout ? std::string() : r.config.layout + " ") + r.variation;
+        std::string label = (r.config.layout == kNoLayout ? std::string() : layoutLabel(r.config) + " ") + r.variation;
         panels[panelOf[size]].points.push_back(
             {r.msMedian, r.rmse, pipelineName(r.config.pipeline), label, r.pareto, r.paretoInPipeline});
     }
@@ -256,6 +263,30 @@ std::string benchSvg(const std::vector<BenchResult>& results, const std::string&
                   "RMSE against the reference (8-bit RGB)",
                   "reference: deferred, full layout, every knob at its highest, the same lights; " + renderer};
     return scatterPlotSvg(panels, text);
+}
+
+// Each depth convention the context can draw, on a renderer of its own with the full layout.
+std::vector<DepthPrecision> compareDepthPrecision(const RenderSession& session, int width, int height,
+                                                  const std::vector<BenchFrame>& frames) {
+    const std::vector<QualityKnob>& knobs = qualityKnobs();
+    std::vector<SceneSettings> scenes;
+    for (const BenchFrame& frame : frames) scenes.push_back(frameScene(session.scene, knobs, defaultLevels(knobs), defaultLightCount(), frame));
+    Renderer renderer(*session.shaders, session.scene);
+    renderer.setPlantAtlas(session.plantAtlas.get());
+    std::string why;
+    renderer.setClipControlAvailable(session.caps.clipControlAvailable(&why), why);
+    std::vector<DepthPrecision> rows;
+    for (const DepthConvention& depth : depthConventions()) {
+        renderer.setDepthConvention(depth);
+        if (renderer.depthFellBack()) {
+            std::fprintf(stderr, "oasis bench: depth precision: %s not measured (%s)\n", depth.name.c_str(),
+                         renderer.depthConventionReason().c_str());
+            continue;
+        }
+        renderer.configure(width, height, *findGBufferLayout("full"));
+        for (DepthPrecision& row : measureDepthPrecision(renderer, scenes, depthBands(session.scene))) rows.push_back(row);
+    }
+    return rows;
 }
 
 bool writeText(const std::string& path, const std::string& text, std::string& error) {
@@ -307,6 +338,15 @@ int runBenchCommand(const Options& options) {
         // configuration (whatever its terrain octaves) looks from the same place.
         std::vector<BenchFrame> frames;
         for (double time : plan.frameTimes) frames.push_back({time, defaultCameraPath(TerrainShape{}, time)});
+        // Reversed-z beside the default layout's deferred configurations, where the context can draw it.
+        std::vector<std::string> extraDepths;
+        std::string clipControlWhy;
+        if (session.caps.clipControlAvailable(&clipControlWhy))
+            for (const DepthConvention& depth : depthConventions())
+                if (depth.name != standardDepthConvention().name) extraDepths.push_back(depth.name);
+        if (extraDepths.empty())
+            std::fprintf(stderr, "oasis bench: no reversed-z configurations (%s)\n", clipControlWhy.c_str());
+        insertDepthConfigs(configs, defaultGBufferLayout().name, extraDepths);
         std::string outDir = options.outDirGiven ? options.outDir : "oasis-out/bench";
         std::filesystem::create_directories(outDir);
 
@@ -317,20 +357,27 @@ int runBenchCommand(const Options& options) {
                      configs.size(), plan.sizes.size(), plan.lightCounts.size(), frames.size(),
                      queryContextInfo().summary().c_str(),
                      timingNote(rendererName).c_str(), describePlantAtlas(session).c_str());
-        // A renderer per layout (the session's for the default one), so that configurations timed
-        // in turn never reallocate targets; forward uses the default layout's.
-        std::map<std::string, Renderer*> renderers;
+        // A renderer per layout and depth convention (the session's for the default layout with
+        // standard depth), so that configurations timed in turn never reallocate targets; forward
+        // uses the default layout's.
+        std::map<std::pair<std::string, std::string>, Renderer*> renderers;  // (layout, depth)
         std::vector<std::unique_ptr<Renderer>> extraRenderers;
-        for (const GBufferLayout& layout : gbufferLayouts()) {
-            if (layout.name == defaultGBufferLayout().name) {
-                renderers[layout.name] = &renderer;
-                continue;
-            }
+        auto addRenderer = [&](const std::string& layout, const std::string& depth) {
             extraRenderers.push_back(std::make_unique<Renderer>(*session.shaders, session.scene));
             extraRenderers.back()->setPlantAtlas(session.plantAtlas.get());
             extraRenderers.back()->setStencilViewPath(renderer.stencilViewPath());
-            renderers[layout.name] = extraRenderers.back().get();
+            extraRenderers.back()->setClipControlAvailable(true, clipControlWhy);
+            extraRenderers.back()->setDepthConvention(*findDepthConvention(depth));
+            renderers[{layout, depth}] = extraRenderers.back().get();
+        };
+        const std::string standardDepth = standardDepthConvention().name;
+        for (const GBufferLayout& layout : gbufferLayouts()) {
+            if (layout.name == defaultGBufferLayout().name)
+                renderers[{layout.name, standardDepth}] = &renderer;
+            else
+                addRenderer(layout.name, standardDepth);
         }
+        for (const std::string& depth : extraDepths) addRenderer(defaultGBufferLayout().name, depth);
         Clock::time_point runStart = Clock::now();
         std::vector<BenchResult> results;
         std::vector<Floor> floors;
@@ -354,8 +401,8 @@ int runBenchCommand(const Options& options) {
                     references.push_back(
                         renderFinalImage(renderer, frameScene(session.scene, knobs, highestLevels(knobs), lights, frame)));
                 std::fprintf(stderr, "oasis bench: %dx%d reference with %d lights rendered\n", width, height, lights);
-                for (auto& [name, layoutRenderer] : renderers)
-                    layoutRenderer->configure(width, height, *findGBufferLayout(name));
+                for (auto& [key, layoutRenderer] : renderers)
+                    layoutRenderer->configure(width, height, *findGBufferLayout(key.first));
                 // One knob setting at a time (its configurations are consecutive): errors, then times.
                 std::vector<BenchConfig> sized;
                 for (const BenchConfig& config : configs)
@@ -370,10 +417,10 @@ int runBenchCommand(const Options& options) {
                     std::vector<Renderer*> groupRenderers;
                     for (size_t i = first; i < end; ++i) {
                         const BenchConfig& config = sized[i];
-                        Renderer& own =
-                            *renderers.at(config.layout == kNoLayout ? defaultGBufferLayout().name : config.layout);
-                        bool isReferenceLayout =
-                            config.pipeline == PipelineKind::Deferred && config.layout == reference.name;
+                        Renderer& own = *renderers.at(
+                            {config.layout == kNoLayout ? defaultGBufferLayout().name : config.layout, config.depth});
+                        bool isReferenceLayout = config.pipeline == PipelineKind::Deferred &&
+                                                 config.layout == reference.name && config.depth == standardDepth;
                         std::vector<Image> images;
                         BenchResult result = measureError(own, session.scene, config, frames, references,
                                                           referenceLayoutImages.empty() ? nullptr : &referenceLayoutImages,
@@ -390,7 +437,7 @@ int runBenchCommand(const Options& options) {
                     for (size_t i = groupStart; i < results.size(); ++i) {
                         const BenchResult& result = results[i];
                         std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", i + 1,
-                                     configs.size(), pipelineName(result.config.pipeline), result.config.layout.c_str(),
+                                     configs.size(), pipelineName(result.config.pipeline), layoutLabel(result.config).c_str(),
                                      width, height, result.variation.c_str(), result.msMedian, result.psnrDb,
                                      elapsedMs(runStart) / 1000.0);
                     }
@@ -399,13 +446,16 @@ int runBenchCommand(const Options& options) {
             }
         }
         markParetoFrontiers(results);
+        std::vector<DepthPrecision> depthPrecision =
+            compareDepthPrecision(session, plan.sizes.front().first, plan.sizes.front().second, frames);
 
         std::string csv = benchCsvHeader() + "\n";
         for (const BenchResult& r : results) csv += benchCsvRow(r) + "\n";
-        std::string json = benchJson(results, floors, frames, plan, options, rendererName, reference.name);
+        std::string json = benchJson(results, floors, frames, plan, options, rendererName, reference.name, depthPrecision);
         std::string error;
         for (const auto& [file, text] : {std::pair<std::string, std::string>{"bench.csv", csv}, {"bench.json", json},
-                                         {"bench.svg", benchSvg(results, rendererName)}})
+                                         {"bench.svg", benchSvg(results, rendererName)},
+                                         {"depth_precision.csv", depthPrecisionCsv(depthPrecision)}})
             if (!writeText(outDir + "/" + file, text, error)) throw std::runtime_error(error);
         std::fputs(tableText(results).c_str(), tableOut);
         for (const Floor& floor : floors)
@@ -418,8 +468,13 @@ int runBenchCommand(const Options& options) {
                                "deferred/%s with the same knobs and lights; pareto: per size and light count "
                                "(\"in pipeline\": only among its pipeline's configurations)\n",
                      defaultGBufferLayout().name.c_str(), reference.name.c_str(), reference.name.c_str());
-        std::fprintf(tableOut, "wrote %s/bench.csv, %s/bench.json, %s/bench.svg in %.0f s\n", outDir.c_str(),
-                     outDir.c_str(), outDir.c_str(), elapsedMs(runStart) / 1000.0);
+        std::fprintf(tableOut, "depth precision at %s (deferred, full layout, default knobs; error of the position "
+                               "reconstructed from depth against the stored float position, world units and relative "
+                               "to distance):\n%s",
+                     sizeName(plan.sizes.front().first, plan.sizes.front().second).c_str(),
+                     depthPrecisionTable(depthPrecision).c_str());
+        std::fprintf(tableOut, "wrote %s/bench.csv, %s/bench.json, %s/bench.svg, %s/depth_precision.csv in %.0f s\n",
+                     outDir.c_str(), outDir.c_str(), outDir.c_str(), outDir.c_str(), elapsedMs(runStart) / 1000.0);
         if (options.json) std::fputs(json.c_str(), stdout);
         return 0;
     } catch (const std::exception& error) {

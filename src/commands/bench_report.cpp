@@ -206,7 +206,7 @@ std::string jsonString(const std::string& text) {
 std::string benchCsvHeader() {
     return "pipeline,layout,width,height,variation,knobs,lights,ms_median,ms_min,ms_max,floor_ms,floor_ratio,"
            "psnr_db,rmse,max_abs,ssim,same_knobs_psnr_db,same_knobs_max_abs,bytes_per_pixel,gbuffer_bytes_per_pixel,target_mib,pareto,"
-           "pareto_in_pipeline,passes_ms";
+           "pareto_in_pipeline,passes_ms,depth";
 }
 
 std::string benchCsvRow(const BenchResult& r) {
@@ -218,7 +218,7 @@ std::string benchCsvRow(const BenchResult& r) {
            format("%.4f", r.rmse) + "," + std::to_string(r.maxAbs) + "," + format("%.5f", r.ssim) + "," + format("%.3f", r.sameKnobsPsnrDb) + "," + std::to_string(r.sameKnobsMaxAbs) + "," +
            std::to_string(r.bytesPerPixel) + "," + std::to_string(r.gbufferBytesPerPixel) + "," +
            format("%.2f", r.targetMiB) + "," + (r.pareto ? "true" : "false") + "," +
-           (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r));
+           (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r)) + "," + csvField(c.depth);
 }
 
 std::string benchConfigJson(const BenchResult& r) {
@@ -237,7 +237,7 @@ std::string benchConfigJson(const BenchResult& r) {
            ", \"gbuffer_bytes_per_pixel\": " + std::to_string(r.gbufferBytesPerPixel) +
            ", \"target_mib\": " + jsonNumber(r.targetMiB, 3) + ", \"passes_ms\": {" + passes + "}" +
            ", \"pareto\": " + (r.pareto ? "true" : "false") +
-           ", \"pareto_in_pipeline\": " + (r.paretoInPipeline ? "true" : "false") + "}";
+           ", \"pareto_in_pipeline\": " + (r.paretoInPipeline ? "true" : "false") + ", \"depth\": " + jsonString(c.depth) + "}";
 }
 
 }  // namespace oasis

@@ -53,6 +53,8 @@ struct BenchConfig {
     std::string variation(const std::vector<QualityKnob>& knobs) const;
     // Every knob's level, e.g. "grid=medium octaves=7 vegetation=1 reflections=on".
     std::string knobSettings(const std::vector<QualityKnob>& knobs) const;
+
+    std::string depth = "standard";  // a depthConventions() name (commands/bench_depth.h adds reversed-z)
 };
 
 // Every knob at its highest level: the reference's settings.

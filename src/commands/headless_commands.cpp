@@ -71,9 +71,11 @@ bool writeImages(const std::string& directory, const std::vector<std::pair<std::
 void printSummary(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
     const FrameSetup& frame = session.renderer->lastFrame();
-    std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel), time %.2f s (%.2f h), on %s\n", targets.width(),
-                targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
-                options.scene.timeSeconds, frame.hour, queryContextInfo().summary().c_str());
+    std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel with its depth), depth %s, time %.2f s (%.2f h), on %s\n",
+                targets.width(), targets.height(), targets.layout().name.c_str(),
+                gbufferBytesPerPixel(targets.layout(), targets.depth()),
+                session.renderer->depthConventionReason().c_str(), options.scene.timeSeconds, frame.hour,
+                queryContextInfo().summary().c_str());
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
     std::printf("  forward  %8.2f ms/frame  (%.2fx floor)\n", c.forwardMs, c.forwardMs / c.floorMs);
@@ -112,12 +114,14 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 plants.plantsPlaced, plants.plantsDrawn, plants.plantsDrawnMirrored);
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
-                targets.width(), targets.height(), targets.layout().name.c_str(), targets.layout().bytesPerPixel(),
-                options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
+                targets.width(), targets.height(), targets.layout().name.c_str(),
+                gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
+                session.renderer->depthConventionReason().c_str(), options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
                 stencilViewPathName(session.renderer->stencilViewPath()), session.shaders->directory().c_str(),
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
                 session.renderer->lightsDrawn(), lightsPathName(session.renderer->lightsPath()),

@@ -38,6 +38,23 @@ StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optiona
     return supported ? StencilViewPath::Texturing : StencilViewPath::ReadBack;
 }
 
+namespace {
+// Clip control serves --depth reversed-z only: without it a standard frame loses nothing, so it is
+// a fallback only where reversed-z was asked for or clip control was switched off by --force.
+gl::FeatureReport clipControlFeature(const gl::Capabilities& caps, const Renderer& renderer) {
+    std::string why;
+    bool available = caps.clipControlAvailable(&why);
+    if (renderer.depthConvention().needsClipControl())
+        return {"clip-control", true, "depth " + renderer.depthConventionReason()};
+    if (renderer.depthFellBack())
+        return {"clip-control", false, "fallback: depth " + renderer.depthConventionReason()};
+    if (caps.forced.noClipControl)
+        return {"clip-control", false, "fallback: " + why + " (--depth reversed-z would draw standard depth)"};
+    return {"clip-control", false, "not used: depth " + renderer.depthConventionReason() +
+                                       (available ? "; " + why + " for --depth reversed-z" : "; the driver has " + why)};
+}
+}  // namespace
+
 MaxGlVersion maxGlVersionFor(const SceneOptions& options) {
     return options.force.gl33 ? MaxGlVersion{3, 3} : MaxGlVersion{};
 }
@@ -56,6 +73,10 @@ RenderSession::RenderSession(const Options& options)
     std::string whyNoSsbo;
     bool ssbo = caps.ssboAvailable(&whyNoSsbo);
     renderer->setSsboAvailable(ssbo, whyNoSsbo, scene.lights.path);
+    std::string clipControlReason;
+    bool clipControl = caps.clipControlAvailable(&clipControlReason);
+    renderer->setClipControlAvailable(clipControl, clipControlReason);
+    renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
     renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
     PlantInterpretation plantPath = choosePlantInterpretation(caps, options.scene.noCompute, plantPathReason);
@@ -93,6 +114,7 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
                     "not used: oasis edits GL objects through glBind* on every context, so no path depends "
                     "on it (driver: " + (caps.driverHasDsa() ? std::string("has it") : "lacks it") +
                     (caps.forced.noDsa ? "; --force no-dsa accepted, nothing changes)" : ")")});
+    list.push_back(clipControlFeature(caps, *renderer));
     bool debug = caps.debugOutputAvailable(&why);
     list.push_back({"debug-output", debug, debug ? "GL errors to stderr and a debug group per pass: " + why
                                                  : "fallback: no debug messages or groups (" + why + ")"});
@@ -102,7 +124,7 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
 std::vector<std::string> RenderSession::fallbacks() const {
     std::vector<std::string> lines;
     for (const gl::FeatureReport& feature : features())
-        if (!feature.used && feature.name != "direct-state-access") {
+        if (!feature.used && feature.reason.compare(0, 9, "not used:") != 0) {
             const std::string prefix = "fallback: ";
             bool prefixed = feature.reason.compare(0, prefix.size(), prefix) == 0;
             lines.push_back(feature.name + ": " + feature.reason.substr(prefixed ? prefix.size() : 0));

@@ -28,6 +28,7 @@ struct WindowState {
     std::string message;  // last reload result or error, shown in the panel
     std::vector<std::string> fallbacks;  // the session's fallbacks (printed once at start-up too)
     size_t layoutIndex = 0;
+    size_t depthIndex = 0;  // into depthConventions(): the one asked for
 };
 
 std::vector<std::string> viewNames() {
@@ -87,6 +88,19 @@ void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
         ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.2f, 1.0f), "WARNING: %d lights dropped", renderer.lightsDropped());
 }
 
+// The depth convention asked for; the one in use and why when it differs (no clip control).
+void drawDepthCombo(const Renderer& renderer, WindowState& state) {
+    const auto& conventions = depthConventions();
+    if (ImGui::BeginCombo("depth", conventions[state.depthIndex].name.c_str())) {
+        for (size_t i = 0; i < conventions.size(); ++i) {
+            std::string label = conventions[i].name + " (" + std::to_string(conventions[i].depthStencil.bytesPerPixel) + " B/px)";
+            if (ImGui::Selectable(label.c_str(), i == state.depthIndex)) state.depthIndex = i;
+        }
+        ImGui::EndCombo();
+    }
+    if (renderer.depthFellBack()) ImGui::TextWrapped("depth: %s", renderer.depthConventionReason().c_str());
+}
+
 void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oasis");
@@ -105,6 +119,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         }
         ImGui::EndCombo();
     }
+    drawDepthCombo(renderer, state);
     if (ImGui::BeginCombo("view", state.view.c_str())) {
         for (const std::string& name : viewNames())
             if (ImGui::Selectable(name.c_str(), name == state.view)) state.view = name;
@@ -186,6 +201,8 @@ int runWindowApp(const Options& options) {
         state.fallbacks = session.fallbacks();
         for (size_t i = 0; i < gbufferLayouts().size(); ++i)
             if (gbufferLayouts()[i].name == options.scene.gbuffer) state.layoutIndex = i;
+        for (size_t i = 0; i < depthConventions().size(); ++i)
+            if (depthConventions()[i].name == options.scene.depth) state.depthIndex = i;
         SceneSettings& scene = session.scene;
         state.freeCamera = bool(options.scene.camera);
         scene.camera = options.scene.camera ? *options.scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
@@ -221,6 +238,7 @@ int runWindowApp(const Options& options) {
             drawPanel(renderer, scene, state);
             ImGui::Render();
 
+            renderer.setDepthConvention(depthConventions()[state.depthIndex]);
             renderer.configure(width, height, gbufferLayouts()[state.layoutIndex]);
             auto start = std::chrono::steady_clock::now();
             renderer.renderFrame(scene);

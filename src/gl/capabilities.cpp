@@ -17,6 +17,7 @@ const FallbackName kFallbackNames[] = {
     {"no-compute", &ForcedFallbacks::noCompute},
     {"no-stencil-texturing", &ForcedFallbacks::noStencilTexturing},
     {"no-dsa", &ForcedFallbacks::noDsa},
+    {"no-clip-control", &ForcedFallbacks::noClipControl},
     {"gl33", &ForcedFallbacks::gl33},
 };
 
@@ -53,7 +54,7 @@ std::string ForcedFallbacks::list() const {
     return text;
 }
 
-const char* forcedFallbackNames() { return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, gl33"; }
+const char* forcedFallbackNames() { return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33"; }
 
 bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std::string& error) {
     if (!text.empty() && text.back() == ',') { error = "empty name in '" + text + "'"; return false; }
@@ -79,6 +80,7 @@ bool Capabilities::driverHasCompute() const { return !source(*this, 4, 3, "GL_AR
 bool Capabilities::driverHasStencilTexturing() const { return !source(*this, 4, 3, "GL_ARB_stencil_texturing").empty(); }
 bool Capabilities::driverHasDsa() const { return !source(*this, 4, 5, "GL_ARB_direct_state_access").empty(); }
 bool Capabilities::driverHasDebugOutput() const { return !source(*this, 4, 3, "GL_KHR_debug").empty(); }
+bool Capabilities::driverHasClipControl() const { return !source(*this, 4, 5, "GL_ARB_clip_control").empty(); }
 bool Capabilities::driverHasFloatRenderTargets() const {
     return atLeast(3, 0) || (hasExtension("GL_ARB_texture_float") && hasExtension("GL_ARB_color_buffer_float"));
 }
@@ -129,6 +131,13 @@ bool Capabilities::floatRenderTargetsAvailable(std::string* reason) const {
     if (!driverHasFloatRenderTargets()) return answer(false, reason, "no GL 3.0 / GL_ARB_texture_float");
     return answer(true, reason, atLeast(3, 0) ? "RGBA16F/RGBA32F colour-renderable (core since GL 3.0)"
                                               : "GL_ARB_texture_float + GL_ARB_color_buffer_float");
+}
+
+bool Capabilities::clipControlAvailable(std::string* reason) const {
+    if (forced.noClipControl) return answer(false, reason, "switched off by --force no-clip-control");
+    std::string from = source(*this, 4, 5, "GL_ARB_clip_control");
+    if (from.empty()) return answer(false, reason, "no GL 4.5 / GL_ARB_clip_control");
+    return answer(true, reason, "clip control present (" + from + ")");
 }
 
 std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() const {

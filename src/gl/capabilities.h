@@ -14,12 +14,14 @@ struct ForcedFallbacks {
     bool noCompute = false;
     bool noStencilTexturing = false;
     bool noDsa = false;
+    bool noClipControl = false;  // reversed-z depth falls back to standard
     bool gl33 = false;  // create the context at OpenGL 3.3 core (the context's job, before measuring)
 
-    bool any() const { return noSsbo || noCompute || noStencilTexturing || noDsa || gl33; }
+    bool any() const { return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33; }
     std::string list() const;  // "no-ssbo,gl33" ("" when none)
 };
-// The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa, gl33".
+// The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa,
+// no-clip-control, gl33".
 const char* forcedFallbackNames();
 // Parses a comma-separated list into `forced` (adding to what is there); false with `error` on a bad name.
 bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std::string& error);
@@ -64,6 +66,7 @@ struct Capabilities {
     bool driverHasDsa() const;
     bool driverHasDebugOutput() const;
     bool driverHasFloatRenderTargets() const;
+    bool driverHasClipControl() const;
 
     // The driver's answer with the forced fallbacks applied; `reason` (optional) says why.
     bool ssboAvailable(std::string* reason = nullptr) const;
@@ -72,6 +75,7 @@ struct Capabilities {
     bool dsaAvailable(std::string* reason = nullptr) const;
     bool debugOutputAvailable(std::string* reason = nullptr) const;
     bool floatRenderTargetsAvailable(std::string* reason = nullptr) const;
+    bool clipControlAvailable(std::string* reason = nullptr) const;  // glClipControl: reversed-z depth
 
     // The extensions oasis cares about (each with whether the context lists it), in a fixed order.
     std::vector<std::pair<std::string, bool>> relevantExtensions() const;

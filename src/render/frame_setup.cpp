@@ -28,11 +28,12 @@ static_assert(std::size(kDetailNoiseLayers) == OASIS_DETAIL_LAYERS, "one table r
 
 }  // namespace
 
-FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
+FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const DepthConvention& depth) {
     FrameSetup setup;
     setup.view.pose = scene.camera ? *scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
     setup.view.projection = scene.projection;
     setup.view.aspect = float(width) / float(height);
+    setup.view.depthMapping = depth.mapping;
     setup.hour = scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds);
     setup.sky = skyAtHour(setup.hour);
     setup.wedge = computeTerrainWedge(setup.view, scene.grid, scene.viewDistance);
@@ -57,8 +58,7 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height) {
                                     scene.viewDistance);
     d.depthRange = glm::vec4(scene.projection.nearPlane, scene.projection.farPlane,
                              float(scene.timeSeconds), scene.exposure);
-    // OpenGL's default: window depth 0 at the near plane, 1 at the far one, NDC z from -1.
-    d.depthConvention = glm::vec4(0.0f, -1.0f, 1.0f, 0.0f);
+    d.depthConvention = depth.frameData();
     d.water = glm::vec4(scene.water.level, scene.water.absorption, scene.water.rippleStrength,
                         setup.reflectionsActive ? float(OASIS_WATER_REFLECTIONS_FLAG) : 0.0f);
     d.waterTint = glm::vec4(scene.water.tint, scene.water.fresnelF0);

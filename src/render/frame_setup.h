@@ -4,6 +4,7 @@
 #include <optional>
 #include <vector>
 
+#include "render/depth_convention.h"
 #include "render/frame_data.h"
 #include "render/light_data.h"
 #include "render/light_paths.h"
@@ -62,6 +63,8 @@ struct FrameSetup {
     LightsPath lightsPath = LightsPath::Ubo;  // set by the renderer from the context and the settings
 };
 
-FrameSetup prepareFrame(const SceneSettings& scene, int width, int height);
+// `depth`: the convention of the targets drawn into (the renderer's); the camera projects with it.
+FrameSetup prepareFrame(const SceneSettings& scene, int width, int height,
+                        const DepthConvention& depth = standardDepthConvention());
 
 }  // namespace oasis

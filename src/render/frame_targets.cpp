@@ -14,16 +14,16 @@ void checkComplete(const char* what) {
                                  std::to_string(status) + ")");
 }
 
-int bytesPerPixelOfAllTargets(const GBufferLayout& layout) {
+int bytesPerPixelOfAllTargets(const GBufferLayout& layout, const DepthConvention& depth) {
     int total = 4;  // Display
-    for (int t = 0; t < int(Target::Count); ++t) total += layout.format(Target(t)).bytesPerPixel;
+    for (int t = 0; t < int(Target::Count); ++t) total += targetFormat(layout, depth, Target(t)).bytesPerPixel;
     return total;
 }
 
 }  // namespace
 
-FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
-    : layout_(layout), width_(width), height_(height) {
+FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height)
+    : layout_(layout), depth_(depth), width_(width), height_(height) {
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (width < 1 || height < 1 || width > maxSize || height > maxSize)
@@ -32,16 +32,16 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, int width, int height)
                                  " (GL_MAX_TEXTURE_SIZE of this driver)");
     // Software drivers allocate targets in system memory and may abort rather than report
     // GL_OUT_OF_MEMORY: refuse sizes whose targets could not reasonably fit.
-    double bytes = double(width) * double(height) * double(bytesPerPixelOfAllTargets(layout));
+    double bytes = double(width) * double(height) * double(bytesPerPixelOfAllTargets(layout, depth));
     if (bytes > kMaxTargetBytes)
         throw std::runtime_error("frame size " + std::to_string(width) + "x" + std::to_string(height) + " needs " +
                                  std::to_string(int(bytes / double(1u << 30))) + " GiB of render targets (" +
-                                 layout.name + " layout); the limit is " +
+                                 layout.name + " layout, " + depth.name + " depth); the limit is " +
                                  std::to_string(int(kMaxTargetBytes / double(1u << 30))) + " GiB");
     while (glGetError() != GL_NO_ERROR) {}
     for (int t = 0; t < int(Target::Count); ++t)
         if (layout.stores(Target(t)))
-            textures_[t] = gl::createTargetTexture(layout.format(Target(t)).internalFormat, width, height);
+            textures_[t] = gl::createTargetTexture(targetFormat(layout, depth, Target(t)).internalFormat, width, height);
     display_ = gl::createTargetTexture(GL_RGBA8, width, height);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         throw std::runtime_error("allocating " + std::to_string(width) + "x" + std::to_string(height) +

@@ -6,6 +6,7 @@
 #include <array>
 
 #include "gl/objects.h"
+#include "render/depth_convention.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {
@@ -18,11 +19,13 @@ inline constexpr Target kGBufferColourTargets[] = {Target::Albedo, Target::Norma
 class FrameTargets {
 public:
     // Throws std::runtime_error when the size is impossible or the framebuffer is incomplete.
-    FrameTargets(const GBufferLayout& layout, int width, int height);
+    FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height);
 
     int width() const { return width_; }
     int height() const { return height_; }
     const GBufferLayout& layout() const { return layout_; }
+    // How the depth-stencil target is stored and compared: every pass takes its depth state here.
+    const DepthConvention& depth() const { return depth_; }
 
     GLuint texture(Target target) const { return textures_[size_t(target)].name(); }
     // The G-buffer framebuffer's colour attachment (and draw buffer) of a stored target: the
@@ -39,6 +42,7 @@ public:
 
 private:
     GBufferLayout layout_;
+    DepthConvention depth_;
     int width_, height_;
     std::array<gl::Texture, size_t(Target::Count)> textures_;
     gl::Texture display_;

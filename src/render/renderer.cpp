@@ -19,7 +19,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
 
     // Point lights: what the context offers decides the path and the UBO path's block size (a
     // session replaces the availability with its --force-aware report: setSsboAvailable).
-    ssboAvailable_ = gl::measureCapabilities().ssboAvailable(&ssboMissingReason_);
+    const gl::Capabilities caps = gl::measureCapabilities();
+    ssboAvailable_ = caps.ssboAvailable(&ssboMissingReason_);
     GLint maxBlockSize = 16384, maxVertexBlocks = 12, maxFragmentBlocks = 12;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
     glGetIntegerv(GL_MAX_VERTEX_UNIFORM_BLOCKS, &maxVertexBlocks);
@@ -36,6 +37,34 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
+    // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
+    clipControlAvailable_ = caps.clipControlAvailable(&clipControlReason_);
+    setDepthConvention(standardDepthConvention());
+}
+
+void Renderer::setClipControlAvailable(bool available, const std::string& reason) {
+    clipControlAvailable_ = available;
+    clipControlReason_ = reason;
+    setDepthConvention(*depthRequested_);
+}
+
+void Renderer::setDepthConvention(const DepthConvention& requested) {
+    depthRequested_ = &requested;
+    const DepthConvention* use = &requested;
+    if (!requested.needsClipControl())
+        depthReason_ = requested.name + " (OpenGL's default clip control)";
+    else if (clipControlAvailable_)
+        depthReason_ = requested.name + " (" + clipControlReason_ + ")";
+    else {
+        use = &standardDepthConvention();
+        depthReason_ = use->name + " (" + requested.name + " was asked for but " + clipControlReason_ + ")";
+    }
+    if (use == depthInUse_) return;
+    if (targets_) {  // built before the switch: a failed allocation keeps the old targets and convention
+        targets_ = std::make_unique<FrameTargets>(targets_->layout(), *use, targets_->width(), targets_->height());
+        gbufferCurrent_ = false;
+    }
+    depthInUse_ = use;
 }
 
 void Renderer::setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced) {
@@ -80,7 +109,7 @@ void Renderer::configure(int width, int height, const GBufferLayout& layout) {
         return;
     // Build the new targets before dropping the old: if allocation fails (too large, out of
     // memory) the renderer keeps working at its previous size.
-    auto replacement = std::make_unique<FrameTargets>(layout, width, height);
+    auto replacement = std::make_unique<FrameTargets>(layout, *depthInUse_, width, height);
     targets_ = std::move(replacement);
     gbufferCurrent_ = false;
 }
@@ -111,7 +140,7 @@ void Renderer::prepareVegetation(const SceneSettings& scene) {
         const glm::dvec3& camera = frame_.view.pose.position;
         vegetationField_.update(scene.terrain, scene.water.level, scene.vegetation,
                                 uint32_t(plantAtlas_->variantCount()), camera);
-        vegetationField_.buildDrawList(scene.vegetation, camera, frame_.data.viewProjection,
+        vegetationField_.buildDrawList(scene.vegetation, camera, frame_.data.viewProjection, frame_.view.depthMapping,
                                        frame_.reflectionsActive, scene.water.level, vegetationList_);
     } else {
         vegetationField_.clearStats();
@@ -149,7 +178,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         throw std::invalid_argument("the " + std::string(pipelineName(active_)) + " pipeline has no pass '" +
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     if (!sameGridDensity(scene.grid, geometry_.density())) geometry_ = SceneGeometry(scene.grid);
-    frame_ = prepareFrame(scene, targets_->width(), targets_->height());
+    frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth());
     frame_.positionFromDepth = targets_->layout().positionFromDepth();
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
@@ -166,6 +195,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     }
     PassContext passContext = context();
     passesRan_.clear();
+    FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
         passesRan_.push_back(pass.name());
         if (afterEach) afterEach(pass);
@@ -193,6 +223,7 @@ void Renderer::renderView(const std::string& viewName) {
             return std::find(written.begin(), written.end(), target) != written.end();
         };
         bool filled = false;
+        FrameClipControl clipControl(targets_->depth());
         for (const auto& pass : deferred_.passes()) {
             if (writes(*pass, Target::Reflection)) break;  // the mirrored half
             if (writes(*pass, Target::Radiance)) continue;  // shading

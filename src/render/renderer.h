@@ -29,6 +29,16 @@ public:
     // Reallocates the targets when the size or layout changes; scene data is kept. Throws
     // std::runtime_error (naming the size) when the targets cannot be made, keeping the old ones.
     void configure(int width, int height, const GBufferLayout& layout);
+    // The depth convention (render/depth_convention.h) asked for; reversed-z needs glClipControl
+    // (GL 4.5 / GL_ARB_clip_control) and falls back to standard without it. Reallocates the targets
+    // when the convention in use changes. depthConvention() is the one in use, the reason says why.
+    void setDepthConvention(const DepthConvention& requested);
+    const DepthConvention& depthConvention() const { return *depthInUse_; }
+    const std::string& depthConventionReason() const { return depthReason_; }
+    bool depthFellBack() const { return depthInUse_ != depthRequested_; }
+    // The session's capability report decides (it honours --force no-clip-control); the
+    // constructor's default asks the context directly.
+    void setClipControlAvailable(bool available, const std::string& reason);
     void setPipeline(PipelineKind kind) { active_ = kind; }
     PipelineKind pipeline() const { return active_; }
     void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
@@ -117,6 +127,11 @@ private:
     LightsPathChoice lightsChoice_;
     int lightsDropped_ = 0;
     FrameSetup frame_;
+    const DepthConvention* depthRequested_ = &standardDepthConvention();
+    const DepthConvention* depthInUse_ = &standardDepthConvention();
+    bool clipControlAvailable_ = false;
+    std::string clipControlReason_;
+    std::string depthReason_;
     bool gbufferCurrent_ = false;  // whether the G-buffer holds the last frame
     std::vector<std::string> passesRan_;  // names of the passes the last frame ran
 };

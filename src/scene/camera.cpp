@@ -23,8 +23,11 @@ glm::mat4 CameraView::rotationOnlyView() const {
 }
 
 glm::mat4 CameraView::projectionMatrix() const {
-    return glm::perspective(glm::radians(projection.verticalFovDegrees), aspect,
-                            projection.nearPlane, projection.farPlane);
+    float fovy = glm::radians(projection.verticalFovDegrees);
+    // Reversed: the 0..1 projection with near and far swapped puts the near plane at 1, the far at 0.
+    if (depthMapping == DepthMapping::Reversed)
+        return glm::perspectiveRH_ZO(fovy, aspect, projection.farPlane, projection.nearPlane);
+    return glm::perspectiveRH_NO(fovy, aspect, projection.nearPlane, projection.farPlane);
 }
 
 glm::mat4 CameraView::viewProjection() const { return projectionMatrix() * rotationOnlyView(); }
@@ -39,6 +42,15 @@ std::array<glm::vec3, 4> CameraView::cornerRays() const {
         for (float sx : {-1.0f, 1.0f})
             rays[i++] = glm::normalize(glm::vec3(toWorld * glm::vec4(sx * tanX, sy * tanY, -1.0f, 0.0f)));
     return rays;
+}
+
+std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& viewProjection, DepthMapping mapping) {
+    auto row = [&](int r) { return glm::vec4(viewProjection[0][r], viewProjection[1][r], viewProjection[2][r],
+                                             viewProjection[3][r]); };
+    glm::vec4 w = row(3), z = row(2);
+    // Standard: -w <= z <= w. Reversed: 0 <= z <= w, the near plane at z = w and the far at z = 0.
+    bool reversed = mapping == DepthMapping::Reversed;
+    return {w + row(0), w - row(0), w + row(1), w - row(1), reversed ? w - z : w + z, reversed ? z : w - z};
 }
 
 CameraPose defaultCameraPath(const TerrainShape& shape, double timeSeconds) {

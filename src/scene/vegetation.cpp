@@ -14,17 +14,10 @@ constexpr double kSwayPerHeight = 0.3;
 // The billboard reaches below its base by the atlas cell's margin under the root.
 constexpr double kBelowRootPerHeight = 0.05;
 
-std::array<glm::vec4, 6> frustumPlanes(const glm::mat4& m) {
-    // Gribb and Hartmann: each plane is the last row of the matrix plus or minus another row.
-    auto row = [&](int r) { return glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]); };
-    glm::vec4 w = row(3);
-    return {w + row(0), w - row(0), w + row(1), w - row(1), w + row(2), w - row(2)};
-}
-
 }  // namespace
 
-bool boxMeetsFrustum(const glm::mat4& viewProjection, glm::vec3 low, glm::vec3 high) {
-    for (const glm::vec4& plane : frustumPlanes(viewProjection)) {
+bool boxMeetsFrustum(const glm::mat4& viewProjection, DepthMapping mapping, glm::vec3 low, glm::vec3 high) {
+    for (const glm::vec4& plane : frustumPlanes(viewProjection, mapping)) {
         // The corner furthest along the plane's normal: if even it is outside, the whole box is.
         glm::vec3 corner(plane.x > 0.0f ? high.x : low.x, plane.y > 0.0f ? high.y : low.y,
                          plane.z > 0.0f ? high.z : low.z);
@@ -119,7 +112,8 @@ void VegetationField::update(const TerrainShape& shape, float waterLevel, const 
 }
 
 void VegetationField::buildDrawList(const VegetationSettings& settings, const glm::dvec3& camera,
-                                    const glm::mat4& viewProjection, bool withReflection, float waterLevel,
+                                    const glm::mat4& viewProjection, DepthMapping mapping, bool withReflection,
+                                    float waterLevel,
                                     VegetationDrawList& list) {
     list.instances.clear();
     list.directCount = list.mirroredCount = 0;
@@ -146,7 +140,7 @@ void VegetationField::buildDrawList(const VegetationSettings& settings, const gl
     };
     for (const auto& [key, chunk] : chunks_) {
         if (chunk.plants.empty() || !inRange({key.first, key.second}, camera, settings.drawDistance)) continue;
-        if (!boxMeetsFrustum(viewProjection, relative(chunk.bounds.low), relative(chunk.bounds.high))) continue;
+        if (!boxMeetsFrustum(viewProjection, mapping, relative(chunk.bounds.low), relative(chunk.bounds.high))) continue;
         stats_.chunksVisible++;
         list.directCount += appendThinned(chunk);
     }
@@ -157,7 +151,7 @@ void VegetationField::buildDrawList(const VegetationSettings& settings, const gl
                 continue;
             glm::dvec3 low(chunk.bounds.low.x, mirror - chunk.bounds.high.y, chunk.bounds.low.z);
             glm::dvec3 high(chunk.bounds.high.x, mirror - chunk.bounds.low.y, chunk.bounds.high.z);
-            if (!boxMeetsFrustum(viewProjection, relative(low), relative(high))) continue;
+            if (!boxMeetsFrustum(viewProjection, mapping, relative(low), relative(high))) continue;
             stats_.chunksMirrored++;
             list.mirroredCount += appendThinned(chunk);
         }

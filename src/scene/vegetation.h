@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/camera.h"
 #include "scene/placement.h"
 #include "scene/terrain.h"
 
@@ -60,8 +61,9 @@ struct ChunkBounds {
 };
 
 // Whether a box, given relative to the camera, meets the frustum of a camera-relative
-// view-projection matrix (conservative: a box that only meets the planes' corners may pass).
-bool boxMeetsFrustum(const glm::mat4& viewProjection, glm::vec3 low, glm::vec3 high);
+// view-projection matrix built with `mapping` (conservative: a box that only meets the planes'
+// corners may pass).
+bool boxMeetsFrustum(const glm::mat4& viewProjection, DepthMapping mapping, glm::vec3 low, glm::vec3 high);
 
 // The fraction of a chunk's plants drawn at horizontal distance `distance` from the camera.
 float drawnFraction(const VegetationSettings& settings, float distance);
@@ -79,7 +81,7 @@ public:
     // Fills `list` for a camera-relative view-projection: chunks that meet the view, thinned with
     // distance; with `withReflection` also the chunks whose mirror image in the water meets it.
     void buildDrawList(const VegetationSettings& settings, const glm::dvec3& camera,
-                       const glm::mat4& viewProjection, bool withReflection, float waterLevel,
+                       const glm::mat4& viewProjection, DepthMapping mapping, bool withReflection, float waterLevel,
                        VegetationDrawList& list);
 
     const VegetationStats& stats() const { return stats_; }

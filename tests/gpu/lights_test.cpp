@@ -1,6 +1,7 @@
 // Point lights: the three light paths give bit-identical frames in each pipeline (0, 1, 64 and
 // the UBO capacity + 1 lights); forward and deferred agree with 64 lights; a volume that crosses
-// the near plane or holds the camera lights without holes and leaves the stencil as it was; edits
+// the near plane or holds the camera lights without holes and leaves the stencil as it was (these
+// two under each depth convention: the volumes' stencil marking compares depth both ways); edits
 // to the lights take effect the next frame in every path; the light-volumes view counts lights.
 #include "gpu_test.h"
 
@@ -113,8 +114,10 @@ TEST_F(Lights, ForwardAndDeferredAgreeWith64Lights) {
     SceneSettings scene = withLights(nightScene(), lightsInView(nightScene(), 64), std::nullopt);
     Renderer renderer(*shaders_, scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);  // plants are lit by the point lights too
+    for (const DepthConvention& depth : depthConventions())
     for (auto [layout, minPsnr] : {std::pair{"full", 55.0}, std::pair{"standard", 45.0}, std::pair{"compact", 45.0}}) {
-        SCOPED_TRACE(layout);
+        SCOPED_TRACE(std::string(layout) + ", depth " + depth.name);
+        renderer.setDepthConvention(depth);
         renderer.configure(320, 180, layoutNamed(layout));
         Image forward = renderFinal(renderer, scene, PipelineKind::Forward);
         Image deferred = renderFinal(renderer, scene, PipelineKind::Deferred);
@@ -122,8 +125,8 @@ TEST_F(Lights, ForwardAndDeferredAgreeWith64Lights) {
         dumpImage(std::string("lights-64-forward-") + layout, forward);
         dumpImage(std::string("lights-64-deferred-") + layout, deferred);
         ImageDifference difference = compareImages(forward, deferred);
-        std::printf("[lights] 64 lights, %s: forward vs deferred PSNR %.2f dB, max %d\n", layout, difference.psnrDb,
-                    difference.maxAbs);
+        std::printf("[lights] 64 lights, %s, %s depth: forward vs deferred PSNR %.2f dB, max %d\n", layout,
+                    renderer.depthConvention().name.c_str(), difference.psnrDb, difference.maxAbs);
         EXPECT_GE(difference.psnrDb, minPsnr);
         EXPECT_GT(brighterPixels(deferred, unlit), 320 * 180 / 10) << "the lights barely show";
     }
@@ -158,9 +161,11 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
 
     Renderer renderer(*shaders_, base);
     renderer.configure(width, height, layoutNamed("full"));
+    for (const DepthConvention& depth : depthConventions())
     for (const Case& c : cases) {
+        renderer.setDepthConvention(depth);
         for (LightsPath path : kPaths) {
-            SCOPED_TRACE(c.name + ", " + lightsPathName(path));
+            SCOPED_TRACE(c.name + ", " + lightsPathName(path) + ", depth " + renderer.depthConvention().name);
             SceneSettings scene = withLights(base, {c.light}, path);
             SceneSettings dark = withLights(base, {}, path);
             Image forward = renderFinal(renderer, scene, PipelineKind::Forward);
@@ -180,7 +185,8 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
                     }
                     holes += forwardLit && !deferredLit;
                 }
-            std::printf("[lights] %s: %d pixels lit forward, %d holes in deferred\n", c.name.c_str(), litForward, holes);
+            std::printf("[lights] %s, %s depth: %d pixels lit forward, %d holes in deferred\n", c.name.c_str(),
+                        renderer.depthConvention().name.c_str(), litForward, holes);
             EXPECT_GT(litForward, width * height / 20) << "the light should light much of the view";
             EXPECT_EQ(holes, 0) << "deferred misses pixels the forward pipeline lights";
             EXPECT_GE(compareImages(forward, deferred).psnrDb, 45.0);

@@ -25,13 +25,20 @@ TEST(VegetationThinning, FractionIsOneThenStartOverDistanceThenZero) {
 }
 
 TEST(VegetationFrustum, BoxesInFrontPassBehindAndBesideFail) {
-    CameraView view;  // at the origin, looking along -Z
-    glm::mat4 vp = view.viewProjection();
-    EXPECT_TRUE(boxMeetsFrustum(vp, {-1, -1, -20}, {1, 1, -10}));
-    EXPECT_TRUE(boxMeetsFrustum(vp, {-1, -1, -1}, {1, 1, 1})) << "a box around the camera";
-    EXPECT_FALSE(boxMeetsFrustum(vp, {-1, -1, 10}, {1, 1, 20})) << "behind";
-    EXPECT_FALSE(boxMeetsFrustum(vp, {500, -1, -20}, {510, 1, -10})) << "far to the right";
-    EXPECT_FALSE(boxMeetsFrustum(vp, {-1, -1, -7000}, {1, 1, -6500})) << "beyond the far plane";
+    for (DepthMapping mapping : {DepthMapping::Standard, DepthMapping::Reversed}) {
+        SCOPED_TRACE(mapping == DepthMapping::Reversed ? "reversed" : "standard");
+        CameraView view;  // at the origin, looking along -Z
+        view.depthMapping = mapping;
+        glm::mat4 vp = view.viewProjection();
+        EXPECT_TRUE(boxMeetsFrustum(vp, mapping, {-1, -1, -20}, {1, 1, -10}));
+        EXPECT_TRUE(boxMeetsFrustum(vp, mapping, {-1, -1, -1}, {1, 1, 1})) << "a box around the camera";
+        EXPECT_FALSE(boxMeetsFrustum(vp, mapping, {-1, -1, 10}, {1, 1, 20})) << "behind";
+        EXPECT_FALSE(boxMeetsFrustum(vp, mapping, {500, -1, -20}, {510, 1, -10})) << "far to the right";
+        EXPECT_FALSE(boxMeetsFrustum(vp, mapping, {-1, -1, -7000}, {1, 1, -6500})) << "beyond the far plane";
+        EXPECT_TRUE(boxMeetsFrustum(vp, mapping, {-1, -1, -6100}, {1, 1, -5900})) << "across the far plane";
+        EXPECT_FALSE(boxMeetsFrustum(vp, mapping, {-0.01f, -0.01f, -0.2f}, {0.01f, 0.01f, -0.1f}))
+            << "between the eye and the near plane";
+    }
 }
 
 struct FieldFixture {
@@ -43,8 +50,8 @@ struct FieldFixture {
         scene.vegetation.density = density;
         frame = prepareFrame(scene, 1280, 720);
         field.update(scene.terrain, scene.water.level, scene.vegetation, 10, frame.view.pose.position);
-        field.buildDrawList(scene.vegetation, frame.view.pose.position, frame.data.viewProjection, true,
-                            scene.water.level, list);
+        field.buildDrawList(scene.vegetation, frame.view.pose.position, frame.data.viewProjection,
+                            frame.view.depthMapping, true, scene.water.level, list);
     }
 };
 
@@ -120,10 +127,23 @@ TEST(VegetationField, DrawListIsCulledAndThinned) {
 TEST(VegetationField, NoReflectionListWhenNotAsked) {
     FieldFixture f;
     EXPECT_GT(f.list.mirroredCount, 0u);
-    f.field.buildDrawList(f.scene.vegetation, f.frame.view.pose.position, f.frame.data.viewProjection, false,
-                          f.scene.water.level, f.list);
+    f.field.buildDrawList(f.scene.vegetation, f.frame.view.pose.position, f.frame.data.viewProjection,
+                          f.frame.view.depthMapping, false, f.scene.water.level, f.list);
     EXPECT_EQ(f.list.mirroredCount, 0u);
     EXPECT_EQ(f.list.instances.size(), f.list.directCount);
+}
+
+// The reversed-z projection culls exactly what the standard one does (the same frustum).
+TEST(VegetationField, ReversedDepthCullsLikeStandard) {
+    FieldFixture f;
+    FrameSetup reversed = prepareFrame(f.scene, 1280, 720, *findDepthConvention("reversed-z"));
+    ASSERT_EQ(reversed.view.depthMapping, DepthMapping::Reversed);
+    VegetationDrawList list;
+    f.field.buildDrawList(f.scene.vegetation, reversed.view.pose.position, reversed.data.viewProjection,
+                          reversed.view.depthMapping, true, f.scene.water.level, list);
+    EXPECT_EQ(list.directCount, f.list.directCount);
+    EXPECT_EQ(list.mirroredCount, f.list.mirroredCount);
+    EXPECT_GT(list.directCount, 1000u);
 }
 
 }  // namespace
