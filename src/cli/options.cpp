@@ -95,7 +95,7 @@ bool parseCameraPose(const std::string& text, CameraPose& pose) {
 }
 
 std::string usage(Command command) {
-    std::string scene = std::string(kSceneOptionsHelp) + gbufferLayoutNames() + " (default standard)\n";
+    std::string scene = std::string(kSceneOptionsHelp) + gbufferLayoutNames() + " (default " + kDefaultGBufferLayoutName + ")\n";
     switch (command) {
         case Command::Render:
             return "usage: oasis render [scene options] [--pipeline forward|deferred] [--view NAME] [--out FILE.png]\n"

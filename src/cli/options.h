@@ -7,6 +7,7 @@
 
 #include "debug/debug_view_pass.h"
 #include "gl/capabilities.h"
+#include "render/gbuffer_layout.h"
 #include "render/frame_setup.h"
 #include "render/pipeline.h"
 #include "scene/camera.h"
@@ -19,7 +20,7 @@ struct SceneOptions {
     double timeSeconds = 0.0;
     std::optional<double> hour;
     std::optional<CameraPose> camera;
-    std::string gbuffer = "standard";
+    std::string gbuffer = kDefaultGBufferLayoutName;
     std::string depth = "standard";  // a depthConventions() name; reversed-z falls back without clip control
     WaterSettings water;
     VegetationSettings vegetation;

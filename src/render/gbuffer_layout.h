@@ -53,6 +53,7 @@ const char* gbufferEncodingSuffix(GBufferEncoding encoding);
 
 const std::vector<GBufferLayout>& gbufferLayouts();
 const GBufferLayout* findGBufferLayout(const std::string& name);
+inline constexpr const char* kDefaultGBufferLayoutName = "compact";
 const GBufferLayout& defaultGBufferLayout();
 std::string gbufferLayoutNames();  // "full, standard, compact" for help and error text
 

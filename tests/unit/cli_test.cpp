@@ -20,7 +20,7 @@ TEST(Cli, DefaultsAndSubcommands) {
     EXPECT_EQ(none.options.command, Command::Default);
     EXPECT_EQ(none.options.scene.width, 1280);
     EXPECT_EQ(none.options.scene.height, 720);
-    EXPECT_EQ(none.options.scene.gbuffer, "standard");
+    EXPECT_EQ(none.options.scene.gbuffer, defaultGBufferLayout().name);
     EXPECT_EQ(none.options.pipeline, PipelineKind::Deferred);
     EXPECT_EQ(none.options.view, "final");
     EXPECT_TRUE(none.options.scene.water.reflections);
@@ -214,7 +214,7 @@ TEST(ParseCommandLine, Defaults) {
     EXPECT_EQ(o.scene.timeSeconds, 0.0);
     EXPECT_FALSE(o.scene.hour.has_value());
     EXPECT_FALSE(o.scene.camera.has_value());
-    EXPECT_EQ(o.scene.gbuffer, "standard");
+    EXPECT_EQ(o.scene.gbuffer, defaultGBufferLayout().name);
     EXPECT_EQ(o.scene.gbuffer, defaultGBufferLayout().name);
     EXPECT_EQ(o.scene.water.level, 0.0f);              // the help text's defaults
     EXPECT_EQ(o.scene.water.rippleStrength, 1.0f);
@@ -241,7 +241,7 @@ TEST(ParseCommandLine, Subcommands) {
         // Defaults are the same under every subcommand.
         EXPECT_EQ(r.options.scene.width, 1280);
         EXPECT_EQ(r.options.scene.height, 720);
-        EXPECT_EQ(r.options.scene.gbuffer, "standard");
+        EXPECT_EQ(r.options.scene.gbuffer, defaultGBufferLayout().name);
         EXPECT_EQ(r.options.pipeline, PipelineKind::Deferred);
         EXPECT_EQ(r.options.view, "final");
         EXPECT_FALSE(r.options.help);

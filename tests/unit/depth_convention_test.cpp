@@ -96,7 +96,10 @@ TEST(DepthConventionTable, BytesAndFormats) {
     EXPECT_EQ(reversed.clipDepthMode, GLenum(GL_ZERO_TO_ONE));
     for (const GBufferLayout& layout : gbufferLayouts()) {
         EXPECT_EQ(gbufferBytesPerPixel(layout, standard), layout.bytesPerPixel());
-        EXPECT_EQ(gbufferBytesPerPixel(layout, reversed), layout.bytesPerPixel() + 4);
+        // +4 for the depth-stencil, and +4 again for the depth copy of a layout that keeps one.
+        EXPECT_EQ(gbufferBytesPerPixel(layout, reversed), layout.bytesPerPixel() + (layout.positionFromDepth() ? 8 : 4));
+        if (layout.positionFromDepth())
+            EXPECT_EQ(targetFormat(layout, reversed, Target::SceneDepth).internalFormat, GLenum(GL_DEPTH32F_STENCIL8));
         EXPECT_EQ(targetFormat(layout, reversed, Target::DepthStencil).internalFormat, GLenum(GL_DEPTH32F_STENCIL8));
         EXPECT_EQ(targetFormat(layout, reversed, Target::Albedo).internalFormat, layout.albedo.internalFormat);
     }

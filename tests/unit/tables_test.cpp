@@ -58,8 +58,8 @@ TEST(GBufferLayoutTable, NamesUniqueAndFindable) {
     EXPECT_EQ(findGBufferLayout("nope"), nullptr);
     EXPECT_EQ(findGBufferLayout(""), nullptr);
     EXPECT_EQ(findGBufferLayout("Standard"), nullptr);  // names are exact
-    EXPECT_EQ(defaultGBufferLayout().name, "standard");
-    EXPECT_EQ(&defaultGBufferLayout(), findGBufferLayout("standard"));
+    EXPECT_EQ(defaultGBufferLayout().name, "compact");
+    EXPECT_EQ(&defaultGBufferLayout(), findGBufferLayout("compact"));
 }
 
 TEST(GBufferLayoutTable, BytesPerPixel) {
