@@ -6,8 +6,9 @@ csv=${1:-oasis-out/bench/bench.csv}
 awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i;
   print "| size | lights | pipeline | layout | variation | ms median (min-max) | x floor | PSNR dB | SSIM | max abs | own PSNR dB | B/px | MiB | Pareto |"
   print "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"; next }
-{ pareto = $col["pareto"] == "true" ? "**yes**" : ($col["pareto_in_pipeline"] == "true" ? "in pipeline" : "")
+{ layout = $col["layout"] ($col["depth"] != "standard" ? "+" $col["depth"] : "")
+  pareto = $col["pareto"] == "true" ? "**yes**" : ($col["pareto_in_pipeline"] == "true" ? "in pipeline" : "")
   printf "| %sx%s | %s | %s | %s | %s | %.1f (%.1f-%.1f) | %.2f | %s | %s | %s | %.1f | %s | %.1f | %s |\n",
-    $col["width"], $col["height"], $col["lights"], $col["pipeline"], $col["layout"], $col["variation"], $col["ms_median"],
+    $col["width"], $col["height"], $col["lights"], $col["pipeline"], layout, $col["variation"], $col["ms_median"],
     $col["ms_min"], $col["ms_max"], $col["floor_ratio"], $col["psnr_db"], $col["ssim"], $col["max_abs"],
     $col["same_knobs_psnr_db"], $col["bytes_per_pixel"], $col["target_mib"], pareto }' "$csv"

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -262,6 +263,9 @@ std::string benchSvg(const std::vector<BenchResult>& results, const std::string&
                   "median ms per frame (wall time around glFinish)",
                   "RMSE against the reference (8-bit RGB)",
                   "reference: deferred, full layout, every knob at its highest, the same lights; " + renderer};
+    std::set<int> lightCounts;  // a row per size, a column per light count
+    for (const BenchResult& r : results) lightCounts.insert(r.config.lights);
+    text.columns = int(lightCounts.size());
     return scatterPlotSvg(panels, text);
 }
 

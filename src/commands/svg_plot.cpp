@@ -75,7 +75,10 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
                 colourOf[point.series] = kColours[seriesOrder.size() % (sizeof(kColours) / sizeof(kColours[0]))];
                 seriesOrder.push_back(point.series);
             }
-    double width = kPanelWidth * std::max<size_t>(1, panels.size()), height = kPanelHeight + 70;
+    size_t columns = text.columns > 0 ? size_t(text.columns) : std::max<size_t>(1, panels.size());
+    size_t rows = std::max<size_t>(1, (panels.size() + columns - 1) / columns);
+    double width = kPanelWidth * double(std::min(columns, std::max<size_t>(1, panels.size())));
+    double height = kPanelHeight * double(rows) + 70;
     std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width) + "\" height=\"" +
                       number(height) + "\" viewBox=\"0 0 " + number(width) + " " + number(height) +
                       "\" font-family=\"sans-serif\" font-size=\"12\">\n";
@@ -84,7 +87,7 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
            escape(text.title) + "</text>\n";
     for (size_t p = 0; p < panels.size(); ++p) {
         const PlotPanel& panel = panels[p];
-        double ox = kPanelWidth * double(p), oy = 30;
+        double ox = kPanelWidth * double(p % columns), oy = 30 + kPanelHeight * double(p / columns);
         double plotW = kPanelWidth - kLeft - kRight, plotH = kPanelHeight - kTop - kBottom;
         double xMin = 0, xMax = 0, yMin = 0, yMax = 0;
         for (size_t i = 0; i < panel.points.size(); ++i) {
@@ -164,7 +167,7 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
         svg += "</g>\n";
     }
     // Legend: one swatch per series, and the frontier's mark.
-    double lx = 20, ly = kPanelHeight + 45;
+    double lx = 20, ly = kPanelHeight * double(rows) + 45;
     for (const std::string& series : seriesOrder) {
         svg += "<circle cx=\"" + number(lx) + "\" cy=\"" + number(ly) + "\" r=\"5\" fill=\"" + colourOf[series] +
                "\"/><text x=\"" + number(lx + 10) + "\" y=\"" + number(ly + 4) + "\">" + escape(series) + "</text>\n";

@@ -21,6 +21,7 @@ struct PlotPanel {
 
 struct PlotText {
     std::string title, xLabel, yLabel, footnote;
+    int columns = 0;  // panels per row; 0: all in one row
 };
 
 // "Nice" tick values (steps of 1, 2 or 5 times a power of ten) covering [low, high], about `count`.

@@ -298,6 +298,11 @@ TEST(SvgPlot, DrawsEveryPointTheFrontierAndTheLegend) {
     EXPECT_NE(svg.find("1280x720"), std::string::npos);
     EXPECT_NE(svg.find("x&lt;y"), std::string::npos);  // labels are escaped
     EXPECT_EQ(svg.find("x<y"), std::string::npos);
+    // Two panels in a row, or one per row with a column count of 1: the canvas follows.
+    EXPECT_NE(svg.find("width=\"1120.0\" height=\"490.0\""), std::string::npos) << svg.substr(0, 120);
+    PlotText stacked{"title", "ms", "RMSE", "note", 1};
+    std::string tall = scatterPlotSvg({a, b}, stacked);
+    EXPECT_NE(tall.find("width=\"560.0\" height=\"910.0\""), std::string::npos) << tall.substr(0, 120);
 }
 
 }  // namespace
