@@ -82,10 +82,10 @@ void bindGBufferInputs(const FrameTargets& targets) {
         glBindTexture(GL_TEXTURE_2D, targets.texture(target));
     }
     if (targets.layout().positionFromDepth()) {
-        // DepthCopyPass's copy, never the depth-stencil target these passes draw with.
+        // DepthCopyPass's copy, never the depth-stencil target these passes draw with. Nothing
+        // switches the copy to stencil sampling, so it keeps GL's default depth mode.
         glActiveTexture(GL_TEXTURE0 + kUnitDepth);
         glBindTexture(GL_TEXTURE_2D, targets.texture(Target::SceneDepth));
-        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
     }
 }
 

@@ -1,6 +1,8 @@
 // Allocation of the frame's render targets.
 #include "render/frame_targets.h"
 
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +14,13 @@ void checkComplete(const char* what) {
     if (status != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error(std::string(what) + " framebuffer incomplete (status 0x" +
                                  std::to_string(status) + ")");
+}
+
+// One decimal, rounded up, so a size just over the limit never reads as the limit itself.
+std::string gibibytes(double bytes) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.1f", std::ceil(bytes / double(1u << 30) * 10.0) / 10.0);
+    return text;
 }
 
 int bytesPerPixelOfAllTargets(const GBufferLayout& layout, const DepthConvention& depth) {
@@ -35,7 +44,7 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     double bytes = double(width) * double(height) * double(bytesPerPixelOfAllTargets(layout, depth));
     if (bytes > kMaxTargetBytes)
         throw std::runtime_error("frame size " + std::to_string(width) + "x" + std::to_string(height) + " needs " +
-                                 std::to_string(int(bytes / double(1u << 30))) + " GiB of render targets (" +
+                                 gibibytes(bytes) + " GiB of render targets (" +
                                  layout.name + " layout, " + depth.name + " depth); the limit is " +
                                  std::to_string(int(kMaxTargetBytes / double(1u << 30))) + " GiB");
     while (glGetError() != GL_NO_ERROR) {}
