@@ -12,7 +12,7 @@ field() { sed -E "s/.*\"$1\": (\"([^\"]*)\"|([^,}]*)).*/\2\3/" <<<"$2"; }
 echo "| size | G-buffer | reflections | forward ms | deferred ms | floor ms | forward / floor | deferred / floor | PSNR fwd vs def |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for size in 1280x720 640x360; do
-  for layout in standard full; do
+  for layout in compact standard full; do
     for reflections in on off; do
       json=$("$oasis" compare --size "$size" --gbuffer "$layout" --reflections "$reflections" \
              --frames "$frames" --json --out-dir "$out")
@@ -25,7 +25,7 @@ for size in 1280x720 640x360; do
   done
 done
 echo
-echo "| vegetation (1280x720, standard, reflections on) | plants placed | drawn (+ reflected) | forward ms | deferred ms | floor ms | PSNR fwd vs def |"
+echo "| vegetation (1280x720, default layout, reflections on) | plants placed | drawn (+ reflected) | forward ms | deferred ms | floor ms | PSNR fwd vs def |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
 for vegetation in "off" "on 0.5" "on 1" "on 2" "on 4"; do
   set -- $vegetation
