@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "context/gl_context.h"
+#include "common/shared_constants.glsl"
 #include "render/image.h"
 #include "render/plant_atlas.h"
 #include "render/renderer.h"
@@ -347,9 +348,12 @@ inline double depthStep(double eyeDistance, double nearPlane, double farPlane) {
 inline double reconstructionTolerance(double eyeDistance, double nearPlane, double farPlane) {
     return 5.0 * depthStep(eyeDistance, nearPlane, farPlane) + 1e-4 * eyeDistance + 1e-3;
 }
-// Surface flags of an info texel (shaders/common/surface.glsl: infoFlags).
-constexpr unsigned kSurfaceSky = 1u, kSurfaceReflected = 2u, kSurfacePlant = 4u;
-inline unsigned infoFlags(glm::vec4 info) { return unsigned(std::lround(info.b * 255.0f)); }
+// Surface flags (shaders/common/shared_constants.glsl) and their decoding from an info texel.
+constexpr unsigned kSurfaceSky = OASIS_SURFACE_SKY, kSurfaceReflected = OASIS_SURFACE_REFLECTED,
+                   kSurfacePlant = OASIS_SURFACE_PLANT;
+// The flags of an info texel in the layouts that store the surface as is (full, standard); the
+// layout table decodes every encoding (GBufferLayout::storedFlags).
+inline unsigned infoFlags(glm::vec4 info) { return findGBufferLayout("standard")->storedFlags(info); }
 
 // Stencil marks (passes/pass.h: StencilMark).
 constexpr uint8_t kStencilSky = 0, kStencilTerrain = 1, kStencilWater = 2, kStencilPlant = 3;
