@@ -49,21 +49,24 @@ void Renderer::setClipControlAvailable(bool available, const std::string& reason
 }
 
 void Renderer::setDepthConvention(const DepthConvention& requested) {
-    depthRequested_ = &requested;
     const DepthConvention* use = &requested;
+    std::string reason;
     if (!requested.needsClipControl())
-        depthReason_ = requested.name + " (OpenGL's default clip control)";
+        reason = requested.name + " (OpenGL's default clip control)";
     else if (clipControlAvailable_)
-        depthReason_ = requested.name + " (" + clipControlReason_ + ")";
+        reason = requested.name + " (" + clipControlReason_ + ")";
     else {
         use = &standardDepthConvention();
-        depthReason_ = use->name + " (" + requested.name + " was asked for but " + clipControlReason_ + ")";
+        reason = use->name + " (" + requested.name + " was asked for but " + clipControlReason_ + ")";
     }
-    if (use == depthInUse_) return;
-    if (targets_) {  // built before the switch: a failed allocation keeps the old targets and convention
+    if (use != depthInUse_ && targets_) {
+        // Built before anything changes: a failed allocation throws and keeps the old targets,
+        // convention and reason.
         targets_ = std::make_unique<FrameTargets>(targets_->layout(), *use, targets_->width(), targets_->height());
         gbufferCurrent_ = false;
     }
+    depthRequested_ = &requested;
+    depthReason_ = std::move(reason);
     depthInUse_ = use;
 }
 
