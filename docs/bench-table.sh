@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Turns `oasis bench`'s bench.csv into the README's markdown table.
+# Turns `oasis bench`'s bench.csv into a markdown table (docs/bench-table.md; docs/bench.md the default rows).
 # usage: docs/bench-table.sh [oasis-out/bench/bench.csv]
 set -euo pipefail
 csv=${1:-oasis-out/bench/bench.csv}

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Produces the README's compatibility table: for each driver set-up, what `oasis caps --json`
+# Produces docs/compatibility.md's table: for each driver set-up, what `oasis caps --json`
 # reports (GL, renderer, the paths taken), the result of its ctest label, and the median ms per
 # frame of each pipeline at 640x360 (`oasis compare --json`, wall time around glFinish).
 # usage: docs/compat.sh [build-dir] [frames]   (after a build; run on an idle machine; prints markdown)

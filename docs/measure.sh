@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Produces the README's timing tables: median ms per frame of each pipeline (wall time around
+# Produces docs/measurements.md's timing tables: median ms per frame of each pipeline (wall time around
 # glFinish) beside the floor measured in the same run, for each size, layout and reflection setting,
 # then the cost of vegetation at several densities.
 # usage: docs/measure.sh [path/to/oasis] [frames]   (run on an idle machine; prints markdown)

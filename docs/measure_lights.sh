@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Produces the README's lights table: median ms per frame of each pipeline at 1280x720 (default
+# Produces docs/lights.md's table: median ms per frame of each pipeline at 1280x720 (default
 # frame, 21:00, standard G-buffer) for 0..4096 of the scene's point lights, wall time around
 # glFinish, plus the deferred light-volume passes alone. Runs the GPU suite's disabled
 # LightsTable test. usage: docs/measure_lights.sh [build dir] [frames] [most lights to time forward at]   (an idle machine; markdown)
