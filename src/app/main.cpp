@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
         case Command::Compare: return runCompareCommand(options);
         case Command::Caps: return runCapsCommand(options);
         case Command::Bench: return runBenchCommand(options);
+        case Command::Probe: return runProbeCommand(options);
         case Command::Window: return runWindowApp(options);
         case Command::Default:
             return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);

@@ -66,6 +66,7 @@ const char* commandName(Command command) {
         case Command::Compare: return "compare";
         case Command::Caps: return "caps";
         case Command::Bench: return "bench";
+        case Command::Probe: return "probe";
     }
     return "";
 }
@@ -131,6 +132,17 @@ std::string usage(Command command) {
                    "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"
                    "  the bench sets --size, --time, --camera, --gbuffer, --lights and the knobs itself; other scene\n"
                    "  options (e.g. --hour, --ripples) set the scene every configuration starts from\n" + scene;
+        case Command::Probe:
+            return "usage: oasis probe --at X,Y [scene options] [--pipeline forward|deferred] [--json]\n"
+                   "  renders the frame and prints, for pixel X,Y (0,0 the top-left pixel, as in the PNGs), every\n"
+                   "  target's texel as stored (bytes, half floats or floats, per the G-buffer layout) and decoded\n"
+                   "  on the GPU as the lighting pass reads it: albedo (linear, sRGB), normal, position (camera-\n"
+                   "  relative, world, eye distance), info (specular power, intensity, flags), depth (stored, eye\n"
+                   "  distance), stencil and its meaning, Radiance, Reflection, Final, the point lights reaching\n"
+                   "  the surface, and on water pixels which scene the G-buffer holds there and why\n"
+                   "  --at X,Y                  the pixel (required)\n"
+                   "  --pipeline P              forward or deferred (default deferred)\n"
+                   "  --json                    one JSON object instead of the text\n" + scene;
         case Command::Window:
             return "usage: oasis window [scene options]\n"
                    "  opens the interactive window (what `oasis` does when a display exists)\n" + scene;
@@ -146,6 +158,7 @@ std::string usage(Command command) {
            "  compare    forward against deferred: image difference and time\n"
            "  caps       what this driver offers and which paths oasis takes on it (--json)\n"
            "  bench      time against error over pipelines, layouts, quality knobs and sizes\n"
+           "  probe      every target's value at one pixel, stored and decoded (--at X,Y)\n"
            "  oasis SUBCOMMAND --help for its options\n" + scene +
            "  --out-dir DIR             where the main job writes (default oasis-out)\n";
 }
@@ -166,7 +179,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         else if (name == "window") options.command = Command::Window;
         else if (name == "caps") options.command = Command::Caps;
         else if (name == "bench") options.command = Command::Bench;
-        else return fail("unknown subcommand '" + name + "' (expected render, compare, bench, caps or window)");
+        else if (name == "probe") options.command = Command::Probe;
+        else return fail("unknown subcommand '" + name + "' (expected render, compare, bench, probe, caps or window)");
         ++i;
     }
     for (; i < arguments.size(); ++i) {
@@ -175,13 +189,16 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
-            "--depth"};
+            "--depth", "--at"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
-        if (flag == "--json" && options.command == Command::Caps) { options.json = true; continue; }
+        if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
+            options.json = true;
+            continue;
+        }
         bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
         if (compareOnly && (options.command == Command::Render || options.command == Command::Window ||
-                            options.command == Command::Caps))
+                            options.command == Command::Caps || options.command == Command::Probe))
             return fail("option " + flag + " belongs to `oasis compare`, `oasis bench` and the main job");
         if (flag == "--quick") {
             if (options.command != Command::Bench) return fail("option --quick belongs to `oasis bench`");
@@ -206,8 +223,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         const std::string& value = arguments[++i];
         bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view" ||
                           flag == "--stop-before";
+        if (flag == "--pipeline" && options.command == Command::Probe) renderOnly = false;
         if (renderOnly && options.command != Command::Render)
             return fail("option " + flag + " belongs to `oasis render`");
+        if (flag == "--at" && options.command != Command::Probe) return fail("option --at belongs to `oasis probe`");
         if (flag == "--size") {
             if (!parseSize(value, options.scene.width, options.scene.height))
                 return fail("--size expects WxH with positive integers, e.g. 1280x720, got '" + value + "'");
@@ -278,6 +297,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         } else if (flag == "--force") {
             std::string error;
             if (!parseForcedFallbacks(value, options.scene.force, error)) return fail("--force: " + error);
+        } else if (flag == "--at") {
+            size_t comma = value.find(',');
+            int x = -1, y = -1;
+            if (comma == std::string::npos || !parseInt(value.substr(0, comma), x) ||
+                !parseInt(value.substr(comma + 1), y) || x < 0 || y < 0)
+                return fail("--at expects X,Y (two non-negative integers, 0,0 the top-left pixel), got '" + value + "'");
+            options.probeAt = std::pair{x, y};
         } else if (flag == "--stop-before") {
             options.stopBefore = value;  // checked against the pipeline's passes when it runs
         } else if (flag == "--out") {
@@ -292,6 +318,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         } else {
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         }
+    }
+    if (options.command == Command::Probe && !options.help) {
+        if (!options.probeAt) return fail("`oasis probe` needs --at X,Y (the pixel to probe)");
+        if (options.probeAt->first >= options.scene.width || options.probeAt->second >= options.scene.height)
+            return fail("--at " + std::to_string(options.probeAt->first) + "," + std::to_string(options.probeAt->second) +
+                        " is outside the " + std::to_string(options.scene.width) + "x" +
+                        std::to_string(options.scene.height) + " frame (0,0 is the top-left pixel)");
     }
     return result;
 }

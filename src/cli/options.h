@@ -30,7 +30,7 @@ struct SceneOptions {
     gl::ForcedFallbacks force;  // --force: capabilities switched off even where the driver has them
 };
 
-enum class Command { Default, Window, Render, Compare, Caps, Bench };
+enum class Command { Default, Window, Render, Compare, Caps, Bench, Probe };
 
 struct Options {
     Command command = Command::Default;
@@ -48,6 +48,7 @@ struct Options {
     bool quick = false;              // bench: the short smoke-test run
     std::optional<StencilViewPath> stencilView;
     std::string stopBefore;  // render: end the frame before this pass
+    std::optional<std::pair<int, int>> probeAt;  // probe: the pixel, 0,0 top left
 };
 
 struct ParseResult {

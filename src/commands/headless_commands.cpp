@@ -10,6 +10,7 @@
 
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "render/pixel_probe.h"
 
 namespace oasis {
 namespace {
@@ -198,6 +199,17 @@ int runMainJob(const Options& options) {
             return 1;
         printSummary(options, session, c);
         for (const std::string& path : written) std::printf("  wrote %s\n", path.c_str());
+        return 0;
+    });
+}
+
+int runProbeCommand(const Options& options) {
+    return withHeadlessSession(options, [&](RenderSession& session) {
+        Renderer& renderer = *session.renderer;
+        renderer.setPipeline(options.pipeline);
+        renderer.renderFrame(session.scene);
+        PixelProbe probe = probePixel(renderer, options.probeAt->first, options.probeAt->second);
+        std::fputs((options.json ? probeJson(probe) + "\n" : probeText(probe)).c_str(), stdout);
         return 0;
     });
 }

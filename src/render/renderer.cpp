@@ -206,39 +206,42 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     gbufferCurrent_ = pipeline.writes(Target::Albedo);
 }
 
+void Renderer::ensureGBuffer() {
+    if (gbufferCurrent_) return;
+    PassContext passContext = context();
+    // Forward draws no G-buffer: fill it for the view with the deferred passes of the direct scene
+    // that do not shade, each only if its forward counterpart ran this frame, so a frame
+    // stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
+    auto ranInForward = [&](std::string name) {
+        size_t suffix = name.find(".gbuffer");
+        if (suffix != std::string::npos) name.replace(suffix, 8, ".forward");
+        return std::find(passesRan_.begin(), passesRan_.end(), name) != passesRan_.end();
+    };
+    auto writes = [](const Pass& pass, Target target) {
+        std::vector<Target> written = pass.writes();
+        return std::find(written.begin(), written.end(), target) != written.end();
+    };
+    bool filled = false;
+    FrameClipControl clipControl(targets_->depth());
+    for (const auto& pass : deferred_.passes()) {
+        if (writes(*pass, Target::Reflection)) break;  // the mirrored half
+        if (writes(*pass, Target::Radiance)) continue;  // shading
+        // The depth copy has no forward counterpart: it follows whatever the fill drew.
+        bool copiesDepth = writes(*pass, Target::SceneDepth);
+        if (copiesDepth ? filled && pass->active(frame_) : ranInForward(pass->name())) {
+            pass->run(passContext);
+            filled = true;
+        }
+    }
+    gbufferCurrent_ = true;
+}
+
 void Renderer::renderView(const std::string& viewName) {
     PassContext passContext = context();
     const DebugView* view = findDebugView(viewName);
     if (!view && viewName != kOverviewName)
         throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
-    bool needsGBuffer = viewName == kOverviewName || (view && readsGBuffer(*view));
-    if (needsGBuffer && !gbufferCurrent_) {
-        // Forward draws no G-buffer: fill it for the view with the deferred passes of the direct scene
-        // that do not shade, each only if its forward counterpart ran this frame, so a frame
-        // stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
-        auto ranInForward = [&](std::string name) {
-            size_t suffix = name.find(".gbuffer");
-            if (suffix != std::string::npos) name.replace(suffix, 8, ".forward");
-            return std::find(passesRan_.begin(), passesRan_.end(), name) != passesRan_.end();
-        };
-        auto writes = [](const Pass& pass, Target target) {
-            std::vector<Target> written = pass.writes();
-            return std::find(written.begin(), written.end(), target) != written.end();
-        };
-        bool filled = false;
-        FrameClipControl clipControl(targets_->depth());
-        for (const auto& pass : deferred_.passes()) {
-            if (writes(*pass, Target::Reflection)) break;  // the mirrored half
-            if (writes(*pass, Target::Radiance)) continue;  // shading
-            // The depth copy has no forward counterpart: it follows whatever the fill drew.
-            bool copiesDepth = writes(*pass, Target::SceneDepth);
-            if (copiesDepth ? filled && pass->active(frame_) : ranInForward(pass->name())) {
-                pass->run(passContext);
-                filled = true;
-            }
-        }
-        gbufferCurrent_ = true;
-    }
+    if (viewName == kOverviewName || (view && readsGBuffer(*view))) ensureGBuffer();
     if (viewName == kOverviewName)
         debugViews_.drawOverview(passContext, stencilPath_);
     else

@@ -74,6 +74,9 @@ public:
     // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
     // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
     void renderView(const std::string& viewName);
+    // Makes the G-buffer hold the last frame: after a forward frame, fills it with the deferred
+    // geometry passes of the direct scene (what the G-buffer views and the probe read).
+    void ensureGBuffer();
     // The timing floor (passes/floor_pass.h) at the current size and layout; overwrites the targets.
     void renderFloor();
     // Shows the Display target in the bound window's framebuffer of the given size.

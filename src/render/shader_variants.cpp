@@ -16,7 +16,7 @@ bool touchesGBuffer(const ProgramVariant& variant) {
     const auto& d = variant.defines;
     bool writes = std::find(d.begin(), d.end(), "OUTPUT_GBUFFER") != d.end();
     const std::string readers[] = {"lighting.frag", "light_volume.frag", "gbuffer_clear.frag", "floor.frag",
-                                   "debug_view.frag", "gbuffer_positions.frag"};
+                                   "debug_view.frag", "gbuffer_positions.frag", "probe.frag"};
     bool marksOnly = std::find(d.begin(), d.end(), "MARK_ONLY") != d.end();
     return writes || (!marksOnly && std::find(std::begin(readers), std::end(readers), variant.fragmentFile) !=
                                         std::end(readers));
@@ -39,6 +39,7 @@ std::vector<ProgramVariant> buildVariants() {
         {"present", "fullscreen.vert", "debug_view.frag", {"VIEW_COLOUR"}},
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
         {"gbuffer.positions", "fullscreen.vert", "gbuffer_positions.frag", {}},
+        {"probe.pixel", "fullscreen.vert", "probe.frag", {}},
         {"depth.copy", "fullscreen.vert", "depth_copy.frag", {}},
         {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
         {"floor.read", "fullscreen.vert", "floor.frag", {"FLOOR_READ"}},

@@ -19,9 +19,10 @@ enum TextureUnit : int {
     kUnitStencil = 5,
     kUnitSource = 6,
     kUnitPlantAtlas = 7,
+    kUnitProbeDepthStencil = 8,  // the probe's view of the depth-stencil target (compact's gDepth is the copy)
 };
 
-inline constexpr std::array<SamplerBinding, 8> kSamplerBindings{{
+inline constexpr std::array<SamplerBinding, 9> kSamplerBindings{{
     {"gAlbedo", kUnitAlbedo},
     {"gNormal", kUnitNormal},
     {"gPosition", kUnitPosition},
@@ -30,6 +31,7 @@ inline constexpr std::array<SamplerBinding, 8> kSamplerBindings{{
     {"gStencil", kUnitStencil},
     {"sourceTexture", kUnitSource},
     {"plantAtlas", kUnitPlantAtlas},
+    {"probeDepthStencil", kUnitProbeDepthStencil},
 }};
 
 inline constexpr const char* kFrameBlockName = "FrameBlock";

@@ -1,0 +1,178 @@
+// The pixel probe against a CPU read-back of the same frame: at sky, terrain, plant, water
+// (direct and mirrored) and lit-by-lights pixels, in both pipelines and every G-buffer layout, the
+// probe's values (decoded on the GPU by shaders/probe.frag through common/gbuffer.glsl) equal the
+// targets read back and decoded on the CPU (GBufferLayout::storedNormal / storedFlags,
+// readSurfacePositions, readDepth, readStencil), and its stored bytes are the targets' own.
+#include "gpu_test.h"
+
+#include "render/pixel_probe.h"
+
+namespace oasis::gputest {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 90;
+
+// Still water in front of a shore with plants, at 21:00 with lights over the land and the lake:
+// every kind of pixel the probe explains is in this frame.
+SceneSettings probeScene() {
+    SceneSettings scene = sceneAtHeight(435.0, 4.0, 140.0, 30.0f, -3.0f);
+    scene.hour = 21.0;
+    scene.water.rippleStrength = 0.6f;
+    std::vector<WorldPointLight> lights;
+    const CameraPose& pose = *scene.camera;
+    for (int i = 0; i < 24; ++i) {
+        double a = (i * 0.618034) - std::floor(i * 0.618034), b = (i * 0.7548777) - std::floor(i * 0.7548777);
+        double yaw = glm::radians(double(pose.yawDegrees) + (a - 0.5) * 50.0), distance = 8.0 + 112.0 * b;
+        double x = pose.position.x + distance * std::sin(yaw), z = pose.position.z - distance * std::cos(yaw);
+        WorldPointLight light;
+        light.position = glm::dvec3(x, std::max(groundAt(x, z), 0.0) + 1.0 + 2.0 * a, z);
+        light.radius = float(8.0 + 8.0 * b);
+        light.colour = glm::vec3(1.0f, 0.6f, 0.3f);
+        light.intensity = 30.0f;
+        lights.push_back(light);
+    }
+    scene.lights.list = lights;
+    scene.lights.count = int(lights.size());
+    return scene;
+}
+
+enum class PixelKind { Sky, Terrain, Plant, WaterDirect, WaterMirrored, Lit, Count };
+const char* kindName(PixelKind kind) {
+    static const char* names[] = {"sky", "terrain", "plant", "water (direct scene)", "water (mirrored scene)", "lit"};
+    return names[int(kind)];
+}
+
+struct CpuFrame {
+    std::vector<float> albedo, normal, info, positions, radiance, reflection, final, depth;
+    std::vector<uint8_t> stencil;
+};
+
+// The lights whose sphere holds a camera-relative point, and whether any sphere's edge is too
+// close to it to decide in float.
+int lightsReaching(const FrameSetup& frame, glm::dvec3 point, bool& ambiguous) {
+    int count = 0;
+    for (const PointLight& light : frame.lights) {
+        double d = glm::distance(glm::dvec3(light.positionRadius), point), r = light.positionRadius.w;
+        if (std::fabs(d - r) < 1e-3 * r) ambiguous = true;
+        if (d < r) ++count;
+    }
+    return count;
+}
+
+class Probe : public GpuTest, public ::testing::WithParamInterface<std::tuple<PipelineKind, std::string>> {};
+
+TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
+    auto [pipeline, layoutName] = GetParam();
+    const SceneSettings scene = probeScene();
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    const GBufferLayout& layout = layoutNamed(layoutName);
+    renderer.configure(kWidth, kHeight, layout);
+    renderer.setPipeline(pipeline);
+    renderer.renderFrame(scene);
+    renderer.ensureGBuffer();  // a forward frame's G-buffer, as the probe and the views fill it
+
+    CpuFrame cpu{renderer.readTarget(Target::Albedo), renderer.readTarget(Target::Normal),
+                 renderer.readTarget(Target::Info), renderer.readSurfacePositions(),
+                 renderer.readTarget(Target::Radiance), renderer.readTarget(Target::Reflection),
+                 renderer.readTarget(Target::Final), renderer.readDepth(), renderer.readStencil()};
+    const FrameSetup& frame = renderer.lastFrame();
+
+    // Up to four pixels of each kind, spread over the frame (GL rows, bottom 0).
+    std::vector<std::pair<PixelKind, glm::ivec2>> pixels;
+    int found[int(PixelKind::Count)] = {};
+    auto take = [&](PixelKind kind, int x, int y) {
+        if (found[int(kind)]++ % 7 == 0 && found[int(kind)] <= 22) pixels.push_back({kind, {x, y}});
+    };
+    for (int y = 1; y < kHeight - 1; y += 3)
+        for (int x = 1; x < kWidth - 1; x += 3) {
+            size_t i = size_t(y) * kWidth + size_t(x);
+            unsigned flags = layout.storedFlags(texel(cpu.info, kWidth, x, y));
+            int stencil = cpu.stencil[i];
+            if (stencil == kStencilNothing) take(PixelKind::Sky, x, y);
+            if (stencil == kStencilTerrain) take(PixelKind::Terrain, x, y);
+            if (stencil == kStencilVegetation) take(PixelKind::Plant, x, y);
+            if (stencil == kStencilWater)
+                take((flags & kSurfaceReflected) ? PixelKind::WaterMirrored : PixelKind::WaterDirect, x, y);
+            if (!(flags & kSurfaceSky)) {
+                glm::dvec3 p = glm::dvec3(texel(cpu.positions, kWidth, x, y));
+                if (flags & kSurfaceReflected) p.y = 2.0 * (double(scene.water.level) - frame.view.pose.position.y) - p.y;
+                bool ambiguous = false;
+                if (lightsReaching(frame, p, ambiguous) > 0 && !ambiguous) take(PixelKind::Lit, x, y);
+            }
+        }
+    for (PixelKind kind : {PixelKind::Sky, PixelKind::Terrain, PixelKind::Plant, PixelKind::Lit})
+        EXPECT_GT(found[int(kind)], 0) << "no " << kindName(kind) << " pixel in the probe scene";
+    // Deferred keeps the mirrored scene in the G-buffer inside the water; forward the lakebed.
+    PixelKind water = pipeline == PipelineKind::Deferred ? PixelKind::WaterMirrored : PixelKind::WaterDirect;
+    EXPECT_GT(found[int(water)], 0) << "no " << kindName(water) << " pixel";
+
+    int checked = 0;
+    for (const auto& [kind, pixel] : pixels) {
+        int x = pixel.x, yFromBottom = pixel.y;
+        PixelProbe probe = probePixel(renderer, x, kHeight - 1 - yFromBottom);
+        size_t i = size_t(yFromBottom) * kWidth + size_t(x);
+        std::string where = std::string(kindName(kind)) + " pixel " + std::to_string(x) + "," +
+                            std::to_string(kHeight - 1 - yFromBottom);
+        glm::vec4 info = texel(cpu.info, kWidth, x, yFromBottom);
+        unsigned flags = layout.storedFlags(info);
+        EXPECT_EQ(probe.flags, flags) << where;
+        EXPECT_EQ(probe.sky, (flags & kSurfaceSky) != 0) << where;
+        EXPECT_EQ(probe.stencil, int(cpu.stencil[i])) << where;
+        EXPECT_NEAR(probe.depth, double(cpu.depth[i]), 1e-7) << where;  // glReadPixels' float of the same bits
+        EXPECT_EQ(probe.radiance, texel(cpu.radiance, kWidth, x, yFromBottom)) << where;
+        EXPECT_EQ(probe.reflection, texel(cpu.reflection, kWidth, x, yFromBottom)) << where;
+        EXPECT_EQ(probe.final, glm::ivec4(glm::round(texel(cpu.final, kWidth, x, yFromBottom) * 255.0f))) << where;
+        EXPECT_EQ(probe.waterScene.empty(), cpu.stencil[i] != kStencilWater) << where;
+        // The stored albedo bytes are the target's (every layout's albedo is RGBA8 except full's floats).
+        const StoredTexel& albedoTexel = probe.stored.front();
+        ASSERT_EQ(albedoTexel.target, "albedo");
+        glm::vec4 albedo = texel(cpu.albedo, kWidth, x, yFromBottom);
+        for (int c = 0; c < 4; ++c)
+            EXPECT_EQ(albedoTexel.values[size_t(c)],
+                      albedoTexel.format == "RGBA8" ? double(std::lround(albedo[c] * 255.0f)) : double(albedo[c]))
+                << where << " albedo channel " << c;
+        if (flags & kSurfaceSky) continue;
+        EXPECT_NEAR(glm::distance(probe.albedo, glm::vec3(albedo)), 0.0f, 1e-6f) << where;
+        glm::vec3 normal = layout.storedNormal(texel(cpu.normal, kWidth, x, yFromBottom));
+        EXPECT_NEAR(glm::distance(probe.normal, normal), 0.0f, 2e-5f) << where;
+        glm::vec3 position = glm::vec3(texel(cpu.positions, kWidth, x, yFromBottom));
+        EXPECT_NEAR(glm::distance(probe.relativePosition, position), 0.0f, 1e-5f * (1.0f + glm::length(position)))
+            << where;
+        EXPECT_EQ(probe.specularPower, std::round(info.r * 255.0f)) << where;
+        glm::dvec3 real = glm::dvec3(position);
+        if (flags & kSurfaceReflected) real.y = 2.0 * (double(scene.water.level) - frame.view.pose.position.y) - real.y;
+        EXPECT_NEAR(glm::distance(probe.worldPosition, frame.view.pose.position + real), 0.0, 1e-4 * (1.0 + glm::length(real)))
+            << where;
+        bool ambiguous = false;
+        int reaching = lightsReaching(frame, real, ambiguous);
+        if (!ambiguous) EXPECT_EQ(probe.lightsReaching, reaching) << where;
+        EXPECT_EQ(probe.lightsInList, int(frame.lights.size())) << where;
+        if (kind == PixelKind::Lit) EXPECT_GT(probe.lightsReaching, 0) << where;
+        ++checked;
+    }
+    EXPECT_GE(checked, 12);
+}
+
+std::string probeParamName(const ::testing::TestParamInfo<std::tuple<PipelineKind, std::string>>& info) {
+    return std::string(pipelineName(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryPipelineAndLayout, Probe,
+                         ::testing::Combine(::testing::Values(PipelineKind::Forward, PipelineKind::Deferred),
+                                            ::testing::Values("full", "standard", "compact")),
+                         probeParamName);
+
+// Outside the frame the probe refuses; the CLI turns that into exit 2 before any GL work.
+TEST_F(GpuTest, ProbeOutsideTheFrameThrows) {
+    SceneSettings scene;
+    Renderer renderer(*shaders_, scene);
+    renderer.configure(32, 18, layoutNamed("compact"));
+    renderer.renderFrame(scene);
+    EXPECT_THROW(probePixel(renderer, 32, 0), std::out_of_range);
+    EXPECT_THROW(probePixel(renderer, 0, -1), std::out_of_range);
+    EXPECT_NO_THROW(probePixel(renderer, 31, 17));
+}
+
+}  // namespace
+}  // namespace oasis::gputest
