@@ -38,6 +38,7 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
     switch (view.source) {
         case ViewSource::Final: bind(kUnitSource, targets.texture(Target::Final)); break;
         case ViewSource::Reflection: bind(kUnitSource, targets.texture(Target::Reflection)); break;
+        case ViewSource::Radiance: bind(kUnitSource, targets.texture(Target::Radiance)); break;
         case ViewSource::PlantAtlas: bind(kUnitSource, plantAtlasTexture_); break;
         case ViewSource::Vegetation:
             bind(kUnitSource, targets.texture(Target::Final));
@@ -73,7 +74,10 @@ void DebugViewPass::drawTile(PassContext& context, const DebugView& view, Stenci
     glViewport(x, y, width, height);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
-    glUseProgram(context.shaders.program(context.targets.layout().program(debugProgramName(view))));
+    GLuint program = context.shaders.program(context.targets.layout().program(debugProgramName(view)));
+    glUseProgram(program);
+    if (GLint exposure = glGetUniformLocation(program, "viewExposure"); exposure >= 0)
+        glUniform1f(exposure, std::exp2(exposureStops_));
     context.geometry.drawFullscreenTriangle();
     if (view.source == ViewSource::Stencil && stencilPath == StencilViewPath::Texturing) {
         // Leave the depth-stencil texture in its default mode for the depth view and the passes.

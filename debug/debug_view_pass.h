@@ -22,6 +22,9 @@ public:
     void drawOverview(PassContext& context, StencilViewPath stencilPath);
     // The texture the atlas view shows (0: none, the view is black).
     void setPlantAtlasTexture(GLuint texture) { plantAtlasTexture_ = texture; }
+    // The HDR views' exposure in stops: linear light times 2^stops before display.
+    void setExposureStops(float stops) { exposureStops_ = stops; }
+    float exposureStops() const { return exposureStops_; }
 
 private:
     void drawTile(PassContext& context, const DebugView& view, StencilViewPath stencilPath,
@@ -30,6 +33,7 @@ private:
     void uploadStencilCopy(const FrameTargets& targets);
 
     GLuint plantAtlasTexture_ = 0;
+    float exposureStops_ = 0.0f;
     gl::Texture stencilCopy_;
     int stencilCopyWidth_ = 0, stencilCopyHeight_ = 0;
     std::vector<uint8_t> stencilBytes_;

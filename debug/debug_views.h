@@ -9,7 +9,7 @@
 
 namespace oasis {
 
-enum class ViewSource { Final, Albedo, Normal, Position, Info, Depth, Stencil, Reflection, PlantAtlas, Vegetation };
+enum class ViewSource { Final, Albedo, Normal, Position, Info, Depth, Stencil, Radiance, Reflection, PlantAtlas, Vegetation };
 
 struct DebugView {
     std::string name;

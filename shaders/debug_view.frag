@@ -31,6 +31,13 @@ vec3 viewColour() {
 uniform sampler2D sourceTexture;
 vec3 viewColour() { return displayEncode(texture(sourceTexture, vScreenUv).rgb); }
 
+#elif defined(VIEW_HDR)
+// Linear light as stored, scaled by the view's exposure (2^stops) and gamma-encoded with no tone
+// curve: what lies above 1 after the exposure clips to white, so the stops show the range.
+uniform sampler2D sourceTexture;
+uniform float viewExposure;
+vec3 viewColour() { return pow(clamp(texture(sourceTexture, vScreenUv).rgb * viewExposure, 0.0, 1.0), vec3(1.0 / 2.2)); }
+
 #elif defined(VIEW_ALBEDO)
 vec3 viewColour() {
     // Linear reflectance, gamma-encoded so it reads like the frame; black where nothing was drawn.
@@ -58,13 +65,13 @@ vec3 viewColour() {
 
 #elif defined(VIEW_INFO)
 vec3 viewColour() {
-    // Red: specular power (0..64), green: specular intensity (0..0.25),
-    // blue: flags (full blue = sky, half blue = a reflected surface).
+    // Red: specular power (0..64), green: specular intensity (0..0.25), blue: the flags, each its
+    // own share (0.8 sky alone; otherwise 0.5 for REFLECTED plus 0.25 for PLANT).
     ivec2 pixel = gbufferPixelAt(vScreenUv);
     if (gbufferSkyAt(pixel)) return vec3(0.0, 0.0, 0.8);
     Surface s = readGBuffer(pixel);
-    float reflectedMark = (s.flags & SURFACE_REFLECTED) != 0u ? 0.5 : 0.0;
-    return vec3(s.specularPower / 64.0, s.specularIntensity / 0.25, reflectedMark);
+    float flagMarks = ((s.flags & SURFACE_REFLECTED) != 0u ? 0.5 : 0.0) + ((s.flags & SURFACE_PLANT) != 0u ? 0.25 : 0.0);
+    return vec3(s.specularPower / 64.0, s.specularIntensity / 0.25, flagMarks);
 }
 
 #elif defined(VIEW_DEPTH)

@@ -102,6 +102,8 @@ std::string usage(Command command) {
             return "usage: oasis render [scene options] [--pipeline forward|deferred] [--view NAME] [--out FILE.png]\n"
                    "  renders one frame and writes one debug view of it (default: deferred, final)\n"
                    "  --view NAME               " + debugViewNames() + "\n"
+                   "  --view-exposure STOPS     the HDR views (radiance, reflection-raw): light times 2^STOPS,\n"
+                   "                            -20..20 (default 0)\n"
                    "  --stencil-view PATH       texturing | read-back (default: texturing where supported)\n"
                    "  --stop-before PASS        end the frame before the named pass, to see its inputs\n"
                    "                            (e.g. WaterCompositePass; a wrong name lists the passes);\n"
@@ -189,7 +191,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
-            "--depth", "--at"};
+            "--depth", "--at", "--view-exposure"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
@@ -222,7 +224,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (i + 1 >= arguments.size()) return fail("option " + flag + " needs a value (see --help)");
         const std::string& value = arguments[++i];
         bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view" ||
-                          flag == "--stop-before";
+                          flag == "--stop-before" || flag == "--view-exposure";
         if (flag == "--pipeline" && options.command == Command::Probe) renderOnly = false;
         if (renderOnly && options.command != Command::Render)
             return fail("option " + flag + " belongs to `oasis render`");
@@ -290,6 +292,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!findDebugView(value) && value != kOverviewName)
                 return fail("--view: unknown view '" + value + "' (one of: " + debugViewNames() + ")");
             options.view = value;
+        } else if (flag == "--view-exposure") {
+            double stops = 0.0;
+            if (!parseDouble(value, stops) || stops < -20.0 || stops > 20.0)
+                return fail("--view-exposure expects stops from -20 to 20, got '" + value + "'");
+            options.viewExposure = float(stops);
         } else if (flag == "--stencil-view") {
             if (value == "texturing") options.stencilView = StencilViewPath::Texturing;
             else if (value == "read-back") options.stencilView = StencilViewPath::ReadBack;

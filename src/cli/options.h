@@ -38,6 +38,7 @@ struct Options {
     SceneOptions scene;
     PipelineKind pipeline = PipelineKind::Deferred;
     std::string view = "final";
+    float viewExposure = 0.0f;  // render: the HDR views' exposure in stops
     std::string out = "oasis.png";
     std::string outDir = "oasis-out";
     bool json = false;

@@ -151,6 +151,7 @@ int runRenderCommand(const Options& options) {
         Renderer& renderer = *session.renderer;
         renderer.setPipeline(options.pipeline);
         renderer.renderFrame(session.scene, options.stopBefore);
+        renderer.setViewExposure(options.viewExposure);
         renderer.renderView(options.view);
         std::string error;
         if (!writePng(options.out, renderer.readDisplay(), error)) {

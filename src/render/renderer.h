@@ -45,6 +45,9 @@ public:
     StencilViewPath stencilViewPath() const { return stencilPath_; }
     // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).
     void setPlantAtlas(const PlantAtlas* atlas);
+    // The HDR views' (radiance, reflection-raw) exposure, in stops.
+    void setViewExposure(float stops) { debugViews_.setExposureStops(stops); }
+    float viewExposure() const { return debugViews_.exposureStops(); }
     const PlantAtlas* plantAtlas() const { return plantAtlas_; }
     // The plants placed around the last frame's camera and what that frame drew of them.
     const VegetationField& vegetation() const { return vegetationField_; }

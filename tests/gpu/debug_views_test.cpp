@@ -131,11 +131,12 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
         ImageDifference difference = compareImages(deferred, forward);
         const DebugView* view = findDebugView(name);
         // The vegetation view shows lit pixels (Final), masked by the G-buffer's plant flags.
-        if (name == "final" || name == "reflection" || name == "vegetation") {
+        if (name == "final" || name == "reflection" || name == "vegetation" || name == "radiance" ||
+            name == "reflection-raw") {
             std::printf("[views] %s: forward vs deferred PSNR %.2f dB, max %d\n", name.c_str(), difference.psnrDb,
                         difference.maxAbs);
             EXPECT_GE(difference.psnrDb, 45.0) << name << " view: forward and deferred disagree";
-            if (name == "reflection") {
+            if (name == "reflection" || name == "reflection-raw") {
                 DifferingPixels lit = differingPixels(deferred, Image(kWidth, kHeight), inWater);
                 EXPECT_EQ(differingPixels(forward, Image(kWidth, kHeight), inWater).elsewhere, 0)
                     << "forward reflection view not black outside the water";
@@ -148,7 +149,8 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
             for (size_t t = 0; t < tiles.size(); ++t) {
                 const std::string& tileView = debugViews()[t].name;
                 SCOPED_TRACE("tile " + tileView);
-                if (tileView == "final" || tileView == "reflection" || tileView == "vegetation") {
+                if (tileView == "final" || tileView == "reflection" || tileView == "vegetation" ||
+                    tileView == "radiance" || tileView == "reflection-raw") {
                     EXPECT_GE(regionPsnr(deferred, forward, tiles[t].area), 45.0);
                 } else {
                     EXPECT_EQ(regionPsnr(deferredOff, forward, tiles[t].area), kPsnrIdentical)
@@ -239,6 +241,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     const std::vector<float> info = renderer.readTarget(Target::Info);
     const std::vector<float> final = renderer.readTarget(Target::Final);
     const std::vector<float> reflection = renderer.readTarget(Target::Reflection);
+    const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
     const std::vector<float> depth = renderer.readDepth();
     const std::vector<uint8_t> stencil = renderer.readStencil();
     const FrameData& frame = renderer.lastFrame().data;
@@ -286,9 +289,9 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     expected["info"] = [&](int x, int y) {
         glm::vec4 i = texel(info, kWidth, x, y);
         if (flagsAt(x, y) & kSurfaceSky) return std::make_pair(glm::ivec3(0, 0, 204), 0);
-        float reflectedMark = (flagsAt(x, y) & kSurfaceReflected) ? 0.5f : 0.0f;
+        float flagMarks = ((flagsAt(x, y) & kSurfaceReflected) ? 0.5f : 0.0f) + ((flagsAt(x, y) & kSurfacePlant) ? 0.25f : 0.0f);
         float intensity = layout.encoding == GBufferEncoding::Compact ? texel(albedo, kWidth, x, y).a : i.g;
-        return std::make_pair(to8bit({std::round(i.r * 255.0f) / 64.0f, intensity / 0.25f, reflectedMark}), 1);
+        return std::make_pair(to8bit({std::round(i.r * 255.0f) / 64.0f, intensity / 0.25f, flagMarks}), 1);
     };
     expected["depth"] = [&](int x, int y) {
         float d = depth[size_t(y) * kWidth + size_t(x)];
@@ -323,6 +326,13 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         return std::make_pair(to8bit(glm::pow(mapped, glm::vec3(1.0f / 2.2f))), 1);
     };
 
+    // The HDR views: linear light times 2^stops (0 stops here), gamma 2.2, clipped at 1.
+    auto hdr = [](glm::vec4 light) {
+        return to8bit(glm::pow(glm::clamp(glm::vec3(light), 0.0f, 1.0f), glm::vec3(1.0f / 2.2f)));
+    };
+    expected["radiance"] = [&](int x, int y) { return std::make_pair(hdr(texel(radiance, kWidth, x, y)), 1); };
+    expected["reflection-raw"] = [&](int x, int y) { return std::make_pair(hdr(texel(reflection, kWidth, x, y)), 1); };
+
     int reflectionOutsideWater = 0, stencilWater = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
@@ -355,6 +365,19 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
             EXPECT_GT(cleared, 0);
         }
     }
+
+    // The exposure control: +2 stops shows Radiance four times as bright (before the clip at 1).
+    renderer.setViewExposure(2.0f);
+    renderer.renderView("radiance");
+    Image brighter = renderer.readDisplay();
+    renderer.setViewExposure(0.0f);
+    int exposureOff = 0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x)
+            if (maxChannelDifference(displayPixel(brighter, x, y), hdr(4.0f * texel(radiance, kWidth, x, y))) > 1)
+                ++exposureOff;
+    EXPECT_EQ(exposureOff, 0) << "radiance view at +2 stops";
+    EXPECT_GT(compareImages(brighter, images["radiance"]).maxAbs, 20) << "the exposure changed nothing";
 
     // The stencil view through stencil texturing equals the CPU read-back path bit for bit,
     // alone and inside the overview.
