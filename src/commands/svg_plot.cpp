@@ -99,7 +99,8 @@ std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<std::pair<
             for (int row = 0; row <= kLabelRows && !placed[i]; ++row)
                 for (double baseline : {py - 6 - kLabelRow * row, py + 14 + kLabelRow * row})
                     for (bool rightAligned : {false, true}) {
-                        PlacedLabel label{rightAligned ? px - kLabelGap : px + kLabelGap, baseline, rightAligned, row > 0};
+                        double x = rightAligned ? px - kLabelGap : px + kLabelGap;
+                        PlacedLabel label{x, baseline, rightAligned, row > 0};
                         Box box = labelBox(label, texts[i].size());
                         if (placed[i] || !box.inside(plot) || (pass == 0 && coversAPoint(box, i))) continue;
                         if (std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(box); }))
@@ -236,8 +237,8 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
             const PlacedLabel& spot = *spots[i];
             const std::string& colour = labelled[i]->frontier ? "#222" : colourOf[labelled[i]->series];
             if (spot.leader)
-                svg += "<line class=\"leader\" x1=\"" + number(anchors[i].first) + "\" y1=\"" + number(anchors[i].second) +
-                       "\" x2=\"" + number(spot.x) + "\" y2=\"" + number(spot.y - 3) + "\" stroke=\"" + colour +
+                svg += "<line class=\"leader\" x1=\"" + number(anchors[i].first) + "\" y1=\"" +
+                       number(anchors[i].second) + "\" x2=\"" + number(spot.x) + "\" y2=\"" + number(spot.y - 3) + "\" stroke=\"" + colour +
                        "\" stroke-width=\"0.5\" stroke-opacity=\"0.7\"/>\n";
             svg += "<text class=\"point-label\" x=\"" + number(spot.x) + "\" y=\"" + number(spot.y) + "\"" +
                    (spot.rightAligned ? " text-anchor=\"end\"" : "") + " font-size=\"" + number(kLabelFontSize) +

@@ -91,7 +91,8 @@ TEST_F(FileOutput, ReplacingKeepsThePermissionsAndALinkStaysALink) {
     ASSERT_TRUE(writeFileWhole(link, "new", error)) << error;
     EXPECT_TRUE(fs::is_symlink(link));
     EXPECT_EQ(readFile(real), "new");
-    EXPECT_EQ(fs::status(real).permissions() & fs::perms::all, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+    EXPECT_EQ(fs::status(real).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
     EXPECT_EQ(namesIn(dir), (std::set<std::string>{"real.txt", "link.txt"}));
 }
 
