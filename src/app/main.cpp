@@ -1,4 +1,5 @@
 // oasis's entry point: parse the command line, then run the window or a headless command.
+#include <csignal>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -13,6 +14,9 @@
 int main(int argc, char** argv) {
     using namespace oasis;
     std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress reaches logs even if the window is killed
+    // Past a file-size limit (ulimit -f) a write should fail with EFBIG and be reported as a file
+    // that could not be written (exit 1), not kill the process with SIGXFSZ.
+    std::signal(SIGXFSZ, SIG_IGN);
     ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
     if (!parsed.ok) {
         std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
 #include <memory>
@@ -20,6 +19,7 @@
 #include "commands/svg_plot.h"
 #include "context/gl_context.h"
 #include "render/gbuffer_layout.h"
+#include "render/file_output.h"
 #include "render/image.h"
 
 namespace oasis {
@@ -293,17 +293,6 @@ std::vector<DepthPrecision> compareDepthPrecision(const RenderSession& session, 
     return rows;
 }
 
-bool writeText(const std::string& path, const std::string& text, std::string& error) {
-    std::ofstream file(path, std::ios::binary);
-    file << text;
-    file.close();
-    if (!file) {
-        error = "cannot write " + path;
-        return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 BenchPlan benchPlan(const Options& options) {
@@ -352,7 +341,9 @@ int runBenchCommand(const Options& options) {
             std::fprintf(stderr, "oasis bench: no reversed-z configurations (%s)\n", clipControlWhy.c_str());
         insertDepthConfigs(configs, defaultGBufferLayout().name, extraDepths);
         std::string outDir = options.outDirGiven ? options.outDir : "oasis-out/bench";
-        std::filesystem::create_directories(outDir);
+        std::error_code made;
+        std::filesystem::create_directories(outDir, made);
+        if (made) throw std::runtime_error("cannot create directory " + outDir + ": " + made.message());
 
         std::FILE* tableOut = options.json ? stderr : stdout;
         std::fprintf(tableOut,
@@ -456,11 +447,6 @@ int runBenchCommand(const Options& options) {
         std::string csv = benchCsvHeader() + "\n";
         for (const BenchResult& r : results) csv += benchCsvRow(r) + "\n";
         std::string json = benchJson(results, floors, frames, plan, options, rendererName, reference.name, depthPrecision);
-        std::string error;
-        for (const auto& [file, text] : {std::pair<std::string, std::string>{"bench.csv", csv}, {"bench.json", json},
-                                         {"bench.svg", benchSvg(results, rendererName)},
-                                         {"depth_precision.csv", depthPrecisionCsv(depthPrecision)}})
-            if (!writeText(outDir + "/" + file, text, error)) throw std::runtime_error(error);
         std::fputs(tableText(results).c_str(), tableOut);
         for (const Floor& floor : floors)
             std::fprintf(tableOut, "floor %dx%d %s: %.2f ms\n", floor.width, floor.height, floor.layout.c_str(), floor.ms);
@@ -477,9 +463,23 @@ int runBenchCommand(const Options& options) {
                                "to distance):\n%s",
                      sizeName(plan.sizes.front().first, plan.sizes.front().second).c_str(),
                      depthPrecisionTable(depthPrecision).c_str());
+        if (options.json) std::fputs(json.c_str(), stdout);
+        // The measurements are printed above whatever happens here, so a long run is never lost.
+        // The files are one set (render/file_output.h): on a failure none is renamed, and the
+        // directory keeps an earlier run's four files together rather than a mix of two runs.
+        std::vector<OutputFile> reports = {{outDir + "/bench.csv", csv}, {outDir + "/bench.json", json},
+                                           {outDir + "/bench.svg", benchSvg(results, rendererName)},
+                                           {outDir + "/depth_precision.csv", depthPrecisionCsv(depthPrecision)}};
+        std::vector<std::string> written;
+        std::string error;
+        if (!writeFilesWhole(reports, written, error)) {
+            std::fprintf(stderr, "oasis: %s\n", error.c_str());
+            for (const std::string& path : written)
+                std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
+            return 1;
+        }
         std::fprintf(tableOut, "wrote %s/bench.csv, %s/bench.json, %s/bench.svg, %s/depth_precision.csv in %.0f s\n",
                      outDir.c_str(), outDir.c_str(), outDir.c_str(), outDir.c_str(), elapsedMs(runStart) / 1000.0);
-        if (options.json) std::fputs(json.c_str(), stdout);
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: %s\n", error.what());

@@ -2,6 +2,7 @@
 #include "commands/headless_commands.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -10,6 +11,7 @@
 
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "render/file_output.h"
 #include "render/pixel_probe.h"
 
 namespace oasis {
@@ -57,16 +59,33 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     return result;
 }
 
+// Whether `path` is the file standard output goes to (/dev/stdout, or the file stdout is redirected to).
+bool isStandardOutput(const std::string& path) {
+    struct stat named, out;
+    return stat(path.c_str(), &named) == 0 && fstat(STDOUT_FILENO, &out) == 0 && named.st_dev == out.st_dev &&
+           named.st_ino == out.st_ino;
+}
+
+// Writes the images as one set (render/file_output.h): all of them or, on a failure, none, so the
+// directory never mixes this run's images with an earlier run's. On failure the message names the
+// file; a path is reported written only once it is complete under its name.
 bool writeImages(const std::string& directory, const std::vector<std::pair<std::string, const Image*>>& images,
                  std::vector<std::string>& written) {
     std::string error;
     if (!ensureDirectory(directory, error)) { std::fprintf(stderr, "oasis: %s\n", error.c_str()); return false; }
+    std::vector<OutputFile> files;
     for (const auto& [file, image] : images) {
-        std::string path = directory + "/" + file;
-        if (!writePng(path, *image, error)) { std::fprintf(stderr, "oasis: %s\n", error.c_str()); return false; }
-        written.push_back(path);
+        files.push_back({directory + "/" + file, {}});
+        if (!encodePng(*image, files.back().bytes)) {
+            std::fprintf(stderr, "oasis: cannot write %s: PNG encoding failed\n", files.back().path.c_str());
+            return false;
+        }
     }
-    return true;
+    if (writeFilesWhole(files, written, error)) return true;
+    std::fprintf(stderr, "oasis: %s\n", error.c_str());
+    for (const std::string& path : written)
+        std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
+    return false;
 }
 
 void printSummary(const Options& options, const RenderSession& session, const Comparison& c) {
@@ -158,12 +177,13 @@ int runRenderCommand(const Options& options) {
             std::fprintf(stderr, "oasis: %s\n", error.c_str());
             return 1;
         }
-        std::printf("oasis: wrote %s (%s pipeline, view %s, %dx%d)\n", options.out.c_str(),
-                    pipelineName(options.pipeline), options.view.c_str(), renderer.targets().width(),
-                    renderer.targets().height());
-        std::printf("oasis: %s\n", describePlantAtlas(session).c_str());
-        std::printf("oasis: %s\n", describeVegetation(renderer).c_str());
-        std::printf("oasis: %s\n", describeLights(renderer).c_str());
+        std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
+        std::fprintf(report, "oasis: wrote %s (%s pipeline, view %s, %dx%d)\n", options.out.c_str(),
+                     pipelineName(options.pipeline), options.view.c_str(), renderer.targets().width(),
+                     renderer.targets().height());
+        std::fprintf(report, "oasis: %s\n", describePlantAtlas(session).c_str());
+        std::fprintf(report, "oasis: %s\n", describeVegetation(renderer).c_str());
+        std::fprintf(report, "oasis: %s\n", describeLights(renderer).c_str());
         return 0;
     });
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 namespace oasis {
 namespace {
@@ -49,6 +50,66 @@ Range paddedRange(double low, double high) {
     }
     double pad = (high - low) * 0.08;
     return {low - pad, high + pad};
+}
+
+// Point labels: 10 px sans-serif, at most ~0.6 em a character (DejaVu Sans, rsvg's default, is
+// the widest common one), so a box of that size bounds what a renderer draws.
+constexpr double kLabelFontSize = 10, kLabelCharWidth = 6.0, kLabelAscent = 8, kLabelDescent = 3;
+constexpr double kLabelGap = 8, kLabelRow = 12;  // beside the point; one row of a stack
+constexpr int kLabelRows = 8;                    // how far up or down a label may move from its point
+
+struct Box {
+    double x0, y0, x1, y1;
+    bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+    bool inside(const Box& o) const { return x0 >= o.x0 && x1 <= o.x1 && y0 >= o.y0 && y1 <= o.y1; }
+};
+
+struct PlacedLabel {
+    double x = 0, y = 0;  // the text's anchor and baseline
+    bool rightAligned = false;
+    bool leader = false;  // moved off its point: a thin line joins them
+};
+
+Box labelBox(const PlacedLabel& label, size_t characters) {
+    double width = kLabelCharWidth * double(characters);
+    double x0 = label.rightAligned ? label.x - width : label.x;
+    return {x0, label.y - kLabelAscent, x0 + width, label.y + kLabelDescent};
+}
+
+// Places each label beside its point where it overlaps no label placed before it and stays in the
+// plot; crowded points get theirs stacked above or below with a leader line. Earlier labels win:
+// first a spot that covers no point either, then one that covers only points. A label with no
+// spot is left out (its point keeps the label as a tooltip). Returns a spot per label, or none.
+std::vector<std::optional<PlacedLabel>> placeLabels(const std::vector<std::pair<double, double>>& anchors,
+                                                    const std::vector<std::string>& texts,
+                                                    const std::vector<std::pair<double, double>>& points,
+                                                    const Box& plot) {
+    std::vector<Box> taken;
+    std::vector<std::optional<PlacedLabel>> placed(anchors.size());
+    auto coversAPoint = [&](const Box& box, size_t own) {
+        for (const auto& [x, y] : points) {
+            if (x == anchors[own].first && y == anchors[own].second) continue;
+            if (box.overlaps({x - 4, y - 4, x + 4, y + 4})) return true;
+        }
+        return false;
+    };
+    for (size_t i = 0; i < anchors.size(); ++i) {
+        auto [px, py] = anchors[i];
+        for (int pass = 0; pass < 2 && !placed[i]; ++pass)
+            for (int row = 0; row <= kLabelRows && !placed[i]; ++row)
+                for (double baseline : {py - 6 - kLabelRow * row, py + 14 + kLabelRow * row})
+                    for (bool rightAligned : {false, true}) {
+                        double x = rightAligned ? px - kLabelGap : px + kLabelGap;
+                        PlacedLabel label{x, baseline, rightAligned, row > 0};
+                        Box box = labelBox(label, texts[i].size());
+                        if (placed[i] || !box.inside(plot) || (pass == 0 && coversAPoint(box, i))) continue;
+                        if (std::any_of(taken.begin(), taken.end(), [&](const Box& t) { return t.overlaps(box); }))
+                            continue;
+                        placed[i] = label;
+                        taken.push_back(box);
+                    }
+    }
+    return placed;
 }
 
 }  // namespace
@@ -160,10 +221,29 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
                    (q.frontier ? "1" : "0.55") + "\"" + (q.frontier ? " stroke=\"black\" stroke-width=\"1.5\"" : "") +
                    "><title>" + escape(q.series + " " + q.label) + "</title></circle>\n";
         }
-        labelled.insert(labelled.end(), frontier.begin(), frontier.end());
-        for (const PlotPoint* q : labelled)
-            svg += "<text x=\"" + number(sx(q->x) + 8) + "\" y=\"" + number(sy(q->y) - 6) + "\" font-size=\"10\" fill=\"" +
-                   (q->frontier ? "#222" : colourOf[q->series]) + "\">" + escape(q->label) + "</text>\n";
+        // The panel's frontier first: its labels get the best spots.
+        labelled.insert(labelled.begin(), frontier.begin(), frontier.end());
+        std::vector<std::pair<double, double>> anchors, points;
+        std::vector<std::string> texts;
+        for (const PlotPoint* q : labelled) {
+            anchors.push_back({sx(q->x), sy(q->y)});
+            texts.push_back(q->label);
+        }
+        for (const PlotPoint& q : panel.points) points.push_back({sx(q.x), sy(q.y)});
+        std::vector<std::optional<PlacedLabel>> spots =
+            placeLabels(anchors, texts, points, {ox + kLeft, oy + kTop, ox + kLeft + plotW, oy + kTop + plotH});
+        for (size_t i = 0; i < labelled.size(); ++i) {
+            if (!spots[i]) continue;
+            const PlacedLabel& spot = *spots[i];
+            const std::string& colour = labelled[i]->frontier ? "#222" : colourOf[labelled[i]->series];
+            if (spot.leader)
+                svg += "<line class=\"leader\" x1=\"" + number(anchors[i].first) + "\" y1=\"" +
+                       number(anchors[i].second) + "\" x2=\"" + number(spot.x) + "\" y2=\"" + number(spot.y - 3) + "\" stroke=\"" + colour +
+                       "\" stroke-width=\"0.5\" stroke-opacity=\"0.7\"/>\n";
+            svg += "<text class=\"point-label\" x=\"" + number(spot.x) + "\" y=\"" + number(spot.y) + "\"" +
+                   (spot.rightAligned ? " text-anchor=\"end\"" : "") + " font-size=\"" + number(kLabelFontSize) +
+                   "\" fill=\"" + colour + "\">" + escape(labelled[i]->label) + "</text>\n";
+        }
         svg += "</g>\n";
     }
     // Legend: one swatch per series, and the frontier's mark.

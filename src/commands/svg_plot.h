@@ -1,5 +1,6 @@
 // A small SVG scatter-plot writer for the bench: side-by-side panels, axes with ticks, points
-// coloured by series with a legend, and marked frontiers (the panel's, and each series' own).
+// coloured by series with a legend, and marked frontiers (the panel's, and each series' own) whose
+// points are labelled without overlap (crowded labels are stacked with a leader line, or left out).
 #pragma once
 #include <string>
 #include <vector>
@@ -9,7 +10,7 @@ namespace oasis {
 struct PlotPoint {
     double x = 0.0, y = 0.0;
     std::string series;  // picks the colour (first series seen gets the first colour)
-    std::string label;   // drawn beside frontier points
+    std::string label;   // drawn beside frontier points (always in the point's tooltip)
     bool frontier = false;        // on the panel's frontier: outlined, joined by the dashed grey line
     bool seriesFrontier = false;  // on its series' own frontier: joined by a thin line of its colour
 };

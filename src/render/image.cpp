@@ -1,10 +1,11 @@
-// Image output and comparison.
+// Image output (PNG encoded in memory, written whole) and comparison.
 #include "render/image.h"
+
+#include "render/file_output.h"
 
 #include <stb_image_write.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -23,13 +24,24 @@ void Image::flipRows() {
     }
 }
 
+bool encodePng(const Image& image, std::string& png) {
+    png.clear();
+    if (image.width < 1 || image.height < 1) return false;
+    auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+    };
+    return stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.rgba.data(), image.width * 4) &&
+           !png.empty();
+}
+
 bool writePng(const std::string& path, const Image& image, std::string& error) {
-    errno = 0;
-    if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4)) {
-        error = "cannot write " + path + (errno ? std::string(": ") + std::strerror(errno) : std::string());
+    std::string png;
+    if (!encodePng(image, png)) {
+        error = "cannot write " + path + ": PNG encoding failed (" + std::to_string(image.width) + "x" +
+                std::to_string(image.height) + ")";
         return false;
     }
-    return true;
+    return writeFileWhole(path, png, error);
 }
 
 ImageDifference compareImages(const Image& a, const Image& b) {

@@ -18,7 +18,11 @@ struct Image {
     void flipRows();
 };
 
-// Writes a PNG; on failure returns false and says why.
+// The PNG file's bytes, encoded in memory; false if the encoder fails (no memory, an empty image).
+bool encodePng(const Image& image, std::string& png);
+
+// Writes a PNG whole or not at all (render/file_output.h); on failure returns false and `error`
+// says "cannot write PATH: REASON".
 bool writePng(const std::string& path, const Image& image, std::string& error);
 
 // PSNR is capped at kPsnrIdentical (identical images have infinite PSNR).

@@ -1,4 +1,5 @@
-// Covers src/render/image.h: compareImages metrics (PSNR, RMSE, max abs), differenceHeatmap, flipRows and writePng.
+// Covers src/render/image.h: compareImages metrics (PSNR, RMSE, max abs), differenceHeatmap, flipRows,
+// encodePng and writePng (decoded back with stb_image).
 #include <gtest/gtest.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -12,6 +13,8 @@
 #include <vector>
 
 #include "render/image.h"
+
+#include <stb_image.h>
 
 namespace oasis {
 namespace {
@@ -222,6 +225,37 @@ TEST_F(WritePng, WritesAValidPngHeader) {
     EXPECT_EQ(bigEndian32(&bytes[20]), 5u);
     EXPECT_EQ(bytes[24], 8);
     EXPECT_EQ(bytes[25], 6);
+}
+
+// The file decodes (stb_image) to the very pixels written, and the directory holds only it.
+TEST_F(WritePng, DecodesToTheSamePixelsAndLeavesOnlyTheTarget) {
+    Image image = pattern(37, 21);
+    std::string path = dir + "/frame.png", error;
+    ASSERT_TRUE(writePng(path, image, error)) << error;
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) names.push_back(entry.path().filename());
+    EXPECT_EQ(names, std::vector<std::string>{"frame.png"});
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string encoded;
+    ASSERT_TRUE(encodePng(image, encoded));
+    EXPECT_EQ(bytes, encoded);
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* decoded = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &w, &h,
+                                             &channels, 4);
+    ASSERT_NE(decoded, nullptr) << stbi_failure_reason();
+    EXPECT_EQ(w, 37);
+    EXPECT_EQ(h, 21);
+    EXPECT_EQ(channels, 4);
+    EXPECT_EQ(std::memcmp(decoded, image.rgba.data(), image.rgba.size()), 0);
+    stbi_image_free(decoded);
+}
+
+TEST_F(WritePng, AnEmptyImageIsRefusedAndNothingIsWritten) {
+    std::string path = dir + "/empty.png", error;
+    EXPECT_FALSE(writePng(path, Image(0, 0), error));
+    EXPECT_NE(error.find("cannot write " + path), std::string::npos) << error;
+    EXPECT_FALSE(std::filesystem::exists(path));
 }
 
 TEST_F(WritePng, FailsWithAMessageForAMissingDirectory) {
