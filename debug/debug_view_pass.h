@@ -19,6 +19,8 @@ public:
     std::string name() const { return "DebugViewPass"; }
 
     void drawView(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
+    // The view's values (viewValue() of debug_view.frag) as RGBA floats, bottom row first.
+    std::vector<float> readValues(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
     void drawOverview(PassContext& context, StencilViewPath stencilPath);
     // The texture the atlas view shows (0: none, the view is black).
     void setPlantAtlasTexture(GLuint texture) { plantAtlasTexture_ = texture; }
@@ -30,10 +32,14 @@ private:
     void drawTile(PassContext& context, const DebugView& view, StencilViewPath stencilPath,
                   int x, int y, int width, int height);
     void bindSource(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
+    void restoreDepthStencilMode(const DebugView& view, StencilViewPath stencilPath);
     void uploadStencilCopy(const FrameTargets& targets);
 
     GLuint plantAtlasTexture_ = 0;
     float exposureStops_ = 0.0f;
+    gl::Texture values_;  // readValues' float target, made on first use at the frame's size
+    gl::Framebuffer valuesFbo_;
+    int valuesWidth_ = 0, valuesHeight_ = 0;
     gl::Texture stencilCopy_;
     int stencilCopyWidth_ = 0, stencilCopyHeight_ = 0;
     std::vector<uint8_t> stencilBytes_;

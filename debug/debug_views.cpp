@@ -5,29 +5,43 @@ namespace oasis {
 namespace {
 
 const std::vector<DebugView> kViews = {
-    {"final", ViewSource::Final, "VIEW_COLOUR", "the lit frame as displayed"},
-    {"albedo", ViewSource::Albedo, "VIEW_ALBEDO", "material colour, gamma-encoded; black where nothing was drawn (sky)"},
-    {"normal", ViewSource::Normal, "VIEW_NORMAL", "world normal xyz as rgb = 0.5 + 0.5 n"},
+    {"final", ViewSource::Final, "VIEW_COLOUR", "the lit frame as displayed",
+     {"red", "green", "blue", "alpha"}, LegendScale::None},
+    {"albedo", ViewSource::Albedo, "VIEW_ALBEDO", "material colour, gamma-encoded; black where nothing was drawn (sky)",
+     {"linear red", "linear green", "linear blue", "specular intensity"}, LegendScale::None},
+    {"normal", ViewSource::Normal, "VIEW_NORMAL", "world normal xyz as rgb = 0.5 + 0.5 n",
+     {"x", "y", "z", "length"}, LegendScale::None},
     {"position", ViewSource::Position, "VIEW_POSITION",
-     "camera-relative position, signed log scale to the view distance (grey = camera)"},
+     "camera-relative position, signed log scale to the view distance (grey = camera)",
+     {"x", "y", "z", "distance"}, LegendScale::SignedLog},
     {"info", ViewSource::Info, "VIEW_INFO",
-     "red specular power (0..64), green specular intensity (0..0.25), blue flags: 0.8 sky, else 0.5 reflected + 0.25 plant"},
-    {"depth", ViewSource::Depth, "VIEW_DEPTH", "eye distance, log scale near to far; black = cleared"},
+     "red specular power (0..64), green specular intensity (0..0.25), blue flags: 0.8 sky, else 0.5 reflected + 0.25 plant",
+     {"specular power", "specular intensity", "flag bits"}, LegendScale::InfoFlags},
+    {"depth", ViewSource::Depth, "VIEW_DEPTH", "eye distance, log scale near to far; black = cleared",
+     {"eye distance", "window depth"}, LegendScale::DepthRamp},
     {"stencil", ViewSource::Stencil, "VIEW_STENCIL",
-     "one colour per stencil value: black 0 nothing, amber 1 terrain, blue 2 water, green 3 plants"},
+     "one colour per stencil value: black 0 nothing, amber 1 terrain, blue 2 water, green 3 plants",
+     {"stencil value"}, LegendScale::StencilSwatches},
     {"reflection", ViewSource::Reflection, "VIEW_RADIANCE",
-     "the mirrored scene alone, tone-mapped; black outside the water or with reflections off"},
+     "the mirrored scene alone, tone-mapped; black outside the water or with reflections off",
+     {"linear red", "linear green", "linear blue", "alpha"}, LegendScale::None},
     {"radiance", ViewSource::Radiance, "VIEW_HDR",
-     "linear light before tone mapping (Radiance) times 2^exposure, gamma 2.2, clipped at 1: no tone curve"},
+     "linear light before tone mapping (Radiance) times 2^exposure, gamma 2.2, clipped at 1: no tone curve",
+     {"linear red", "linear green", "linear blue", "alpha"}, LegendScale::None},
     {"reflection-raw", ViewSource::Reflection, "VIEW_HDR",
-     "the mirrored scene's linear light as stored (Reflection) times 2^exposure, gamma 2.2, clipped at 1"},
+     "the mirrored scene's linear light as stored (Reflection) times 2^exposure, gamma 2.2, clipped at 1",
+     {"linear red", "linear green", "linear blue", "alpha"}, LegendScale::None},
     {"vegetation", ViewSource::Vegetation, "VIEW_VEGETATION",
-     "the plants alone: the lit frame where a plant billboard is the nearest surface, black elsewhere"},
+     "the plants alone: the lit frame where a plant billboard is the nearest surface, black elsewhere",
+     {"red", "green", "blue"}, LegendScale::None},
     {"atlas", ViewSource::PlantAtlas, "VIEW_COLOUR",
-     "the plant atlas, stretched to the view: a cell per L-system variant, brown base to green tips, on black"},
+     "the plant atlas, stretched to the view: a cell per L-system variant, brown base to green tips, on black",
+     {"red", "green", "blue", "coverage"}, LegendScale::None},
     {"light-volumes", ViewSource::Position, "VIEW_LIGHT_VOLUMES",
-     "how many point lights reach each surface: dark grey 0, blue 1, green 2, yellow 4, red 8, white 16+; black sky"},
+     "how many point lights reach each surface: dark grey 0, blue 1, green 2, yellow 4, red 8, white 16+; black sky",
+     {"lights reaching", "lights in the list"}, LegendScale::LightHeat},
 };
+
 
 }  // namespace
 
@@ -52,5 +66,6 @@ bool readsGBuffer(const DebugView& view) {
 }
 
 std::string debugProgramName(const DebugView& view) { return "debug." + view.name; }
+std::string debugValuesProgramName(const DebugView& view) { return "debug.values." + view.name; }
 
 }  // namespace oasis

@@ -1,6 +1,7 @@
 // The debug views: one table (name, the target it shows, the shader remapping, what a person
-// sees). The CLI's --view, the window's keys and menu, the overview grid and the tests all
-// read this table, so a new view is one entry here (plus its VIEW_* remapping if it needs a new one).
+// sees, the numbers behind it and the scale its legend draws). The CLI's --view, the window's keys
+// and menu, the overview grid, the legends and the tests all read this table, so a new view is
+// one entry here (plus its VIEW_* remapping in shaders/debug_view.frag if it needs a new one).
 #pragma once
 #include <string>
 #include <vector>
@@ -11,11 +12,27 @@ namespace oasis {
 
 enum class ViewSource { Final, Albedo, Normal, Position, Info, Depth, Stencil, Radiance, Reflection, PlantAtlas, Vegetation };
 
+// What the legend under a view image draws besides its text (debug/view_legend.h).
+enum class LegendScale {
+    None,         // colours are the picture itself (final, albedo, radiance)
+    DepthRamp,    // the ramp of eye distance, log scale from the near to the far plane
+    SignedLog,    // position: each axis on a signed log scale to the view distance
+    LightHeat,    // light counts 0, 1, 2, 4, 8, 16+
+    StencilSwatches,
+    InfoFlags,    // the info view's channels and flag marks
+    Grey,         // the view controls: a channel mapped linearly from a range to black..white
+    DifferenceHeat,  // compare's difference.png: black, red, yellow, white at full scale
+};
+
 struct DebugView {
     std::string name;
     ViewSource source;
     std::string remapDefine;  // the VIEW_* define of shaders/debug_view.frag
     std::string legend;       // what the colours mean
+    // The numbers behind each pixel (viewValue() in debug_view.frag), one name per channel r, g,
+    // b, a that the view fills: what --channel may pick, the probe of a view, the range's unit.
+    std::vector<std::string> values;
+    LegendScale scale = LegendScale::None;
 };
 
 const std::vector<DebugView>& debugViews();
@@ -25,6 +42,7 @@ inline const char* kOverviewName = "overview";
 
 // True when the view reads a G-buffer colour target (which only the deferred pipeline fills).
 bool readsGBuffer(const DebugView& view);
-std::string debugProgramName(const DebugView& view);  // "debug.<name>"
+std::string debugProgramName(const DebugView& view);        // "debug.<name>"
+std::string debugValuesProgramName(const DebugView& view);  // "debug.values.<name>": viewValue() as floats
 
 }  // namespace oasis

@@ -1,6 +1,7 @@
 // ImGui-rendered labels for the overview tiles.
 #include "debug/label_overlay.h"
 
+#include <epoxy/gl.h>
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
@@ -36,22 +37,30 @@ LabelOverlay::~LabelOverlay() {
 }
 
 void LabelOverlay::draw(const std::vector<Label>& labels, int width, int height, float scale) {
+    drawWith([&](ImDrawList& draw) {
+        float pad = 3.0f * scale;
+        for (const Label& label : labels) {
+            ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
+            ImVec2 corner(label.x, label.y);
+            draw.AddRectFilled(corner, ImVec2(corner.x + size.x + 2 * pad, corner.y + size.y + 2 * pad),
+                               IM_COL32(0, 0, 0, 190));
+            draw.AddText(ImVec2(corner.x + pad, corner.y + pad), IM_COL32(255, 255, 255, 255), label.text.c_str());
+        }
+    }, width, height, scale);
+}
+
+void LabelOverlay::drawWith(const std::function<void(ImDrawList&)>& paint, int width, int height, float scale) {
     ContextScope scope(context_);
+    // The backend restores the program current before it; make that one that cannot have been
+    // deleted since (a deleted program that was current stops existing once unbound).
+    glUseProgram(0);
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(float(width), float(height));
     io.DeltaTime = 1.0f / 60.0f;
     io.FontGlobalScale = scale;
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
-    ImDrawList* draw = ImGui::GetForegroundDrawList();
-    float pad = 3.0f * scale;
-    for (const Label& label : labels) {
-        ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
-        ImVec2 corner(label.x, label.y);
-        draw->AddRectFilled(corner, ImVec2(corner.x + size.x + 2 * pad, corner.y + size.y + 2 * pad),
-                            IM_COL32(0, 0, 0, 190));
-        draw->AddText(ImVec2(corner.x + pad, corner.y + pad), IM_COL32(255, 255, 255, 255), label.text.c_str());
-    }
+    paint(*ImGui::GetForegroundDrawList());
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }

@@ -1,10 +1,12 @@
 // Text labels drawn over the display target with Dear ImGui's built-in font, in a private ImGui
 // context so it works headless (EGL) as well as beside the window's own ImGui panel.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
 struct ImGuiContext;
+struct ImDrawList;
 
 namespace oasis {
 
@@ -22,6 +24,8 @@ public:
 
     // Draws the labels into the bound framebuffer of the given size.
     void draw(const std::vector<Label>& labels, int width, int height, float scale);
+    // Draws whatever `paint` adds to a draw list (text, rectangles, gradients) the same way.
+    void drawWith(const std::function<void(ImDrawList&)>& paint, int width, int height, float scale);
 
 private:
     ImGuiContext* context_ = nullptr;

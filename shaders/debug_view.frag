@@ -1,5 +1,8 @@
 // Debug views: one G-buffer, depth or stencil target remapped to a colour a person can read.
 // The variant's VIEW_* define picks the remapping; debug/debug_views.cpp lists which view uses which.
+// Each remapping also gives viewValue(), the quantity it shows as numbers (the columns of the view
+// table's "values" text); the VIEW_VALUES variants write those into a float target, from which
+// the view controls (channel, range, NaN/Inf/negative overlay) draw (shaders/view_mapping.frag).
 #include "common/frame_block.glsl"
 #include "common/gbuffer.glsl"
 
@@ -16,6 +19,7 @@ vec3 ramp(float t) {
 #if defined(VIEW_COLOUR)
 uniform sampler2D sourceTexture;
 vec3 viewColour() { return texture(sourceTexture, vScreenUv).rgb; }
+vec4 viewValue() { return texture(sourceTexture, vScreenUv); }
 
 #elif defined(VIEW_VEGETATION)
 uniform sampler2D sourceTexture;
@@ -25,11 +29,13 @@ vec3 viewColour() {
     bool plant = (flags & SURFACE_PLANT) != 0u && (flags & SURFACE_REFLECTED) == 0u;
     return plant ? texture(sourceTexture, vScreenUv).rgb : vec3(0.0);
 }
+vec4 viewValue() { return vec4(viewColour(), 1.0); }
 
 #elif defined(VIEW_RADIANCE)
 #include "common/output.glsl"
 uniform sampler2D sourceTexture;
 vec3 viewColour() { return displayEncode(texture(sourceTexture, vScreenUv).rgb); }
+vec4 viewValue() { return texture(sourceTexture, vScreenUv); }  // linear, as stored
 
 #elif defined(VIEW_HDR)
 // Linear light as stored, scaled by the view's exposure (2^stops) and gamma-encoded with no tone
@@ -37,11 +43,16 @@ vec3 viewColour() { return displayEncode(texture(sourceTexture, vScreenUv).rgb);
 uniform sampler2D sourceTexture;
 uniform float viewExposure;
 vec3 viewColour() { return pow(clamp(texture(sourceTexture, vScreenUv).rgb * viewExposure, 0.0, 1.0), vec3(1.0 / 2.2)); }
+vec4 viewValue() { return texture(sourceTexture, vScreenUv); }
 
 #elif defined(VIEW_ALBEDO)
 vec3 viewColour() {
     // Linear reflectance, gamma-encoded so it reads like the frame; black where nothing was drawn.
     return pow(clamp(texelFetch(gAlbedo, gbufferPixelAt(vScreenUv), 0).rgb, 0.0, 1.0), vec3(1.0 / 2.2));
+}
+vec4 viewValue() {  // linear albedo, specular intensity
+    Surface s = readGBuffer(gbufferPixelAt(vScreenUv));
+    return vec4(s.albedo, s.specularIntensity);
 }
 
 #elif defined(VIEW_NORMAL)
@@ -49,6 +60,10 @@ vec3 viewColour() {
     ivec2 pixel = gbufferPixelAt(vScreenUv);
     if (gbufferSkyAt(pixel)) return vec3(0.5);  // the cleared normal, (0, 0, 0)
     return 0.5 + 0.5 * clamp(gbufferNormalAt(pixel), -1.0, 1.0);
+}
+vec4 viewValue() {
+    vec3 n = gbufferNormalAt(gbufferPixelAt(vScreenUv));
+    return vec4(n, length(n));
 }
 
 #elif defined(VIEW_POSITION)
@@ -62,6 +77,12 @@ vec3 viewColour() {
     vec3 scaled = sign(p) * log(1.0 + abs(p)) / log(1.0 + frame.terrainGridCounts.w);
     return 0.5 + 0.5 * clamp(scaled, -1.0, 1.0);
 }
+vec4 viewValue() {  // camera-relative xyz, distance; 0 on the sky
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec4(0.0);
+    vec3 p = gbufferPositionAt(pixel);
+    return vec4(p, length(p));
+}
 
 #elif defined(VIEW_INFO)
 vec3 viewColour() {
@@ -73,6 +94,10 @@ vec3 viewColour() {
     float flagMarks = ((s.flags & SURFACE_REFLECTED) != 0u ? 0.5 : 0.0) + ((s.flags & SURFACE_PLANT) != 0u ? 0.25 : 0.0);
     return vec3(s.specularPower / 64.0, s.specularIntensity / 0.25, flagMarks);
 }
+vec4 viewValue() {  // specular power, intensity, flags (the bits), 0
+    Surface s = readGBuffer(gbufferPixelAt(vScreenUv));
+    return vec4(s.specularPower, s.specularIntensity, float(s.flags), 0.0);
+}
 
 #elif defined(VIEW_DEPTH)
 vec3 viewColour() {
@@ -81,6 +106,10 @@ vec3 viewColour() {
     if (depthAtFarPlane(depth)) return vec3(0.0);
     float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
     return ramp(log(eyeDepthFromWindowDepth(depth) / nearPlane) / log(farPlane / nearPlane));
+}
+vec4 viewValue() {  // eye distance along the view axis (the far plane where cleared), window depth
+    float depth = texture(gDepth, vScreenUv).r;
+    return vec4(eyeDepthFromWindowDepth(depth), depth, 0.0, 0.0);
 }
 
 #elif defined(VIEW_STENCIL)
@@ -95,6 +124,7 @@ vec3 viewColour() {
     float hue = fract(float(value) * 0.618034);
     return clamp(abs(mod(hue * 6.0 + vec3(0.0, 4.0, 2.0), 6.0) - 3.0) - 1.0, 0.0, 1.0);
 }
+vec4 viewValue() { return vec4(float(texture(gStencil, vScreenUv).r), 0.0, 0.0, 0.0); }
 
 #elif defined(VIEW_LIGHT_VOLUMES)
 // Light complexity: the lights whose sphere contains the G-buffer surface (where a reflection is
@@ -121,11 +151,24 @@ vec3 viewColour() {
     if (touching == 0) return vec3(0.05 + 0.1 * clamp(s.normal.y, 0.0, 1.0));
     return heat(float(touching));
 }
+vec4 viewValue() {  // the lights reaching the surface, the lights in the list
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec4(0.0, float(lightCount()), 0.0, 0.0);
+    vec3 position = litPosition(readGBuffer(pixel));
+    int touching = 0;
+    for (int i = 0; i < lightCount(); ++i)
+        if (lightTouches(position, lightAt(i))) ++touching;
+    return vec4(float(touching), float(lightCount()), 0.0, 0.0);
+}
 
 #else
 #error "define one VIEW_* remapping"
 #endif
 
 void main() {
+#if defined(VIEW_VALUES)
+    outColour = viewValue();
+#else
     outColour = vec4(viewColour(), 1.0);
+#endif
 }

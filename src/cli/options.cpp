@@ -104,6 +104,11 @@ std::string usage(Command command) {
                    "  --view NAME               " + debugViewNames() + "\n"
                    "  --view-exposure STOPS     the HDR views (radiance, reflection-raw): light times 2^STOPS,\n"
                    "                            -20..20 (default 0)\n"
+                   "  --channel C               show the view's values, not its colours: rgb, r, g, b, a or\n"
+                   "                            luminance (the channels each view fills: docs/command-line.md)\n"
+                   "  --range LO,HI             values LO..HI to black..white (default: the frame's finite min..max)\n"
+                   "  --overlay LIST            paint nan, inf, negative values in checkers (default nan,inf; none)\n"
+                   "  --legend on|off           the legend strip under the image (default on)\n"
                    "  --stencil-view PATH       texturing | read-back (default: texturing where supported)\n"
                    "  --stop-before PASS        end the frame before the named pass, to see its inputs\n"
                    "                            (e.g. WaterCompositePass; a wrong name lists the passes);\n"
@@ -191,7 +196,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
-            "--depth", "--at", "--view-exposure"};
+            "--depth", "--at", "--view-exposure", "--channel", "--range", "--overlay", "--legend"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
@@ -224,7 +229,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (i + 1 >= arguments.size()) return fail("option " + flag + " needs a value (see --help)");
         const std::string& value = arguments[++i];
         bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view" ||
-                          flag == "--stop-before" || flag == "--view-exposure";
+                          flag == "--stop-before" || flag == "--view-exposure" || flag == "--channel" ||
+                          flag == "--range" || flag == "--overlay" || flag == "--legend";
         if (flag == "--pipeline" && options.command == Command::Probe) renderOnly = false;
         if (renderOnly && options.command != Command::Render)
             return fail("option " + flag + " belongs to `oasis render`");
@@ -297,6 +303,24 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!parseDouble(value, stops) || stops < -20.0 || stops > 20.0)
                 return fail("--view-exposure expects stops from -20 to 20, got '" + value + "'");
             options.viewExposure = float(stops);
+        } else if (flag == "--channel") {
+            ViewChannel channel;
+            if (!parseViewChannel(value, channel))
+                return fail("--channel expects one of " + viewChannelNames() + ", got '" + value + "'");
+            options.viewControls.channel = channel;
+        } else if (flag == "--range") {
+            size_t comma = value.find(',');
+            double low = 0.0, high = 0.0;
+            if (comma == std::string::npos || !parseDouble(value.substr(0, comma), low) ||
+                !parseDouble(value.substr(comma + 1), high) || !(low < high))
+                return fail("--range expects LO,HI with finite LO < HI, got '" + value + "'");
+            options.viewControls.range = std::pair{low, high};
+        } else if (flag == "--overlay") {
+            if (!parseOverlay(value, options.viewControls.overlay))
+                return fail("--overlay expects none or a list of nan, inf, negative, got '" + value + "'");
+        } else if (flag == "--legend") {
+            if (value != "on" && value != "off") return fail("--legend expects on or off, got '" + value + "'");
+            options.legend = value == "on";
         } else if (flag == "--stencil-view") {
             if (value == "texturing") options.stencilView = StencilViewPath::Texturing;
             else if (value == "read-back") options.stencilView = StencilViewPath::ReadBack;
@@ -326,6 +350,19 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         }
     }
+    if (options.viewControls.channel) {
+        const DebugView* view = findDebugView(options.view);
+        if (!view) return fail("--channel needs a single view, not --view " + options.view);
+        if (!viewHasChannel(*view, *options.viewControls.channel)) {
+            std::string names;
+            for (const std::string& name : view->values) names += (names.empty() ? "" : ", ") + name;
+            return fail("--channel " + std::string(viewChannelName(*options.viewControls.channel)) + ": the " +
+                        view->name + " view has " + std::to_string(view->values.size()) + " value channel(s) (" +
+                        names + ")");
+        }
+    }
+    if (options.viewControls.range && options.view == kOverviewName)
+        return fail("--range needs a single view, not --view overview");
     if (options.command == Command::Probe && !options.help) {
         if (!options.probeAt) return fail("`oasis probe` needs --at X,Y (the pixel to probe)");
         if (options.probeAt->first >= options.scene.width || options.probeAt->second >= options.scene.height)

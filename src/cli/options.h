@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "debug/debug_view_pass.h"
+#include "debug/view_controls.h"
 #include "gl/capabilities.h"
 #include "render/gbuffer_layout.h"
 #include "render/frame_setup.h"
@@ -39,6 +40,8 @@ struct Options {
     PipelineKind pipeline = PipelineKind::Deferred;
     std::string view = "final";
     float viewExposure = 0.0f;  // render: the HDR views' exposure in stops
+    ViewControls viewControls;  // render: --channel, --range, --overlay
+    bool legend = true;         // render: the legend strip under a single view
     std::string out = "oasis.png";
     std::string outDir = "oasis-out";
     bool json = false;

@@ -13,6 +13,7 @@
 #include "context/gl_context.h"
 #include "render/file_output.h"
 #include "render/pixel_probe.h"
+#include "debug/view_legend.h"
 
 namespace oasis {
 namespace {
@@ -165,19 +166,64 @@ int withHeadlessSession(const Options& options, Body body) {
 
 }  // namespace
 
+// difference.png: the heat map of forward against deferred with its scale bar and numbers.
+Image differenceImage(const Comparison& c) {
+    constexpr int kFullScale = 16;
+    Legend legend;
+    legend.title = "difference: per pixel the largest channel difference |forward - deferred| in 8-bit levels";
+    legend.scale = LegendScale::DifferenceHeat;
+    legend.low = 0.0;
+    legend.high = kFullScale;
+    char numbers[160];
+    std::snprintf(numbers, sizeof(numbers), "whole frame: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)",
+                  c.difference.psnrDb, c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "",
+                  c.difference.maxAbs, c.difference.rmse);
+    legend.notes.push_back(numbers);
+    LegendRenderer legends;
+    Image heat = differenceHeatmap(c.forward, c.deferred, kFullScale);
+    return stackImages(heat, legends.draw(legend, heat.width));
+}
+
+// The image `render` writes: the view (or its values through the controls), the overlay, and
+// under a single view its legend; `report` gets the value counts.
+Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* report) {
+    renderer.setViewExposure(options.viewExposure);
+    renderer.renderView(options.view);
+    Image image = renderer.readDisplay();
+    const DebugView* view = findDebugView(options.view);
+    if (!view) return image;  // the overview: every tile labelled
+    const ViewControls& controls = options.viewControls;
+    std::vector<float> values = renderer.readViewValues(options.view);
+    ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
+    ValueStatistics statistics = valueStatistics(values, channel);
+    if (controls.showValues())
+        image = mapViewValues(values, image.width, image.height, channel, rangeInUse(controls, statistics), controls.overlay);
+    else
+        paintOverlay(image, values, channel, controls.overlay);
+    std::fprintf(report, "oasis: view %s values (%s): %ld, NaN %ld, +Inf %ld, -Inf %ld, negative %ld; finite min %.6g, max %.6g\n",
+                 view->name.c_str(), describeChannel(*view, channel).c_str(), statistics.values, statistics.nan,
+                 statistics.positiveInfinity, statistics.negativeInfinity, statistics.negative, statistics.min,
+                 statistics.max);
+    if (!options.legend) return image;
+    const FrameData& frame = renderer.lastFrame().data;
+    LegendRenderer legends;
+    Legend legend = viewLegend(*view, controls, statistics, frame.depthRange.x, frame.depthRange.y,
+                               frame.terrainGridCounts.w);
+    return stackImages(image, legends.draw(legend, image.width));
+}
+
 int runRenderCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
         Renderer& renderer = *session.renderer;
         renderer.setPipeline(options.pipeline);
         renderer.renderFrame(session.scene, options.stopBefore);
-        renderer.setViewExposure(options.viewExposure);
-        renderer.renderView(options.view);
+        std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
+        Image image = renderedViewImage(options, renderer, report);
         std::string error;
-        if (!writePng(options.out, renderer.readDisplay(), error)) {
+        if (!writePng(options.out, image, error)) {
             std::fprintf(stderr, "oasis: %s\n", error.c_str());
             return 1;
         }
-        std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
         std::fprintf(report, "oasis: wrote %s (%s pipeline, view %s, %dx%d)\n", options.out.c_str(),
                      pipelineName(options.pipeline), options.view.c_str(), renderer.targets().width(),
                      renderer.targets().height());
@@ -191,7 +237,7 @@ int runRenderCommand(const Options& options) {
 int runCompareCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
-        Image heat = differenceHeatmap(c.forward, c.deferred);
+        Image heat = differenceImage(c);
         std::vector<std::string> written;
         if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
                                           {"difference.png", &heat}}, written))
@@ -213,7 +259,7 @@ int runMainJob(const Options& options) {
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
         session.renderer->renderView(kOverviewName);
         Image overview = session.renderer->readDisplay();
-        Image heat = differenceHeatmap(c.forward, c.deferred);
+        Image heat = differenceImage(c);
         std::vector<std::string> written;
         if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
                                           {"difference.png", &heat}, {"overview.png", &overview}}, written))

@@ -63,6 +63,20 @@ ImageDifference compareImages(const Image& a, const Image& b) {
     return result;
 }
 
+Image stackImages(const Image& top, const Image& bottom) {
+    if (top.width != bottom.width) throw std::invalid_argument("stacked images differ in width");
+    Image stacked(top.width, top.height + bottom.height);
+    std::copy(top.rgba.begin(), top.rgba.end(), stacked.rgba.begin());
+    std::copy(bottom.rgba.begin(), bottom.rgba.end(), stacked.rgba.begin() + std::ptrdiff_t(top.rgba.size()));
+    return stacked;
+}
+
+void differenceHeatColour(float t, uint8_t rgb[3]) {
+    rgb[0] = uint8_t(255.0f * std::clamp(t * 3.0f, 0.0f, 1.0f));
+    rgb[1] = uint8_t(255.0f * std::clamp(t * 3.0f - 1.0f, 0.0f, 1.0f));
+    rgb[2] = uint8_t(255.0f * std::clamp(t * 3.0f - 2.0f, 0.0f, 1.0f));
+}
+
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale) {
     if (a.width != b.width || a.height != b.height)
         throw std::invalid_argument("images differ in size");
@@ -71,11 +85,8 @@ Image differenceHeatmap(const Image& a, const Image& b, int fullScale) {
         for (int x = 0; x < a.width; ++x) {
             int d = 0;
             for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
-            float t = std::min(1.0f, float(d) / float(fullScale));
             uint8_t* out = heat.pixel(x, y);
-            out[0] = uint8_t(255.0f * std::min(1.0f, t * 3.0f));
-            out[1] = uint8_t(255.0f * std::clamp(t * 3.0f - 1.0f, 0.0f, 1.0f));
-            out[2] = uint8_t(255.0f * std::clamp(t * 3.0f - 2.0f, 0.0f, 1.0f));
+            differenceHeatColour(std::min(1.0f, float(d) / float(fullScale)), out);
             out[3] = 255;
         }
     }

@@ -45,5 +45,9 @@ double ssim(const Image& a, const Image& b);
 // Per pixel max channel difference on a black-red-yellow-white scale that saturates at `fullScale`.
 // Throws std::invalid_argument if sizes differ.
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale = 16);
+// The heat map's colour at t = difference / fullScale in 0..1 (its legend draws the same scale).
+void differenceHeatColour(float t, uint8_t rgb[3]);
+// `bottom` under `top` (the same width): a frame and its legend strip in one image.
+Image stackImages(const Image& top, const Image& bottom);
 
 }  // namespace oasis

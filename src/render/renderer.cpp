@@ -248,6 +248,15 @@ void Renderer::renderView(const std::string& viewName) {
         debugViews_.drawView(passContext, *view, stencilPath_);
 }
 
+std::vector<float> Renderer::readViewValues(const std::string& viewName) {
+    const DebugView* view = findDebugView(viewName);
+    if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
+                                           debugViewNames() + ")");
+    if (readsGBuffer(*view)) ensureGBuffer();
+    PassContext passContext = context();
+    return debugViews_.readValues(passContext, *view, stencilPath_);
+}
+
 void Renderer::renderFloor() {
     PassContext passContext = context();
     floor_.run(passContext);

@@ -77,6 +77,9 @@ public:
     // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
     // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
     void renderView(const std::string& viewName);
+    // The numbers behind a view (not the overview) of the last frame: its viewValue() per pixel,
+    // RGBA floats, bottom row first; the table's `values` name the channels.
+    std::vector<float> readViewValues(const std::string& viewName);
     // Makes the G-buffer hold the last frame: after a forward frame, fills it with the deferred
     // geometry passes of the direct scene (what the G-buffer views and the probe read).
     void ensureGBuffer();

@@ -67,8 +67,11 @@ std::vector<ProgramVariant> buildVariants() {
         variants.push_back({"light.shade.mirrored" + suffix, "light_volume.vert", "light_volume.frag",
                             {"MIRRORED", define}});
     }
-    for (const DebugView& view : debugViews())
+    for (const DebugView& view : debugViews()) {
         variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});
+        variants.push_back({debugValuesProgramName(view), "fullscreen.vert", "debug_view.frag",
+                            {view.remapDefine, "VIEW_VALUES"}});
+    }
     // Encodings other than the plain one: "<name>.compact" with GBUFFER_COMPACT, and so on.
     std::vector<GBufferEncoding> encodings;
     for (const GBufferLayout& layout : gbufferLayouts())
