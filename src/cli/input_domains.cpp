@@ -16,8 +16,9 @@ namespace oasis {
 namespace {
 
 // Horizontal world coordinates: the terrain's finest octave counts noise cells as floats, exact to
-// 2^24; beyond about 5e7 units (x and z both large) cells round and the CPU's heights (the flight,
-// the plants' bases) leave the GPU's terrain. Measured in tests/gpu/domains_test.cpp.
+// 2^24; past that, cells round and the CPU's heights (the flight, the plants' bases) leave the GPU's
+// terrain. Measured with tests/gpu/domains_test.cpp's check on the diagonal x = z: bases within
+// 1.5e-4 of the GPU's terrain up to 8e7, 1.5 units off at 9e7 and 1e8; 5e7 keeps a margin.
 constexpr double kMaxHorizontal = 5.0e7;
 // The default flight moves 7 units a second eastwards: it stays inside kMaxHorizontal.
 constexpr double kMaxTime = 5.0e6;
@@ -30,7 +31,7 @@ const std::vector<InputDomain>& inputDomains() {
          "the default flight flies 7 units/s east and must stay inside the --camera X domain"},
         {"--hour", "hours", 0.0, 24.0, DomainKind::Real, "one day; 24 is midnight like 0"},
         {"--camera X", "world units", -kMaxHorizontal, kMaxHorizontal, DomainKind::Real,
-         "the terrain noise's finest cells are exact in float to 2^24"},
+         "the terrain noise's finest cells are exact in float to 2^24: plants leave the GPU's terrain past 8e7"},
         {"--camera Y", "world units", -200.0, 2000.0, DomainKind::Real,
          "the terrain spans about -60 to 110; beyond these the frame shows no terrain (fogged out, or under "
          "ground and water)"},
