@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -12,6 +14,7 @@
 
 #include "cli/input_domains.h"
 #include "cli/options.h"
+#include "render/shader_library.h"
 #include "scene/camera.h"
 #include "scene/noise.h"
 #include "scene/terrain.h"
@@ -162,6 +165,21 @@ TEST(InputDomains, HelpPrintsTheTable) {
     for (const InputDomain& domain : inputDomains()) {
         EXPECT_NE(help.find(domain.name), std::string::npos) << domain.name;
         EXPECT_NE(help.find(describeDomain(domain)), std::string::npos) << domain.name;
+    }
+}
+
+// docs/cli.md's table is this table: each row's name, unit and domain as the code states them.
+TEST(InputDomains, DocsStateEveryDomain) {
+    std::ifstream file(findShaderDirectory() + "/../docs/cli.md");
+    ASSERT_TRUE(file) << "docs/cli.md beside the shaders";
+    std::stringstream text;
+    text << file.rdbuf();
+    for (const InputDomain& domain : inputDomains()) {
+        std::string name = domain.name;
+        std::string row = "| `" + (name == "--size W" ? std::string("--size W`, `--size H") : name) + "` | " + domain.unit +
+                          " | " + describeDomain(domain) + " |";
+        if (name == "--size H") continue;  // shares --size W's row
+        EXPECT_NE(text.str().find(row), std::string::npos) << "docs/cli.md lacks the row " << row;
     }
 }
 
