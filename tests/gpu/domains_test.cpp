@@ -85,6 +85,15 @@ std::vector<DomainCase> domainCases() {
         scene.timeSeconds = 3.0;
         cases.push_back({"densityAndWindHigh", scene});
     }
+    {
+        SceneSettings scene = lakeside();
+        scene.water.rippleStrength = float(low("--ripples"));
+        scene.water.absorption = float(low("--absorption"));
+        scene.vegetation.density = float(low("--vegetation-density"));
+        scene.vegetation.windStrength = float(low("--wind"));
+        scene.lights.count = int(low("--lights"));
+        cases.push_back({"knobsLow", scene});
+    }
     for (double hour : {low("--hour"), high("--hour")}) {
         SceneSettings scene = lakeside();
         scene.hour = hour;
