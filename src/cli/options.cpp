@@ -1,11 +1,8 @@
-// Command-line parsing and help text.
+// Command-line parsing and help text; numbers are read against cli/input_domains.h.
 #include "cli/options.h"
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <cstdlib>
-#include <sstream>
 
 #include "cli/input_domains.h"
 #include "debug/debug_views.h"
