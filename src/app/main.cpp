@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());
         return 2;
     }
+    for (const std::string& note : parsed.notes) std::fprintf(stderr, "oasis: %s\n", note.c_str());
     const Options& options = parsed.options;
     if (options.help) {
         std::fputs(usage(options.command).c_str(), stdout);

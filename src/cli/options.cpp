@@ -1,31 +1,27 @@
-// Command-line parsing and help text.
+// Command-line parsing and help text; numbers are read against cli/input_domains.h.
 #include "cli/options.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
-#include <sstream>
+#include <cctype>
 
+#include "cli/input_domains.h"
 #include "debug/debug_views.h"
 #include "render/depth_convention.h"
+#include "render/file_output.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {
 namespace {
 
-bool parseDouble(const std::string& text, double& value) {
-    if (text.empty()) return false;
-    char* end = nullptr;
-    value = std::strtod(text.c_str(), &end);
-    return end && *end == '\0' && std::isfinite(value);
+// A number of `name`'s domain (cli/input_domains.h), as the parser's error when it is not one.
+bool readNumber(const std::string& name, const std::string& text, double& value, std::string& error) {
+    return parseInDomain(text, inputDomain(name), value, error);
 }
 
-bool parseInt(const std::string& text, int& value) {
-    if (text.empty()) return false;
-    char* end = nullptr;
-    long parsed = std::strtol(text.c_str(), &end, 10);
-    if (!end || *end != '\0' || parsed < -1000000000L || parsed > 1000000000L) return false;
-    value = int(parsed);
+bool endsWith(const std::string& text, const std::string& suffix) {
+    if (text.size() < suffix.size()) return false;
+    for (size_t i = 0; i < suffix.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(text[text.size() - suffix.size() + i])) != suffix[i]) return false;
     return true;
 }
 
@@ -33,17 +29,17 @@ const char* kSceneOptionsHelp =
     "scene options (every subcommand):\n"
     "  --size WxH                frame size in pixels (default 1280x720)\n"
     "  --time SECONDS            animation time: camera flight and time of day (default 0 = 10:00)\n"
-    "  --hour H                  override the hour of day, 0..24 (6 sunrise, 18 sunset)\n"
+    "  --hour H                  override the hour of day (6 sunrise, 18 sunset)\n"
     "  --camera X,Y,Z,YAW,PITCH  fixed camera instead of the flight (degrees; yaw 0 = -Z, 90 = +X)\n"
     "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
     "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
     "  --vegetation on|off       the plant billboards (default on)\n"
-    "  --vegetation-density D    plants per unit of ground, 0..4 times the default (default 1)\n"
-    "  --wind S                  wind strength bending the plants, 0..3 (default 1)\n"
+    "  --vegetation-density D    plants per unit of ground, times the default (default 1)\n"
+    "  --wind S                  wind strength bending the plants (default 1)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
-    "  --lights N                point lights (lanterns, fireflies) around the lake, 0..4096 (default 0);\n"
+    "  --lights N                point lights (lanterns, fireflies) around the lake (default 0);\n"
     "                            they glow at night, e.g. --hour 21\n"
     "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
     "                            where the context has SSBOs, else ubo)\n"
@@ -71,32 +67,56 @@ const char* commandName(Command command) {
     return "";
 }
 
-bool parseSize(const std::string& text, int& width, int& height) {
+bool parseSize(const std::string& text, int& width, int& height, std::string* error) {
     size_t x = text.find('x');
-    if (x == std::string::npos) return false;
-    return parseInt(text.substr(0, x), width) && parseInt(text.substr(x + 1), height) && width >= 1 &&
-           height >= 1;
+    std::string why;
+    int w = 0, h = 0;
+    bool ok = x != std::string::npos && parseIntInDomain(text.substr(0, x), inputDomain("--size W"), w, why) &&
+              parseIntInDomain(text.substr(x + 1), inputDomain("--size H"), h, why);
+    if (!ok) {
+        if (error)
+            *error = "--size expects WxH, each " + std::string(inputDomain("--size W").unit) + " in " +
+                     describeDomain(inputDomain("--size W")) + ", e.g. 1280x720, got '" + text + "'";
+        return false;
+    }
+    width = w;
+    height = h;
+    return true;
 }
 
-bool parseCameraPose(const std::string& text, CameraPose& pose) {
-    if (!text.empty() && text.back() == ',') return false;  // getline would drop the empty last field
-    std::vector<double> values;
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, ',')) {
-        double value = 0.0;
-        if (!parseDouble(item, value)) return false;
-        values.push_back(value);
+bool parseCameraPose(const std::string& text, CameraPose& pose, std::string* error, std::string* note) {
+    static const char* const kFields[] = {"--camera X", "--camera Y", "--camera Z", "--camera YAW", "--camera PITCH"};
+    auto fail = [&](const std::string& why) {
+        if (error) *error = why;
+        return false;
+    };
+    std::vector<std::string> items;
+    size_t start = 0;
+    for (size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
+        items.push_back(text.substr(start, comma - start));
+    items.push_back(text.substr(start));
+    if (items.size() != 5)
+        return fail("--camera expects X,Y,Z,YAW,PITCH (five numbers), got '" + text + "'");
+    double values[5];
+    bool yawWrapped = false;
+    for (size_t k = 0; k < 5; ++k) {
+        std::string why;
+        if (!parseInDomain(items[k], inputDomain(kFields[k]), values[k], why, k == 3 ? &yawWrapped : nullptr))
+            return fail(why + " (in --camera '" + text + "')");
     }
-    if (values.size() != 5 || std::fabs(values[4]) > 90.0) return false;
     pose.position = glm::dvec3(values[0], values[1], values[2]);
     pose.yawDegrees = float(values[3]);
     pose.pitchDegrees = float(values[4]);
+    const InputDomain& yaw = inputDomain("--camera YAW");
+    if (note) *note = yawWrapped ? "--camera YAW " + items[3] + " is " + formatNumber(values[3]) + " degrees, wrapped into [" +
+                                       formatNumber(yaw.low) + ", " + formatNumber(yaw.high) + ")"
+                                 : std::string();
     return true;
 }
 
 std::string usage(Command command) {
-    std::string scene = std::string(kSceneOptionsHelp) + gbufferLayoutNames() + " (default " + kDefaultGBufferLayoutName + ")\n";
+    std::string scene = std::string(kSceneOptionsHelp) + gbufferLayoutNames() + " (default " + kDefaultGBufferLayoutName +
+                        ")\n" + inputDomainsHelp();
     switch (command) {
         case Command::Render:
             return "usage: oasis render [scene options] [--pipeline forward|deferred] [--view NAME] [--out FILE.png]\n"
@@ -236,20 +256,21 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("option " + flag + " belongs to `oasis render`");
         if (flag == "--at" && options.command != Command::Probe) return fail("option --at belongs to `oasis probe`");
         if (flag == "--size") {
-            if (!parseSize(value, options.scene.width, options.scene.height))
-                return fail("--size expects WxH with positive integers, e.g. 1280x720, got '" + value + "'");
+            std::string error;
+            if (!parseSize(value, options.scene.width, options.scene.height, &error)) return fail(error);
         } else if (flag == "--time") {
-            if (!parseDouble(value, options.scene.timeSeconds))
-                return fail("--time expects a number of seconds, got '" + value + "'");
+            std::string error;
+            if (!readNumber(flag, value, options.scene.timeSeconds, error)) return fail(error);
         } else if (flag == "--hour") {
             double hour = 0.0;
-            if (!parseDouble(value, hour) || hour < 0.0 || hour > 24.0)
-                return fail("--hour expects a number from 0 to 24, got '" + value + "'");
+            std::string error;
+            if (!readNumber(flag, value, hour, error)) return fail(error);
             options.scene.hour = hour;
         } else if (flag == "--camera") {
             CameraPose pose;
-            if (!parseCameraPose(value, pose))
-                return fail("--camera expects X,Y,Z,YAW,PITCH (five numbers, |pitch| <= 90), got '" + value + "'");
+            std::string error, note;
+            if (!parseCameraPose(value, pose, &error, &note)) return fail(error);
+            if (!note.empty()) result.notes.push_back(note);
             options.scene.camera = pose;
         } else if (flag == "--reflections") {
             if (value != "on" && value != "off")
@@ -257,9 +278,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.scene.water.reflections = value == "on";
         } else if (flag == "--water-level" || flag == "--ripples" || flag == "--absorption") {
             double number = 0.0;
-            bool nonNegative = flag != "--water-level";
-            if (!parseDouble(value, number) || (nonNegative && number < 0.0) || std::fabs(number) > 1e6)
-                return fail(flag + " expects a " + (nonNegative ? "non-negative " : "") + "number, got '" + value + "'");
+            std::string error;
+            if (!readNumber(flag, value, number, error)) return fail(error);
             float& field = flag == "--water-level" ? options.scene.water.level
                            : flag == "--ripples"   ? options.scene.water.rippleStrength
                                                    : options.scene.water.absorption;
@@ -271,13 +291,12 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         } else if (flag == "--vegetation-density" || flag == "--wind") {
             double number = 0.0;
             bool density = flag == "--vegetation-density";
-            double highest = density ? VegetationSettings::kMaxDensity : VegetationSettings::kMaxWindStrength;
-            if (!parseDouble(value, number) || number < 0.0 || number > highest)
-                return fail(flag + " expects a number from 0 to " + std::to_string(int(highest)) + ", got '" + value + "'");
+            std::string error;
+            if (!readNumber(flag, value, number, error)) return fail(error);
             (density ? options.scene.vegetation.density : options.scene.vegetation.windStrength) = float(number);
         } else if (flag == "--lights") {
-            if (!parseInt(value, options.scene.lights) || options.scene.lights < 0 || options.scene.lights > kMaxLights)
-                return fail("--lights expects an integer from 0 to " + std::to_string(kMaxLights) + ", got '" + value + "'");
+            std::string error;
+            if (!parseIntInDomain(value, inputDomain(flag), options.scene.lights, error)) return fail(error);
         } else if (flag == "--lights-path") {
             LightsPath path;
             if (!parseLightsPath(value, path))
@@ -300,8 +319,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.view = value;
         } else if (flag == "--view-exposure") {
             double stops = 0.0;
-            if (!parseDouble(value, stops) || stops < -20.0 || stops > 20.0)
-                return fail("--view-exposure expects stops from -20 to 20, got '" + value + "'");
+            std::string error;
+            if (!readNumber(flag, value, stops, error)) return fail(error);
             options.viewExposure = float(stops);
         } else if (flag == "--channel") {
             ViewChannel channel;
@@ -310,10 +329,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.viewControls.channel = channel;
         } else if (flag == "--range") {
             size_t comma = value.find(',');
+            if (comma == std::string::npos) return fail("--range expects LO,HI (two numbers, LO < HI), got '" + value + "'");
             double low = 0.0, high = 0.0;
-            if (comma == std::string::npos || !parseDouble(value.substr(0, comma), low) ||
-                !parseDouble(value.substr(comma + 1), high) || !(low < high))
-                return fail("--range expects LO,HI with finite LO < HI, got '" + value + "'");
+            std::string error;
+            if (!readNumber("--range LO", value.substr(0, comma), low, error) ||
+                !readNumber("--range HI", value.substr(comma + 1), high, error))
+                return fail(error);
+            if (!(low < high)) return fail("--range expects LO < HI, got '" + value + "'");
             options.viewControls.range = std::pair{low, high};
         } else if (flag == "--overlay") {
             if (!parseOverlay(value, options.viewControls.overlay))
@@ -330,25 +352,42 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!parseForcedFallbacks(value, options.scene.force, error)) return fail("--force: " + error);
         } else if (flag == "--at") {
             size_t comma = value.find(',');
-            int x = -1, y = -1;
-            if (comma == std::string::npos || !parseInt(value.substr(0, comma), x) ||
-                !parseInt(value.substr(comma + 1), y) || x < 0 || y < 0)
-                return fail("--at expects X,Y (two non-negative integers, 0,0 the top-left pixel), got '" + value + "'");
+            if (comma == std::string::npos)
+                return fail("--at expects X,Y (pixels, 0,0 the top-left pixel), got '" + value + "'");
+            int x = 0, y = 0;
+            std::string error;
+            if (!parseIntInDomain(value.substr(0, comma), inputDomain("--at X"), x, error) ||
+                !parseIntInDomain(value.substr(comma + 1), inputDomain("--at Y"), y, error))
+                return fail(error);
             options.probeAt = std::pair{x, y};
         } else if (flag == "--stop-before") {
-            options.stopBefore = value;  // checked against the pipeline's passes when it runs
+            if (value.empty()) return fail("--stop-before expects a pass name (see oasis render --help)");
+            options.stopBefore = value;  // checked against --pipeline's passes after the loop
         } else if (flag == "--out") {
+            // oasis writes PNG alone: another extension would name PNG data as something else.
+            // A stream (/dev/stdout, a pipe) carries no name to check.
+            if (!endsWith(value, ".png") && !namesAStream(value))
+                return fail("--out expects a file name ending in .png (oasis writes PNG only) or a stream such as "
+                            "/dev/stdout, got '" + value + "'");
             options.out = value;
         } else if (flag == "--out-dir") {
+            if (value.empty()) return fail("--out-dir expects a directory name, got ''");
             options.outDir = value;
             options.outDirGiven = true;
         } else if (flag == "--frames") {
             options.timingFramesGiven = true;
-            if (!parseInt(value, options.timingFrames) || options.timingFrames < 1 || options.timingFrames > 1000)
-                return fail("--frames expects an integer from 1 to 1000, got '" + value + "'");
+            std::string error;
+            if (!parseIntInDomain(value, inputDomain(flag), options.timingFrames, error)) return fail(error);
         } else {
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         }
+    }
+    if (!options.stopBefore.empty()) {
+        // A usage error like any other bad value: the pass lists are GL-free, so check before a context.
+        Pipeline pipeline(options.pipeline);
+        if (!pipeline.hasPass(options.stopBefore))
+            return fail("--stop-before: the " + std::string(pipelineName(options.pipeline)) + " pipeline has no pass '" +
+                        options.stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     }
     if (options.viewControls.channel) {
         const DebugView* view = findDebugView(options.view);

@@ -58,6 +58,7 @@ struct Options {
 struct ParseResult {
     bool ok = true;
     std::string error;  // set when !ok
+    std::vector<std::string> notes;  // values the parser normalised (a wrapped angle), to say once on stderr
     Options options;
 };
 
@@ -66,7 +67,10 @@ std::string usage(Command command);
 const char* commandName(Command command);
 
 // Individual value parsers (exposed for tests).
-bool parseSize(const std::string& text, int& width, int& height);
-bool parseCameraPose(const std::string& text, CameraPose& pose);
+// Each fails with a message naming the option and its domain (cli/input_domains.h) in `error`;
+// parseCameraPose's `note` says when the yaw was wrapped (empty otherwise).
+bool parseSize(const std::string& text, int& width, int& height, std::string* error = nullptr);
+bool parseCameraPose(const std::string& text, CameraPose& pose, std::string* error = nullptr,
+                     std::string* note = nullptr);
 
 }  // namespace oasis

@@ -106,7 +106,7 @@ void printJson(const RenderSession& session) {
 int runCapsCommand(const Options& options) {
     try {
         HeadlessContext context(maxGlVersionFor(options.scene));
-        RenderSession session(options);
+        RenderSession session(options, RenderSession::Shaders::CapabilitiesOnly);  // caps compiles nothing it needs
         if (options.json) printJson(session);
         else printText(session);
         return 0;

@@ -59,11 +59,11 @@ MaxGlVersion maxGlVersionFor(const SceneOptions& options) {
     return options.force.gl33 ? MaxGlVersion{3, 3} : MaxGlVersion{};
 }
 
-RenderSession::RenderSession(const Options& options)
+RenderSession::RenderSession(const Options& options, Shaders need)
     : caps(gl::measureCapabilities(options.scene.force)), scene(sceneSettingsFrom(options.scene)) {
     std::string searched;
     std::string directory = findShaderDirectory(&searched);
-    if (directory.empty())
+    if (directory.empty() && need == Shaders::Required)
         throw std::runtime_error("cannot find oasis's shaders (looked in: " + searched +
                                  "); set OASIS_SHADER_DIR to the shaders/ directory");
     GlslDialect dialect = glslDialectForCurrentContext();
@@ -79,7 +79,12 @@ RenderSession::RenderSession(const Options& options)
     renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
     renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
-    PlantInterpretation plantPath = choosePlantInterpretation(caps, options.scene.noCompute, plantPathReason);
+    plantPath = choosePlantInterpretation(caps, options.scene.noCompute, plantPathReason);
+    if (directory.empty()) {
+        plantPathReason += "; not built: no shader directory (looked in: " + searched + ")";
+        for (const std::string& line : fallbacks()) std::fprintf(stderr, "oasis: fallback: %s\n", line.c_str());
+        return;
+    }
     try {
         plantAtlas = std::make_unique<PlantAtlas>(*shaders, plantPath);
     } catch (const std::runtime_error& error) {
@@ -100,7 +105,7 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     bool ssbo = renderer->lightsPath() != LightsPath::Ubo;
     list.push_back({"ssbo-light-list", ssbo, ssbo ? "SSBO light list, path " + renderer->lightsPathReason()
                                                   : "fallback: UBO light list, path " + renderer->lightsPathReason()});
-    bool gpuPlants = plantAtlas && plantAtlas->path() == PlantInterpretation::Gpu;
+    bool gpuPlants = plantAtlas ? plantAtlas->path() == PlantInterpretation::Gpu : plantPath == PlantInterpretation::Gpu;
     list.push_back({"compute-plant-interpretation", gpuPlants,
                     gpuPlants ? plantPathReason : "fallback: " + plantPathReason});
     bool texturing = renderer->stencilViewPath() == StencilViewPath::Texturing;

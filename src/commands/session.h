@@ -23,7 +23,8 @@ StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optiona
 MaxGlVersion maxGlVersionFor(const SceneOptions& options);
 
 // Everything a command renders with, on the current context. Throws std::runtime_error with a
-// readable message when the shaders cannot be found or the targets cannot be allocated.
+// readable message when the shaders cannot be found (or OASIS_SHADER_DIR is bad) or the targets
+// cannot be allocated.
 struct RenderSession {
     gl::Capabilities caps;  // measured once from the context, with --force applied
     std::unique_ptr<ShaderLibrary> shaders;
@@ -33,7 +34,13 @@ struct RenderSession {
     std::unique_ptr<PlantAtlas> plantAtlas;  // built at start-up; the renderer's atlas view shows it
     std::string plantPathReason;            // which interpretation path and why, e.g. "gpu (...)"
 
-    explicit RenderSession(const Options& options);
+    PlantInterpretation plantPath = PlantInterpretation::Cpu;  // the path chosen (the atlas may have fallen back)
+
+    // Required: no shader directory is an error. CapabilitiesOnly (`oasis caps`): without one the
+    // session still measures and reports everything; only the plant atlas, the one thing it would
+    // compile, is not built, and its report says so.
+    enum class Shaders { Required, CapabilitiesOnly };
+    explicit RenderSession(const Options& options, Shaders need = Shaders::Required);
 
     // Every feature oasis can use: used here or not, and why (what `oasis caps` prints).
     std::vector<gl::FeatureReport> features() const;

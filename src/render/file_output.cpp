@@ -68,6 +68,16 @@ int writeAll(int fd, const std::string& bytes) {
     return 0;
 }
 
+}  // namespace
+
+bool namesAStream(const std::string& path) {
+    struct stat link, file;
+    if (lstat(path.c_str(), &link) != 0) return isPseudoPath(path);
+    return namesADescriptor(path, S_ISLNK(link.st_mode)) || stat(path.c_str(), &file) != 0 || !S_ISREG(file.st_mode);
+}
+
+namespace {
+
 // Decides between replacing the target and writing in place.
 bool plan(const std::string& path, Staged& staged, std::string& error) {
     staged.path = staged.target = path;

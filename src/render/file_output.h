@@ -18,6 +18,10 @@ struct OutputFile {
 // (/dev/stdout) cannot be replaced: it is written in place, every write and the close checked.
 bool writeFileWhole(const std::string& path, const std::string& bytes, std::string& error);
 
+// Whether `path` names a stream or device rather than a file (it exists and is not a regular file,
+// or it lies in /dev or /proc): written in place, and its name carries no file format.
+bool namesAStream(const std::string& path);
+
 // Writes a set of files that belong together (one run's images or reports): every file is first
 // written to its temporary; only when all are complete are they renamed, so a failure leaves the
 // targets as they were (no new file, and no mix of this run's files with an earlier run's). The

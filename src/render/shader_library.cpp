@@ -1,6 +1,7 @@
 // Shader loading: include resolution, variant defines, compile/link with readable errors, reload.
 #include "render/shader_library.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -138,8 +139,20 @@ std::string PreprocessedShader::annotateLog(const std::string& log) const {
 }
 
 std::string findShaderDirectory(std::string* searched) {
+    // A variable that is set names the one directory the user wants: a bad one is an error, never a
+    // silent fallback to another tree (that would draw with shaders the user did not choose).
+    if (const char* env = std::getenv("OASIS_SHADER_DIR")) {
+        std::string dir = env;
+        struct stat info {};
+        if (dir.empty()) throw std::runtime_error("OASIS_SHADER_DIR is set but empty; unset it or name oasis's shaders/ directory");
+        if (stat(dir.c_str(), &info) != 0 || !S_ISDIR(info.st_mode))
+            throw std::runtime_error("OASIS_SHADER_DIR=" + dir + " is not a directory; unset it or name oasis's shaders/ directory");
+        if (!isShaderDirectory(dir))
+            throw std::runtime_error("OASIS_SHADER_DIR=" + dir + " lacks the shader tree (no common/frame_data.glsl in it); "
+                                     "unset it or name oasis's shaders/ directory");
+        return dir;
+    }
     std::vector<std::string> candidates;
-    if (const char* env = std::getenv("OASIS_SHADER_DIR")) candidates.push_back(env);
     std::string exeDir = executableDirectory();
     if (!exeDir.empty()) {
         std::string installed = exeDir + "/../share/oasis/shaders";

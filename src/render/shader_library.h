@@ -20,7 +20,9 @@ struct PreprocessedShader {
 };
 
 // The directory holding the shaders: $OASIS_SHADER_DIR, the installed share dir next to the
-// executable, or the source tree this binary was built from. Empty if none has them.
+// executable, or the source tree this binary was built from. Empty if none has them. Throws
+// std::runtime_error naming the variable when OASIS_SHADER_DIR is set but empty, not a directory
+// or without the shader tree (the commands exit 1).
 std::string findShaderDirectory(std::string* searched = nullptr);
 
 // Text for `#version`: the GLSL the context speaks (450 core by default).

@@ -8,7 +8,8 @@
 
 namespace oasis {
 
-float CameraPose::yawRadians() const { return glm::radians(yawDegrees); }
+// Wrapped in double first: a float of 1e9 degrees in radians would keep no precision at all.
+float CameraPose::yawRadians() const { return float(glm::radians(std::remainder(double(yawDegrees), 360.0))); }
 float CameraPose::pitchRadians() const {
     return glm::radians(std::clamp(pitchDegrees, -89.9f, 89.9f));
 }
@@ -67,7 +68,7 @@ CameraPose defaultCameraPath(const TerrainShape& shape, double timeSeconds) {
     // Clear the highest ground just ahead so the flight never dips into a hill.
     double ground = 0.0;
     for (double ahead : {0.0, 20.0, 50.0, 100.0, 160.0}) {
-        glm::vec2 probe(float(x + ahead * std::sin(yaw)), float(z - ahead * std::cos(yaw)));
+        glm::dvec2 probe(x + ahead * std::sin(yaw), z - ahead * std::cos(yaw));
         ground = std::max(ground, double(terrainHeight(shape, probe).x));
     }
     pose.position = glm::dvec3(x, ground + 26.0, z);

@@ -11,6 +11,15 @@ constexpr float kSkew = 0.36602540378f;
 constexpr float kUnskew = 0.21132486540f;
 constexpr float kScale = 99.204334582f;
 
+// Cell indices add modulo 2^32, as hashCell reads them: no signed overflow near the ends of int.
+glm::ivec2 addCells(glm::ivec2 a, glm::ivec2 b) {
+    return glm::ivec2(int32_t(uint32_t(a.x) + uint32_t(b.x)), int32_t(uint32_t(a.y) + uint32_t(b.y)));
+}
+
+// A whole float cell index to int. skewedOrigin keeps it within [-2^31, 2^31]; 2^31 itself (a
+// rounded 2^31 - 1) goes through int64 and wraps to -2^31, the same cell for hashCell.
+int cellIndex(float whole) { return int32_t(uint32_t(int64_t(whole))); }
+
 glm::vec2 cellGradient(glm::ivec2 cell) {
     const float d = 0.70710678f;
     switch (hashCell(cell) & 7u) {
@@ -50,14 +59,14 @@ glm::vec2 simplexSkew(glm::vec2 p) { return p + (p.x + p.y) * kSkew; }
 
 glm::vec3 simplexNoiseSkewed(glm::ivec2 baseCell, glm::vec2 skewedOffset) {
     glm::vec2 whole = glm::floor(skewedOffset);
-    glm::ivec2 cell = baseCell + glm::ivec2(whole);
+    glm::ivec2 cell = addCells(baseCell, glm::ivec2(whole));
     glm::vec2 f = skewedOffset - whole;
     glm::vec2 x0 = f - (f.x + f.y) * kUnskew;
     glm::ivec2 step = x0.x > x0.y ? glm::ivec2(1, 0) : glm::ivec2(0, 1);
     glm::vec2 x1 = x0 - glm::vec2(step) + kUnskew;
     glm::vec2 x2 = x0 - 1.0f + 2.0f * kUnskew;
-    glm::vec3 sum = simplexCorner(x0, cell) + simplexCorner(x1, cell + step) +
-                    simplexCorner(x2, cell + glm::ivec2(1, 1));
+    glm::vec3 sum = simplexCorner(x0, cell) + simplexCorner(x1, addCells(cell, step)) +
+                    simplexCorner(x2, addCells(cell, glm::ivec2(1, 1)));
     return kScale * sum;
 }
 
@@ -69,7 +78,17 @@ glm::vec4 skewedOrigin(glm::dvec2 p) {
     glm::dvec2 skewed = p + (p.x + p.y) * skew;
     glm::dvec2 cell = glm::floor(skewed);
     glm::dvec2 fraction = skewed - cell;
-    return {float(fraction.x), float(fraction.y), float(cell.x), float(cell.y)};
+    // The CLI's domains keep cells below 2^24, where floats hold them exactly. Any other finite
+    // cell wraps modulo 2^32 (hashCell's period, so the noise is the same) into int's range, and a
+    // non-finite point (NaN, or beyond double) reads as the origin: no cast below is undefined.
+    if (!std::isfinite(cell.x) || !std::isfinite(cell.y) || !std::isfinite(fraction.x) || !std::isfinite(fraction.y))
+        return glm::vec4(0.0f);
+    const double period = 4294967296.0, half = 2147483648.0;
+    auto wrap = [&](double index) {
+        double wrapped = std::fmod(index + half, period);  // exact
+        return (wrapped < 0.0 ? wrapped + period : wrapped) - half;
+    };
+    return {float(fraction.x), float(fraction.y), float(wrap(cell.x)), float(wrap(cell.y))};
 }
 
 namespace {
@@ -97,7 +116,8 @@ glm::vec3 fractalNoiseFrom(const NoiseOrigins& origins, glm::vec2 local, int oct
     glm::vec2 jx(1.0f, 0.0f), jy(0.0f, 1.0f), q = local;
     for (int octave = 0; octave < clampOctaves(octaves); ++octave) {
         const glm::vec4& origin = origins[size_t(octave)];
-        glm::vec3 n = simplexNoiseSkewed(glm::ivec2(origin.z, origin.w), glm::vec2(origin) + simplexSkew(q));
+        glm::vec3 n = simplexNoiseSkewed(glm::ivec2(cellIndex(origin.z), cellIndex(origin.w)),
+                                         glm::vec2(origin) + simplexSkew(q));
         glm::vec2 g(n.y, n.z);
         result.x += amplitude * n.x;
         result.y += amplitude * glm::dot(g, jx);

@@ -26,6 +26,20 @@ bool boxMeetsFrustum(const glm::mat4& viewProjection, DepthMapping mapping, glm:
     return true;
 }
 
+bool chunkRangeAround(const glm::dvec3& camera, double distance, double chunkSize, ChunkRange& range) {
+    // In double, checked before any conversion to int: a NaN, a huge coordinate or a huge distance
+    // would make the casts undefined and the loops below endless or astronomically long.
+    double lowX = std::floor((camera.x - distance) / chunkSize), highX = std::floor((camera.x + distance) / chunkSize);
+    double lowZ = std::floor((camera.z - distance) / chunkSize), highZ = std::floor((camera.z + distance) / chunkSize);
+    auto indexable = [](double index) { return std::fabs(index) <= kMaxChunkIndex; };  // false for NaN
+    if (!(chunkSize > 0.0) || !indexable(lowX) || !indexable(highX) || !indexable(lowZ) || !indexable(highZ) ||
+        highX - lowX >= kMaxChunksAcross || highZ - lowZ >= kMaxChunksAcross)
+        return false;
+    range.first = glm::ivec2(int(lowX), int(lowZ));
+    range.last = glm::ivec2(int(highX), int(highZ));
+    return true;
+}
+
 float drawnFraction(const VegetationSettings& settings, float distance) {
     if (distance > settings.drawDistance) return 0.0f;
     if (distance <= settings.thinningStart) return 1.0f;
@@ -94,14 +108,11 @@ void VegetationField::update(const TerrainShape& shape, float waterLevel, const 
         it = inRange(chunk, camera, settings.drawDistance + 2.0f * placement_.chunkSize) ? std::next(it)
                                                                                         : chunks_.erase(it);
     }
-    double size = placement_.chunkSize;
-    glm::ivec2 first(int(std::floor((camera.x - settings.drawDistance) / size)),
-                     int(std::floor((camera.z - settings.drawDistance) / size)));
-    glm::ivec2 last(int(std::floor((camera.x + settings.drawDistance) / size)),
-                    int(std::floor((camera.z + settings.drawDistance) / size)));
     stats_ = VegetationStats{};
-    for (int z = first.y; z <= last.y; ++z)
-        for (int x = first.x; x <= last.x; ++x) {
+    ChunkRange range;
+    if (!chunkRangeAround(camera, settings.drawDistance, placement_.chunkSize, range)) return;
+    for (int z = range.first.y; z <= range.last.y; ++z)
+        for (int x = range.first.x; x <= range.last.x; ++x) {
             glm::ivec2 chunk(x, z);
             if (!inRange(chunk, camera, settings.drawDistance)) continue;
             auto found = chunks_.find({x, z});

@@ -65,6 +65,17 @@ struct ChunkBounds {
 // corners may pass).
 bool boxMeetsFrustum(const glm::mat4& viewProjection, DepthMapping mapping, glm::vec3 low, glm::vec3 high);
 
+// The chunks whose squares the draw distance around the camera can reach, inclusive. False (nothing
+// to place) when an index would leave +-kMaxChunkIndex (chunk + 1 must not overflow an int) or the
+// range would be kMaxChunksAcross or wider: the CLI's domains keep the camera far inside both, and
+// a NaN camera fails too, so the chunk loops always end.
+struct ChunkRange {
+    glm::ivec2 first{0}, last{-1};
+};
+constexpr double kMaxChunkIndex = double(1 << 30);
+constexpr double kMaxChunksAcross = 4096.0;
+bool chunkRangeAround(const glm::dvec3& camera, double distance, double chunkSize, ChunkRange& range);
+
 // The fraction of a chunk's plants drawn at horizontal distance `distance` from the camera.
 float drawnFraction(const VegetationSettings& settings, float distance);
 

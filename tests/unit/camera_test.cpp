@@ -46,7 +46,7 @@ TEST(CameraPose, ForwardConventions) {
 TEST(CameraPose, PitchIsClampedAndForwardIsUnit) {
     EXPECT_NEAR(pose(0, 120).pitchRadians(), glm::radians(89.9f), 1e-6f);
     EXPECT_NEAR(pose(0, -120).pitchRadians(), -glm::radians(89.9f), 1e-6f);
-    EXPECT_NEAR(pose(200, 0).yawRadians(), glm::radians(200.0f), 1e-6f);
+    EXPECT_NEAR(pose(200, 0).yawRadians(), glm::radians(-160.0f), 1e-6f);  // wrapped into [-180, 180]
     std::mt19937 rng(31);
     std::uniform_real_distribution<float> yaw(-720, 720), pitch(-100, 100);
     for (int i = 0; i < 1000; ++i) {

@@ -176,7 +176,7 @@ TEST(ParseCameraPose, Accepts) {
     EXPECT_EQ(pose.pitchDegrees, -10.0f);
     ASSERT_TRUE(parseCameraPose("-1.5e2,0.25,123456.5,370,90", pose));
     EXPECT_EQ(pose.position, glm::dvec3(-150.0, 0.25, 123456.5));
-    EXPECT_EQ(pose.yawDegrees, 370.0f);
+    EXPECT_EQ(pose.yawDegrees, 10.0f);  // wrapped into [-180, 180)
     EXPECT_EQ(pose.pitchDegrees, 90.0f);  // |pitch| <= 90 accepted
     ASSERT_TRUE(parseCameraPose("0,0,0,0,-90", pose));
     EXPECT_EQ(pose.pitchDegrees, -90.0f);
@@ -307,14 +307,18 @@ TEST(ParseCommandLine, LaterOptionWins) {
 
 TEST(ParseCommandLine, RenderOptions) {
     ParseResult r = parse({"render", "--pipeline", "forward", "--view", "albedo", "--out", "frame.png",
-                           "--stencil-view", "read-back", "--stop-before", "LightingPass"});
+                           "--stencil-view", "read-back", "--stop-before", "WaterCompositePass"});
     ASSERT_TRUE(r.ok) << r.error;
     EXPECT_EQ(r.options.pipeline, PipelineKind::Forward);
     EXPECT_EQ(r.options.view, "albedo");
     EXPECT_EQ(r.options.out, "frame.png");
     ASSERT_TRUE(r.options.stencilView.has_value());
     EXPECT_EQ(*r.options.stencilView, StencilViewPath::ReadBack);
-    EXPECT_EQ(r.options.stopBefore, "LightingPass");
+    EXPECT_EQ(r.options.stopBefore, "WaterCompositePass");
+    // A pass of the other pipeline is a usage error naming this pipeline's passes.
+    ParseResult wrong = parse({"render", "--pipeline", "forward", "--stop-before", "LightingPass"});
+    EXPECT_FALSE(wrong.ok);
+    EXPECT_NE(wrong.error.find("SkyPass.forward"), std::string::npos) << wrong.error;
 
     r = parse({"render", "--pipeline", "deferred", "--stencil-view", "texturing", "--view", "overview"});
     ASSERT_TRUE(r.ok) << r.error;

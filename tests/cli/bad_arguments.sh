@@ -1,0 +1,162 @@
+#!/bin/sh
+# The exit-code table (docs/cli.md) against every subcommand's bad-argument paths: each value flag
+# with bad and out-of-domain values, each value flag missing its value, unknown flags and flags of
+# another subcommand all exit 2 with a message on stderr starting "oasis: " and nothing on stdout;
+# a bad OASIS_SHADER_DIR exits 1 naming the variable, writing nothing. Each case has a time limit
+# (a hang fails it). Usage: bad_arguments.sh OASIS_EXECUTABLE SCRATCH_DIR
+oasis=$1
+scratch=$2
+rm -rf "$scratch" && mkdir -p "$scratch" || exit 1
+cases=0
+failures=0
+environment=  # assignments for env(1) before oasis: none but in the OASIS_SHADER_DIR cases
+
+fail() {
+    echo "FAIL: $*"
+    failures=$((failures + 1))
+}
+
+# expect CODE ARGS...: runs oasis with ARGS and checks the exit code and the message.
+expect() {
+    code=$1
+    shift
+    cases=$((cases + 1))
+    # shellcheck disable=SC2086
+    timeout 60 env $environment "$oasis" "$@" > "$scratch/stdout" 2> "$scratch/stderr"
+    got=$?
+    if [ "$got" -ne "$code" ]; then
+        fail "oasis $* exited $got, expected $code; stderr: $(head -c 300 "$scratch/stderr")"
+    elif ! head -n 1 "$scratch/stderr" | grep -q '^oasis: '; then
+        fail "oasis $*: no 'oasis: ' message on stderr (got '$(head -c 200 "$scratch/stderr")')"
+    elif [ "$code" -eq 2 ] && [ -s "$scratch/stdout" ]; then
+        fail "oasis $*: a usage error printed to stdout: $(head -c 200 "$scratch/stdout")"
+    fi
+}
+
+# Bad values of every scene option (every subcommand takes them), out-of-domain numbers included.
+# One case per line: FLAG VALUE (a value may contain spaces only where it says so).
+scene_cases() {
+    cat <<'EOF'
+--size|0x0
+--size|abc
+--size| 64x36
+--size|+32x+18
+--size|32x18 
+--size|32769x18
+--size|99999999999x10
+--time|soon
+--time|1e300
+--time|-1e300
+--time|nan
+--time|inf
+--time|5000001
+--time|0x10
+--hour|25
+--hour|-0.5
+--hour|6.9e10
+--camera|1,2,3
+--camera|1,2,3,4,5,6
+--camera|68719476110,50,0,0,0
+--camera|1e300,100,0,0,-5
+--camera|0,1e308,0,0,0
+--camera|0,50,-6.9e10,0,0
+--camera|0,50,0,nan,0
+--camera|0,50,0,0,91
+--camera|0,5000,0,0,0
+--camera|0,50,0,0,
+--gbuffer|nope
+--depth|nope
+--reflections|maybe
+--water-level|201
+--water-level|-1e308
+--water-level|deep
+--ripples|-1
+--ripples|51
+--ripples|4.9e-324x
+--absorption|11
+--absorption|-0.001
+--vegetation|maybe
+--vegetation-density|4.5
+--vegetation-density|-1
+--wind|3.5
+--wind|gale
+--lights|4097
+--lights|-1
+--lights|+3
+--lights|1.5
+--lights-path|nope
+--force|nope
+EOF
+}
+
+# Options that take a value (each is tried with its value missing).
+value_flags="--size --time --hour --camera --gbuffer --depth --reflections --water-level --ripples --absorption
+  --vegetation --vegetation-density --wind --lights --lights-path --force --pipeline --view --out --stencil-view
+  --stop-before --out-dir --frames"
+
+for command in "" render compare caps bench window; do
+    set -- ${command:+"$command"}
+    expect 2 "$@" --bogus
+    expect 2 "$@" -x
+    for flag in $value_flags; do expect 2 "$@" "$flag"; done
+    scene_cases > "$scratch/cases"  # read in this shell, not a pipe's subshell: the counters survive
+    while IFS='|' read -r flag value; do expect 2 "$@" "$flag" "$value"; done < "$scratch/cases"
+done
+
+# Options of one subcommand under another.
+for command in compare caps bench window ""; do
+    set -- ${command:+"$command"}
+    expect 2 "$@" --pipeline forward
+    expect 2 "$@" --view albedo
+    expect 2 "$@" --out x.png
+    expect 2 "$@" --stencil-view texturing
+    expect 2 "$@" --stop-before ToneMapPass
+done
+for command in render window caps; do
+    expect 2 $command --frames 3
+    expect 2 $command --out-dir "$scratch/never"
+    expect 2 $command --passes
+done
+for command in render window; do expect 2 $command --json; done
+for command in "" render compare caps window; do expect 2 ${command:+"$command"} --quick; done
+expect 2 bench --passes
+expect 2 bench --depth standard
+expect 2 bench --size 64x36
+expect 2 bench --camera 0,50,0,0,0
+expect 2 paint
+expect 2 render render
+
+# Values only `render`, compare, bench and the main job check.
+expect 2 render --pipeline sideways
+expect 2 render --view nope
+expect 2 render --stencil-view nope
+expect 2 render --stop-before Nope
+expect 2 render --pipeline forward --stop-before LightingPass
+expect 2 render --out "$scratch/x.jpg"
+expect 2 render --out "$scratch/x"
+expect 2 render --out ""
+for command in "" compare bench; do
+    set -- ${command:+"$command"}
+    expect 2 "$@" --frames 0
+    expect 2 "$@" --frames 1001
+    expect 2 "$@" --frames many
+    expect 2 "$@" --out-dir ""
+done
+[ -e "$scratch/x.jpg" ] && fail "render wrote a .jpg"
+
+# A bad OASIS_SHADER_DIR: exit 1 naming the variable, for every command that renders or reports.
+mkdir -p "$scratch/no-shaders"
+for directory in /nonexistent "$scratch/no-shaders" "$oasis" ""; do
+    for command in "render --size 16x9 --out $scratch/env.png" "compare --size 16x9 --frames 1 --out-dir $scratch/env" \
+                   "caps" "bench --quick --out-dir $scratch/env-bench" "--size 16x9 --frames 1 --out-dir $scratch/env-main"; do
+        environment="-u DISPLAY -u WAYLAND_DISPLAY OASIS_SHADER_DIR=$directory"
+        # shellcheck disable=SC2086
+        expect 1 $command
+        environment=
+        grep -q 'OASIS_SHADER_DIR' "$scratch/stderr" || fail "OASIS_SHADER_DIR='$directory' oasis $command: not named: $(cat "$scratch/stderr")"
+    done
+    [ -e "$scratch/env.png" ] && fail "render wrote a file with OASIS_SHADER_DIR='$directory'"
+done
+
+echo "bad arguments: $cases cases, $failures failures"
+[ "$failures" -eq 0 ]
