@@ -1,57 +1,13 @@
 // GL resources: 100 pipeline switches and 20 size/layout round trips leave both the wrappers' live
-// object counts and an independent glIs* probe of names 1..4096 unchanged (no leaked GL objects).
+// object counts and an independent glIs* probe of the driver's names unchanged (no leaked GL objects).
 #include "gpu_test.h"
 
 #include <iostream>
 
+#include "gl_objects_probe.h"
+
 namespace oasis::gputest {
 namespace {
-
-// Names 1..4096 that the driver says are live objects of each kind; independent of the wrappers'
-// counters, so it also sees objects made outside them (ImGui's label renderer, raw glGen* calls).
-struct GlNameProbe {
-    int textures = 0, buffers = 0, framebuffers = 0, vertexArrays = 0, programs = 0, shaders = 0;
-    bool operator==(const GlNameProbe& o) const {
-        return textures == o.textures && buffers == o.buffers && framebuffers == o.framebuffers &&
-               vertexArrays == o.vertexArrays && programs == o.programs && shaders == o.shaders;
-    }
-    int total() const { return textures + buffers + framebuffers + vertexArrays + programs + shaders; }
-};
-
-GlNameProbe probeNames() {
-    GlNameProbe probe;
-    for (GLuint name = 1; name <= 4096; ++name) {
-        probe.textures += glIsTexture(name) ? 1 : 0;
-        probe.buffers += glIsBuffer(name) ? 1 : 0;
-        probe.framebuffers += glIsFramebuffer(name) ? 1 : 0;
-        probe.vertexArrays += glIsVertexArray(name) ? 1 : 0;
-        probe.programs += glIsProgram(name) ? 1 : 0;
-        probe.shaders += glIsShader(name) ? 1 : 0;
-    }
-    return probe;
-}
-
-std::ostream& operator<<(std::ostream& out, const GlNameProbe& p) {
-    return out << "{textures " << p.textures << ", buffers " << p.buffers << ", framebuffers " << p.framebuffers
-               << ", vertex arrays " << p.vertexArrays << ", programs " << p.programs << ", shaders " << p.shaders << "}";
-}
-
-struct LiveCounts {
-    std::array<int, size_t(gl::ObjectKind::Count)> byKind{};
-    int total = 0;
-    bool operator==(const LiveCounts& o) const { return byKind == o.byKind && total == o.total; }
-};
-LiveCounts liveCounts() {
-    LiveCounts counts;
-    for (int k = 0; k < int(gl::ObjectKind::Count); ++k) counts.byKind[k] = gl::liveObjectCount(gl::ObjectKind(k));
-    counts.total = gl::liveObjectCount();
-    return counts;
-}
-std::ostream& operator<<(std::ostream& out, const LiveCounts& c) {
-    out << "{total " << c.total << ":";
-    for (int n : c.byKind) out << " " << n;
-    return out << "}";
-}
 
 class Resources : public GpuTest {
 protected:
