@@ -71,7 +71,8 @@ mark() { wc -l < "$1"; }
 wait_for() {
     local log=$1 from=$2 pattern=$3 seconds=$4
     local deadline=$((SECONDS + seconds))
-    while ! tail -n "+$((from + 1))" "$log" | grep -qE -- "$pattern"; do
+    # grep without -q reads to the end: with pipefail, an early exit would fail tail with SIGPIPE.
+    while ! tail -n "+$((from + 1))" "$log" | grep -E -- "$pattern" > /dev/null; do
         assert_alive "while waiting for /$pattern/"
         ((SECONDS < deadline)) || fail "no line matching /$pattern/ in $(basename "$log") within $seconds s"
         sleep 0.1
