@@ -1,6 +1,9 @@
 // The window loop: input, the ImGui panel, one frame, the chosen view, present.
-//   Tab pipeline  1..7 views  0 overview  G layout  R reload shaders  Space pause  Esc quit
-//   free camera: W/S/A/D move, arrows turn, Q/E down/up
+//   Tab pipeline  1..7 views  0 overview  G layout  Z depth convention  R reload shaders
+//   V plants  H hide/show the panel  Space pause  Esc quit;  free camera: W/S/A/D, arrows, Q/E
+// A switch whose programs do not build (a shader broken on disk, never built before) is undone:
+// the last configuration that drew is drawn again and the error stays in the panel. Nothing is
+// drawn while the window is minimised.
 #include "commands/window_app.h"
 
 #include <GLFW/glfw3.h>
@@ -20,16 +23,73 @@
 namespace oasis {
 namespace {
 
-struct WindowState {
+// What the window draws, as the keys and the panel choose it: everything that decides which
+// shader programs a frame needs, so going back to a configuration that drew draws again.
+struct Configuration {
+    PipelineKind pipeline = PipelineKind::Deferred;
+    size_t layoutIndex = 0;  // into gbufferLayouts()
+    size_t depthIndex = 0;   // into depthConventions(): the one asked for
     std::string view = "final";
+    // Scene settings that pick program variants: the light path's, the mirrored ones, the plants'.
+    int lightCount = 0;
+    std::optional<LightsPath> lightsPath;
+    bool reflections = true;
+    bool vegetation = true;
+
+    bool operator==(const Configuration& o) const {
+        return pipeline == o.pipeline && layoutIndex == o.layoutIndex && depthIndex == o.depthIndex &&
+               view == o.view && lightCount == o.lightCount && lightsPath == o.lightsPath &&
+               reflections == o.reflections && vegetation == o.vegetation;
+    }
+    bool operator!=(const Configuration& o) const { return !(*this == o); }
+    std::string describe() const {
+        return std::string(pipelineName(pipeline)) + ", " + gbufferLayouts()[layoutIndex].name + " G-buffer, " +
+               depthConventions()[depthIndex].name + " depth, view " + view + ", " + std::to_string(lightCount) +
+               " lights";
+    }
+};
+
+// What happened in the window, printed when it closes (the window tests read it).
+struct WindowCounts {
+    long framesDrawn = 0, pipelineSwitches = 0, resizes = 0, minimised = 0, switchesUndone = 0;
+};
+
+struct WindowState {
+    Configuration chosen;                      // what the keys and the panel ask for
+    std::optional<Configuration> lastDrawn;    // the last configuration whose frame was drawn
     bool paused = false;
     bool freeCamera = false;
+    bool panelShown = true;
     double frameMs = 0.0, smoothedMs = 0.0;
     std::string message;  // last reload result or error, shown in the panel
+    bool messageIsError = false;
     std::vector<std::string> fallbacks;  // the session's fallbacks (printed once at start-up too)
-    size_t layoutIndex = 0;
-    size_t depthIndex = 0;  // into depthConventions(): the one asked for
+    WindowCounts counts;
 };
+
+// The chosen configuration with the scene's own settings in it, and back.
+Configuration currentConfiguration(const WindowState& state, const SceneSettings& scene) {
+    Configuration config = state.chosen;
+    config.lightCount = scene.lights.count;
+    config.lightsPath = scene.lights.path;
+    config.reflections = scene.water.reflections;
+    config.vegetation = scene.vegetation.enabled;
+    return config;
+}
+
+void restoreConfiguration(const Configuration& config, WindowState& state, SceneSettings& scene) {
+    state.chosen = config;
+    scene.lights.count = config.lightCount;
+    scene.lights.path = config.lightsPath;
+    scene.water.reflections = config.reflections;
+    scene.vegetation.enabled = config.vegetation;
+}
+
+void choosePipeline(WindowState& state, PipelineKind kind) {
+    if (state.chosen.pipeline == kind) return;
+    state.chosen.pipeline = kind;
+    ++state.counts.pipelineSwitches;
+}
 
 std::vector<std::string> viewNames() {
     std::vector<std::string> names;
@@ -38,25 +98,46 @@ std::vector<std::string> viewNames() {
     return names;
 }
 
+// Shows `message` in the panel and prints it (once, however many frames repeat it): errors to
+// stderr, results to stdout, each line starting "oasis: ".
+void report(WindowState& state, const std::string& message, bool isError) {
+    if (message == state.message && isError == state.messageIsError) return;
+    state.message = message;
+    state.messageIsError = isError;
+    std::fprintf(isError ? stderr : stdout, "oasis: %s\n", message.c_str());
+    std::fflush(isError ? stderr : stdout);
+}
+
 void reloadShaders(Renderer& renderer, WindowState& state) {
-    std::vector<std::string> failures = renderer.shaders().reloadAll();
-    state.message = failures.empty() ? "shaders reloaded" : failures.front();
-    for (const std::string& failure : failures) std::fprintf(stderr, "oasis: %s\n", failure.c_str());
+    ShaderLibrary& shaders = renderer.shaders();
+    std::vector<std::string> failures = shaders.reloadAll();
+    state.message.clear();  // a reload always reports, even when it repeats the last message
+    if (failures.empty()) {
+        report(state, "shaders reloaded: " + std::to_string(shaders.programCount()) + " programs rebuilt from " +
+                          shaders.directory(), false);
+        return;
+    }
+    report(state, "reload: " + std::to_string(failures.size()) + " of " + std::to_string(shaders.programCount()) +
+                      " programs failed and keep their previous version; the first: " + failures.front(), true);
+    for (size_t i = 1; i < failures.size(); ++i) std::fprintf(stderr, "oasis: reload: %s\n", failures[i].c_str());
 }
 
 void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, WindowState& state,
                 SceneSettings& scene) {
     if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
     const auto& views = debugViews();
+    Configuration& chosen = state.chosen;
     if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
     if (key == GLFW_KEY_TAB)
-        renderer.setPipeline(renderer.pipeline() == PipelineKind::Forward ? PipelineKind::Deferred : PipelineKind::Forward);
-    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + int(views.size())) state.view = views[size_t(key - GLFW_KEY_1)].name;
-    if (key == GLFW_KEY_0) state.view = kOverviewName;
+        choosePipeline(state, chosen.pipeline == PipelineKind::Forward ? PipelineKind::Deferred : PipelineKind::Forward);
+    if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + int(views.size())) chosen.view = views[size_t(key - GLFW_KEY_1)].name;
+    if (key == GLFW_KEY_0) chosen.view = kOverviewName;
     if (key == GLFW_KEY_SPACE) state.paused = !state.paused;
     if (key == GLFW_KEY_R) reloadShaders(renderer, state);
-    if (key == GLFW_KEY_G) state.layoutIndex = (state.layoutIndex + 1) % gbufferLayouts().size();
+    if (key == GLFW_KEY_G) chosen.layoutIndex = (chosen.layoutIndex + 1) % gbufferLayouts().size();
+    if (key == GLFW_KEY_Z) chosen.depthIndex = (chosen.depthIndex + 1) % depthConventions().size();
     if (key == GLFW_KEY_V) scene.vegetation.enabled = !scene.vegetation.enabled;
+    if (key == GLFW_KEY_H) state.panelShown = !state.panelShown;
 }
 
 void moveFreeCamera(GLFWwindow* window, CameraPose& pose, float seconds) {
@@ -91,10 +172,11 @@ void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
 // The depth convention asked for; the one in use and why when it differs (no clip control).
 void drawDepthCombo(const Renderer& renderer, WindowState& state) {
     const auto& conventions = depthConventions();
-    if (ImGui::BeginCombo("depth", conventions[state.depthIndex].name.c_str())) {
+    size_t& chosen = state.chosen.depthIndex;
+    if (ImGui::BeginCombo("depth (Z)", conventions[chosen].name.c_str())) {
         for (size_t i = 0; i < conventions.size(); ++i) {
             std::string label = conventions[i].name + " (" + std::to_string(conventions[i].depthStencil.bytesPerPixel) + " B/px)";
-            if (ImGui::Selectable(label.c_str(), i == state.depthIndex)) state.depthIndex = i;
+            if (ImGui::Selectable(label.c_str(), i == chosen)) chosen = i;
         }
         ImGui::EndCombo();
     }
@@ -104,29 +186,35 @@ void drawDepthCombo(const Renderer& renderer, WindowState& state) {
 void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     ImGui::Begin("oasis");
-    int pipeline = renderer.pipeline() == PipelineKind::Forward ? 0 : 1;
-    if (ImGui::RadioButton("forward", &pipeline, 0)) renderer.setPipeline(PipelineKind::Forward);
+    // The reload result first: a shader error must be seen without scrolling a small window.
+    if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
+    if (state.messageIsError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.2f, 1.0f));
+    if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
+    if (state.messageIsError) ImGui::PopStyleColor();
+    Configuration& chosen = state.chosen;
+    int pipeline = chosen.pipeline == PipelineKind::Forward ? 0 : 1;
+    if (ImGui::RadioButton("forward", &pipeline, 0)) choosePipeline(state, PipelineKind::Forward);
     ImGui::SameLine();
-    if (ImGui::RadioButton("deferred", &pipeline, 1)) renderer.setPipeline(PipelineKind::Deferred);
+    if (ImGui::RadioButton("deferred", &pipeline, 1)) choosePipeline(state, PipelineKind::Deferred);
     ImGui::SameLine();
     ImGui::TextDisabled("(Tab)");
 
     const auto& layouts = gbufferLayouts();
-    if (ImGui::BeginCombo("G-buffer", layouts[state.layoutIndex].name.c_str())) {
+    if (ImGui::BeginCombo("G-buffer (G)", layouts[chosen.layoutIndex].name.c_str())) {
         for (size_t i = 0; i < layouts.size(); ++i) {
             std::string label = layouts[i].name + " (" + std::to_string(layouts[i].bytesPerPixel()) + " B/px)";
-            if (ImGui::Selectable(label.c_str(), i == state.layoutIndex)) state.layoutIndex = i;
+            if (ImGui::Selectable(label.c_str(), i == chosen.layoutIndex)) chosen.layoutIndex = i;
         }
         ImGui::EndCombo();
     }
     drawDepthCombo(renderer, state);
-    if (ImGui::BeginCombo("view", state.view.c_str())) {
+    if (ImGui::BeginCombo("view", chosen.view.c_str())) {
         for (const std::string& name : viewNames())
-            if (ImGui::Selectable(name.c_str(), name == state.view)) state.view = name;
+            if (ImGui::Selectable(name.c_str(), name == chosen.view)) chosen.view = name;
         ImGui::EndCombo();
     }
-    if (const DebugView* view = findDebugView(state.view)) ImGui::TextWrapped("%s", view->legend.c_str());
-    if (state.view != "final" && renderer.pipeline() == PipelineKind::Forward)
+    if (const DebugView* view = findDebugView(chosen.view)) ImGui::TextWrapped("%s", view->legend.c_str());
+    if (chosen.view != "final" && chosen.pipeline == PipelineKind::Forward)
         ImGui::TextWrapped("(forward draws no G-buffer; G-buffer views come from the deferred geometry passes)");
 
     float hour = float(scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds));
@@ -174,9 +262,61 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         ImGui::CollapsingHeader("fallbacks (this driver or --force)", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const std::string& line : state.fallbacks) ImGui::BulletText("%s", line.c_str());
     }
-    if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
-    if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
     ImGui::End();
+}
+
+// One frame of `config` into the window's framebuffer (not yet swapped). Throws ShaderBuildError
+// when a program it needs does not build; the scene must already hold the config's settings.
+void drawConfiguration(Renderer& renderer, const Configuration& config, const SceneSettings& scene, int width,
+                       int height, WindowState& state) {
+    renderer.setPipeline(config.pipeline);
+    renderer.setDepthConvention(depthConventions()[config.depthIndex]);
+    renderer.configure(width, height, gbufferLayouts()[config.layoutIndex]);
+    auto start = std::chrono::steady_clock::now();
+    renderer.renderFrame(scene);
+    glFinish();
+    state.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
+    renderer.renderView(config.view);
+    renderer.present(width, height);
+}
+
+// Draws the chosen configuration; when a program it needs does not build, says why, goes back to
+// the last configuration that drew and draws that. False when nothing could be drawn. On the
+// first frame there is nothing to go back to: the error ends the window (exit 1).
+bool drawChosen(Renderer& renderer, SceneSettings& scene, WindowState& state, int width, int height) {
+    const Configuration wanted = currentConfiguration(state, scene);
+    try {
+        drawConfiguration(renderer, wanted, scene, width, height, state);
+        state.lastDrawn = wanted;
+        return true;
+    } catch (const ShaderBuildError& error) {
+        if (!state.lastDrawn) throw;
+        if (wanted == *state.lastDrawn) {  // the scene itself changed (e.g. the camera rose out of the water)
+            report(state, "cannot draw " + wanted.describe() + ": " + error.what(), true);
+            return false;
+        }
+        report(state, "cannot switch to " + wanted.describe() + "; drawing " + state.lastDrawn->describe() +
+                          " instead: " + error.what(), true);
+        ++state.counts.switchesUndone;
+        restoreConfiguration(*state.lastDrawn, state, scene);
+    }
+    try {
+        drawConfiguration(renderer, *state.lastDrawn, scene, width, height, state);
+        return true;
+    } catch (const ShaderBuildError& error) {
+        report(state, "cannot draw " + state.lastDrawn->describe() + ": " + error.what(), true);
+        return false;
+    }
+}
+
+// Prints the window's state changes once each, so a log (and the window tests) can follow them.
+void noteMinimised(WindowState& state, bool& minimised, bool now) {
+    if (now == minimised) return;
+    minimised = now;
+    if (now) ++state.counts.minimised;
+    std::printf("oasis: window %s\n", now ? "minimised: drawing paused" : "restored: drawing again");
+    std::fflush(stdout);
 }
 
 }  // namespace
@@ -186,10 +326,10 @@ int runWindowApp(const Options& options) {
         WindowContext window(options.scene.width, options.scene.height, "oasis", maxGlVersionFor(options.scene));
         RenderSession session(options);
         Renderer& renderer = *session.renderer;
-        renderer.setPipeline(options.pipeline);
         std::printf("oasis: window on %s; stencil view: %s\n", queryContextInfo().summary().c_str(),
                     session.stencilPathReason.c_str());
         std::printf("oasis: %s\n", describePlantAtlas(session).c_str());
+        std::fflush(stdout);
 
         IMGUI_CHECKVERSION();
         ImGui::CreateContext();
@@ -199,10 +339,11 @@ int runWindowApp(const Options& options) {
 
         WindowState state;
         state.fallbacks = session.fallbacks();
+        state.chosen.pipeline = options.pipeline;
         for (size_t i = 0; i < gbufferLayouts().size(); ++i)
-            if (gbufferLayouts()[i].name == options.scene.gbuffer) state.layoutIndex = i;
+            if (gbufferLayouts()[i].name == options.scene.gbuffer) state.chosen.layoutIndex = i;
         for (size_t i = 0; i < depthConventions().size(); ++i)
-            if (depthConventions()[i].name == options.scene.depth) state.depthIndex = i;
+            if (depthConventions()[i].name == options.scene.depth) state.chosen.depthIndex = i;
         SceneSettings& scene = session.scene;
         state.freeCamera = bool(options.scene.camera);
         scene.camera = options.scene.camera ? *options.scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
@@ -210,21 +351,29 @@ int runWindowApp(const Options& options) {
         struct Input { Renderer* renderer; WindowState* state; SceneSettings* scene; } input{&renderer, &state, &scene};
         glfwSetWindowUserPointer(window.window(), &input);
         glfwSetKeyCallback(window.window(), [](GLFWwindow* w, int key, int scancode, int action, int mods) {
-            ImGui_ImplGlfw_KeyCallback(w, key, scancode, action, mods);
+            // Tab is the pipeline key: ImGui gets it only while a text field is being edited, or its
+            // tabbing turns the panel's sliders into text fields, which then swallow every key.
+            if (key != GLFW_KEY_TAB || ImGui::GetIO().WantTextInput)
+                ImGui_ImplGlfw_KeyCallback(w, key, scancode, action, mods);
             auto* in = static_cast<Input*>(glfwGetWindowUserPointer(w));
             handleKeys(w, key, action, *in->renderer, *in->state, *in->scene);
         });
 
         auto last = std::chrono::steady_clock::now();
+        bool minimised = false;
+        int lastWidth = 0, lastHeight = 0;
         while (!glfwWindowShouldClose(window.window())) {
             glfwPollEvents();
             int width = 0, height = 0;
-            glfwGetFramebufferSize(window.window(), &width, &height);
-            if (width <= 0 || height <= 0) {  // minimised: nothing to draw, wait for the next event
+            noteMinimised(state, minimised, window.minimised(width, height));
+            if (minimised) {  // nothing to draw into: wait for the next event
                 glfwWaitEvents();
                 last = std::chrono::steady_clock::now();
                 continue;
             }
+            if (lastWidth && (width != lastWidth || height != lastHeight)) ++state.counts.resizes;
+            lastWidth = width;
+            lastHeight = height;
             auto now = std::chrono::steady_clock::now();
             float seconds = std::chrono::duration<float>(now - last).count();
             last = now;
@@ -235,24 +384,31 @@ int runWindowApp(const Options& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
-            drawPanel(renderer, scene, state);
+            if (state.panelShown) drawPanel(renderer, scene, state);
             ImGui::Render();
 
-            renderer.setDepthConvention(depthConventions()[state.depthIndex]);
-            renderer.configure(width, height, gbufferLayouts()[state.layoutIndex]);
-            auto start = std::chrono::steady_clock::now();
-            renderer.renderFrame(scene);
-            glFinish();
-            state.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
-            renderer.renderView(state.view);
-            renderer.present(width, height);
+            if (drawChosen(renderer, scene, state, width, height)) {
+                if (++state.counts.framesDrawn == 1) {  // scripts driving the window wait for this line
+                    std::printf("oasis: first frame drawn (%dx%d)\n", width, height);
+                    std::fflush(stdout);
+                }
+            } else {  // only the panel, over a neutral grey, until the shader is mended
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+                glViewport(0, 0, width, height);
+                glClearColor(0.2f, 0.2f, 0.2f, 1.0f);
+                glClear(GL_COLOR_BUFFER_BIT);
+            }
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window.window());
         }
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
+        const WindowCounts& counts = state.counts;
+        std::printf("oasis: window closed: %ld frames drawn, %ld pipeline switches, %ld switches undone, "
+                    "%ld resizes, minimised %ld times\n",
+                    counts.framesDrawn, counts.pipelineSwitches, counts.switchesUndone, counts.resizes,
+                    counts.minimised);
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: %s\n", error.what());

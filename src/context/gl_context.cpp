@@ -37,9 +37,11 @@ std::string glString(GLenum name) {
     return text ? reinterpret_cast<const char*>(text) : "";
 }
 
-void GLAPIENTRY printDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
+void GLAPIENTRY printDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
                                   const void*) {
     if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+    // A shader that does not compile is reported by the shader library, with file:line.
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     static std::set<GLuint> seen;  // each message once: a per-frame warning must not flood the console
     if (!seen.insert(id).second) return;
     std::fprintf(stderr, "oasis: GL %s: %s\n", type == GL_DEBUG_TYPE_ERROR ? "error" : "debug", message);
@@ -143,6 +145,11 @@ WindowContext::WindowContext(int width, int height, const std::string& title, Ma
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(0);
     installDebugOutput();
+}
+
+bool WindowContext::minimised(int& width, int& height) const {
+    glfwGetFramebufferSize(window_, &width, &height);
+    return glfwGetWindowAttrib(window_, GLFW_ICONIFIED) || width <= 0 || height <= 0;
 }
 
 WindowContext::~WindowContext() {

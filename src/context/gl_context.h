@@ -45,6 +45,9 @@ public:
     WindowContext(const WindowContext&) = delete;
     WindowContext& operator=(const WindowContext&) = delete;
     GLFWwindow* window() const { return window_; }
+    // Whether there is nothing to draw into: the window is iconified (X11 keeps its size then) or
+    // its framebuffer is empty (other systems' minimise). `width` and `height` get the size.
+    bool minimised(int& width, int& height) const;
 
     static bool displayAvailable();  // a display server to open a window on
 

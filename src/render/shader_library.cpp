@@ -44,6 +44,9 @@ bool expandIncludes(const std::string& root, const std::string& file, Preprocess
     if (depth > 16) { error = file + ": #include nested too deeply"; return false; }
     std::string text;
     if (!readFile(root + "/" + file, text)) { error = "cannot read shader " + root + "/" + file; return false; }
+    // An emptied file would surface only as a link error naming no file ("lacks main") or as
+    // errors in the files that include it; say which file it is.
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos) { error = file + ":1: the file is empty"; return false; }
     int index = int(out.files.size());
     out.files.push_back(file);
     out.text += "#line 1 " + std::to_string(index) + "\n";
@@ -246,7 +249,9 @@ bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::
     if (!ok) {
         char log[8192] = {};
         glGetProgramInfoLog(program.name(), sizeof(log), nullptr, log);
-        error = "linking program " + variant.name + ":\n" + log;
+        std::string stages;
+        for (const std::string& file : files) stages += (stages.empty() ? "" : " + ") + file;
+        error = "linking program " + variant.name + " (" + stages + "):\n" + log;
         return false;
     }
     for (const gl::Shader& shader : shaders) glDetachShader(program.name(), shader.name());
@@ -268,10 +273,10 @@ GLuint ShaderLibrary::program(const std::string& variantName) {
     auto found = programs_.find(variantName);
     if (found != programs_.end()) return found->second.name();
     const ProgramVariant* variant = findProgramVariant(variantName);
-    if (!variant) throw std::runtime_error("no shader program variant named '" + variantName + "'");
+    if (!variant) throw std::logic_error("no shader program variant named '" + variantName + "'");
     gl::Program program;
     std::string error;
-    if (!build(*variant, program, error)) throw std::runtime_error(error);
+    if (!build(*variant, program, error)) throw ShaderBuildError(error);
     GLuint name = program.name();
     programs_.emplace(variantName, std::move(program));
     return name;
@@ -285,7 +290,7 @@ std::vector<std::string> ShaderLibrary::reloadAll() {
         if (build(*findProgramVariant(name), rebuilt, error))
             program = std::move(rebuilt);
         else
-            failures.push_back(error + "(keeping the previous version of " + name + ")");
+            failures.push_back(error + (error.back() == '\n' ? "" : " ") + "(keeping the previous version of " + name + ")");
     }
     return failures;
 }

@@ -3,6 +3,7 @@
 // name, and reloads on request keeping the last good program when an edit fails to compile.
 #pragma once
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,14 @@ GlslDialect glslDialectForCurrentContext();
 // The #extension lines a compute stage needs in this dialect (none at GLSL 4.30 and later).
 std::string computeExtensionLines(const GlslDialect& dialect);
 
+// A program that does not compile or link (or whose files are missing or empty): the message
+// names the program and file:line. Recoverable: the library is unchanged, so a caller that asked
+// for a new configuration can go back to one whose programs are built.
+class ShaderBuildError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 class ShaderLibrary {
 public:
     explicit ShaderLibrary(std::string directory, GlslDialect dialect = {});
@@ -53,13 +62,16 @@ public:
     bool preprocess(const std::string& file, const std::vector<std::string>& defines,
                     PreprocessedShader& out, std::string& error) const;
 
-    // The linked program for a variant from the table, built on first use. Throws
-    // std::runtime_error naming file:line when it does not compile.
+    // The linked program for a variant from the table, built on first use. Throws ShaderBuildError
+    // naming file:line when it does not build (nothing is cached then: the next request tries
+    // again), std::logic_error for a name the table lacks.
     GLuint program(const std::string& variantName);
 
     // Rebuilds every cached program from disk. A variant that fails keeps its previous program;
     // the returned messages say which and why (empty when all succeeded).
     std::vector<std::string> reloadAll();
+    // How many programs are built (what reloadAll rebuilds).
+    size_t programCount() const { return programs_.size(); }
 
 private:
     bool build(const ProgramVariant& variant, gl::Program& out, std::string& error) const;

@@ -1,57 +1,16 @@
 // GL resources: 100 pipeline switches and 20 size/layout round trips leave both the wrappers' live
-// object counts and an independent glIs* probe of names 1..4096 unchanged (no leaked GL objects).
+// object counts and an independent glIs* probe of the driver's names unchanged (no leaked GL objects).
 #include "gpu_test.h"
 
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <unistd.h>
+
+#include "gl_objects_probe.h"
 
 namespace oasis::gputest {
 namespace {
-
-// Names 1..4096 that the driver says are live objects of each kind; independent of the wrappers'
-// counters, so it also sees objects made outside them (ImGui's label renderer, raw glGen* calls).
-struct GlNameProbe {
-    int textures = 0, buffers = 0, framebuffers = 0, vertexArrays = 0, programs = 0, shaders = 0;
-    bool operator==(const GlNameProbe& o) const {
-        return textures == o.textures && buffers == o.buffers && framebuffers == o.framebuffers &&
-               vertexArrays == o.vertexArrays && programs == o.programs && shaders == o.shaders;
-    }
-    int total() const { return textures + buffers + framebuffers + vertexArrays + programs + shaders; }
-};
-
-GlNameProbe probeNames() {
-    GlNameProbe probe;
-    for (GLuint name = 1; name <= 4096; ++name) {
-        probe.textures += glIsTexture(name) ? 1 : 0;
-        probe.buffers += glIsBuffer(name) ? 1 : 0;
-        probe.framebuffers += glIsFramebuffer(name) ? 1 : 0;
-        probe.vertexArrays += glIsVertexArray(name) ? 1 : 0;
-        probe.programs += glIsProgram(name) ? 1 : 0;
-        probe.shaders += glIsShader(name) ? 1 : 0;
-    }
-    return probe;
-}
-
-std::ostream& operator<<(std::ostream& out, const GlNameProbe& p) {
-    return out << "{textures " << p.textures << ", buffers " << p.buffers << ", framebuffers " << p.framebuffers
-               << ", vertex arrays " << p.vertexArrays << ", programs " << p.programs << ", shaders " << p.shaders << "}";
-}
-
-struct LiveCounts {
-    std::array<int, size_t(gl::ObjectKind::Count)> byKind{};
-    int total = 0;
-    bool operator==(const LiveCounts& o) const { return byKind == o.byKind && total == o.total; }
-};
-LiveCounts liveCounts() {
-    LiveCounts counts;
-    for (int k = 0; k < int(gl::ObjectKind::Count); ++k) counts.byKind[k] = gl::liveObjectCount(gl::ObjectKind(k));
-    counts.total = gl::liveObjectCount();
-    return counts;
-}
-std::ostream& operator<<(std::ostream& out, const LiveCounts& c) {
-    out << "{total " << c.total << ":";
-    for (int n : c.byKind) out << " " << n;
-    return out << "}";
-}
 
 class Resources : public GpuTest {
 protected:
@@ -183,6 +142,57 @@ TEST_F(Resources, DestroyedRendererReleasesItsObjects) {
     glFinish();
     EXPECT_EQ(liveCounts(), countsBefore);
     EXPECT_EQ(probeNames(), probeBefore);
+}
+
+// A pipeline switch whose programs were never built and do not build now (sky.frag broken on disk)
+// throws ShaderBuildError naming file:line, leaves no GL object behind, and the pipeline that drew
+// before draws the same image after; once the file is mended the switch works (what the window's
+// undo of a failed switch relies on).
+TEST_F(Resources, FailedProgramBuildIsRecoverable) {
+    namespace fs = std::filesystem;
+    const fs::path copy = fs::temp_directory_path() / ("oasis-resources-shaders-" + std::to_string(::getpid()));
+    fs::remove_all(copy);
+    fs::copy(shaderDir_, copy, fs::copy_options::recursive);
+    const fs::path sky = copy / "sky.frag";
+    std::string original;
+    {
+        std::ifstream in(sky);
+        original.assign(std::istreambuf_iterator<char>(in), {});
+    }
+    const int brokenLine = int(std::count(original.begin(), original.end(), '\n')) + 1;
+    std::ofstream(sky, std::ios::app) << "this is not GLSL;\n";
+
+    ShaderLibrary library(copy.string(), glslDialectForCurrentContext());
+    NamedPose pose = defaultPose();
+    Renderer renderer(library, pose.scene);
+    renderer.configure(64, 36, layoutNamed("compact"));
+    const Image before = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
+    ASSERT_TRUE(hasContent(before));
+    const LiveCounts countsBefore = liveCounts();
+    const size_t programsBefore = library.programCount();
+
+    renderer.setPipeline(PipelineKind::Forward);
+    try {
+        renderer.renderFrame(pose.scene);
+        ADD_FAILURE() << "a forward frame with a broken sky.frag did not throw";
+    } catch (const ShaderBuildError& error) {
+        EXPECT_NE(std::string(error.what()).find("sky.frag:" + std::to_string(brokenLine)), std::string::npos)
+            << error.what();
+    }
+    glFinish();
+    // The forward programs that built before sky.frag's failed stay in the library; nothing else is new.
+    LiveCounts expected = countsBefore;
+    const int built = int(library.programCount() - programsBefore);
+    expected.byKind[size_t(gl::ObjectKind::Program)] += built;
+    expected.total += built;
+    EXPECT_EQ(liveCounts(), expected) << "the failed build left objects behind";
+    const Image after = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
+    EXPECT_EQ(compareImages(before, after).maxAbs, 0) << "the deferred frame changed after the failed switch";
+
+    std::ofstream(sky, std::ios::trunc) << original;
+    EXPECT_TRUE(hasContent(renderFinal(renderer, pose.scene, PipelineKind::Forward)));
+    std::error_code ignored;
+    fs::remove_all(copy, ignored);
 }
 
 }  // namespace
