@@ -186,8 +186,8 @@ std::string usage(Command command) {
            "  caps       what this driver offers and which paths oasis takes on it (--json)\n"
            "  bench      time against error over pipelines, layouts, quality knobs and sizes\n"
            "  probe      every target's value at one pixel, stored and decoded (--at X,Y)\n"
-           "  oasis SUBCOMMAND --help for its options\n" + scene +
-           "  --out-dir DIR             where the main job writes (default oasis-out)\n";
+           "  oasis SUBCOMMAND --help for its options\n"
+           "  --out-dir DIR             where the main job writes (default oasis-out)\n" + scene;
 }
 
 ParseResult parseCommandLine(const std::vector<std::string>& arguments) {

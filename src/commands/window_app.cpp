@@ -1,6 +1,8 @@
 // The window loop: input, the ImGui panel, one frame, the chosen view, present.
 //   Tab pipeline  1..7 views  0 overview  G layout  Z depth convention  R reload shaders
 //   V plants  H hide/show the panel  Space pause  Esc quit;  free camera: W/S/A/D, arrows, Q/E
+//   the inspector: the values under the cursor, click to pin probes (right click: unpin the last),
+//   P prints the probe under the cursor as JSON; the view controls (channel, range, overlay, exposure)
 // A switch whose programs do not build (a shader broken on disk, never built before) is undone:
 // the last configuration that drew is drawn again and the error stays in the panel. Nothing is
 // drawn while the window is minimised.
@@ -11,6 +13,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +22,8 @@
 #include "commands/session.h"
 #include "context/gl_context.h"
 #include "debug/debug_views.h"
+#include "debug/view_controls.h"
+#include "render/pixel_probe.h"
 
 namespace oasis {
 namespace {
@@ -49,6 +54,31 @@ struct Configuration {
     }
 };
 
+// The inspector: the probe under the cursor and the pinned ones, and the view controls.
+struct Inspector {
+    std::optional<glm::ivec2> hovered;   // the framebuffer pixel under the cursor, 0,0 top left
+    std::optional<PixelProbe> hoveredProbe;
+    std::vector<glm::ivec2> pinned;      // numbered on screen in this order
+    std::vector<PixelProbe> pinnedProbes;
+    bool printHovered = false;           // P: print the next hovered probe
+    int channelChoice = 0;               // 0: the view's own colours; else 1 + ViewChannel
+    bool fitRange = true;
+    float range[2] = {0.0f, 1.0f};
+    bool overlayNan = true, overlayInfinity = true, overlayNegative = false;
+    float exposureStops = 0.0f;
+    std::optional<ValueStatistics> statistics;  // of the last single view drawn
+    static constexpr size_t kMaxPins = 9;
+
+    ViewControls controls() const {
+        ViewControls c;
+        if (channelChoice > 0) c.channel = ViewChannel(channelChoice - 1);
+        if (channelChoice > 0 && !fitRange && range[0] < range[1]) c.range = std::pair{double(range[0]), double(range[1])};
+        c.overlay = (overlayNan ? kOverlayNan : 0u) | (overlayInfinity ? kOverlayInfinity : 0u) |
+                    (overlayNegative ? kOverlayNegative : 0u);
+        return c;
+    }
+};
+
 // What happened in the window, printed when it closes (the window tests read it).
 struct WindowCounts {
     long framesDrawn = 0, pipelineSwitches = 0, resizes = 0, minimised = 0, switchesUndone = 0;
@@ -64,6 +94,7 @@ struct WindowState {
     std::string message;  // last reload result or error, shown in the panel
     bool messageIsError = false;
     std::vector<std::string> fallbacks;  // the session's fallbacks (printed once at start-up too)
+    Inspector inspector;
     WindowCounts counts;
 };
 
@@ -138,6 +169,112 @@ void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, Win
     if (key == GLFW_KEY_Z) chosen.depthIndex = (chosen.depthIndex + 1) % depthConventions().size();
     if (key == GLFW_KEY_V) scene.vegetation.enabled = !scene.vegetation.enabled;
     if (key == GLFW_KEY_H) state.panelShown = !state.panelShown;
+    if (key == GLFW_KEY_P) state.inspector.printHovered = true;
+}
+
+// The cursor's framebuffer pixel (0,0 top left) when it is over the frame and not over the panel.
+std::optional<glm::ivec2> pixelUnderCursor(GLFWwindow* window) {
+    if (ImGui::GetIO().WantCaptureMouse) return std::nullopt;
+    double cx = 0.0, cy = 0.0;
+    glfwGetCursorPos(window, &cx, &cy);
+    int windowWidth = 0, windowHeight = 0, width = 0, height = 0;
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    glfwGetFramebufferSize(window, &width, &height);
+    if (windowWidth <= 0 || windowHeight <= 0) return std::nullopt;
+    int x = int(std::floor(cx * width / windowWidth)), y = int(std::floor(cy * height / windowHeight));
+    if (x < 0 || y < 0 || x >= width || y >= height) return std::nullopt;
+    return glm::ivec2(x, y);
+}
+
+// Mouse: hover to probe, click to pin (numbered), right click to unpin the last.
+void handleInspectorMouse(GLFWwindow* window, Inspector& inspector) {
+    inspector.hovered = pixelUnderCursor(window);
+    if (!inspector.hovered) return;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && inspector.pinned.size() < Inspector::kMaxPins)
+        inspector.pinned.push_back(*inspector.hovered);
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) && !inspector.pinned.empty()) inspector.pinned.pop_back();
+}
+
+// The pinned probes' numbers over the frame, at their pixels.
+void drawPinMarkers(GLFWwindow* window, const Inspector& inspector) {
+    int windowWidth = 0, windowHeight = 0, width = 0, height = 0;
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    glfwGetFramebufferSize(window, &width, &height);
+    if (width <= 0 || height <= 0) return;
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    for (size_t i = 0; i < inspector.pinned.size(); ++i) {
+        ImVec2 at((float(inspector.pinned[i].x) + 0.5f) * float(windowWidth) / float(width),
+                  (float(inspector.pinned[i].y) + 0.5f) * float(windowHeight) / float(height));
+        draw->AddCircle(at, 6.0f, IM_COL32(255, 0, 255, 255), 12, 2.0f);
+        std::string number = std::to_string(i + 1);
+        draw->AddRectFilled(ImVec2(at.x + 7, at.y - 16), ImVec2(at.x + 9 + 7.0f * float(number.size()), at.y - 2),
+                            IM_COL32(0, 0, 0, 200));
+        draw->AddText(ImVec2(at.x + 8, at.y - 16), IM_COL32(255, 255, 255, 255), number.c_str());
+    }
+}
+
+// One line of a probe for the pinned list.
+std::string probeSummary(const PixelProbe& p) {
+    char line[256];
+    if (p.sky)
+        std::snprintf(line, sizeof(line), "%d,%d sky; final %d %d %d; stencil %d", p.x, p.y, p.final.r, p.final.g,
+                      p.final.b, p.stencil);
+    else
+        std::snprintf(line, sizeof(line), "%d,%d %s; final %d %d %d; depth %.4g; n %.3f %.3f %.3f; lights %d", p.x, p.y,
+                      p.stencilMeaning.c_str(), p.final.r, p.final.g, p.final.b, p.depthEyeDistance, p.normal.x,
+                      p.normal.y, p.normal.z, p.lightsReaching);
+    return line;
+}
+
+// The inspector's section of the panel: view controls, value counts, the probes.
+void drawInspectorPanel(WindowState& state) {
+    Inspector& inspector = state.inspector;
+    if (!ImGui::CollapsingHeader("inspector (hover, click to pin, P prints)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const DebugView* view = findDebugView(state.chosen.view);
+    if (view) {
+        std::vector<std::string> choices = {"the view's colours"};
+        for (int c = 0; c <= int(ViewChannel::Luminance); ++c)
+            choices.push_back(viewHasChannel(*view, ViewChannel(c)) ? "values: " + describeChannel(*view, ViewChannel(c))
+                                                                    : std::string());
+        if (inspector.channelChoice > 0 && choices[size_t(inspector.channelChoice)].empty()) inspector.channelChoice = 0;
+        if (ImGui::BeginCombo("channel", choices[size_t(inspector.channelChoice)].c_str())) {
+            for (size_t i = 0; i < choices.size(); ++i)
+                if (!choices[i].empty() && ImGui::Selectable(choices[i].c_str(), int(i) == inspector.channelChoice))
+                    inspector.channelChoice = int(i);
+            ImGui::EndCombo();
+        }
+        if (inspector.channelChoice > 0) {
+            ImGui::Checkbox("fit the range to the frame", &inspector.fitRange);
+            if (!inspector.fitRange) ImGui::DragFloat2("range", inspector.range, 0.01f);
+        }
+        ImGui::Checkbox("NaN", &inspector.overlayNan);
+        ImGui::SameLine();
+        ImGui::Checkbox("+-Inf", &inspector.overlayInfinity);
+        ImGui::SameLine();
+        ImGui::Checkbox("negative (overlay)", &inspector.overlayNegative);
+        if (view->remapDefine == "VIEW_HDR") ImGui::SliderFloat("exposure (stops)", &inspector.exposureStops, -20.0f, 20.0f);
+        if (inspector.statistics) {
+            const ValueStatistics& s = *inspector.statistics;
+            ImGui::TextWrapped("values: NaN %ld, +Inf %ld, -Inf %ld, negative %ld of %ld; finite %.4g .. %.4g", s.nan,
+                               s.positiveInfinity, s.negativeInfinity, s.negative, s.values, s.min, s.max);
+        }
+    }
+    if (inspector.hoveredProbe) {
+        if (ImGui::TreeNodeEx("under the cursor", ImGuiTreeNodeFlags_DefaultOpen)) {
+            ImGui::TextUnformatted(probeText(*inspector.hoveredProbe).c_str());
+            ImGui::TreePop();
+        }
+    } else {
+        ImGui::TextDisabled("move the cursor over the frame to probe it");
+    }
+    for (size_t i = 0; i < inspector.pinnedProbes.size(); ++i) {
+        std::string label = "#" + std::to_string(i + 1) + " " + probeSummary(inspector.pinnedProbes[i]);
+        if (ImGui::TreeNode(label.c_str())) {
+            ImGui::TextUnformatted(probeText(inspector.pinnedProbes[i]).c_str());
+            ImGui::TreePop();
+        }
+    }
+    if (!inspector.pinned.empty() && ImGui::Button("unpin all")) inspector.pinned.clear();
 }
 
 void moveFreeCamera(GLFWwindow* window, CameraPose& pose, float seconds) {
@@ -156,7 +293,7 @@ void moveFreeCamera(GLFWwindow* window, CameraPose& pose, float seconds) {
 
 // Point lights: the count, the path (automatic or forced) and which path is active and why.
 void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
-    if (!ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!ImGui::CollapsingHeader("lights")) return;
     ImGui::SliderInt("point lights", &scene.lights.count, 0, kMaxLights);
     const char* choices[] = {"automatic", "ssbo", "ssbo-count", "ubo"};
     int choice = scene.lights.path ? 1 + int(*scene.lights.path) : 0;
@@ -185,6 +322,8 @@ void drawDepthCombo(const Renderer& renderer, WindowState& state) {
 
 void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    // Wide enough for the probe's lines, as tall as the window allows (the sections collapse).
+    ImGui::SetNextWindowSize(ImVec2(480.0f, std::max(200.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
     ImGui::Begin("oasis");
     // The reload result first: a shader error must be seen without scrolling a small window.
     if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
@@ -198,6 +337,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::RadioButton("deferred", &pipeline, 1)) choosePipeline(state, PipelineKind::Deferred);
     ImGui::SameLine();
     ImGui::TextDisabled("(Tab)");
+    ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
 
     const auto& layouts = gbufferLayouts();
     if (ImGui::BeginCombo("G-buffer (G)", layouts[chosen.layoutIndex].name.c_str())) {
@@ -216,6 +356,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (const DebugView* view = findDebugView(chosen.view)) ImGui::TextWrapped("%s", view->legend.c_str());
     if (chosen.view != "final" && chosen.pipeline == PipelineKind::Forward)
         ImGui::TextWrapped("(forward draws no G-buffer; G-buffer views come from the deferred geometry passes)");
+    drawInspectorPanel(state);
 
     float hour = float(scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds));
     if (ImGui::SliderFloat("time of day (h)", &hour, 0.0f, 24.0f, "%.2f")) scene.hour = hour;
@@ -233,7 +374,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::SliderFloat("yaw", &pose.yawDegrees, -180.0f, 360.0f)) state.freeCamera = true;
     if (ImGui::SliderFloat("pitch", &pose.pitchDegrees, -89.0f, 89.0f)) state.freeCamera = true;
 
-    if (ImGui::CollapsingHeader("water", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::CollapsingHeader("water")) {
         WaterSettings& water = scene.water;
         ImGui::Checkbox("reflections", &water.reflections);
         ImGui::SliderFloat("level", &water.level, -20.0f, 30.0f);
@@ -241,7 +382,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         ImGui::SliderFloat("absorption", &water.absorption, 0.0f, 0.5f);
         ImGui::SliderFloat("ripples", &water.rippleStrength, 0.0f, 4.0f);
     }
-    if (ImGui::CollapsingHeader("vegetation", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::CollapsingHeader("vegetation")) {
         VegetationSettings& vegetation = scene.vegetation;
         ImGui::Checkbox("plants (V)", &vegetation.enabled);
         // Density re-places every chunk when released, so it is applied on release, not per drag step.
@@ -255,7 +396,6 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     }
     drawLightsPanel(renderer, scene);
     ImGui::Separator();
-    ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
                 renderer.geometry().terrainTriangles());
     if (!state.fallbacks.empty() &&
@@ -263,6 +403,42 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         for (const std::string& line : state.fallbacks) ImGui::BulletText("%s", line.c_str());
     }
     ImGui::End();
+}
+
+// After a view is drawn: its values through the view controls (and the overlay where any value
+// needs it) into Display, and the probes of the pixels hovered and pinned.
+void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector) {
+    inspector.statistics.reset();
+    if (const DebugView* view = findDebugView(config.view)) {
+        ViewControls controls = inspector.controls();
+        std::vector<float> values = renderer.readViewValues(view->name);
+        ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
+        ValueStatistics statistics = valueStatistics(values, channel);
+        const FrameTargets& targets = renderer.targets();
+        if (controls.showValues()) {
+            renderer.showImage(mapViewValues(values, targets.width(), targets.height(), channel,
+                                             rangeInUse(controls, statistics), controls.overlay));
+        } else if (((controls.overlay & kOverlayNan) && statistics.nan) ||
+                   ((controls.overlay & kOverlayInfinity) && (statistics.positiveInfinity || statistics.negativeInfinity)) ||
+                   ((controls.overlay & kOverlayNegative) && statistics.negative)) {
+            Image image = renderer.readDisplay();
+            paintOverlay(image, values, channel, controls.overlay);
+            renderer.showImage(image);
+        }
+        inspector.statistics = statistics;
+    }
+    auto inside = [&](glm::ivec2 p) { return p.x < renderer.targets().width() && p.y < renderer.targets().height(); };
+    inspector.hoveredProbe.reset();
+    if (inspector.hovered && inside(*inspector.hovered))
+        inspector.hoveredProbe = probePixel(renderer, inspector.hovered->x, inspector.hovered->y);
+    inspector.pinnedProbes.clear();
+    for (glm::ivec2 pin : inspector.pinned)
+        if (inside(pin)) inspector.pinnedProbes.push_back(probePixel(renderer, pin.x, pin.y));
+    if (inspector.printHovered && inspector.hoveredProbe) {
+        std::printf("oasis: probe %s\n", probeJson(*inspector.hoveredProbe).c_str());
+        std::fflush(stdout);
+        inspector.printHovered = false;
+    }
 }
 
 // One frame of `config` into the window's framebuffer (not yet swapped). Throws ShaderBuildError
@@ -277,7 +453,9 @@ void drawConfiguration(Renderer& renderer, const Configuration& config, const Sc
     glFinish();
     state.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
+    renderer.setViewExposure(state.inspector.exposureStops);
     renderer.renderView(config.view);
+    inspectFrame(renderer, config, state.inspector);
     renderer.present(width, height);
 }
 
@@ -385,6 +563,8 @@ int runWindowApp(const Options& options) {
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             if (state.panelShown) drawPanel(renderer, scene, state);
+            handleInspectorMouse(window.window(), state.inspector);
+            drawPinMarkers(window.window(), state.inspector);
             ImGui::Render();
 
             if (drawChosen(renderer, scene, state, width, height)) {

@@ -277,6 +277,17 @@ Image Renderer::readDisplay() const {
     return image;
 }
 
+void Renderer::showImage(const Image& image) {
+    if (image.width != targets_->width() || image.height != targets_->height())
+        throw std::invalid_argument("showImage: the image is not the frame's size");
+    Image rows = image;
+    rows.flipRows();  // GL's rows are bottom-up
+    glBindTexture(GL_TEXTURE_2D, targets_->displayTexture());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, rows.rgba.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 std::vector<float> Renderer::readTarget(Target target) const {
     if (target == Target::DepthStencil || target == Target::SceneDepth)
         throw std::invalid_argument(std::string("readTarget reads colour targets; ") + targetName(target) +

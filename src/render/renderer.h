@@ -94,6 +94,9 @@ public:
     const SceneGeometry& geometry() const { return geometry_; }
 
     Image readDisplay() const;
+    // Puts an image of the frame's size (top row first) into Display, e.g. a view's values mapped
+    // by the view controls on the CPU, for present() to show.
+    void showImage(const Image& image);
     // A colour target as RGBA floats, bottom row first (GL order); throws std::invalid_argument
     // for a target the layout does not store.
     std::vector<float> readTarget(Target target) const;

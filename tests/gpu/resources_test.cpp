@@ -33,8 +33,8 @@ protected:
 TEST_F(Resources, HundredPipelineSwitchesLeakNothing) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
-    // 128x72: overview tiles are 24 px high, the smallest that gets labels (ImGui's objects).
-    renderer.configure(128, 72, layoutNamed("standard"));
+    // 128x96: the overview's 4x4 tiles are 24 px high, the smallest that gets labels (ImGui's objects).
+    renderer.configure(128, 96, layoutNamed("standard"));
     exerciseEverything(renderer, pose.scene);  // warm-up: programs, label overlay, stencil copy exist
     const LiveCounts countsBefore = liveCounts();
     const GlNameProbe probeBefore = probeNames();

@@ -4,7 +4,11 @@ deviation of its RGB values over a rectangle: "mean R G B stddev S" (S over all 
 --png it also writes the rectangle as a PNG, so people can look at what the window test saw.
 Standard library only: the window tests must run where Python has no imaging packages.
 
-usage: xwd_stats.py FILE.xwd [--region X,Y,W,H] [--png OUT.png]"""
+With --compare PNG it also prints "psnr P maxabs M" of the region against that PNG's top-left
+corner of the same size (8-bit RGB or RGBA, as oasis writes them), so a window test can hold a
+screenshot against the headless render of the same frame.
+
+usage: xwd_stats.py FILE.xwd [--region X,Y,W,H] [--png OUT.png] [--compare IN.png]"""
 import argparse
 import math
 import struct
@@ -50,11 +54,65 @@ def write_png(path, width, height, rows):
         out.write(chunk(b"IEND", b""))
 
 
+def read_png(path):
+    """The rows of an 8-bit RGB or RGBA, non-interlaced PNG as [[r, g, b], ...] lists."""
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n":
+        sys.exit(f"xwd_stats: {path} is not a PNG")
+    at, idat, header = 8, b"", None
+    while at < len(data):
+        length, kind = struct.unpack(">I4s", data[at:at + 8])
+        body = data[at + 8:at + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        at += 12 + length
+    width, height, depth, colour, _compression, _filter, interlace = header
+    if depth != 8 or colour not in (2, 6) or interlace:
+        sys.exit(f"xwd_stats: {path}: only 8-bit RGB/RGBA non-interlaced PNGs are read")
+    step = 3 if colour == 2 else 4
+    raw, stride, rows, previous = zlib.decompress(idat), width * step, [], bytearray(width * step)
+    for y in range(height):
+        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):  # undo the row's filter (PNG spec, section 9)
+            left = line[i - step] if i >= step else 0
+            up, corner = previous[i], (previous[i - step] if i >= step else 0)
+            if kind == 1:
+                line[i] = (line[i] + left) & 255
+            elif kind == 2:
+                line[i] = (line[i] + up) & 255
+            elif kind == 3:
+                line[i] = (line[i] + (left + up) // 2) & 255
+            elif kind == 4:
+                p = left + up - corner
+                pa, pb, pc = abs(p - left), abs(p - up), abs(p - corner)
+                line[i] = (line[i] + (left if pa <= pb and pa <= pc else up if pb <= pc else corner)) & 255
+        rows.append([list(line[x * step:x * step + 3]) for x in range(width)])
+        previous = line
+    return width, height, rows
+
+
+def compare(rows, png):
+    width, height, reference = read_png(png)
+    if len(rows) > height or len(rows[0]) > width:
+        sys.exit(f"xwd_stats: the region is larger than {png} ({width}x{height})")
+    squared, worst, count = 0, 0, 0
+    for y, row in enumerate(rows):
+        for x, rgb in enumerate(row):
+            for k in range(3):
+                d = abs(rgb[k] - reference[y][x][k])
+                squared, worst, count = squared + d * d, max(worst, d), count + 1
+    mse = squared / count
+    return (100.0 if mse == 0 else 10.0 * math.log10(255.0 ** 2 / mse)), worst
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("xwd")
     parser.add_argument("--region", help="X,Y,W,H (default: the whole image)")
     parser.add_argument("--png")
+    parser.add_argument("--compare")
     args = parser.parse_args()
     width, height, pixel = read_xwd(args.xwd)
     x0, y0, w, h = map(int, args.region.split(",")) if args.region else (0, 0, width, height)
@@ -69,6 +127,9 @@ def main():
     print("mean %.1f %.1f %.1f stddev %.1f" % (means[0], means[1], means[2], stddev))
     if args.png:
         write_png(args.png, w, h, rows)
+    if args.compare:
+        psnr, worst = compare(rows, args.compare)
+        print("psnr %.2f maxabs %d" % (psnr, worst))
 
 
 if __name__ == "__main__":

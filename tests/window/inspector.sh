@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# The inspector in the real window under Xvfb, driven by real X events (xdotool), against the
+# headless commands on the same still frame (no ripples, wind, plants or lights; a fixed camera
+# and hour, so the frame does not change as the window's clock runs):
+#   - the window's frame (panel hidden) equals `oasis render` of that frame, view final and view
+#     normal (key 3), within 40 dB: the same renderer, through a window;
+#   - hovering a pixel and pressing P prints the probe there, and it is `oasis probe --at X,Y`'s
+#     JSON, byte for byte;
+#   - a click pins a probe: a numbered marker appears at the pixel.
+#   usage: inspector.sh OASIS WORK_DIR
+set -uo pipefail
+. "$(dirname "$0")/window_lib.sh"
+window_test_begin window.inspector "$1" "$2" "$0" "$@"
+
+scene=(--size 480x270 --camera 435,4,140,30,-3 --hour 12 --ripples 0 --wind 0 --vegetation off)
+start_oasis "${scene[@]}"
+toggle_panel  # H: the frame alone, and the cursor never over the panel
+
+# The window's framebuffer is 480x270 at the window's top-left (no title bar under twm here).
+compare_with_headless() {  # VIEW KEY
+    local view=$1 stats psnr
+    [[ -n $2 ]] && press "$2" && sleep 1
+    "$OASIS" render "${scene[@]}" --view "$view" --legend off --out "$WORK/headless-$view.png" > /dev/null ||
+        fail "oasis render --view $view failed"
+    xwd -silent -id "$WINDOW" -out "$WORK/window-$view.xwd" || fail "xwd could not capture the window"
+    stats=$(python3 "$WINDOW_LIB_DIR/xwd_stats.py" "$WORK/window-$view.xwd" --region 0,0,480,270 \
+            --png "$WORK/window-$view.png" --compare "$WORK/headless-$view.png")
+    stats=$(tr '\n' ' ' <<<"$stats")
+    step "view $view: window against headless: $stats"
+    psnr=$(grep -oE 'psnr [0-9.]+' <<<"$stats" | cut -d' ' -f2)
+    [[ -n $psnr ]] || fail "view $view: no PSNR from xwd_stats.py ($stats)"
+    awk -v p="$psnr" 'BEGIN { exit !(p + 0 >= 40) }' || fail "view $view: the window's frame differs from the headless render ($stats)"
+}
+compare_with_headless final ""
+
+# Hover a lakeside pixel, P: the probe printed must be the headless probe of that pixel.
+x=300 y=200
+xdotool mousemove --window "$WINDOW" "$x" "$y"
+sleep 1
+from=$(mark "$OUT_LOG")
+press p
+wait_for "$OUT_LOG" "$from" '^oasis: probe \{' 30
+window_probe=$(tail -n "+$((from + 1))" "$OUT_LOG" | grep -m1 '^oasis: probe {' | sed 's/^oasis: probe //')
+headless_probe=$("$OASIS" probe "${scene[@]}" --at "$x,$y" --json) || fail "oasis probe failed"
+[[ $window_probe == "$headless_probe" ]] || {
+    echo "window:   $window_probe" >&2
+    echo "headless: $headless_probe" >&2
+    fail "the hovered probe differs from oasis probe --at $x,$y"
+}
+step "hovered $x,$y: the window's probe equals oasis probe ($(grep -o '"final": \[[^]]*\]' <<<"$headless_probe"))"
+
+# A click pins probe 1: its marker (a magenta ring) appears around the pixel.
+xdotool click 1
+sleep 1
+xwd -silent -id "$WINDOW" -out "$WORK/pinned.xwd" || fail "xwd could not capture the window"
+marker=$(python3 "$WINDOW_LIB_DIR/xwd_stats.py" "$WORK/pinned.xwd" --region $((x - 7)),$((y - 1)),3,3 --png "$WORK/pinned.png")
+step "pinned at $x,$y: the ring's left edge $marker"
+awk -v s="$marker" 'BEGIN { split(s, f, " "); exit !(f[2] > 120 && f[3] < 90 && f[4] > 120) }' ||
+    fail "no magenta pin marker left of $x,$y ($marker)"
+
+# A right click unpins it; the normal view (key 3) in the window against the headless one.
+xdotool click 3
+xdotool mousemove --window "$WINDOW" 5 5
+compare_with_headless normal 3
+finish_oasis
+step "OK"
