@@ -59,6 +59,19 @@ MaxGlVersion maxGlVersionFor(const SceneOptions& options) {
     return options.force.gl33 ? MaxGlVersion{3, 3} : MaxGlVersion{};
 }
 
+std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
+    auto second = std::make_unique<Renderer>(*shaders, scene);
+    std::string whyNoSsbo, clipControlReason;
+    bool ssbo = caps.ssboAvailable(&whyNoSsbo);
+    second->setSsboAvailable(ssbo, whyNoSsbo, scene.lights.path);
+    second->setClipControlAvailable(caps.clipControlAvailable(&clipControlReason), clipControlReason);
+    second->setDepthConvention(renderer->depthConvention());
+    second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
+    second->setStencilViewPath(renderer->stencilViewPath());
+    second->setPlantAtlas(plantAtlas.get());
+    return second;
+}
+
 RenderSession::RenderSession(const Options& options, Shaders need)
     : caps(gl::measureCapabilities(options.scene.force)), scene(sceneSettingsFrom(options.scene)) {
     std::string searched;

@@ -42,6 +42,11 @@ struct RenderSession {
     enum class Shaders { Required, CapabilitiesOnly };
     explicit RenderSession(const Options& options, Shaders need = Shaders::Required);
 
+    // Another renderer over the same shaders, capabilities, depth convention, stencil path and plant
+    // atlas as `renderer` (the window's comparison draws its second side with it, so neither side
+    // reallocates its targets every frame).
+    std::unique_ptr<Renderer> makeRenderer() const;
+
     // Every feature oasis can use: used here or not, and why (what `oasis caps` prints).
     std::vector<gl::FeatureReport> features() const;
     // The fallbacks this session took, one line each ("stencil view: read-back (...)"); the

@@ -3,6 +3,8 @@
 //   V plants  H hide/show the panel  Space pause  Esc quit;  free camera: W/S/A/D, arrows, Q/E
 //   the inspector: the values under the cursor, click to pin probes (right click: unpin the last),
 //   P prints the probe under the cursor as JSON; the view controls (channel, range, overlay, exposure)
+//   C cycles the live comparison: split forward | deferred (drag the divider), split layout A | B,
+//   the difference of either, off
 // A switch whose programs do not build (a shader broken on disk, never built before) is undone:
 // the last configuration that drew is drawn again and the error stays in the panel. Nothing is
 // drawn while the window is minimised.
@@ -20,6 +22,7 @@
 #include <stdexcept>
 
 #include "commands/session.h"
+#include "commands/window_compare.h"
 #include "context/gl_context.h"
 #include "debug/debug_views.h"
 #include "debug/view_controls.h"
@@ -95,6 +98,9 @@ struct WindowState {
     bool messageIsError = false;
     std::vector<std::string> fallbacks;  // the session's fallbacks (printed once at start-up too)
     Inspector inspector;
+    WindowComparison comparison;
+    std::unique_ptr<Renderer> sideB;  // the comparison's second renderer, made when first needed
+    bool draggingDivider = false;
     WindowCounts counts;
 };
 
@@ -170,6 +176,7 @@ void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, Win
     if (key == GLFW_KEY_V) scene.vegetation.enabled = !scene.vegetation.enabled;
     if (key == GLFW_KEY_H) state.panelShown = !state.panelShown;
     if (key == GLFW_KEY_P) state.inspector.printHovered = true;
+    if (key == GLFW_KEY_C) state.comparison.mode = CompareMode((int(state.comparison.mode) + 1) % kCompareModeCount);
 }
 
 // The cursor's framebuffer pixel (0,0 top left) when it is over the frame and not over the panel.
@@ -187,9 +194,21 @@ std::optional<glm::ivec2> pixelUnderCursor(GLFWwindow* window) {
 }
 
 // Mouse: hover to probe, click to pin (numbered), right click to unpin the last.
-void handleInspectorMouse(GLFWwindow* window, Inspector& inspector) {
+void handleInspectorMouse(GLFWwindow* window, Inspector& inspector, WindowComparison& comparison, bool& dragging) {
     inspector.hovered = pixelUnderCursor(window);
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) dragging = false;
     if (!inspector.hovered) return;
+    // In a split view a press near the divider drags it; anywhere else it pins a probe.
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    bool split = comparison.mode == CompareMode::SplitPipelines || comparison.mode == CompareMode::SplitLayouts;
+    if (split && ImGui::IsMouseClicked(ImGuiMouseButton_Left) &&
+        std::abs(inspector.hovered->x - int(comparison.divider * float(width))) <= 8)
+        dragging = true;
+    if (dragging) {
+        comparison.divider = std::clamp(float(inspector.hovered->x) / float(std::max(width, 1)), 0.0f, 1.0f);
+        return;
+    }
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && inspector.pinned.size() < Inspector::kMaxPins)
         inspector.pinned.push_back(*inspector.hovered);
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) && !inspector.pinned.empty()) inspector.pinned.pop_back();
@@ -210,6 +229,91 @@ void drawPinMarkers(GLFWwindow* window, const Inspector& inspector) {
         draw->AddRectFilled(ImVec2(at.x + 7, at.y - 16), ImVec2(at.x + 9 + 7.0f * float(number.size()), at.y - 2),
                             IM_COL32(0, 0, 0, 200));
         draw->AddText(ImVec2(at.x + 8, at.y - 16), IM_COL32(255, 255, 255, 255), number.c_str());
+    }
+}
+
+// The sides' names over the frame: at the top of each half of a split, or over the difference.
+void drawCompareLabels(GLFWwindow* window, const WindowComparison& c) {
+    if (c.mode == CompareMode::Off) return;
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    auto label = [&](float x, const std::string& text) {
+        ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        x = std::clamp(x, 4.0f, float(windowWidth) - size.x - 8.0f);
+        draw->AddRectFilled(ImVec2(x - 3, 4), ImVec2(x + size.x + 3, 8 + size.y), IM_COL32(0, 0, 0, 200));
+        draw->AddText(ImVec2(x, 6), IM_COL32(255, 255, 255, 255), text.c_str());
+    };
+    if (showsDifference(c.mode)) {
+        label(float(windowWidth) * 0.5f - 100.0f, "|" + c.a.label + " - " + c.b.label + "|");
+        return;
+    }
+    float dividerX = c.divider * float(windowWidth);
+    label(dividerX - 12.0f - 7.0f * float(c.a.label.size() + 4), "A: " + c.a.label);
+    label(dividerX + 12.0f, "B: " + c.b.label);
+}
+
+// The live comparison's section of the panel: mode, sides, times, the displayed frame's difference.
+void drawComparePanel(WindowState& state) {
+    WindowComparison& c = state.comparison;
+    if (!ImGui::CollapsingHeader("compare (live A/B)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    int mode = int(c.mode);
+    if (ImGui::BeginCombo("mode", compareModeName(c.mode))) {
+        for (int m = 0; m < kCompareModeCount; ++m)
+            if (ImGui::Selectable(compareModeName(CompareMode(m)), m == mode)) c.mode = CompareMode(m);
+        ImGui::EndCombo();
+    }
+    if (c.mode == CompareMode::Off) return;
+    const auto& layouts = gbufferLayouts();
+    if (comparesLayouts(c.mode) && ImGui::BeginCombo("layout B", layouts[c.layoutB].name.c_str())) {
+        for (size_t i = 0; i < layouts.size(); ++i)
+            if (ImGui::Selectable(layouts[i].name.c_str(), i == c.layoutB)) c.layoutB = i;
+        ImGui::EndCombo();
+    }
+    if (!showsDifference(c.mode)) ImGui::SliderFloat("divider (or drag it)", &c.divider, 0.0f, 1.0f, "%.2f");
+    ImGui::Checkbox("per-pass times (glFinish after each pass)", &c.passTimes);
+    ImGui::Text("A %-24s median %7.2f ms", c.a.label.c_str(), c.msA.median());
+    ImGui::Text("B %-24s median %7.2f ms", c.b.label.c_str(), c.msB.median());
+    ImGui::TextDisabled("medians of the last %zu frames each; reset when a setting changes", c.msA.count());
+    ImGui::Text("displayed: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)", c.difference.psnrDb,
+                c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
+    if (showsDifference(c.mode)) {
+        // The heat map's scale: black 0, red, yellow, white at 16 levels of 255 or more.
+        ImDrawList* draw = ImGui::GetWindowDrawList();
+        ImVec2 at = ImGui::GetCursorScreenPos();
+        float width = ImGui::GetContentRegionAvail().x, height = 12.0f;
+        for (int i = 0; i < 32; ++i) {
+            uint8_t left[3], right[3];
+            differenceHeatColour(float(i) / 32.0f, left);
+            differenceHeatColour(float(i + 1) / 32.0f, right);
+            ImU32 l = IM_COL32(left[0], left[1], left[2], 255), r = IM_COL32(right[0], right[1], right[2], 255);
+            draw->AddRectFilledMultiColor(ImVec2(at.x + width * float(i) / 32.0f, at.y),
+                                          ImVec2(at.x + width * float(i + 1) / 32.0f + 1.0f, at.y + height), l, r, r, l);
+        }
+        ImGui::Dummy(ImVec2(width, height));
+        ImGui::Text("0");
+        ImGui::SameLine(width * 0.5f);
+        ImGui::Text("8");
+        ImGui::SameLine(width - 24.0f);
+        ImGui::Text("16+");
+    }
+    if (c.passTimes && (!c.passesA.empty() || !c.passesB.empty()) &&
+        ImGui::BeginTable("passes", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("A pass");
+        ImGui::TableSetupColumn("ms");
+        ImGui::TableSetupColumn("B pass");
+        ImGui::TableSetupColumn("ms");
+        ImGui::TableHeadersRow();
+        for (size_t i = 0; i < std::max(c.passesA.size(), c.passesB.size()); ++i) {
+            ImGui::TableNextRow();
+            for (const auto* passes : {&c.passesA, &c.passesB}) {
+                ImGui::TableNextColumn();
+                if (i < passes->size()) ImGui::TextUnformatted((*passes)[i].first.c_str());
+                ImGui::TableNextColumn();
+                if (i < passes->size()) ImGui::Text("%.2f", (*passes)[i].second);
+            }
+        }
+        ImGui::EndTable();
     }
 }
 
@@ -338,6 +442,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::SameLine();
     ImGui::TextDisabled("(Tab)");
     ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
+    drawComparePanel(state);
 
     const auto& layouts = gbufferLayouts();
     if (ImGui::BeginCombo("G-buffer (G)", layouts[chosen.layoutIndex].name.c_str())) {
@@ -443,8 +548,76 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
 
 // One frame of `config` into the window's framebuffer (not yet swapped). Throws ShaderBuildError
 // when a program it needs does not build; the scene must already hold the config's settings.
-void drawConfiguration(Renderer& renderer, const Configuration& config, const SceneSettings& scene, int width,
+// What the comparison's medians were measured for: the configuration, the size and the scene's
+// settings (the clock and the camera's flight are not changes: they move every frame).
+std::string comparisonKey(const Configuration& config, const SceneSettings& scene, int width, int height,
+                          const WindowComparison& c) {
+    char key[512];
+    std::snprintf(key, sizeof(key), "%s|%dx%d|%d %zu %d|%g %d %g %g|%d %g %g|%g", config.describe().c_str(), width,
+                  height, int(c.mode), c.layoutB, int(c.passTimes), scene.water.level, int(scene.water.reflections),
+                  scene.water.rippleStrength, scene.water.absorption, int(scene.vegetation.enabled),
+                  scene.vegetation.density, scene.vegetation.windStrength, scene.hour ? *scene.hour : -1.0);
+    return key;
+}
+
+// Both sides of the live comparison, each on its own renderer (no reallocation between them),
+// timed, then shown split or as their difference; the probes read side A.
+void drawComparison(RenderSession& session, const Configuration& config, const SceneSettings& scene, int width,
+                    int height, WindowState& state) {
+    WindowComparison& c = state.comparison;
+    if (!state.sideB) state.sideB = session.makeRenderer();
+    c.chooseSides(config.pipeline, config.layoutIndex);
+    c.noteSettings(comparisonKey(config, scene, width, height, c));
+    Renderer* renderers[2] = {session.renderer.get(), state.sideB.get()};
+    const CompareSide* sides[2] = {&c.a, &c.b};
+    RollingMedian* medians[2] = {&c.msA, &c.msB};
+    std::vector<std::pair<std::string, double>>* passes[2] = {&c.passesA, &c.passesB};
+    Image images[2];
+    state.frameMs = 0.0;
+    for (int s = 0; s < 2; ++s) {
+        Renderer& renderer = *renderers[s];
+        renderer.setPipeline(sides[s]->pipeline);
+        renderer.setDepthConvention(depthConventions()[config.depthIndex]);
+        renderer.configure(width, height, gbufferLayouts()[sides[s]->layoutIndex]);
+        renderer.setViewExposure(state.inspector.exposureStops);
+        glFinish();
+        auto start = std::chrono::steady_clock::now();
+        if (c.passTimes) {
+            *passes[s] = renderer.renderFrameTimingPasses(scene);
+        } else {
+            renderer.renderFrame(scene);
+            glFinish();
+        }
+        double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        medians[s]->add(ms);
+        state.frameMs += ms;
+        renderer.renderView(config.view);
+        images[s] = renderer.readDisplay();
+    }
+    state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
+    c.difference = compareImages(images[0], images[1]);
+    Renderer& shown = *renderers[0];
+    shown.showImage(showsDifference(c.mode) ? differenceHeatmap(images[0], images[1])
+                                            : splitImage(images[0], images[1], int(std::lround(c.divider * float(width)))));
+    Inspector& inspector = state.inspector;
+    inspector.statistics.reset();
+    inspector.hoveredProbe.reset();
+    inspector.pinnedProbes.clear();
+    auto inside = [&](glm::ivec2 p) { return p.x < width && p.y < height; };
+    if (inspector.hovered && inside(*inspector.hovered))
+        inspector.hoveredProbe = probePixel(shown, inspector.hovered->x, inspector.hovered->y);
+    for (glm::ivec2 pin : inspector.pinned)
+        if (inside(pin)) inspector.pinnedProbes.push_back(probePixel(shown, pin.x, pin.y));
+    shown.present(width, height);
+}
+
+void drawConfiguration(RenderSession& session, const Configuration& config, const SceneSettings& scene, int width,
                        int height, WindowState& state) {
+    if (state.comparison.mode != CompareMode::Off) {
+        drawComparison(session, config, scene, width, height, state);
+        return;
+    }
+    Renderer& renderer = *session.renderer;
     renderer.setPipeline(config.pipeline);
     renderer.setDepthConvention(depthConventions()[config.depthIndex]);
     renderer.configure(width, height, gbufferLayouts()[config.layoutIndex]);
@@ -462,10 +635,10 @@ void drawConfiguration(Renderer& renderer, const Configuration& config, const Sc
 // Draws the chosen configuration; when a program it needs does not build, says why, goes back to
 // the last configuration that drew and draws that. False when nothing could be drawn. On the
 // first frame there is nothing to go back to: the error ends the window (exit 1).
-bool drawChosen(Renderer& renderer, SceneSettings& scene, WindowState& state, int width, int height) {
+bool drawChosen(RenderSession& session, SceneSettings& scene, WindowState& state, int width, int height) {
     const Configuration wanted = currentConfiguration(state, scene);
     try {
-        drawConfiguration(renderer, wanted, scene, width, height, state);
+        drawConfiguration(session, wanted, scene, width, height, state);
         state.lastDrawn = wanted;
         return true;
     } catch (const ShaderBuildError& error) {
@@ -480,7 +653,7 @@ bool drawChosen(Renderer& renderer, SceneSettings& scene, WindowState& state, in
         restoreConfiguration(*state.lastDrawn, state, scene);
     }
     try {
-        drawConfiguration(renderer, *state.lastDrawn, scene, width, height, state);
+        drawConfiguration(session, *state.lastDrawn, scene, width, height, state);
         return true;
     } catch (const ShaderBuildError& error) {
         report(state, "cannot draw " + state.lastDrawn->describe() + ": " + error.what(), true);
@@ -563,11 +736,12 @@ int runWindowApp(const Options& options) {
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             if (state.panelShown) drawPanel(renderer, scene, state);
-            handleInspectorMouse(window.window(), state.inspector);
+            handleInspectorMouse(window.window(), state.inspector, state.comparison, state.draggingDivider);
             drawPinMarkers(window.window(), state.inspector);
+            drawCompareLabels(window.window(), state.comparison);
             ImGui::Render();
 
-            if (drawChosen(renderer, scene, state, width, height)) {
+            if (drawChosen(session, scene, state, width, height)) {
                 if (++state.counts.framesDrawn == 1) {  // scripts driving the window wait for this line
                     std::printf("oasis: first frame drawn (%dx%d)\n", width, height);
                     std::fflush(stdout);
@@ -581,6 +755,7 @@ int runWindowApp(const Options& options) {
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window.window());
         }
+        state.sideB.reset();  // its GL objects go before the context
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();

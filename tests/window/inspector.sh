@@ -6,7 +6,8 @@
 #     normal (key 3), within 40 dB: the same renderer, through a window;
 #   - hovering a pixel and pressing P prints the probe there, and it is `oasis probe --at X,Y`'s
 #     JSON, byte for byte;
-#   - a click pins a probe: a numbered marker appears at the pixel.
+#   - a click pins a probe: a numbered marker appears at the pixel;
+#   - C splits the frame live: each half is its pipeline's headless frame, the divider between.
 #   usage: inspector.sh OASIS WORK_DIR
 set -uo pipefail
 . "$(dirname "$0")/window_lib.sh"
@@ -62,5 +63,30 @@ awk -v s="$marker" 'BEGIN { split(s, f, " "); exit !(f[2] > 120 && f[3] < 90 && 
 xdotool click 3
 xdotool mousemove --window "$WINDOW" 5 5
 compare_with_headless normal 3
+
+# C: the live split of the final frame, forward | deferred at the middle: each half is exactly that
+# pipeline's headless frame (the two differ by a few levels in each half, so only the right side
+# matches), below the labels at the top; the divider is drawn at columns 239 and 240.
+press 1
+press c
+sleep 3
+for pipeline in forward deferred; do
+    "$OASIS" render "${scene[@]}" --pipeline "$pipeline" --legend off --out "$WORK/final-$pipeline.png" > /dev/null ||
+        fail "oasis render --pipeline $pipeline failed"
+done
+xwd -silent -id "$WINDOW" -out "$WORK/split.xwd" || fail "xwd could not capture the window"
+half_against() {  # REGION PNG: prints the max abs difference
+    python3 "$WINDOW_LIB_DIR/xwd_stats.py" "$WORK/split.xwd" --region "$1" --compare "$WORK/$2" |
+        grep -oE 'maxabs [0-9]+' | cut -d' ' -f2
+}
+left=0,30,238,240 right=242,30,238,240
+step "split: left half against forward $(half_against $left final-forward.png), against deferred $(half_against $left final-deferred.png); right half against deferred $(half_against $right final-deferred.png), against forward $(half_against $right final-forward.png) (max abs)"
+[[ $(half_against $left final-forward.png) == 0 && $(half_against $right final-deferred.png) == 0 ]] ||
+    fail "split: the halves are not the forward and deferred frames"
+[[ $(half_against $left final-deferred.png) != 0 && $(half_against $right final-forward.png) != 0 ]] ||
+    fail "split: the pipelines' frames do not differ in each half, so the split proves nothing here"
+divider=$(python3 "$WINDOW_LIB_DIR/xwd_stats.py" "$WORK/split.xwd" --region 239,100,2,100 --png "$WORK/split.png")
+awk -v s="$divider" 'BEGIN { split(s, f, " "); exit !(f[2] > 250 && f[3] > 250 && f[4] > 250) }' ||
+    fail "no white divider at column 239 ($divider)"
 finish_oasis
 step "OK"

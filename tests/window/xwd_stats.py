@@ -4,9 +4,9 @@ deviation of its RGB values over a rectangle: "mean R G B stddev S" (S over all 
 --png it also writes the rectangle as a PNG, so people can look at what the window test saw.
 Standard library only: the window tests must run where Python has no imaging packages.
 
-With --compare PNG it also prints "psnr P maxabs M" of the region against that PNG's top-left
-corner of the same size (8-bit RGB or RGBA, as oasis writes them), so a window test can hold a
-screenshot against the headless render of the same frame.
+With --compare PNG it also prints "psnr P maxabs M" of the region against the same region of that
+PNG (8-bit RGB or RGBA, as oasis writes them), so a window test can hold a screenshot against the
+headless render of the same frame.
 
 usage: xwd_stats.py FILE.xwd [--region X,Y,W,H] [--png OUT.png] [--compare IN.png]"""
 import argparse
@@ -93,15 +93,15 @@ def read_png(path):
     return width, height, rows
 
 
-def compare(rows, png):
+def compare(rows, x0, y0, png):
     width, height, reference = read_png(png)
-    if len(rows) > height or len(rows[0]) > width:
-        sys.exit(f"xwd_stats: the region is larger than {png} ({width}x{height})")
+    if y0 + len(rows) > height or x0 + len(rows[0]) > width:
+        sys.exit(f"xwd_stats: the region is outside {png} ({width}x{height})")
     squared, worst, count = 0, 0, 0
     for y, row in enumerate(rows):
         for x, rgb in enumerate(row):
             for k in range(3):
-                d = abs(rgb[k] - reference[y][x][k])
+                d = abs(rgb[k] - reference[y0 + y][x0 + x][k])
                 squared, worst, count = squared + d * d, max(worst, d), count + 1
     mse = squared / count
     return (100.0 if mse == 0 else 10.0 * math.log10(255.0 ** 2 / mse)), worst
@@ -128,7 +128,7 @@ def main():
     if args.png:
         write_png(args.png, w, h, rows)
     if args.compare:
-        psnr, worst = compare(rows, args.compare)
+        psnr, worst = compare(rows, x0, y0, args.compare)
         print("psnr %.2f maxabs %d" % (psnr, worst))
 
 

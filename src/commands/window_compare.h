@@ -1,0 +1,67 @@
+// The window's live comparison: both sides (forward | deferred, or layout A | layout B) rendered
+// every frame, shown split at a movable divider or as their difference heat map, with PSNR / max
+// abs / RMSE of the displayed frame and each side's rolling median frame time (reset whenever
+// the configuration or the scene's settings change). GL-free but for the renderer it drives.
+#pragma once
+#include <deque>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/image.h"
+#include "render/renderer.h"
+
+namespace oasis {
+
+enum class CompareMode { Off, SplitPipelines, SplitLayouts, DifferencePipelines, DifferenceLayouts };
+const char* compareModeName(CompareMode mode);
+inline constexpr int kCompareModeCount = 5;
+inline bool comparesLayouts(CompareMode mode) {
+    return mode == CompareMode::SplitLayouts || mode == CompareMode::DifferenceLayouts;
+}
+inline bool showsDifference(CompareMode mode) {
+    return mode == CompareMode::DifferencePipelines || mode == CompareMode::DifferenceLayouts;
+}
+
+// The median of the last `capacity` samples; cleared by reset().
+class RollingMedian {
+public:
+    explicit RollingMedian(size_t capacity = 15) : capacity_(capacity) {}
+    void add(double sample);
+    void reset() { samples_.clear(); }
+    double median() const;  // 0 with no samples
+    size_t count() const { return samples_.size(); }
+
+private:
+    size_t capacity_;
+    std::deque<double> samples_;
+};
+
+// One side of the comparison: how to set the renderer up for it.
+struct CompareSide {
+    std::string label;  // "forward", "deferred (compact)"
+    PipelineKind pipeline;
+    size_t layoutIndex;
+};
+
+struct WindowComparison {
+    CompareMode mode = CompareMode::Off;
+    float divider = 0.5f;       // split: where side B starts, 0..1 of the width
+    size_t layoutB = 0;         // layouts modes: the second layout (gbufferLayouts() index)
+    bool passTimes = false;     // time each pass (glFinish after each) for the table
+    RollingMedian msA, msB;
+    std::string settingsKey;    // what the medians were measured for
+    ImageDifference difference; // of the displayed sides
+    std::vector<std::pair<std::string, double>> passesA, passesB;
+    CompareSide a, b;
+
+    // The two sides for the window's chosen pipeline and layout.
+    void chooseSides(PipelineKind chosenPipeline, size_t chosenLayout);
+    // Clears the medians when `key` (the configuration and the scene's settings) changed.
+    void noteSettings(const std::string& key);
+};
+
+// Side B right of the divider (a column `dividerX`), with a 2-pixel white line between.
+Image splitImage(const Image& a, const Image& b, int dividerX);
+
+}  // namespace oasis
