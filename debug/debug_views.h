@@ -22,6 +22,7 @@ enum class LegendScale {
     InfoFlags,    // the info view's channels and flag marks
     Grey,         // the view controls: a channel mapped linearly from a range to black..white
     DifferenceHeat,  // compare's difference.png: black, red, yellow, white at full scale
+    LinearRamp,   // the encoding-error views: the depth view's ramp over a linear range
 };
 
 struct DebugView {

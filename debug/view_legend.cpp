@@ -32,7 +32,8 @@ std::string number(double value) {
 ImU32 barColour(const Legend& legend, float t) {
     uint8_t rgb[3];
     switch (legend.scale) {
-        case LegendScale::DepthRamp: depthRampColour(t, rgb); return colour(rgb);
+        case LegendScale::DepthRamp:
+        case LegendScale::LinearRamp: depthRampColour(t, rgb); return colour(rgb);
         case LegendScale::DifferenceHeat: differenceHeatColour(t, rgb); return colour(rgb);
         default: return grey(t);
     }
@@ -77,7 +78,7 @@ std::vector<Swatch> swatchesOf(LegendScale scale) {
 
 bool hasBar(LegendScale scale) {
     return scale == LegendScale::DepthRamp || scale == LegendScale::SignedLog || scale == LegendScale::Grey ||
-           scale == LegendScale::DifferenceHeat;
+           scale == LegendScale::DifferenceHeat || scale == LegendScale::LinearRamp;
 }
 
 struct OverlaySwatch {

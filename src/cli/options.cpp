@@ -7,6 +7,7 @@
 #include "cli/input_domains.h"
 #include "debug/debug_views.h"
 #include "render/depth_convention.h"
+#include "render/encoding_error.h"
 #include "render/file_output.h"
 #include "render/gbuffer_layout.h"
 
@@ -122,6 +123,8 @@ std::string usage(Command command) {
             return "usage: oasis render [scene options] [--pipeline forward|deferred] [--view NAME] [--out FILE.png]\n"
                    "  renders one frame and writes one debug view of it (default: deferred, final)\n"
                    "  --view NAME               " + debugViewNames() + "\n"
+                   "                            or the layout's error against full (deferred, --gbuffer standard\n"
+                   "                            or compact): " + encodingErrorViewNames() + "\n"
                    "  --view-exposure STOPS     the HDR views (radiance, reflection-raw): light times 2^STOPS,\n"
                    "                            -20..20 (default 0)\n"
                    "  --channel C               show the view's values, not its colours: rgb, r, g, b, a or\n"
@@ -314,8 +317,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!parsePipelineKind(value, options.pipeline))
                 return fail("--pipeline expects forward or deferred, got '" + value + "'");
         } else if (flag == "--view") {
-            if (!findDebugView(value) && value != kOverviewName)
-                return fail("--view: unknown view '" + value + "' (one of: " + debugViewNames() + ")");
+            if (!findDebugView(value) && value != kOverviewName && !findEncodingErrorView(value))
+                return fail("--view: unknown view '" + value + "' (one of: " + debugViewNames() + ", " +
+                            encodingErrorViewNames() + ")");
             options.view = value;
         } else if (flag == "--view-exposure") {
             double stops = 0.0;
@@ -400,6 +404,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                         names + ")");
         }
     }
+    if (findEncodingErrorView(options.view) && options.scene.gbuffer == "full")
+        return fail("--view " + options.view + " compares the G-buffer layout against full: add --gbuffer standard or "
+                    "--gbuffer compact");
+    if (findEncodingErrorView(options.view) && options.viewControls.channel)
+        return fail("--channel: the " + options.view + " view has one value a pixel (use --range)");
     if (options.viewControls.range && options.view == kOverviewName)
         return fail("--range needs a single view, not --view overview");
     if (options.command == Command::Probe && !options.help) {

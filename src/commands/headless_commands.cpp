@@ -12,6 +12,7 @@
 #include "commands/session.h"
 #include "context/gl_context.h"
 #include "render/file_output.h"
+#include "render/encoding_error.h"
 #include "render/pixel_probe.h"
 #include "debug/view_legend.h"
 
@@ -184,6 +185,39 @@ Image differenceImage(const Comparison& c) {
     return stackImages(heat, legends.draw(legend, heat.width));
 }
 
+// An encoding-error view: the layout's frame against full's, on the depth view's ramp from 0 (or
+// --range) to the largest error; pixels with no common surface dark grey; its legend and summary.
+Image encodingErrorImage(const Options& options, RenderSession& session, const EncodingErrorView& view,
+                         std::FILE* report) {
+    Renderer& renderer = *session.renderer;
+    EncodingError error = measureEncodingError(renderer, session.scene, renderer.targets().layout());
+    const std::vector<float>& values = error.*(view.values);
+    ErrorSummary summary = summarizeError(values);
+    auto [low, high] = options.viewControls.range.value_or(std::pair{0.0, summary.max > 0.0 ? summary.max : 1.0});
+    Image image(error.width, error.height);
+    for (int y = 0; y < error.height; ++y)
+        for (int x = 0; x < error.width; ++x) {
+            float v = values[size_t(y) * size_t(error.width) + size_t(x)];
+            uint8_t* out = image.pixel(x, error.height - 1 - y);
+            if (std::isfinite(v)) depthRampColour(float((double(v) - low) / (high - low)), out);
+            else out[0] = out[1] = out[2] = 40;
+            out[3] = 255;
+        }
+    char line[256];
+    std::snprintf(line, sizeof(line), "%s, %s against full: median %.4g, 99%% %.4g, max %.4g over %ld surface pixels",
+                  view.name.c_str(), error.layout.c_str(), summary.median, summary.p99, summary.max, summary.count);
+    std::fprintf(report, "oasis: %s\n", line);
+    if (!options.legend) return image;
+    Legend legend;
+    legend.title = view.name + " (deferred, " + error.layout + " against full): " + view.legend;
+    legend.scale = LegendScale::LinearRamp;
+    legend.low = low;
+    legend.high = high;
+    legend.notes = {line, "dark grey: no common surface (sky, or the two frames' flags differ)"};
+    LegendRenderer legends;
+    return stackImages(image, legends.draw(legend, image.width));
+}
+
 // The image `render` writes: the view (or its values through the controls), the overlay, and
 // under a single view its legend; `report` gets the value counts.
 Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* report) {
@@ -218,7 +252,9 @@ int runRenderCommand(const Options& options) {
         renderer.setPipeline(options.pipeline);
         renderer.renderFrame(session.scene, options.stopBefore);
         std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
-        Image image = renderedViewImage(options, renderer, report);
+        const EncodingErrorView* errorView = findEncodingErrorView(options.view);
+        Image image = errorView ? encodingErrorImage(options, session, *errorView, report)
+                                : renderedViewImage(options, renderer, report);
         std::string error;
         if (!writePng(options.out, image, error)) {
             std::fprintf(stderr, "oasis: %s\n", error.c_str());
@@ -273,9 +309,14 @@ int runMainJob(const Options& options) {
 int runProbeCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
         Renderer& renderer = *session.renderer;
+        // The layout's encoding error at the pixel first (two deferred frames), then the frame asked for.
+        std::optional<EncodingError> error;
+        if (renderer.targets().layout().name != "full")
+            error = measureEncodingError(renderer, session.scene, renderer.targets().layout());
         renderer.setPipeline(options.pipeline);
         renderer.renderFrame(session.scene);
         PixelProbe probe = probePixel(renderer, options.probeAt->first, options.probeAt->second);
+        if (error) addEncodingError(probe, *error);
         std::fputs((options.json ? probeJson(probe) + "\n" : probeText(probe)).c_str(), stdout);
         return 0;
     });

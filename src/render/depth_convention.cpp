@@ -36,6 +36,11 @@ std::string depthConventionNames() {
     return names;
 }
 
+double depthStepAt(const DepthConvention& depth, double eyeDistance, double nearPlane, double farPlane) {
+    if (depth.reversed()) return eyeDistance / 16777216.0;
+    return eyeDistance * eyeDistance * (farPlane - nearPlane) / (farPlane * nearPlane * 16777215.0);
+}
+
 TargetFormat targetFormat(const GBufferLayout& layout, const DepthConvention& depth, Target target) {
     // The depth copy of the layouts that reconstruct position from depth has the depth's format.
     if (target == Target::DepthStencil || (target == Target::SceneDepth && layout.stores(Target::SceneDepth)))

@@ -39,6 +39,11 @@ const DepthConvention* findDepthConvention(const std::string& name);
 const DepthConvention& standardDepthConvention();  // the default, and the fallback without clip control
 std::string depthConventionNames();                // "standard, reversed-z" for help and error text
 
+// How far along its view ray one step of the stored depth moves a point at eye distance d: D24's
+// 1/(2^24-1) of window depth is d^2 (f-n) / (f n (2^24-1)); reversed-z's float keeps about 2^-24 of
+// d. The unit of the encoding-error views' and the probe's "depth steps".
+double depthStepAt(const DepthConvention& depth, double eyeDistance, double nearPlane, double farPlane);
+
 // The format of any frame target: the depth-stencil from the convention, the rest from the layout.
 TargetFormat targetFormat(const GBufferLayout& layout, const DepthConvention& depth, Target target);
 // The G-buffer's bytes per pixel (four colour targets plus depth-stencil) with this convention's depth.

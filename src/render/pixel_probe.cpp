@@ -12,6 +12,7 @@
 
 #include "common/shared_constants.glsl"
 #include "passes/pass.h"
+#include "render/encoding_error.h"
 #include "render/renderer.h"
 #include "render/texture_units.h"
 
@@ -219,6 +220,15 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     return probe;
 }
 
+void addEncodingError(PixelProbe& probe, const EncodingError& error) {
+    if (probe.x >= error.width || probe.y >= error.height) return;
+    size_t i = size_t(error.height - 1 - probe.y) * size_t(error.width) + size_t(probe.x);
+    probe.hasEncodingError = true;
+    probe.normalErrorDegrees = error.normalDegrees[i];
+    probe.positionErrorUnits = error.positionUnits[i];
+    probe.positionErrorSteps = error.positionSteps[i];
+}
+
 namespace {
 
 // JSON has no NaN or infinity: those become null there (and read "nan", "inf" in the text).
@@ -285,6 +295,13 @@ std::string probeText(const PixelProbe& p) {
     add("  reflection     %s (linear HDR)\n", vec(glm::dvec4(p.reflection)).c_str());
     add("  final          %d, %d, %d, %d (8-bit, displayed)\n", p.final.r, p.final.g, p.final.b, p.final.a);
     if (!p.waterScene.empty()) add("  water          the G-buffer holds the %s\n", p.waterScene.c_str());
+    if (p.hasEncodingError) {
+        if (std::isfinite(p.normalErrorDegrees))
+            add("  encoding       against full (deferred): normal %.4g degrees, position %.4g units = %.3g depth steps\n",
+                double(p.normalErrorDegrees), double(p.positionErrorUnits), double(p.positionErrorSteps));
+        else
+            text += "  encoding       against full (deferred): no common surface here (sky, or the flags differ)\n";
+    }
     return text;
 }
 
@@ -317,7 +334,12 @@ std::string probeJson(const PixelProbe& p) {
             std::to_string(p.final.b) + ", " + std::to_string(p.final.a) + "]";
     json += ", \"lights_reaching\": " + std::to_string(p.lightsReaching) + ", \"lights_in_list\": " +
             std::to_string(p.lightsInList);
-    json += ", \"water_scene\": " + (p.waterScene.empty() ? std::string("null") : quoted(p.waterScene)) + "}";
+    json += ", \"water_scene\": " + (p.waterScene.empty() ? std::string("null") : quoted(p.waterScene));
+    json += ", \"encoding_error\": " +
+            (p.hasEncodingError ? "{\"normal_degrees\": " + numbers({p.normalErrorDegrees}, "%.6g") +
+                                      ", \"position_units\": " + numbers({p.positionErrorUnits}, "%.6g") +
+                                      ", \"position_depth_steps\": " + numbers({p.positionErrorSteps}, "%.6g") + "}"
+                                : std::string("null")) + "}";
     return json;
 }
 

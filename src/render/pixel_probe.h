@@ -48,7 +48,15 @@ struct PixelProbe {
     glm::ivec4 final{0};                         // the displayed 8-bit colour
     int lightsReaching = 0, lightsInList = 0;    // point lights whose sphere holds the surface
     std::string waterScene;  // on water pixels: which scene the G-buffer holds there and why; else ""
+
+    // The layout's encoding error here against `full` (not for full itself; NaN: no common surface).
+    bool hasEncodingError = false;
+    float normalErrorDegrees = 0.0f, positionErrorUnits = 0.0f, positionErrorSteps = 0.0f;
 };
+
+struct EncodingError;
+// Fills the probe's encoding-error fields from a measurement of the same frame and size.
+void addEncodingError(PixelProbe& probe, const EncodingError& error);
 
 // Probes pixel (x, y) of the last frame (0,0 top-left). A forward frame's G-buffer is filled first
 // by the deferred geometry passes, as the G-buffer views do. Throws std::out_of_range outside the frame.
