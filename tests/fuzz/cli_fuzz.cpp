@@ -1,0 +1,586 @@
+// Fuzzes oasis's command line end to end: random and mutated argument lists run against the real
+// binary for a bounded time. Per case: no signal and no hang (a per-case limit kills the child);
+// exit 0 only with every image the case writes complete and, where it is a picture, not one flat
+// colour; exit 1 or 2 only with a stderr line starting "oasis: "; no sanitizer report.
+// Prints the seed, the case count and the time; a failing case is printed as a command to paste.
+//
+// usage: oasis_cli_fuzz OASIS WORK_DIR [--seconds S] [--seed N] [--case-limit S] [--jobs J]
+//                       [--known FILE]
+// The flag table below is checked against `oasis [SUBCOMMAND] --help` at start, so a new flag
+// that the fuzzer does not know fails the run until it is added here.
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <stb_image.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Args = std::vector<std::string>;
+using Clock = std::chrono::steady_clock;
+
+// ---- What the generator draws from -------------------------------------------------------------
+
+// Numbers at and past every edge a parser or a renderer can trip on: float and double range ends,
+// subnormals, signed zero, NaN and infinity spellings, integers past 32 and 64 bits, the camera
+// coordinates whose chunk index reaches INT_MAX, and texts strtod half-accepts.
+const std::vector<std::string> kExtremeNumbers = {
+    "6.9e10", "68719476110", "-68719476110", "1e308", "-1e308", "1e300", "-1e300", "1.7976931348623157e308",
+    "1e309", "-0", "-0.0", "0", "4.9e-324", "-4.9e-324", "2.2250738585072014e-308", "1e-310", "nan", "NaN",
+    "-nan", "nan(0x1)", "inf", "-inf", "Infinity", "9223372036854775807", "9223372036854775808",
+    "-9223372036854775809", "18446744073709551616", "2147483647", "2147483648", "-2147483648",
+    "-2147483649", "4294967296", "1e9", "-1e9", "1e12", "1e8", "3.4028235e38", "3.5e38", "-3.5e38", "1e-45",
+    "0x10", "0x1p3", "1e", "1.5.5", "", " ", " 1", "+1", "1 ", "\t2", "1\n", "١", "１", "½", "\xff\xfe",
+    "1e1000", "1,2", "-", "+", ".", "e5", "00000000000000000000000001", "1_000", "0b101", "١٢٣"};
+
+// The sweep's share of them: one of each kind (the sweep renders every one that is accepted, and a
+// render costs about a second here), in every numeric slot.
+const std::vector<std::string> kSweepNumbers = {
+    "6.9e10", "68719476110", "1e308", "-1e308", "1e300", "-0", "4.9e-324", "nan", "inf", "9223372036854775808",
+    "2147483648", "1e9", "3.5e38", "", " 1", "+1", "١", "1e1000"};
+
+// Texts that are not numbers or names: empty, spaces, signs, unicode, control bytes, long.
+const std::vector<std::string> kOddTexts = {
+    "", " ", "-", "--", "---", "--=", "-h", "--help", "x", "on", "off", "ON", "Off ", " on", "final\n",
+    "ünïcödé", "日本語", "\xc3\x28", "\x01\x02", "$(id)", "%s%n", std::string(300, 'a'), "none", "null"};
+
+// Output names, all inside the case's directory (never an absolute path that exists: a writer
+// that renames into place must not be pointed at /dev or /).
+const std::vector<std::string> kOutNames = {
+    "a.png", "b.PNG", "x.jpg", "noext", "missing-dir/a.png", "ünï.png", " lead.png", "-dash.png", ".",
+    "", "../up.png", "/nonexistent-oasis-fuzz/x.png", "dir.png/", "a.png.png", "existing-dir"};
+const std::vector<std::string> kOutDirs = {
+    "out", "o u t", "ünï", "", ".", "a/b/c", "/nonexistent-oasis-fuzz/dir", "existing-file", "existing-dir"};
+
+enum class Value { None, Size, Number, Integer, Camera, Choice, ForceList, PassName, OutFile, OutDir };
+
+// One row per option the parser knows (src/cli/options.cpp): how its value is drawn and its domain
+// (inside it the generator mostly stays; the extremes come on top).
+struct Flag {
+    const char* name;
+    Value value;
+    double low = 0, high = 0;           // Number / Integer
+    std::vector<std::string> choices;   // Choice (views and layouts come from --help too)
+};
+const std::vector<Flag>& flags() {
+    static const std::vector<Flag> table = {
+        {"--size", Value::Size},
+        {"--time", Value::Number, 0, 3600},
+        {"--hour", Value::Number, 0, 24},
+        {"--camera", Value::Camera},
+        {"--reflections", Value::Choice, 0, 0, {"on", "off"}},
+        {"--water-level", Value::Number, -20, 40},
+        {"--ripples", Value::Number, 0, 4},
+        {"--absorption", Value::Number, 0, 2},
+        {"--vegetation", Value::Choice, 0, 0, {"on", "off"}},
+        {"--vegetation-density", Value::Number, 0, 4},
+        {"--wind", Value::Number, 0, 3},
+        {"--no-compute", Value::None},
+        {"--lights", Value::Integer, 0, 4096},
+        {"--lights-path", Value::Choice, 0, 0, {"ssbo", "ssbo-count", "ubo"}},
+        {"--force", Value::ForceList},
+        {"--depth", Value::Choice, 0, 0, {"standard", "reversed-z"}},
+        {"--gbuffer", Value::Choice},
+        {"--pipeline", Value::Choice, 0, 0, {"forward", "deferred"}},
+        {"--view", Value::Choice},
+        {"--stencil-view", Value::Choice, 0, 0, {"texturing", "read-back"}},
+        {"--stop-before", Value::PassName},
+        {"--out", Value::OutFile},
+        {"--out-dir", Value::OutDir},
+        {"--json", Value::None},
+        {"--frames", Value::Integer, 1, 3},  // more frames only cost time: the extremes test the domain
+        {"--passes", Value::None},
+        {"--quick", Value::None},
+        {"--help", Value::None},
+        {"-h", Value::None},
+    };
+    return table;
+}
+const std::vector<std::string> kForceNames = {"no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa",
+                                              "no-clip-control", "gl33"};
+// "" is the main job (no subcommand). bench runs minutes, so its cases always end in an option
+// bench refuses (--size): they fuzz its parsing, cli.bench_quick_smoke runs it.
+const std::vector<std::string> kSubcommands = {"render", "render", "render", "compare", "", "caps", "window",
+                                               "bench"};
+
+// ---- Generation ---------------------------------------------------------------------------------
+
+struct Generator {
+    std::mt19937_64 rng;
+    const std::map<std::string, std::vector<std::string>>& choices;  // per flag, from --help
+    const std::vector<std::string>& passes;
+
+    explicit Generator(uint64_t seed, const std::map<std::string, std::vector<std::string>>& c,
+                       const std::vector<std::string>& p)
+        : rng(seed), choices(c), passes(p) {}
+
+    bool chance(double p) { return std::uniform_real_distribution<double>(0, 1)(rng) < p; }
+    int integer(int low, int high) { return std::uniform_int_distribution<int>(low, high)(rng); }
+    template <typename T> const T& pick(const std::vector<T>& items) { return items[integer(0, int(items.size()) - 1)]; }
+
+    std::string number(double low, double high) {
+        double x = std::uniform_real_distribution<double>(low, high)(rng);
+        char text[64];
+        switch (integer(0, 3)) {
+            case 0: std::snprintf(text, sizeof text, "%g", x); break;
+            case 1: std::snprintf(text, sizeof text, "%.17g", x); break;
+            case 2: std::snprintf(text, sizeof text, "%.0f", x); break;
+            default: std::snprintf(text, sizeof text, "%.3e", x); break;
+        }
+        return text;
+    }
+    std::string edgeOf(double low, double high) {
+        double edges[] = {low, high, std::nextafter(low, -1e300), std::nextafter(high, 1e300), low - 1, high + 1};
+        char text[64];
+        std::snprintf(text, sizeof text, "%.17g", edges[integer(0, 5)]);
+        return text;
+    }
+    std::string extreme() { return chance(0.85) ? pick(kExtremeNumbers) : pick(kOddTexts); }
+
+    std::string size() {
+        if (chance(0.8)) return std::to_string(integer(16, 64)) + "x" + std::to_string(integer(9, 36));
+        static const std::vector<std::string> odd = {
+            "1x1", "2x1", "1x36", "64x1", "0x0", "0x10", "-1x5", "64x", "x36", "64X36", " 64x36", "+32x+18",
+            "64x36x2", "64.5x36", "1000000000x1", "1x1000000000", "20000x8", "16385x1", "2147483648x1",
+            "64x-0", "６４x36", "64 x 36", "0x1p5x8", "1e2x9", "x", ""};
+        return pick(odd);
+    }
+    std::string camera() {
+        std::vector<std::string> fields = {number(0, 1000), number(1, 80), number(0, 1000), number(-360, 360),
+                                           number(-89, 89)};
+        for (auto& field : fields)
+            if (chance(0.1)) field = extreme();
+        if (chance(0.1)) fields.push_back(number(0, 10));
+        if (chance(0.1)) fields.pop_back();
+        std::string text;
+        for (size_t i = 0; i < fields.size(); ++i) text += (i ? "," : "") + fields[i];
+        if (chance(0.05)) text += ",";
+        return text;
+    }
+    std::string forceList() {
+        std::string text;
+        int count = integer(1, 3);
+        for (int i = 0; i < count; ++i) text += (i ? "," : "") + (chance(0.9) ? pick(kForceNames) : extreme());
+        return text;
+    }
+    std::string valueFor(const Flag& flag) {
+        switch (flag.value) {
+            case Value::None: return {};
+            case Value::Size: return size();
+            case Value::Number:
+                return chance(0.7) ? number(flag.low, flag.high) : chance(0.4) ? edgeOf(flag.low, flag.high) : extreme();
+            case Value::Integer:
+                return chance(0.7) ? std::to_string(integer(int(flag.low), int(flag.high)))
+                                   : chance(0.4) ? edgeOf(flag.low, flag.high) : extreme();
+            case Value::Camera: return camera();
+            case Value::Choice: {
+                auto found = choices.find(flag.name);
+                const auto& names = found != choices.end() ? found->second : flag.choices;
+                if (names.empty() || chance(0.15)) return chance(0.5) ? pick(kOddTexts) : mangle(names.empty() ? "x" : pick(names));
+                return pick(names);
+            }
+            case Value::ForceList: return forceList();
+            case Value::PassName: return passes.empty() || chance(0.3) ? pick(kOddTexts) : pick(passes);
+            case Value::OutFile: return pick(kOutNames);
+            case Value::OutDir: return pick(kOutDirs);
+        }
+        return {};
+    }
+    // A small change to a text: a character dropped, doubled, upper-cased, a space or sign or
+    // multi-byte character put in front or inside.
+    std::string mangle(std::string text) {
+        static const std::vector<std::string> inserts = {" ", "+", "-", "0", "é", "\t", ",", "x", "e", "."};
+        size_t at = text.empty() ? 0 : size_t(integer(0, int(text.size())));
+        switch (integer(0, 3)) {
+            case 0: if (!text.empty()) text.erase(std::min(at, text.size() - 1), 1); break;
+            case 1: text.insert(at, pick(inserts)); break;
+            case 2: if (!text.empty()) text[std::min(at, text.size() - 1)] ^= 0x20; break;
+            default: text = pick(inserts) + text; break;
+        }
+        return text;
+    }
+
+    // A plausible list (flags with fitting values), then 0-3 mutations on the token list.
+    Args arguments(const std::string& subcommand) {
+        Args args;
+        if (!subcommand.empty()) args.push_back(subcommand);
+        int count = integer(0, 5);
+        for (int i = 0; i < count; ++i) {
+            const Flag& flag = pick(flags());
+            if ((flag.name == std::string("--help") || flag.name == std::string("-h")) && chance(0.8)) continue;
+            args.push_back(flag.name);
+            if (flag.value != Value::None) args.push_back(valueFor(flag));
+        }
+        int mutations = chance(0.6) ? 0 : integer(1, 3);
+        for (int m = 0; m < mutations; ++m) mutate(args);
+        return args;
+    }
+    void mutate(Args& args) {
+        size_t n = args.size();
+        size_t at = n ? size_t(integer(0, int(n) - 1)) : 0;
+        switch (integer(0, 6)) {
+            case 0: if (n) args.erase(args.begin() + long(at)); break;                      // drop a token
+            case 1: if (n) args.insert(args.begin() + long(at), args[at]); break;           // repeat one
+            case 2: if (n > 1) std::swap(args[at], args[size_t(integer(0, int(n) - 1))]); break;
+            case 3: if (n) args[at] = mangle(args[at]); break;
+            case 4: args.insert(args.begin() + long(n ? at : 0), extreme()); break;
+            case 5: args.insert(args.begin() + long(n ? at : 0), pick(flags()).name); break;  // a flag, no value
+            default: args.push_back(chance(0.5) ? pick(kOddTexts) : pick(kSubcommands)); break;
+        }
+    }
+};
+
+// Every extreme number in every numeric slot, alone on an otherwise good command line: the
+// deterministic part, run in full before the random cases.
+std::vector<Args> sweepCases() {
+    std::vector<Args> cases;
+    for (const Flag& flag : flags()) {
+        if (flag.value != Value::Number && flag.value != Value::Integer) continue;
+        std::string sub = flag.name == std::string("--frames") ? "compare" : "render";
+        for (const std::string& value : kSweepNumbers) {
+            Args args = {sub, flag.name, value, "--size", "32x18"};
+            if (sub == "compare") args.insert(args.end(), {"--out-dir", "out"});
+            cases.push_back(args);
+        }
+    }
+    // The camera's five fields one at a time, the others at a pose that sees land, water and plants.
+    const std::vector<std::string> pose = {"420", "6", "160", "40", "-4"};
+    for (size_t field = 0; field < pose.size(); ++field)
+        for (const std::string& value : kSweepNumbers) {
+            std::vector<std::string> fields = pose;
+            fields[field] = value;
+            std::string camera;
+            for (size_t i = 0; i < fields.size(); ++i) camera += (i ? "," : "") + fields[i];
+            cases.push_back({"render", "--camera", camera, "--size", "32x18"});
+        }
+    for (const std::string& value : kSweepNumbers) {
+        cases.push_back({"render", "--size", value + "x18"});
+        cases.push_back({"render", "--size", "32x" + value});
+    }
+    return cases;
+}
+
+// ---- Running one case ---------------------------------------------------------------------------
+
+std::string shellQuote(const std::string& text) {
+    if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_.,/+=:") == std::string::npos)
+        return text;
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+std::string commandLine(const std::string& oasis, const Args& args) {
+    std::string line = shellQuote(oasis);
+    for (const auto& arg : args) line += " " + shellQuote(arg);
+    return line;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+struct Running {
+    int index = 0;
+    Args args;
+    fs::path dir;
+    pid_t pid = -1;
+    Clock::time_point start;
+};
+
+// The child runs in its own process group (so a hang is killed with Mesa's threads), in the case's
+// directory (default outputs land there), with no display (no subcommand = the headless main job).
+pid_t launch(const std::string& oasis, const Running& run) {
+    pid_t pid = fork();
+    if (pid != 0) return pid;
+    setpgid(0, 0);
+    if (chdir(run.dir.c_str()) != 0) _exit(125);
+    int out = open("stdout.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    int err = open("stderr.txt", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    int none = open("/dev/null", O_RDONLY);
+    if (out < 0 || err < 0 || none < 0) _exit(125);
+    dup2(none, 0), dup2(out, 1), dup2(err, 2);
+    unsetenv("DISPLAY");
+    unsetenv("WAYLAND_DISPLAY");
+    std::vector<char*> argv = {const_cast<char*>(oasis.c_str())};
+    for (const auto& arg : run.args) argv.push_back(const_cast<char*>(arg.c_str()));
+    argv.push_back(nullptr);
+    execv(oasis.c_str(), argv.data());
+    _exit(126);
+}
+
+// The value of the last occurrence of a flag the parser would have read (later ones win).
+std::string lastValue(const Args& args, const std::string& flag, const std::string& fallback) {
+    std::string value = fallback;
+    for (size_t i = 0; i + 1 < args.size(); ++i)
+        if (args[i] == flag) value = args[i + 1];
+    return value;
+}
+bool has(const Args& args, const std::string& token) { return std::find(args.begin(), args.end(), token) != args.end(); }
+
+// An image written by oasis: a regular file that decodes completely, of the frame's size; a picture
+// (not a debug view that may be empty) must have more than one colour, when it has room for any.
+std::string checkImage(const fs::path& path, int width, int height, bool picture) {
+    std::error_code ignored;
+    if (!fs::is_regular_file(path, ignored)) return path.string() + " is not a written file";
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
+    if (!pixels) return path.string() + " does not decode as an image: " + stbi_failure_reason();
+    std::string problem;
+    if (w != width || h != height)
+        problem = path.string() + " is " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
+                  std::to_string(width) + "x" + std::to_string(height);
+    if (problem.empty() && picture && width >= 8 && height >= 8) {
+        const uint32_t* rgba = reinterpret_cast<const uint32_t*>(pixels);
+        if (std::all_of(rgba, rgba + size_t(w) * size_t(h), [&](uint32_t p) { return p == rgba[0]; }))
+            problem = path.string() + " is one flat colour";
+    }
+    stbi_image_free(pixels);
+    return problem;
+}
+
+const std::regex kSanitizerReport("runtime error:|ERROR: AddressSanitizer|ERROR: LeakSanitizer|SUMMARY: (Address|Undefined|Leak)");
+const std::regex kNonFinite("(^|[^a-zA-Z_])(-?nan|-?inf)([^a-zA-Z_]|$)", std::regex::icase);
+
+// What a successful exit must have produced, by subcommand.
+std::string checkSuccess(const Running& run, const std::string& stdoutText) {
+    const Args& args = run.args;
+    std::string sub = !args.empty() && !args[0].empty() && args[0][0] != '-' ? args[0] : "";
+    if (has(args, "--help") || has(args, "-h"))
+        return stdoutText.rfind("usage: oasis", 0) == 0 || stdoutText.rfind("oasis - ", 0) == 0 ? "" : "help without a usage text";
+    int width = 1280, height = 720;
+    std::string size = lastValue(args, "--size", "1280x720");
+    if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2) return "exit 0 with --size '" + size + "'";
+    if (sub == "render") {
+        std::string view = lastValue(args, "--view", "final");
+        bool picture = (view == "final" || view == "overview") && !has(args, "--stop-before");
+        return checkImage(run.dir / lastValue(args, "--out", "oasis.png"), width, height, picture);
+    }
+    if (sub == "compare" || sub.empty()) {
+        if (std::regex_search(stdoutText, kNonFinite)) return "a non-finite number in the output";
+        fs::path dir = run.dir / lastValue(args, "--out-dir", "oasis-out");
+        std::vector<std::pair<std::string, bool>> files = {{"forward.png", true}, {"deferred.png", true}, {"difference.png", false}};
+        if (sub.empty()) files.push_back({"overview.png", true});
+        for (const auto& [file, picture] : files)
+            if (std::string problem = checkImage(dir / file, width, height, picture); !problem.empty()) return problem;
+        return {};
+    }
+    if (sub == "caps") return stdoutText.empty() ? "caps printed nothing" : "";
+    return "exit 0 from `oasis " + sub + "` (no display here; bench cases end in an option it refuses)";
+}
+
+struct Outcome {
+    std::string failure;  // empty: the case passed
+    int exitCode = -1;
+};
+
+Outcome judge(const Running& run, int status, bool timedOut, double limit) {
+    Outcome outcome;
+    std::string out = readFile(run.dir / "stdout.txt"), err = readFile(run.dir / "stderr.txt");
+    if (timedOut) { outcome.failure = "hang: killed after " + std::to_string(int(limit)) + " s"; return outcome; }
+    if (WIFSIGNALED(status)) { outcome.failure = std::string("crash: signal ") + strsignal(WTERMSIG(status)); return outcome; }
+    outcome.exitCode = WEXITSTATUS(status);
+    if (std::regex_search(err, kSanitizerReport)) outcome.failure = "sanitizer report";
+    else if (outcome.exitCode == 0) outcome.failure = checkSuccess(run, out);
+    else if (outcome.exitCode == 1 || outcome.exitCode == 2) {
+        if (err.rfind("oasis: ", 0) != 0 && err.find("\noasis: ") == std::string::npos)
+            outcome.failure = "exit " + std::to_string(outcome.exitCode) + " without a line 'oasis: ...' on stderr";
+    } else outcome.failure = "exit code " + std::to_string(outcome.exitCode) + " (expected 0, 1 or 2)";
+    return outcome;
+}
+
+// ---- Set-up from the binary's own help ------------------------------------------------------------
+
+std::string capture(const std::string& oasis, const Args& args, const fs::path& dir) {
+    Running run{0, args, dir};
+    fs::create_directories(dir);
+    pid_t pid = launch(oasis, run);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return readFile(dir / "stdout.txt") + readFile(dir / "stderr.txt");
+}
+
+std::vector<std::string> splitNames(const std::string& text) {
+    std::vector<std::string> names;
+    std::regex name("[a-z][a-z0-9-]*");
+    for (std::sregex_iterator it(text.begin(), text.end(), name), end; it != end; ++it) names.push_back(it->str());
+    return names;
+}
+
+struct Known {
+    std::vector<std::pair<std::regex, std::string>> patterns;  // regex over the command line, why
+    bool matches(const std::string& line, std::string& why) const {
+        for (const auto& [pattern, reason] : patterns)
+            if (std::regex_search(line, pattern)) { why = reason; return true; }
+        return false;
+    }
+};
+Known readKnown(const std::string& path) {
+    Known known;
+    if (path.empty()) return known;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) {
+        if (line.empty() || line[0] == '#') continue;
+        size_t tab = line.find("\t#");
+        known.patterns.push_back({std::regex(line.substr(0, tab)), tab == std::string::npos ? "" : line.substr(tab + 2)});
+    }
+    return known;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 3) {
+        std::fprintf(stderr, "usage: %s OASIS WORK_DIR [--seconds S] [--seed N] [--case-limit S] [--jobs J] [--known FILE]\n", argv[0]);
+        return 2;
+    }
+    std::string oasis = fs::absolute(argv[1]).string();
+    fs::path work = fs::absolute(argv[2]);
+    double seconds = 90, caseLimit = 20;
+    uint64_t seed = 12;
+    int jobs = 2;
+    std::string knownFile;
+    Args replay;  // after --: one argument list, judged and reported (to reproduce a failure)
+    bool replaying = false;
+    for (int i = 3; i < argc; i += 2) {
+        if (argv[i] == std::string("--")) {
+            replay.assign(argv + i + 1, argv + argc);
+            replaying = true;
+            break;
+        }
+        if (i + 1 >= argc) { std::fprintf(stderr, "cli fuzz: %s needs a value\n", argv[i]); return 2; }
+        std::string flag = argv[i], value = argv[i + 1];
+        if (flag == "--seconds") seconds = std::atof(value.c_str());
+        else if (flag == "--seed") seed = std::strtoull(value.c_str(), nullptr, 10);
+        else if (flag == "--case-limit") caseLimit = std::atof(value.c_str());
+        else if (flag == "--jobs") jobs = std::max(1, std::atoi(value.c_str()));
+        else if (flag == "--known") knownFile = value;
+        else { std::fprintf(stderr, "cli fuzz: unknown option %s\n", flag.c_str()); return 2; }
+    }
+    fs::remove_all(work);
+    fs::create_directories(work);
+    Known known = readKnown(knownFile);
+
+    // Every flag --help lists must be in the table; views and layouts are taken from it.
+    std::map<std::string, std::vector<std::string>> choices;
+    std::set<std::string> helpFlags;
+    for (std::string sub : {"", "render", "compare", "caps", "bench", "window"}) {
+        Args args = sub.empty() ? Args{"--help"} : Args{sub, "--help"};
+        std::string help = capture(oasis, args, work / "help");
+        std::regex flag("--[a-z][a-z-]*");
+        for (std::sregex_iterator it(help.begin(), help.end(), flag), end; it != end; ++it) helpFlags.insert(it->str());
+        std::smatch match;
+        if (std::regex_search(help, match, std::regex("--view NAME +([^\n]*)"))) choices["--view"] = splitNames(match[1]);
+        if (std::regex_search(help, match, std::regex("--gbuffer LAYOUT +G-buffer layout: ([a-z, -]*)"))) choices["--gbuffer"] = splitNames(match[1]);
+    }
+    helpFlags.erase("--help");
+    for (const std::string& flag : helpFlags)
+        if (std::none_of(flags().begin(), flags().end(), [&](const Flag& f) { return f.name == flag; })) {
+            std::fprintf(stderr, "cli fuzz: `oasis --help` lists %s, which the fuzzer's flag table does not know: add it to tests/fuzz/cli_fuzz.cpp\n", flag.c_str());
+            return 1;
+        }
+    if (choices["--view"].empty() || choices["--gbuffer"].empty()) {
+        std::fprintf(stderr, "cli fuzz: could not read the view and layout names from `oasis render --help`\n");
+        return 1;
+    }
+    if (!has(choices["--view"], "overview")) choices["--view"].push_back("overview");
+    // The pass names, from the refusal of a wrong one ("... one of: A, B, ...").
+    std::vector<std::string> passes;
+    std::string refusal = capture(oasis, {"render", "--size", "16x9", "--stop-before", "NoSuchPass", "--out", "x.png"}, work / "passes");
+    std::regex passName("[A-Z][A-Za-z]*Pass(\\.[a-z]+)*");
+    for (std::sregex_iterator it(refusal.begin(), refusal.end(), passName), end; it != end; ++it)
+        if (it->str() != "NoSuchPass") passes.push_back(it->str());
+    std::vector<Args> sweep = replaying ? std::vector<Args>{replay} : sweepCases();
+    if (replaying) seconds = 0;
+    std::printf("cli fuzz: seed %llu, %.0f s, %d jobs, per-case limit %.0f s, %zu flags, %zu views, %zu layouts, %zu passes, %zu known-failure patterns, %zu sweep cases\n",
+                (unsigned long long)seed, seconds, jobs, caseLimit, helpFlags.size(), choices["--view"].size(),
+                choices["--gbuffer"].size(), passes.size(), known.patterns.size(), sweep.size());
+    std::fflush(stdout);
+
+    auto begin = Clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - begin).count(); };
+    std::vector<Running> running;
+    std::map<int, int> exitCodes;
+    int started = 0, finished = 0, swept = 0, failures = 0, skipped = 0;
+    while (true) {
+        while (int(running.size()) < jobs && (started < int(sweep.size()) || elapsed() < seconds)) {
+            int index = started++;
+            Args args;
+            if (index < int(sweep.size())) {
+                args = sweep[size_t(index)];
+            } else {
+                // Each case from its own seed: the list does not depend on scheduling or timing.
+                Generator generator(seed * 1000003ull + uint64_t(index), choices, passes);
+                std::string sub = generator.pick(kSubcommands);
+                args = generator.arguments(sub);
+                // Keep every render small and short: a size and one timed frame unless the list has them.
+                if (!has(args, "--size") || sub == "bench") { args.push_back("--size"); args.push_back(generator.size()); }
+                if ((sub == "compare" || sub.empty()) && !has(args, "--frames")) { args.push_back("--frames"); args.push_back("1"); }
+            }
+            std::string why;
+            if (known.matches(commandLine("oasis", args), why)) { ++skipped; continue; }
+            Running run{index, args, work / ("case-" + std::to_string(index))};
+            fs::create_directories(run.dir / "existing-dir");
+            std::ofstream(run.dir / "existing-file") << "x";
+            run.start = Clock::now();
+            run.pid = launch(oasis, run);
+            running.push_back(run);
+        }
+        if (running.empty()) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        for (size_t i = 0; i < running.size();) {
+            Running& run = running[i];
+            int status = 0;
+            bool timedOut = false;
+            pid_t done = waitpid(run.pid, &status, WNOHANG);
+            if (done == 0) {
+                if (std::chrono::duration<double>(Clock::now() - run.start).count() < caseLimit) { ++i; continue; }
+                kill(-run.pid, SIGKILL);
+                waitpid(run.pid, &status, 0);
+                timedOut = true;
+            }
+            Outcome outcome = judge(run, status, timedOut, caseLimit);
+            ++finished;
+            swept += run.index < int(sweep.size());
+            ++exitCodes[outcome.exitCode];
+            if (outcome.failure.empty()) {
+                fs::remove_all(run.dir);
+            } else {
+                ++failures;
+                std::string err = readFile(run.dir / "stderr.txt");
+                if (err.size() > 3000) err = "..." + err.substr(err.size() - 3000);
+                std::printf("FAIL case %d: %s\n  (cd %s && %s)\n  stderr:\n%s\n", run.index, outcome.failure.c_str(),
+                            shellQuote(run.dir.string()).c_str(), commandLine(oasis, run.args).c_str(), err.c_str());
+                std::fflush(stdout);
+            }
+            running.erase(running.begin() + long(i));
+        }
+    }
+    std::string codes;
+    for (const auto& [code, count] : exitCodes) codes += (codes.empty() ? "" : ", ") + (code < 0 ? std::string("killed") : "exit " + std::to_string(code)) + ": " + std::to_string(count);
+    std::printf("cli fuzz: %d cases (%d swept, %d random) in %.1f s (%s), %d skipped as known failures, %d failed (seed %llu)\n",
+                finished, swept, finished - swept, elapsed(),
+                codes.c_str(), skipped, failures, (unsigned long long)seed);
+    return failures ? 1 : 0;
+}

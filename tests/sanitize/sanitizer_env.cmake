@@ -1,0 +1,25 @@
+# The sanitizer build's test settings (tests/CMakeLists.txt includes this under OASIS_SANITIZE);
+# docs/sanitizers.md says why each one is there.
+#   exitcode=23          a sanitizer report fails every test, also those that expect exit 1 or 2
+#   halt_on_error=1      UBSan stops at its first report (the code is built -fno-sanitize-recover)
+#   print_stacktrace=1   UBSan prints where, not only what
+#   suppressions         LeakSanitizer ignores leaks inside Mesa and LLVM only (sanitize/lsan.supp)
+#   LD_PRELOAD=swrast_dri.so, verify_asan_link_order=0
+#                        Mesa's EGL unloads its driver (and LLVM with it) at eglTerminate; LSan cannot
+#                        scan an unmapped library's globals, so what only they point to looks leaked,
+#                        from "<unknown module>". Preloaded, the driver stays mapped. ASan must come
+#                        first among the loaded libraries only to intercept their calls; the driver
+#                        defines no allocator, so the check is off for it.
+find_file(OASIS_MESA_DRIVER swrast_dri.so PATHS /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/dri /usr/lib/dri /usr/lib64/dri
+          NO_DEFAULT_PATH)
+set(OASIS_SANITIZER_ENVIRONMENT
+  "ASAN_OPTIONS=exitcode=23:detect_leaks=1:halt_on_error=1:verify_asan_link_order=0"
+  "UBSAN_OPTIONS=exitcode=23:halt_on_error=1:print_stacktrace=1"
+  "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+if(OASIS_MESA_DRIVER)
+  list(APPEND OASIS_SANITIZER_ENVIRONMENT "LD_PRELOAD=${OASIS_MESA_DRIVER}")
+endif()
+
+# cli tests that do not run oasis on llvmpipe (other drivers: the driver matrix's job; a grep).
+set(OASIS_SANITIZE_SKIPPED_CLI_TESTS
+  cli.caps_zink cli.caps_softpipe cli.softpipe_bare_gl33_tier cli.no_blits_copies_or_dsa_in_the_renderer)
