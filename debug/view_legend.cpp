@@ -143,6 +143,7 @@ Legend viewLegend(const DebugView& view, const ViewControls& controls, const Val
 }
 
 Image LegendRenderer::draw(const Legend& legend, int width) {
+    if (width < kMinLegendWidth) return Image();
     const float scale = std::clamp(float(width) / 640.0f, 1.0f, 2.0f);
     const float pad = 4.0f * scale, line = kLineHeight * scale, textWidth = float(width) - 2.0f * pad;
     auto linesOf = [&](const std::string& text) {

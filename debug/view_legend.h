@@ -28,9 +28,13 @@ struct Legend {
 Legend viewLegend(const DebugView& view, const ViewControls& controls, const ValueStatistics& statistics,
                   double nearPlane, double farPlane, double viewDistance);
 
+// Narrower images get no legend: its text would wrap into a strip taller than the frame.
+inline constexpr int kMinLegendWidth = 160;
+
 class LegendRenderer {
 public:
-    // The strip, `width` pixels wide (its height follows from the font scale the width gives).
+    // The strip, `width` pixels wide (its height follows from the font scale the width gives);
+    // an empty image below kMinLegendWidth.
     Image draw(const Legend& legend, int width);
 
 private:

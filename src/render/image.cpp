@@ -64,6 +64,7 @@ ImageDifference compareImages(const Image& a, const Image& b) {
 }
 
 Image stackImages(const Image& top, const Image& bottom) {
+    if (bottom.height == 0) return top;
     if (top.width != bottom.width) throw std::invalid_argument("stacked images differ in width");
     Image stacked(top.width, top.height + bottom.height);
     std::copy(top.rgba.begin(), top.rgba.end(), stacked.rgba.begin());

@@ -47,7 +47,8 @@ double ssim(const Image& a, const Image& b);
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale = 16);
 // The heat map's colour at t = difference / fullScale in 0..1 (its legend draws the same scale).
 void differenceHeatColour(float t, uint8_t rgb[3]);
-// `bottom` under `top` (the same width): a frame and its legend strip in one image.
+// `bottom` under `top` (the same width): a frame and its legend strip in one image; an empty
+// `bottom` leaves `top` as it is.
 Image stackImages(const Image& top, const Image& bottom);
 
 }  // namespace oasis

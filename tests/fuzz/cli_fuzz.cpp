@@ -71,7 +71,7 @@ const std::vector<std::string> kOutNames = {
 const std::vector<std::string> kOutDirs = {
     "out", "o u t", "ünï", "", ".", "a/b/c", "/nonexistent-oasis-fuzz/dir", "existing-file", "existing-dir"};
 
-enum class Value { None, Size, Number, Integer, Camera, Choice, ForceList, PassName, OutFile, OutDir };
+enum class Value { None, Size, Number, Integer, Camera, Choice, ForceList, PassName, OutFile, OutDir, Pixel, Range };
 
 // One row per option the parser knows (src/cli/options.cpp): how its value is drawn and its domain
 // (inside it the generator mostly stays; the extremes come on top).
@@ -109,6 +109,12 @@ const std::vector<Flag>& flags() {
         {"--json", Value::None},
         {"--frames", Value::Integer, 1, 3},  // more frames only cost time: the extremes test the domain
         {"--passes", Value::None},
+        {"--at", Value::Pixel},
+        {"--view-exposure", Value::Number, -20, 20},
+        {"--channel", Value::Choice, 0, 0, {"rgb", "r", "g", "b", "a", "luminance"}},
+        {"--range", Value::Range, -10, 10},
+        {"--overlay", Value::Choice, 0, 0, {"nan", "inf", "negative", "nan,inf", "nan,inf,negative", "none"}},
+        {"--legend", Value::Choice, 0, 0, {"on", "off"}},
         {"--quick", Value::None},
         {"--help", Value::None},
         {"-h", Value::None},
@@ -120,7 +126,7 @@ const std::vector<std::string> kForceNames = {"no-ssbo", "no-compute", "no-stenc
 // "" is the main job (no subcommand). bench runs minutes, so its cases always end in an option
 // bench refuses (--size): they fuzz its parsing, cli.bench_quick_smoke runs it.
 const std::vector<std::string> kSubcommands = {"render", "render", "render", "compare", "", "caps", "window",
-                                               "bench"};
+                                               "bench", "probe"};
 
 // ---- Generation ---------------------------------------------------------------------------------
 
@@ -202,6 +208,15 @@ struct Generator {
             case Value::PassName: return passes.empty() || chance(0.3) ? pick(kOddTexts) : pick(passes);
             case Value::OutFile: return pick(kOutNames);
             case Value::OutDir: return pick(kOutDirs);
+            case Value::Pixel:  // mostly inside the small frames the cases render
+                return chance(0.8) ? std::to_string(integer(0, 40)) + "," + std::to_string(integer(0, 20))
+                                   : (chance(0.5) ? extreme() : pick(kOddTexts)) + "," + std::to_string(integer(0, 9));
+            case Value::Range:
+                if (chance(0.7)) {
+                    double low = std::stod(number(flag.low, flag.high));
+                    return number(flag.low, low) + "," + number(low, flag.high);
+                }
+                return (chance(0.5) ? extreme() : number(flag.low, flag.high)) + "," + (chance(0.5) ? extreme() : pick(kOddTexts));
         }
         return {};
     }
@@ -341,14 +356,15 @@ bool has(const Args& args, const std::string& token) { return std::find(args.beg
 
 // An image written by oasis: a regular file that decodes completely, of the frame's size; a picture
 // (not a debug view that may be empty) must have more than one colour, when it has room for any.
-std::string checkImage(const fs::path& path, int width, int height, bool picture) {
+std::string checkImage(const fs::path& path, int width, int height, bool picture, bool legend = false) {
     std::error_code ignored;
     if (!fs::is_regular_file(path, ignored)) return path.string() + " is not a written file";
     int w = 0, h = 0, channels = 0;
     unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
     if (!pixels) return path.string() + " does not decode as an image: " + stbi_failure_reason();
     std::string problem;
-    if (w != width || h != height)
+    // A legend strip sits under a single view and the difference image from 160 pixels wide.
+    if (w != width || (legend && width >= 160 ? h <= height : h != height))
         problem = path.string() + " is " + std::to_string(w) + "x" + std::to_string(h) + ", expected " +
                   std::to_string(width) + "x" + std::to_string(height);
     if (problem.empty() && picture && width >= 8 && height >= 8) {
@@ -374,8 +390,18 @@ std::string checkSuccess(const Running& run, const std::string& stdoutText) {
     if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2) return "exit 0 with --size '" + size + "'";
     if (sub == "render") {
         std::string view = lastValue(args, "--view", "final");
-        bool picture = (view == "final" || view == "overview") && !has(args, "--stop-before");
-        return checkImage(run.dir / lastValue(args, "--out", "oasis.png"), width, height, picture);
+        // A channel or a range may rightly map the whole frame to one grey (alpha is 1 everywhere).
+        bool picture = (view == "final" || view == "overview") && !has(args, "--stop-before") &&
+                       !has(args, "--channel") && !has(args, "--range");
+        // A single view carries its legend strip under the frame unless --legend off.
+        bool legend = view != "overview" && lastValue(args, "--legend", "on") != "off";
+        return checkImage(run.dir / lastValue(args, "--out", "oasis.png"), width, height, picture, legend);
+    }
+    if (sub == "probe") {
+        bool json = has(args, "--json");
+        if (json ? stdoutText.rfind("{\"x\": ", 0) != 0 : stdoutText.rfind("pixel ", 0) != 0) return "probe printed no probe";
+        if (json && std::regex_search(stdoutText, kNonFinite)) return "a non-finite number in the probe's JSON";
+        return {};
     }
     if (sub == "compare" || sub.empty()) {
         if (std::regex_search(stdoutText, kNonFinite)) return "a non-finite number in the output";
@@ -383,7 +409,8 @@ std::string checkSuccess(const Running& run, const std::string& stdoutText) {
         std::vector<std::pair<std::string, bool>> files = {{"forward.png", true}, {"deferred.png", true}, {"difference.png", false}};
         if (sub.empty()) files.push_back({"overview.png", true});
         for (const auto& [file, picture] : files)
-            if (std::string problem = checkImage(dir / file, width, height, picture); !problem.empty()) return problem;
+            if (std::string problem = checkImage(dir / file, width, height, picture, file == "difference.png"); !problem.empty())
+                return problem;
         return {};
     }
     if (sub == "caps") return stdoutText.empty() ? "caps printed nothing" : "";
@@ -485,7 +512,7 @@ int main(int argc, char** argv) {
     // Every flag --help lists must be in the table; views and layouts are taken from it.
     std::map<std::string, std::vector<std::string>> choices;
     std::set<std::string> helpFlags;
-    for (std::string sub : {"", "render", "compare", "caps", "bench", "window"}) {
+    for (std::string sub : {"", "render", "compare", "caps", "bench", "window", "probe"}) {
         Args args = sub.empty() ? Args{"--help"} : Args{sub, "--help"};
         std::string help = capture(oasis, args, work / "help");
         std::regex flag("--[a-z][a-z-]*");
