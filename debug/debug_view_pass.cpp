@@ -93,28 +93,17 @@ void DebugViewPass::restoreDepthStencilMode(const DebugView& view, StencilViewPa
 std::vector<float> DebugViewPass::readValues(PassContext& context, const DebugView& view, StencilViewPath stencilPath) {
     gl::DebugGroup group((name() + ".values." + view.name).c_str());
     const FrameTargets& targets = context.targets;
-    int width = targets.width(), height = targets.height();
-    if (!values_ || valuesWidth_ != width || valuesHeight_ != height) {
-        values_ = gl::createTargetTexture(GL_RGBA32F, width, height);
-        valuesFbo_ = gl::createFramebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, valuesFbo_.name());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, values_.name(), 0);
-        valuesWidth_ = width;
-        valuesHeight_ = height;
-    }
+    // The target first: making it binds a texture on the active unit, which would unbind a source.
+    values_.bindForDrawing(targets.width(), targets.height());
     bindSource(context, view, stencilPath);
-    glBindFramebuffer(GL_FRAMEBUFFER, valuesFbo_.name());
-    glViewport(0, 0, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, values_.framebuffer());
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glUseProgram(context.shaders.program(targets.layout().program(debugValuesProgramName(view))));
     context.geometry.drawFullscreenTriangle();
     restoreDepthStencilMode(view, stencilPath);
-    std::vector<float> values(size_t(width) * size_t(height) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, valuesFbo_.name());
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, values.data());
-    return values;
+    return values_.read();
 }
 
 void DebugViewPass::drawView(PassContext& context, const DebugView& view, StencilViewPath stencilPath) {

@@ -8,6 +8,7 @@
 #include "debug/debug_views.h"
 #include "debug/label_overlay.h"
 #include "passes/pass.h"
+#include "render/float_readback.h"
 
 namespace oasis {
 
@@ -37,9 +38,7 @@ private:
 
     GLuint plantAtlasTexture_ = 0;
     float exposureStops_ = 0.0f;
-    gl::Texture values_;  // readValues' float target, made on first use at the frame's size
-    gl::Framebuffer valuesFbo_;
-    int valuesWidth_ = 0, valuesHeight_ = 0;
+    FloatReadback values_;  // readValues' float target
     gl::Texture stencilCopy_;
     int stencilCopyWidth_ = 0, stencilCopyHeight_ = 0;
     std::vector<uint8_t> stencilBytes_;

@@ -13,6 +13,7 @@
 #include "common/shared_constants.glsl"
 #include "passes/pass.h"
 #include "render/encoding_error.h"
+#include "render/float_readback.h"
 #include "render/renderer.h"
 #include "render/texture_units.h"
 
@@ -136,11 +137,8 @@ constexpr int kProbeSlots = 8;
 
 std::array<glm::vec4, kProbeSlots> decodeOnGpu(Renderer& renderer, int glX, int glY) {
     const FrameTargets& targets = renderer.targets();
-    gl::Texture values = gl::createTargetTexture(GL_RGBA32F, kProbeSlots, 1);
-    gl::Framebuffer framebuffer = gl::createFramebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, values.name(), 0);
-    glViewport(0, 0, kProbeSlots, 1);
+    FloatReadback values;
+    values.bindForDrawing(kProbeSlots, 1);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
@@ -152,9 +150,9 @@ std::array<glm::vec4, kProbeSlots> decodeOnGpu(Renderer& renderer, int glX, int 
     glUseProgram(program);
     glUniform2i(glGetUniformLocation(program, "probePixel"), glX, glY);
     renderer.geometry().drawFullscreenTriangle();
+    std::vector<float> read = values.read();
     std::array<glm::vec4, kProbeSlots> slots{};
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
-    glReadPixels(0, 0, kProbeSlots, 1, GL_RGBA, GL_FLOAT, slots.data());
+    for (int s = 0; s < kProbeSlots; ++s) slots[size_t(s)] = glm::vec4(read[s * 4], read[s * 4 + 1], read[s * 4 + 2], read[s * 4 + 3]);
     glActiveTexture(GL_TEXTURE0 + kUnitProbeDepthStencil);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);

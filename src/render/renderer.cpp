@@ -312,27 +312,14 @@ std::vector<float> Renderer::readTarget(Target target) const {
 }
 
 std::vector<float> Renderer::readSurfacePositions() {
-    int width = targets_->width(), height = targets_->height();
-    if (!positionsReadback_ || positionsReadbackWidth_ != width || positionsReadbackHeight_ != height) {
-        positionsReadback_ = gl::createTargetTexture(GL_RGBA32F, width, height);
-        positionsReadbackFbo_ = gl::createFramebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, positionsReadbackFbo_.name());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, positionsReadback_.name(), 0);
-        positionsReadbackWidth_ = width;
-        positionsReadbackHeight_ = height;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, positionsReadbackFbo_.name());
-    glViewport(0, 0, width, height);
+    positionsReadback_.bindForDrawing(targets_->width(), targets_->height());
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     bindGBufferInputs(*targets_);
     glUseProgram(shaders_.program(targets_->layout().program("gbuffer.positions")));
     geometry_.drawFullscreenTriangle();
-    std::vector<float> pixels(size_t(width) * size_t(height) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, positionsReadbackFbo_.name());
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data());
-    return pixels;
+    return positionsReadback_.read();
 }
 
 std::vector<float> Renderer::readDepth() const {

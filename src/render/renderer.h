@@ -11,6 +11,7 @@
 #include "passes/floor_pass.h"
 #include "passes/present_pass.h"
 #include "render/frame_setup.h"
+#include "render/float_readback.h"
 #include "render/frame_targets.h"
 #include "render/image.h"
 #include "render/pipeline.h"
@@ -128,9 +129,7 @@ private:
     DebugViewPass debugViews_;
     FloorPass floor_;
     PresentPass present_;
-    gl::Texture positionsReadback_;  // readSurfacePositions' float target, made on first use
-    gl::Framebuffer positionsReadbackFbo_;
-    int positionsReadbackWidth_ = 0, positionsReadbackHeight_ = 0;
+    FloatReadback positionsReadback_;  // readSurfacePositions' float target
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
     bool ssboAvailable_ = false;
