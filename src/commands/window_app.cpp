@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "cli/input_domains.h"
 #include "commands/session.h"
 #include "commands/window_compare.h"
 #include "context/gl_context.h"
@@ -661,6 +662,25 @@ bool drawChosen(RenderSession& session, SceneSettings& scene, WindowState& state
     }
 }
 
+// The window's clock, keys and panel move the scene like the command line's values: keep what they
+// set inside the same domains (cli/input_domains.h), saying so when one stops at an edge.
+void keepInsideDomains(SceneSettings& scene, WindowState& state) {
+    auto clampTo = [&](double& value, const char* name) {
+        const InputDomain& domain = inputDomain(name);
+        double inside = std::clamp(value, domain.low, domain.high);
+        if (inside == value) return;
+        value = inside;
+        report(state, std::string(name) + " stops at the edge of its domain " + describeDomain(domain), false);
+    };
+    clampTo(scene.timeSeconds, "--time");
+    CameraPose& pose = *scene.camera;
+    clampTo(pose.position.x, "--camera X");
+    clampTo(pose.position.y, "--camera Y");
+    clampTo(pose.position.z, "--camera Z");
+    // The yaw wraps, in double, as the parser's does.
+    pose.yawDegrees = float(std::remainder(double(pose.yawDegrees), 360.0));
+}
+
 // Prints the window's state changes once each, so a log (and the window tests) can follow them.
 void noteMinimised(WindowState& state, bool& minimised, bool now) {
     if (now == minimised) return;
@@ -731,6 +751,7 @@ int runWindowApp(const Options& options) {
             if (!state.paused) scene.timeSeconds += seconds;
             if (state.freeCamera) moveFreeCamera(window.window(), *scene.camera, seconds);
             else *scene.camera = defaultCameraPath(scene.terrain, scene.timeSeconds);
+            keepInsideDomains(scene, state);
 
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
