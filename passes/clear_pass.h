@@ -11,6 +11,7 @@ public:
     std::string name() const override { return std::string("ClearPass.") + surfaceOutputName(output_); }
     std::vector<Target> reads() const override { return {}; }
     std::vector<Target> writes() const override { return surfaceOutputTargets(output_); }
+    std::string sceneStep() const override { return "clear"; }
 
 protected:
     void execute(PassContext& context) override;

@@ -37,7 +37,10 @@ bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring) {
 }
 
 SurfacePass::SurfacePass(const std::string& baseName, SurfaceOutput output, Mirroring mirroring)
-    : output_(output), mirroring_(mirroring), name_(variantName(baseName, output, mirroring)) {}
+    : output_(output),
+      mirroring_(mirroring),
+      name_(variantName(baseName, output, mirroring)),
+      step_(baseName + (mirroring == Mirroring::Mirrored ? ".mirrored" : "")) {}
 
 std::vector<Target> SurfacePass::writes() const { return surfaceOutputTargets(output_, mirroring_); }
 

@@ -32,6 +32,11 @@ public:
     virtual std::vector<Target> writes() const = 0;
     // Whether the pass has work this frame (the mirrored passes only with reflections on).
     virtual bool active(const FrameSetup&) const { return true; }
+    // The step of drawing the scene this pass does, named the same in both pipelines ("clear",
+    // "TerrainPass", "TerrainPass.mirrored"): the link between a forward pass and its G-buffer
+    // counterpart, by which a forward frame's G-buffer is filled for the views. "" for passes that
+    // only shade, copy or compose.
+    virtual std::string sceneStep() const { return {}; }
 
     void run(PassContext& context) {
         gl::DebugGroup group(name().c_str());
@@ -54,6 +59,7 @@ public:
     std::vector<Target> reads() const override { return {}; }
     std::vector<Target> writes() const override;
     bool active(const FrameSetup& frame) const override;
+    std::string sceneStep() const override { return step_; }
 
 protected:
     // Binds the output, depth-tests and writes depth; direct draws mark `stencilMark`, mirrored
@@ -69,6 +75,7 @@ protected:
 
 private:
     std::string name_;
+    std::string step_;  // the base name, ".mirrored" for the mirrored draw
 };
 
 // Binds the framebuffer a surface output draws into and sets the viewport to the whole frame:

@@ -11,6 +11,7 @@ public:
     std::string name() const override { return "WaterMaskPass"; }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
     std::vector<Target> writes() const override { return {Target::DepthStencil}; }
+    std::string sceneStep() const override { return "WaterMaskPass"; }  // the same pass in both pipelines
 
 protected:
     void execute(PassContext& context) override;

@@ -197,10 +197,10 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         glClearBufferfv(GL_COLOR, 0, black);
     }
     PassContext passContext = context();
-    passesRan_.clear();
+    stepsRan_.clear();
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
-        passesRan_.push_back(pass.name());
+        if (!pass.sceneStep().empty()) stepsRan_.push_back(pass.sceneStep());
         if (afterEach) afterEach(pass);
     });
     gbufferCurrent_ = pipeline.writes(Target::Albedo);
@@ -210,12 +210,11 @@ void Renderer::ensureGBuffer() {
     if (gbufferCurrent_) return;
     PassContext passContext = context();
     // Forward draws no G-buffer: fill it for the view with the deferred passes of the direct scene
-    // that do not shade, each only if its forward counterpart ran this frame, so a frame
-    // stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
-    auto ranInForward = [&](std::string name) {
-        size_t suffix = name.find(".gbuffer");
-        if (suffix != std::string::npos) name.replace(suffix, 8, ".forward");
-        return std::find(passesRan_.begin(), passesRan_.end(), name) != passesRan_.end();
+    // that do not shade, each only if the forward pass of the same scene step ran this frame, so a
+    // frame stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
+    auto ranInForward = [&](const Pass& pass) {
+        return !pass.sceneStep().empty() &&
+               std::find(stepsRan_.begin(), stepsRan_.end(), pass.sceneStep()) != stepsRan_.end();
     };
     auto writes = [](const Pass& pass, Target target) {
         std::vector<Target> written = pass.writes();
@@ -228,7 +227,7 @@ void Renderer::ensureGBuffer() {
         if (writes(*pass, Target::Radiance)) continue;  // shading
         // The depth copy has no forward counterpart: it follows whatever the fill drew.
         bool copiesDepth = writes(*pass, Target::SceneDepth);
-        if (copiesDepth ? filled && pass->active(frame_) : ranInForward(pass->name())) {
+        if (copiesDepth ? filled && pass->active(frame_) : ranInForward(*pass)) {
             pass->run(passContext);
             filled = true;
         }

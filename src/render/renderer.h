@@ -144,7 +144,7 @@ private:
     std::string clipControlReason_;
     std::string depthReason_;
     bool gbufferCurrent_ = false;  // whether the G-buffer holds the last frame
-    std::vector<std::string> passesRan_;  // names of the passes the last frame ran
+    std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
 };
 
 }  // namespace oasis
