@@ -393,6 +393,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("--stop-before: the " + std::string(pipelineName(options.pipeline)) + " pipeline has no pass '" +
                         options.stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     }
+    if (findEncodingErrorView(options.view) && options.viewControls.channel)
+        return fail("--channel: the " + options.view + " view has one value a pixel (use --range)");
     if (options.viewControls.channel) {
         const DebugView* view = findDebugView(options.view);
         if (!view) return fail("--channel needs a single view, not --view " + options.view);
@@ -407,8 +409,6 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     if (findEncodingErrorView(options.view) && options.scene.gbuffer == "full")
         return fail("--view " + options.view + " compares the G-buffer layout against full: add --gbuffer standard or "
                     "--gbuffer compact");
-    if (findEncodingErrorView(options.view) && options.viewControls.channel)
-        return fail("--channel: the " + options.view + " view has one value a pixel (use --range)");
     if (options.viewControls.range && options.view == kOverviewName)
         return fail("--range needs a single view, not --view overview");
     if (options.command == Command::Probe && !options.help) {

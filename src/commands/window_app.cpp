@@ -71,6 +71,7 @@ struct Inspector {
     bool overlayNan = true, overlayInfinity = true, overlayNegative = false;
     float exposureStops = 0.0f;
     std::optional<ValueStatistics> statistics;  // of the last single view drawn
+    bool sectionOpen = false;  // the panel shows the inspector this frame: only then are counts read
     static constexpr size_t kMaxPins = 9;
 
     ViewControls controls() const {
@@ -334,7 +335,8 @@ std::string probeSummary(const PixelProbe& p) {
 // The inspector's section of the panel: view controls, value counts, the probes.
 void drawInspectorPanel(WindowState& state) {
     Inspector& inspector = state.inspector;
-    if (!ImGui::CollapsingHeader("inspector (hover, click to pin, P prints)", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    inspector.sectionOpen = ImGui::CollapsingHeader("inspector (hover, click to pin, P prints)", ImGuiTreeNodeFlags_DefaultOpen);
+    if (!inspector.sectionOpen) return;
     const DebugView* view = findDebugView(state.chosen.view);
     if (view) {
         std::vector<std::string> choices = {"the view's colours"};
@@ -515,8 +517,11 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
 // needs it) into Display, and the probes of the pixels hovered and pinned.
 void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector) {
     inspector.statistics.reset();
-    if (const DebugView* view = findDebugView(config.view)) {
-        ViewControls controls = inspector.controls();
+    const DebugView* view = findDebugView(config.view);
+    ViewControls controls = inspector.controls();
+    // The values pass and its full-frame float read-back cost a frame's worth of bandwidth: only
+    // while someone looks at the counts or asks for the values.
+    if (view && (inspector.sectionOpen || controls.showValues())) {
         std::vector<float> values = renderer.readViewValues(view->name);
         ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
         ValueStatistics statistics = valueStatistics(values, channel);
@@ -756,6 +761,7 @@ int runWindowApp(const Options& options) {
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
+            state.inspector.sectionOpen = false;
             if (state.panelShown) drawPanel(renderer, scene, state);
             handleInspectorMouse(window.window(), state.inspector, state.comparison, state.draggingDivider);
             drawPinMarkers(window.window(), state.inspector);
