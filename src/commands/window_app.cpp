@@ -539,12 +539,13 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
         inspector.statistics = statistics;
     }
     auto inside = [&](glm::ivec2 p) { return p.x < renderer.targets().width() && p.y < renderer.targets().height(); };
+    // Probing a forward frame fills its G-buffer first: only while the panel shows the probes, or P asks.
     inspector.hoveredProbe.reset();
-    if (inspector.hovered && inside(*inspector.hovered))
+    if (inspector.hovered && inside(*inspector.hovered) && (inspector.sectionOpen || inspector.printHovered))
         inspector.hoveredProbe = probePixel(renderer, inspector.hovered->x, inspector.hovered->y);
     inspector.pinnedProbes.clear();
     for (glm::ivec2 pin : inspector.pinned)
-        if (inside(pin)) inspector.pinnedProbes.push_back(probePixel(renderer, pin.x, pin.y));
+        if (inside(pin) && inspector.sectionOpen) inspector.pinnedProbes.push_back(probePixel(renderer, pin.x, pin.y));
     if (inspector.printHovered && inspector.hoveredProbe) {
         std::printf("oasis: probe %s\n", probeJson(*inspector.hoveredProbe).c_str());
         std::fflush(stdout);
@@ -610,10 +611,10 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
     inspector.hoveredProbe.reset();
     inspector.pinnedProbes.clear();
     auto inside = [&](glm::ivec2 p) { return p.x < width && p.y < height; };
-    if (inspector.hovered && inside(*inspector.hovered))
+    if (inspector.hovered && inside(*inspector.hovered) && (inspector.sectionOpen || inspector.printHovered))
         inspector.hoveredProbe = probePixel(shown, inspector.hovered->x, inspector.hovered->y);
     for (glm::ivec2 pin : inspector.pinned)
-        if (inside(pin)) inspector.pinnedProbes.push_back(probePixel(shown, pin.x, pin.y));
+        if (inside(pin) && inspector.sectionOpen) inspector.pinnedProbes.push_back(probePixel(shown, pin.x, pin.y));
     shown.present(width, height);
 }
 
