@@ -615,6 +615,11 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         inspector.hoveredProbe = probePixel(shown, inspector.hovered->x, inspector.hovered->y);
     for (glm::ivec2 pin : inspector.pinned)
         if (inside(pin) && inspector.sectionOpen) inspector.pinnedProbes.push_back(probePixel(shown, pin.x, pin.y));
+    if (inspector.printHovered && inspector.hoveredProbe) {
+        std::printf("oasis: probe %s\n", probeJson(*inspector.hoveredProbe).c_str());
+        std::fflush(stdout);
+        inspector.printHovered = false;
+    }
     shown.present(width, height);
 }
 
