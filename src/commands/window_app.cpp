@@ -513,6 +513,14 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::End();
 }
 
+// P: the probe under the cursor as one JSON line (scripts and the window tests read it).
+void printHoveredProbe(Inspector& inspector) {
+    if (!inspector.printHovered || !inspector.hoveredProbe) return;
+    std::printf("oasis: probe %s\n", probeJson(*inspector.hoveredProbe).c_str());
+    std::fflush(stdout);
+    inspector.printHovered = false;
+}
+
 // After a view is drawn: its values through the view controls (and the overlay where any value
 // needs it) into Display, and the probes of the pixels hovered and pinned.
 void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector) {
@@ -546,11 +554,7 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
     inspector.pinnedProbes.clear();
     for (glm::ivec2 pin : inspector.pinned)
         if (inside(pin) && inspector.sectionOpen) inspector.pinnedProbes.push_back(probePixel(renderer, pin.x, pin.y));
-    if (inspector.printHovered && inspector.hoveredProbe) {
-        std::printf("oasis: probe %s\n", probeJson(*inspector.hoveredProbe).c_str());
-        std::fflush(stdout);
-        inspector.printHovered = false;
-    }
+    printHoveredProbe(inspector);
 }
 
 // One frame of `config` into the window's framebuffer (not yet swapped). Throws ShaderBuildError
@@ -615,11 +619,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         inspector.hoveredProbe = probePixel(shown, inspector.hovered->x, inspector.hovered->y);
     for (glm::ivec2 pin : inspector.pinned)
         if (inside(pin) && inspector.sectionOpen) inspector.pinnedProbes.push_back(probePixel(shown, pin.x, pin.y));
-    if (inspector.printHovered && inspector.hoveredProbe) {
-        std::printf("oasis: probe %s\n", probeJson(*inspector.hoveredProbe).c_str());
-        std::fflush(stdout);
-        inspector.printHovered = false;
-    }
+    printHoveredProbe(inspector);
     shown.present(width, height);
 }
 
