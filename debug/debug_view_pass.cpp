@@ -111,7 +111,7 @@ void DebugViewPass::drawView(PassContext& context, const DebugView& view, Stenci
     drawTile(context, view, stencilPath, 0, 0, context.targets.width(), context.targets.height());
 }
 
-void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPath) {
+void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPath, const std::string& waterScene) {
     gl::DebugGroup group((name() + ".overview").c_str());
     const FrameTargets& targets = context.targets;
     const auto& views = debugViews();
@@ -131,7 +131,10 @@ void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPa
         // One pixel gap between tiles keeps their edges apart.
         drawTile(context, views[i], stencilPath, x + 1, targets.height() - yFromTop - tileHeight + 1,
                  std::max(1, tileWidth - 2), std::max(1, tileHeight - 2));
-        labels.push_back({views[i].name, float(x + 4), float(yFromTop + 4)});
+        // The tiles of the frame's surfaces say which scene they show under the water.
+        std::string label = views[i].name;
+        if (readsSceneSurfaces(views[i]) && views[i].source != ViewSource::Stencil) label += " (water: " + waterScene + ")";
+        labels.push_back({label, float(x + 4), float(yFromTop + 4)});
     }
     if (tileHeight >= 24) {
         if (!labels_) labels_ = std::make_unique<LabelOverlay>();

@@ -22,7 +22,9 @@ public:
     void drawView(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
     // The view's values (viewValue() of debug_view.frag) as RGBA floats, bottom row first.
     std::vector<float> readValues(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
-    void drawOverview(PassContext& context, StencilViewPath stencilPath);
+    // The grid of every view; the tiles of the frame's surfaces are labelled with `waterScene`
+    // ("direct", "mirrored"), the scene they show under the water.
+    void drawOverview(PassContext& context, StencilViewPath stencilPath, const std::string& waterScene);
     // The texture the atlas view shows (0: none, the view is black).
     void setPlantAtlasTexture(GLuint texture) { plantAtlasTexture_ = texture; }
     // The HDR views' exposure in stops: linear light times 2^stops before display.

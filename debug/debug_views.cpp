@@ -65,6 +65,26 @@ bool readsGBuffer(const DebugView& view) {
            view.source == ViewSource::Vegetation;
 }
 
+bool readsSceneSurfaces(const DebugView& view) {
+    return readsGBuffer(view) || view.source == ViewSource::Depth || view.source == ViewSource::Stencil;
+}
+
+std::string waterNote(const DebugView& view, const std::string& surfaces) {
+    switch (view.source) {
+        case ViewSource::Final:
+        case ViewSource::Radiance:
+            return "under the water: the water as shaded (the lakebed seen through it plus the reflection)";
+        case ViewSource::Reflection:
+            return "inside the water: the mirrored scene as shaded, before the water composite";
+        case ViewSource::Stencil:
+            return "under the water: 2, the water's mark (the same whichever scene the other views show)";
+        case ViewSource::PlantAtlas:
+            return "";
+        default:
+            return "under the water: " + surfaces;
+    }
+}
+
 std::string debugProgramName(const DebugView& view) { return "debug." + view.name; }
 std::string debugValuesProgramName(const DebugView& view) { return "debug.values." + view.name; }
 

@@ -109,7 +109,7 @@ void lightHeatColour(float count, uint8_t rgb[3]) {
 }
 
 Legend viewLegend(const DebugView& view, const ViewControls& controls, const ValueStatistics& statistics,
-                  double nearPlane, double farPlane, double viewDistance) {
+                  double nearPlane, double farPlane, double viewDistance, const std::string& waterNote) {
     Legend legend;
     ViewChannel channel = controls.channel.value_or(defaultChannel(view));
     if (controls.showValues()) {
@@ -138,6 +138,7 @@ Legend viewLegend(const DebugView& view, const ViewControls& controls, const Val
                   statistics.negativeInfinity, statistics.negative, number(statistics.min).c_str(),
                   number(statistics.max).c_str());
     legend.notes.push_back(counts);
+    if (!waterNote.empty()) legend.notes.push_back(waterNote);
     legend.overlaySwatches = controls.overlay;
     return legend;
 }

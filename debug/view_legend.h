@@ -25,8 +25,9 @@ struct Legend {
 
 // The legend of a view of the last frame: its table text and scale; with the controls' values
 // shown, the channel, the range in use and the grey bar; always the value counts.
+// `waterNote` (debug_views.h waterNote) says what the view shows under the water.
 Legend viewLegend(const DebugView& view, const ViewControls& controls, const ValueStatistics& statistics,
-                  double nearPlane, double farPlane, double viewDistance);
+                  double nearPlane, double farPlane, double viewDistance, const std::string& waterNote = {});
 
 // Narrower images get no legend: its text would wrap into a strip taller than the frame.
 inline constexpr int kMinLegendWidth = 160;

@@ -6,10 +6,12 @@ namespace oasis {
 
 void ReflectionClearPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.reflectionFramebuffer());
-    glViewport(0, 0, targets.width(), targets.height());
-    const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearBufferfv(GL_COLOR, 0, nothing);
+    if (reflection_ == ReflectionTarget::Cleared) {
+        glBindFramebuffer(GL_FRAMEBUFFER, targets.reflectionFramebuffer());
+        glViewport(0, 0, targets.width(), targets.height());
+        const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearBufferfv(GL_COLOR, 0, nothing);
+    }
     if (!context.frame.reflectionsActive) return;
 
     bindSurfaceOutput(targets, output_, Mirroring::Mirrored);

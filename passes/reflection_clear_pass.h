@@ -1,6 +1,7 @@
 // ReflectionClearPass: clears Reflection every frame (so it never shows a stale mirror image) and,
 // with reflections active, resets depth inside the water to the far plane (and, for the G-buffer,
-// the "nothing drawn" values) so the mirrored scene is depth-tested against itself only.
+// the "nothing drawn" values) so the mirrored scene is depth-tested against itself only. The views'
+// fill of the mirrored scene (render/view_fill.h) keeps Reflection: the frame's reflection view.
 #pragma once
 #include "passes/pass.h"
 
@@ -8,19 +9,24 @@ namespace oasis {
 
 class ReflectionClearPass : public Pass {
 public:
-    explicit ReflectionClearPass(SurfaceOutput output) : output_(output) {}
+    enum class ReflectionTarget { Cleared, Kept };
+    explicit ReflectionClearPass(SurfaceOutput output, ReflectionTarget reflection = ReflectionTarget::Cleared)
+        : output_(output), reflection_(reflection) {}
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
     std::vector<Target> writes() const override {
-        if (output_ == SurfaceOutput::Forward) return {Target::Reflection, Target::DepthStencil};
-        return {Target::Reflection, Target::Albedo, Target::Normal, Target::Position, Target::Info,
-                Target::DepthStencil};
+        std::vector<Target> written{Target::DepthStencil};
+        if (reflection_ == ReflectionTarget::Cleared) written.push_back(Target::Reflection);
+        if (output_ == SurfaceOutput::GBuffer)
+            written.insert(written.end(), {Target::Albedo, Target::Normal, Target::Position, Target::Info});
+        return written;
     }
 protected:
     void execute(PassContext& context) override;
 
 private:
     SurfaceOutput output_;
+    ReflectionTarget reflection_;
 };
 
 }  // namespace oasis

@@ -11,7 +11,7 @@ void WaterMaskPass::execute(PassContext& context) {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
     glDepthFunc(context.targets.depth().nearerFunc);
-    glDepthMask(GL_TRUE);
+    glDepthMask(depth_ == WaterDepth::Written ? GL_TRUE : GL_FALSE);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);

@@ -1,13 +1,18 @@
 // WaterMaskPass: marks kStencilWater wherever the water plane is the nearest surface (depth
 // tested against what is already drawn) and leaves the water's depth there; writes no colour.
 // Depth is then the visible surface's at every later stage, with reflections on or off.
+// The views' fill of the direct scene (render/view_fill.h) marks the water without its depth, so
+// depth keeps the lakebed the G-buffer holds there.
 #pragma once
 #include "passes/pass.h"
 
 namespace oasis {
 
+enum class WaterDepth { Written, Kept };
+
 class WaterMaskPass : public Pass {
 public:
+    explicit WaterMaskPass(WaterDepth depth = WaterDepth::Written) : depth_(depth) {}
     std::string name() const override { return "WaterMaskPass"; }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
     std::vector<Target> writes() const override { return {Target::DepthStencil}; }
@@ -15,6 +20,9 @@ public:
 
 protected:
     void execute(PassContext& context) override;
+
+private:
+    WaterDepth depth_;
 };
 
 }  // namespace oasis

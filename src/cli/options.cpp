@@ -133,6 +133,8 @@ std::string usage(Command command) {
                    "  --overlay LIST            paint nan, inf, negative values in checkers (default nan,inf; none)\n"
                    "  --legend on|off           the legend strip under the image (default on)\n"
                    "  --stencil-view PATH       texturing | read-back (default: texturing where supported)\n"
+                   "  --water-scene S           what the G-buffer, depth and error views show at water pixels:\n"
+                   "                            direct (the lakebed, default) or mirrored (what the water reflects)\n"
                    "  --stop-before PASS        end the frame before the named pass, to see its inputs\n"
                    "                            (e.g. WaterCompositePass; a wrong name lists the passes);\n"
                    "                            Final is black then: view the targets the frame reached\n" + scene;
@@ -172,10 +174,13 @@ std::string usage(Command command) {
                    "  the surface, and on water pixels which scene the G-buffer holds there and why\n"
                    "  --at X,Y                  the pixel (required)\n"
                    "  --pipeline P              forward or deferred (default deferred)\n"
+                   "  --water-scene S           at water pixels the G-buffer and depth hold direct (the lakebed,\n"
+                   "                            default) or mirrored (what the water reflects)\n"
                    "  --json                    one JSON object instead of the text\n" + scene;
         case Command::Window:
-            return "usage: oasis window [scene options]\n"
-                   "  opens the interactive window (what `oasis` does when a display exists)\n" + scene;
+            return "usage: oasis window [scene options] [--water-scene direct|mirrored]\n"
+                   "  opens the interactive window (what `oasis` does when a display exists)\n"
+                   "  --water-scene S           what the views show at water pixels at start (key M switches)\n" + scene;
         case Command::Default: break;
     }
     return "oasis - a forward/deferred renderer workbench\n"
@@ -219,7 +224,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
-            "--depth", "--at", "--view-exposure", "--channel", "--range", "--overlay", "--legend"};
+            "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
@@ -258,6 +263,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (renderOnly && options.command != Command::Render)
             return fail("option " + flag + " belongs to `oasis render`");
         if (flag == "--at" && options.command != Command::Probe) return fail("option --at belongs to `oasis probe`");
+        if (flag == "--water-scene" && options.command != Command::Render && options.command != Command::Probe &&
+            options.command != Command::Window && options.command != Command::Default)
+            return fail("option --water-scene belongs to `oasis render`, `oasis probe` and the window");
         if (flag == "--size") {
             std::string error;
             if (!parseSize(value, options.scene.width, options.scene.height, &error)) return fail(error);
@@ -351,6 +359,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value == "texturing") options.stencilView = StencilViewPath::Texturing;
             else if (value == "read-back") options.stencilView = StencilViewPath::ReadBack;
             else return fail("--stencil-view expects texturing or read-back, got '" + value + "'");
+        } else if (flag == "--water-scene") {
+            std::optional<WaterScene> scene = parseWaterScene(value);
+            if (!scene) return fail("--water-scene expects " + std::string(kWaterSceneNames) + ", got '" + value + "'");
+            options.waterScene = *scene;
         } else if (flag == "--force") {
             std::string error;
             if (!parseForcedFallbacks(value, options.scene.force, error)) return fail("--force: " + error);

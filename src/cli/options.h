@@ -11,6 +11,7 @@
 #include "render/gbuffer_layout.h"
 #include "render/frame_setup.h"
 #include "render/pipeline.h"
+#include "render/view_fill.h"
 #include "scene/camera.h"
 
 namespace oasis {
@@ -51,6 +52,7 @@ struct Options {
     bool outDirGiven = false;        // --out-dir on the command line (bench writes to oasis-out/bench)
     bool quick = false;              // bench: the short smoke-test run
     std::optional<StencilViewPath> stencilView;
+    WaterScene waterScene = WaterScene::Direct;  // render, probe, window: what views show under the water
     std::string stopBefore;  // render: end the frame before this pass
     std::optional<std::pair<int, int>> probeAt;  // probe: the pixel, 0,0 top left
 };

@@ -213,7 +213,8 @@ Image encodingErrorImage(const Options& options, RenderSession& session, const E
     legend.scale = LegendScale::LinearRamp;
     legend.low = low;
     legend.high = high;
-    legend.notes = {line, "dark grey: no common surface (sky, or the two frames' flags differ)"};
+    legend.notes = {line, "dark grey: no common surface (sky, or the two frames' flags differ)",
+                    "under the water: " + renderer.viewScene().description};
     LegendRenderer legends;
     return stackImages(image, legends.draw(legend, image.width));
 }
@@ -242,7 +243,7 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     const FrameData& frame = renderer.lastFrame().data;
     LegendRenderer legends;
     Legend legend = viewLegend(*view, controls, statistics, frame.depthRange.x, frame.depthRange.y,
-                               frame.terrainGridCounts.w);
+                               frame.terrainGridCounts.w, waterNote(*view, renderer.viewScene().description));
     return stackImages(image, legends.draw(legend, image.width));
 }
 

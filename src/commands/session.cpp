@@ -68,6 +68,7 @@ std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     second->setDepthConvention(renderer->depthConvention());
     second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
     second->setStencilViewPath(renderer->stencilViewPath());
+    second->setViewWaterScene(renderer->viewWaterScene());
     second->setPlantAtlas(plantAtlas.get());
     return second;
 }
@@ -92,6 +93,7 @@ RenderSession::RenderSession(const Options& options, Shaders need)
     renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
     renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
+    renderer->setViewWaterScene(options.waterScene);
     plantPath = choosePlantInterpretation(caps, options.scene.noCompute, plantPathReason);
     if (directory.empty()) {
         plantPathReason += "; not built: no shader directory (looked in: " + searched + ")";

@@ -39,6 +39,7 @@ struct Configuration {
     size_t layoutIndex = 0;  // into gbufferLayouts()
     size_t depthIndex = 0;   // into depthConventions(): the one asked for
     std::string view = "final";
+    WaterScene waterScene = WaterScene::Direct;  // what the views show at water pixels (M)
     // Scene settings that pick program variants: the light path's, the mirrored ones, the plants'.
     int lightCount = 0;
     std::optional<LightsPath> lightsPath;
@@ -47,7 +48,7 @@ struct Configuration {
 
     bool operator==(const Configuration& o) const {
         return pipeline == o.pipeline && layoutIndex == o.layoutIndex && depthIndex == o.depthIndex &&
-               view == o.view && lightCount == o.lightCount && lightsPath == o.lightsPath &&
+               view == o.view && waterScene == o.waterScene && lightCount == o.lightCount && lightsPath == o.lightsPath &&
                reflections == o.reflections && vegetation == o.vegetation;
     }
     bool operator!=(const Configuration& o) const { return !(*this == o); }
@@ -163,7 +164,9 @@ void reloadShaders(Renderer& renderer, WindowState& state) {
 
 void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, WindowState& state,
                 SceneSettings& scene) {
-    if (action != GLFW_PRESS || ImGui::GetIO().WantCaptureKeyboard) return;
+    // Only a text field being edited keeps the keys: after a click on the panel (which focuses it)
+    // the view and pipeline keys must still work.
+    if (action != GLFW_PRESS || ImGui::GetIO().WantTextInput) return;
     const auto& views = debugViews();
     Configuration& chosen = state.chosen;
     if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
@@ -178,6 +181,8 @@ void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, Win
     if (key == GLFW_KEY_V) scene.vegetation.enabled = !scene.vegetation.enabled;
     if (key == GLFW_KEY_H) state.panelShown = !state.panelShown;
     if (key == GLFW_KEY_P) state.inspector.printHovered = true;
+    if (key == GLFW_KEY_M)
+        chosen.waterScene = chosen.waterScene == WaterScene::Direct ? WaterScene::Mirrored : WaterScene::Direct;
     if (key == GLFW_KEY_C) state.comparison.mode = CompareMode((int(state.comparison.mode) + 1) % kCompareModeCount);
 }
 
@@ -427,6 +432,22 @@ void drawDepthCombo(const Renderer& renderer, WindowState& state) {
     if (renderer.depthFellBack()) ImGui::TextWrapped("depth: %s", renderer.depthConventionReason().c_str());
 }
 
+// Which scene the views show under the water (render/view_fill.h), and what the view shows there.
+void drawWaterSceneControl(const Renderer& renderer, Configuration& chosen) {
+    int scene = chosen.waterScene == WaterScene::Direct ? 0 : 1;
+    ImGui::TextUnformatted("under the water (M):");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("direct", &scene, 0)) chosen.waterScene = WaterScene::Direct;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("mirrored", &scene, 1)) chosen.waterScene = WaterScene::Mirrored;
+    const ViewScene& shown = renderer.viewScene();
+    if (const DebugView* view = findDebugView(chosen.view))
+        ImGui::TextWrapped("%s", waterNote(*view, shown.description).c_str());
+    else if (!shown.description.empty())
+        ImGui::TextWrapped("the G-buffer, depth and error tiles under the water: %s", shown.description.c_str());
+    if (!shown.reason.empty()) ImGui::TextWrapped("(%s)", shown.reason.c_str());
+}
+
 void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
     // Wide enough for the probe's lines, as tall as the window allows (the sections collapse).
@@ -464,6 +485,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (const DebugView* view = findDebugView(chosen.view)) ImGui::TextWrapped("%s", view->legend.c_str());
     if (chosen.view != "final" && chosen.pipeline == PipelineKind::Forward)
         ImGui::TextWrapped("(forward draws no G-buffer; G-buffer views come from the deferred geometry passes)");
+    drawWaterSceneControl(renderer, chosen);
     drawInspectorPanel(state);
 
     float hour = float(scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds));
@@ -591,6 +613,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         renderer.setDepthConvention(depthConventions()[config.depthIndex]);
         renderer.configure(width, height, gbufferLayouts()[sides[s]->layoutIndex]);
         renderer.setViewExposure(state.inspector.exposureStops);
+        renderer.setViewWaterScene(config.waterScene);
         glFinish();
         auto start = std::chrono::steady_clock::now();
         if (c.passTimes) {
@@ -639,6 +662,7 @@ void drawConfiguration(RenderSession& session, const Configuration& config, cons
     state.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
     renderer.setViewExposure(state.inspector.exposureStops);
+    renderer.setViewWaterScene(config.waterScene);
     renderer.renderView(config.view);
     inspectFrame(renderer, config, state.inspector);
     renderer.present(width, height);
@@ -722,6 +746,7 @@ int runWindowApp(const Options& options) {
         WindowState state;
         state.fallbacks = session.fallbacks();
         state.chosen.pipeline = options.pipeline;
+        state.chosen.waterScene = options.waterScene;
         for (size_t i = 0; i < gbufferLayouts().size(); ++i)
             if (gbufferLayouts()[i].name == options.scene.gbuffer) state.chosen.layoutIndex = i;
         for (size_t i = 0; i < depthConventions().size(); ++i)

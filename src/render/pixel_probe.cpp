@@ -116,20 +116,18 @@ double srgbEncode(double linear) {
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
-// Which scene the G-buffer holds at a water pixel, and why.
+// Which scene the G-buffer and depth hold at a water pixel, and why (render/view_fill.h).
 std::string waterSceneAt(const PixelProbe& probe, const Renderer& renderer) {
     if ((probe.stencil & 0x7f) != kStencilWater) return {};
-    if (renderer.pipeline() == PipelineKind::Forward)
-        return "direct scene (the lakebed): a forward frame's G-buffer is filled by the deferred geometry "
-               "passes of the direct scene only";
-    if (!renderer.lastFrame().reflectionsActive)
-        return "direct scene (the lakebed): no mirrored G-buffer this frame (reflections off or the camera "
-               "under the water)";
-    if (probe.flags & OASIS_SURFACE_REFLECTED)
-        return "mirrored scene: inside the water the deferred pipeline clears the G-buffer and fills it again "
-               "with the mirrored scene for the reflection (REFLECTED flag; depth and stencil keep the water)";
-    return "mirrored scene's sky: inside the water the deferred pipeline clears the G-buffer for the "
-           "reflection and no mirrored surface landed on this pixel (the water reflects the sky here)";
+    const ViewScene& shown = renderer.viewScene();
+    std::string text = shown.description;
+    if (shown.scene == WaterScene::Mirrored)
+        text += probe.flags & OASIS_SURFACE_REFLECTED ? ": a mirrored surface (REFLECTED flag)"
+                                                      : ": no mirrored surface landed here (the water reflects the sky)";
+    if (!shown.reason.empty()) text += "; " + shown.reason;
+    else if (shown.scene) text += std::string("; --water-scene ") + waterSceneName(*shown.scene) + " (the other: " +
+                                  (*shown.scene == WaterScene::Direct ? "mirrored" : "direct") + ")";
+    return text;
 }
 
 // The GPU half: shaders/probe.frag writes its slots into an 8x1 float target.
@@ -292,7 +290,7 @@ std::string probeText(const PixelProbe& p) {
     add("  radiance       %s (linear HDR)\n", vec(glm::dvec4(p.radiance)).c_str());
     add("  reflection     %s (linear HDR)\n", vec(glm::dvec4(p.reflection)).c_str());
     add("  final          %d, %d, %d, %d (8-bit, displayed)\n", p.final.r, p.final.g, p.final.b, p.final.a);
-    if (!p.waterScene.empty()) add("  water          the G-buffer holds the %s\n", p.waterScene.c_str());
+    if (!p.waterScene.empty()) add("  water          the G-buffer and depth hold %s\n", p.waterScene.c_str());
     if (p.hasEncodingError) {
         if (std::isfinite(p.normalErrorDegrees))
             add("  encoding       against full (deferred): normal %.4g degrees, position %.4g units = %.3g depth steps\n",

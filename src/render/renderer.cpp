@@ -63,7 +63,7 @@ void Renderer::setDepthConvention(const DepthConvention& requested) {
         // Built before anything changes: a failed allocation throws and keeps the old targets,
         // convention and reason.
         targets_ = std::make_unique<FrameTargets>(targets_->layout(), *use, targets_->width(), targets_->height());
-        gbufferCurrent_ = false;
+        forgetGBuffer();
     }
     depthRequested_ = &requested;
     depthReason_ = std::move(reason);
@@ -114,7 +114,7 @@ void Renderer::configure(int width, int height, const GBufferLayout& layout) {
     // memory) the renderer keeps working at its previous size.
     auto replacement = std::make_unique<FrameTargets>(layout, *depthInUse_, width, height);
     targets_ = std::move(replacement);
-    gbufferCurrent_ = false;
+    forgetGBuffer();
 }
 
 void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
@@ -203,11 +203,35 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         if (!pass.sceneStep().empty()) stepsRan_.push_back(pass.sceneStep());
         if (afterEach) afterEach(pass);
     });
-    gbufferCurrent_ = pipeline.writes(Target::Albedo);
+    gbufferHolds_.reset();
+    stoppedBefore_ = stopBefore;
+    stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(Target::Albedo);
+}
+
+void Renderer::forgetGBuffer() {
+    gbufferHolds_.reset();
+    stoppedGBufferCurrent_ = false;
 }
 
 void Renderer::ensureGBuffer() {
-    if (gbufferCurrent_) return;
+    if (!stoppedBefore_.empty()) {
+        fillStoppedFrame();
+        return;
+    }
+    if (gbufferHolds_ == viewWaterScene_) return;
+    PassContext passContext = context();
+    FrameClipControl clipControl(targets_->depth());
+    viewScene_ = viewFill_.run(passContext, viewWaterScene_);
+    gbufferHolds_ = viewWaterScene_;
+}
+
+void Renderer::fillStoppedFrame() {
+    viewScene_ = ViewScene{std::nullopt,
+                           active_ == PipelineKind::Forward
+                               ? "the direct scene's steps that ran before " + stoppedBefore_
+                               : "what the frame left there before " + stoppedBefore_,
+                           "the frame was stopped early (--stop-before): its targets are shown as they were"};
+    if (stoppedGBufferCurrent_) return;
     PassContext passContext = context();
     // Forward draws no G-buffer: fill it for the view with the deferred passes of the direct scene
     // that do not shade, each only if the forward pass of the same scene step ran this frame, so a
@@ -232,7 +256,7 @@ void Renderer::ensureGBuffer() {
             filled = true;
         }
     }
-    gbufferCurrent_ = true;
+    stoppedGBufferCurrent_ = true;
 }
 
 void Renderer::renderView(const std::string& viewName) {
@@ -240,9 +264,9 @@ void Renderer::renderView(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view && viewName != kOverviewName)
         throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
-    if (viewName == kOverviewName || (view && readsGBuffer(*view))) ensureGBuffer();
+    if (viewName == kOverviewName || (view && readsSceneSurfaces(*view))) ensureGBuffer();
     if (viewName == kOverviewName)
-        debugViews_.drawOverview(passContext, stencilPath_);
+        debugViews_.drawOverview(passContext, stencilPath_, viewScene_.scene ? waterSceneName(*viewScene_.scene) : "as left");
     else
         debugViews_.drawView(passContext, *view, stencilPath_);
 }
@@ -251,7 +275,7 @@ std::vector<float> Renderer::readViewValues(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
                                            debugViewNames() + ")");
-    if (readsGBuffer(*view)) ensureGBuffer();
+    if (readsSceneSurfaces(*view)) ensureGBuffer();
     PassContext passContext = context();
     return debugViews_.readValues(passContext, *view, stencilPath_);
 }
@@ -259,7 +283,7 @@ std::vector<float> Renderer::readViewValues(const std::string& viewName) {
 void Renderer::renderFloor() {
     PassContext passContext = context();
     floor_.run(passContext);
-    gbufferCurrent_ = false;
+    forgetGBuffer();
 }
 
 void Renderer::present(int windowWidth, int windowHeight) {

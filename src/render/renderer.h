@@ -19,6 +19,7 @@
 #include "render/scene_geometry.h"
 #include "render/shader_library.h"
 #include "render/vegetation_buffers.h"
+#include "render/view_fill.h"
 #include "scene/vegetation.h"
 
 namespace oasis {
@@ -81,9 +82,14 @@ public:
     // The numbers behind a view (not the overview) of the last frame: its viewValue() per pixel,
     // RGBA floats, bottom row first; the table's `values` name the channels.
     std::vector<float> readViewValues(const std::string& viewName);
-    // Makes the G-buffer hold the last frame: after a forward frame, fills it with the deferred
-    // geometry passes of the direct scene (what the G-buffer views and the probe read).
+    // Makes the G-buffer, depth and stencil hold the last frame's surfaces with the water scene the
+    // views ask for (render/view_fill.h): what the views, the probe and the encoding error read.
+    // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
+    // that ran). viewScene() says what the views show at water pixels and why.
     void ensureGBuffer();
+    void setViewWaterScene(WaterScene scene) { viewWaterScene_ = scene; }
+    WaterScene viewWaterScene() const { return viewWaterScene_; }
+    const ViewScene& viewScene() const { return viewScene_; }
     // The timing floor (passes/floor_pass.h) at the current size and layout; overwrites the targets.
     void renderFloor();
     // Shows the Display target in the bound window's framebuffer of the given size.
@@ -115,6 +121,8 @@ private:
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
+    void forgetGBuffer();
+    void fillStoppedFrame();
 
     ShaderLibrary& shaders_;
     SceneGeometry geometry_;
@@ -143,7 +151,12 @@ private:
     bool clipControlAvailable_ = false;
     std::string clipControlReason_;
     std::string depthReason_;
-    bool gbufferCurrent_ = false;  // whether the G-buffer holds the last frame
+    ViewFill viewFill_;
+    WaterScene viewWaterScene_ = WaterScene::Direct;
+    std::optional<WaterScene> gbufferHolds_;  // the fill the G-buffer holds for the last frame, if any
+    ViewScene viewScene_;
+    std::string stoppedBefore_;  // the pass the last frame stopped before, "" for a whole frame
+    bool stoppedGBufferCurrent_ = false;  // a stopped frame's G-buffer already holds what it reached
     std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
 };
 

@@ -115,6 +115,7 @@ const std::vector<Flag>& flags() {
         {"--range", Value::Range, -10, 10},
         {"--overlay", Value::Choice, 0, 0, {"nan", "inf", "negative", "nan,inf", "nan,inf,negative", "none"}},
         {"--legend", Value::Choice, 0, 0, {"on", "off"}},
+        {"--water-scene", Value::Choice, 0, 0, {"direct", "mirrored"}},
         {"--quick", Value::None},
         {"--help", Value::None},
         {"-h", Value::None},

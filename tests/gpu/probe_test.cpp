@@ -69,8 +69,10 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     const GBufferLayout& layout = layoutNamed(layoutName);
     renderer.configure(kWidth, kHeight, layout);
     renderer.setPipeline(pipeline);
+    // Both water scenes are checked: the mirrored one in deferred, the direct one (the lakebed) in forward.
+    renderer.setViewWaterScene(pipeline == PipelineKind::Deferred ? WaterScene::Mirrored : WaterScene::Direct);
     renderer.renderFrame(scene);
-    renderer.ensureGBuffer();  // a forward frame's G-buffer, as the probe and the views fill it
+    renderer.ensureGBuffer();  // the views' fill of the water scene, as the probe and the views read it
 
     CpuFrame cpu{renderer.readTarget(Target::Albedo), renderer.readTarget(Target::Normal),
                  renderer.readTarget(Target::Info), renderer.readSurfacePositions(),
@@ -103,7 +105,7 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
         }
     for (PixelKind kind : {PixelKind::Sky, PixelKind::Terrain, PixelKind::Plant, PixelKind::Lit})
         EXPECT_GT(found[int(kind)], 0) << "no " << kindName(kind) << " pixel in the probe scene";
-    // Deferred keeps the mirrored scene in the G-buffer inside the water; forward the lakebed.
+    // The water pixels hold the scene asked for above.
     PixelKind water = pipeline == PipelineKind::Deferred ? PixelKind::WaterMirrored : PixelKind::WaterDirect;
     EXPECT_GT(found[int(water)], 0) << "no " << kindName(water) << " pixel";
 
