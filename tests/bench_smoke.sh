@@ -20,6 +20,8 @@ for key in pipeline layout width height lights ms_median floor_ratio psnr_db byt
     n=$(grep '^ *{"pipeline": ' "$json" | grep -c "\"$key\": " || true)
     test "$n" -eq "$configs" || { echo "key $key in $n of $configs configs"; exit 1; }
 done
+grep -Eq '"frame_clock": "wall-glfinish", "pass_clock": "(gpu-timer-query|wall-glfinish)", "pass_clock_reason": "timer queries (not )?trusted' "$json" ||
+    { echo "bench.json does not say which clock timed the passes and why"; exit 1; }
 grep -q '"pareto": true' "$json" || { echo "no configuration on the Pareto frontier"; exit 1; }
 counts=$(grep '^ *{"pipeline": ' "$json" | grep -o '"lights": [0-9]*' | sort -u | wc -l)
 test "$counts" -ge 2 || { echo "expected configurations at two light counts at least, found $counts"; exit 1; }

@@ -49,15 +49,10 @@ struct Floor {
     double ms;
 };
 
-// How the run was timed, in words: timer queries are never used; on software rasterisers they are
-// known to be wrong (llvmpipe's GL_TIME_ELAPSED reads 0.01-0.15 ms for passes of many ms).
-std::string timingNote(const std::string& renderer) {
-    bool software = renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos ||
-                    renderer.find("lavapipe") != std::string::npos || renderer.find("swrast") != std::string::npos;
-    return software ? "wall clock around glFinish; GPU timer queries not used: they are not trustworthy on " +
-                          renderer + " (a software rasteriser)"
-                    : "wall clock around glFinish; GPU timer queries not used (" + renderer +
-                          " is not a known software rasteriser, but one method keeps runs comparable)";
+// How the run was timed, in words: whole frames and the floor by wall time around glFinish on
+// every driver (ratios compare like with like); passes by the clock the start-up check chose.
+std::string timingNote(const TimingClock& clock) {
+    return "frames: wall clock around glFinish; passes: " + clock.describe();
 }
 
 SceneSettings frameScene(const SceneSettings& base, const std::vector<QualityKnob>& knobs,
@@ -154,8 +149,16 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
             }
         for (size_t c = 0; c < group.size(); ++c) {
             group[c].renderer->setPipeline(group[c].result->config.pipeline);
-            for (int i = 0; i < plan.passFrames; ++i)
-                for (const auto& [name, ms] : group[c].renderer->renderFrameTimingPasses(scenes[c])) {
+            std::vector<PassTimes> timed;
+            if (plan.clock.gpuTimers) {
+                PassTimerQueries queries(plan.passFrames + 1);
+                for (int i = 0; i < plan.passFrames; ++i) queries.timeFrame(*group[c].renderer, scenes[c]);
+                timed = queries.drain();
+            } else {
+                for (int i = 0; i < plan.passFrames; ++i) timed.push_back(group[c].renderer->renderFrameTimingPasses(scenes[c]));
+            }
+            for (const PassTimes& frameTimes : timed)
+                for (const auto& [name, ms] : frameTimes) {
                     if (!passSamples[c].count(name)) passOrder[c].push_back(name);
                     passSamples[c][name].push_back(ms);
                 }
@@ -208,7 +211,9 @@ std::string benchJson(const std::vector<BenchResult>& results, const std::vector
                       const std::vector<DepthPrecision>& depthPrecision) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
     std::string json = "{\"renderer\": " + jsonString(renderer) + ", \"timing\": \"wall clock around glFinish\"" +
-                       ", \"timing_note\": " + jsonString(timingNote(renderer)) +
+                       ", \"timing_note\": " + jsonString(timingNote(plan.clock)) +
+                       ", \"frame_clock\": \"wall-glfinish\", \"pass_clock\": " + jsonString(plan.clock.name()) +
+                       ", \"pass_clock_reason\": " + jsonString(plan.clock.reason) +
                        ", \"quick\": " + (options.quick ? "true" : "false") +
                        ", \"timed_frames_per_frame\": " + std::to_string(plan.timedFrames) +
                        ", \"pass_frames_per_frame\": " + std::to_string(plan.passFrames) + ", \"frames\": [";
@@ -321,6 +326,7 @@ int runBenchCommand(const Options& options) {
         Renderer& renderer = *session.renderer;
         std::string rendererName = queryContextInfo().renderer;
         BenchPlan plan = benchPlan(options);
+        plan.clock = session.timingClock();
         const std::vector<QualityKnob>& knobs = qualityKnobs();
         const GBufferLayout& reference = findGBufferLayout("full") ? *findGBufferLayout("full") : gbufferLayouts()[0];
         std::vector<std::string> layouts = {reference.name};  // first: the others are compared with it
@@ -351,7 +357,7 @@ int runBenchCommand(const Options& options) {
                      "  %s\n",
                      configs.size(), plan.sizes.size(), plan.lightCounts.size(), frames.size(),
                      queryContextInfo().summary().c_str(),
-                     timingNote(rendererName).c_str(), describePlantAtlas(session).c_str());
+                     timingNote(plan.clock).c_str(), describePlantAtlas(session).c_str());
         // A renderer per layout and depth convention (the session's for the default layout with
         // standard depth), so that configurations timed in turn never reallocate targets; forward
         // uses the default layout's.

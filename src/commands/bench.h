@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/gpu_timer.h"
 #include "cli/options.h"
 
 namespace oasis {
@@ -16,9 +17,10 @@ struct BenchPlan {
     std::vector<int> lightCounts;    // bench_report.h: benchLightCounts()
     std::vector<double> frameTimes;  // seconds along defaultCameraPath; the pose is fixed per frame
     int timedFrames = 7;             // per fixed frame, after warm-up
-    int passFrames = 3;              // per fixed frame, glFinish after every pass
+    int passFrames = 3;              // per fixed frame, by `clock`: timer queries or glFinish after every pass
     int floorFrames = 9;
     bool cheapestOnly = false;
+    TimingClock clock;               // how passes are timed: measured at the run's start
 };
 BenchPlan benchPlan(const Options& options);
 

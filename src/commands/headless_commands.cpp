@@ -9,6 +9,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "commands/bench_report.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
 #include "render/file_output.h"
@@ -25,6 +26,7 @@ struct Comparison {
     Image forward, deferred;
     using PassTimes = std::vector<std::pair<std::string, double>>;
     PassTimes forwardPasses, deferredPasses;  // only with --passes
+    TimingClock clock;                        // how the passes were timed (measured with --passes)
 };
 
 bool ensureDirectory(const std::string& path, std::string& error) {
@@ -52,10 +54,11 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     result.deferredMs = medianFrameMs(renderer, session.scene, timingFrames);
     result.floorMs = medianFloorMs(renderer, timingFrames);
     if (passTimes) {
+        result.clock = session.timingClock();
         renderer.setPipeline(PipelineKind::Forward);
-        result.forwardPasses = medianPassMs(renderer, session.scene, timingFrames);
+        result.forwardPasses = medianPassMs(renderer, session.scene, timingFrames, result.clock);
         renderer.setPipeline(PipelineKind::Deferred);
-        result.deferredPasses = medianPassMs(renderer, session.scene, timingFrames);
+        result.deferredPasses = medianPassMs(renderer, session.scene, timingFrames, result.clock);
     }
     renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
     return result;
@@ -110,9 +113,11 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
     for (const auto& [pipeline, passes] : {std::pair{"forward", &c.forwardPasses}, {"deferred", &c.deferredPasses}}) {
         if (passes->empty()) continue;
-        std::printf("  %s per pass (median ms, glFinish after each):\n", pipeline);
+        std::printf("  %s per pass (median ms, %s):\n", pipeline,
+                    c.clock.gpuTimers ? "GPU timer queries" : "wall time, glFinish after each");
         for (const auto& [name, ms] : *passes) std::printf("    %-30s %7.2f\n", name.c_str(), ms);
     }
+    if (!c.forwardPasses.empty()) std::printf("  pass clock: %s\n", c.clock.describe().c_str());
 }
 
 std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) {
@@ -124,6 +129,12 @@ std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) 
         json += (i ? ", \"" : "\"") + passes[i].first + "\": " + number;
     }
     return json + "}";
+}
+
+// Which clock timed the passes and why (only with --passes: the check costs frames).
+std::string passClockJson(const Comparison& c) {
+    if (c.forwardPasses.empty()) return {};
+    return ", \"pass_clock\": " + jsonString(c.clock.name()) + ", \"pass_clock_reason\": " + jsonString(c.clock.reason);
 }
 
 void printJson(const Options& options, const RenderSession& session, const Comparison& c) {
@@ -139,7 +150,8 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
-                "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d%s%s}\n",
+                "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
+                "\"frame_clock\": \"wall-glfinish\"%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
@@ -148,7 +160,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
                 session.renderer->lightsDrawn(), lightsPathName(session.renderer->lightsPath()),
                 session.renderer->lightsPathReason().c_str(), session.renderer->lightsDropped(),
-                passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
+                passClockJson(c).c_str(), passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
                 passTimesJson("deferred_passes_ms", c.deferredPasses).c_str());
 }
 

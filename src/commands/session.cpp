@@ -59,6 +59,11 @@ MaxGlVersion maxGlVersionFor(const SceneOptions& options) {
     return options.force.gl33 ? MaxGlVersion{3, 3} : MaxGlVersion{};
 }
 
+const TimingClock& RenderSession::timingClock() {
+    if (!measuredClock) measuredClock = measureTimingClock(*renderer, scene);
+    return *measuredClock;
+}
+
 std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     auto second = std::make_unique<Renderer>(*shaders, scene);
     std::string whyNoSsbo, clipControlReason;
@@ -207,23 +212,17 @@ double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames)
 }
 
 std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, const SceneSettings& scene,
-                                                         int frames) {
+                                                         int frames, const TimingClock& clock) {
     renderer.renderFrame(scene);  // warm-up
-    std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> samples;
-    for (int i = 0; i < frames; ++i)
-        for (const auto& [name, ms] : renderer.renderFrameTimingPasses(scene)) {
-            if (!samples.count(name)) order.push_back(name);
-            samples[name].push_back(ms);
-        }
-    std::vector<std::pair<std::string, double>> medians;
-    for (const std::string& name : order) {
-        std::vector<double>& v = samples[name];
-        std::sort(v.begin(), v.end());
-        size_t n = v.size();
-        medians.emplace_back(name, n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+    std::vector<PassTimes> timed;
+    if (clock.gpuTimers) {
+        PassTimerQueries queries(frames + 1);  // room for every frame: none dropped, read at the end
+        for (int i = 0; i < frames; ++i) queries.timeFrame(renderer, scene);
+        timed = queries.drain();
+    } else {
+        for (int i = 0; i < frames; ++i) timed.push_back(renderer.renderFrameTimingPasses(scene));
     }
-    return medians;
+    return medianPassTimes(timed);
 }
 
 double medianFloorMs(Renderer& renderer, int frames) {

@@ -2,12 +2,14 @@
 // scene settings, pick capability-dependent paths (and say why), and time frames.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "context/gl_context.h"
 
 #include "cli/options.h"
 #include "gl/capabilities.h"
+#include "render/gpu_timer.h"
 #include "render/renderer.h"
 
 namespace oasis {
@@ -35,6 +37,7 @@ struct RenderSession {
     std::string plantPathReason;            // which interpretation path and why, e.g. "gpu (...)"
 
     PlantInterpretation plantPath = PlantInterpretation::Cpu;  // the path chosen (the atlas may have fallen back)
+    std::optional<TimingClock> measuredClock;  // timingClock()'s, once measured
 
     // Required: no shader directory is an error. CapabilitiesOnly (`oasis caps`): without one the
     // session still measures and reports everything; only the plant atlas, the one thing it would
@@ -46,6 +49,10 @@ struct RenderSession {
     // atlas as `renderer` (the window's comparison draws its second side with it, so neither side
     // reallocates its targets every frame).
     std::unique_ptr<Renderer> makeRenderer() const;
+
+    // Whether per-pass times come from GPU timer queries here: measured once, on first use, with
+    // the renderer's active pipeline at its size (render/gpu_timer.h).
+    const TimingClock& timingClock();
 
     // Every feature oasis can use: used here or not, and why (what `oasis caps` prints).
     std::vector<gl::FeatureReport> features() const;
@@ -63,10 +70,14 @@ std::string describeVegetation(const Renderer& renderer);
 std::string describeLights(const Renderer& renderer);
 
 // Median wall-clock milliseconds of `frames` frames of the active pipeline, each ended by
-// glFinish (GPU timer queries are not trustworthy on software rasterisers), after two warm-ups.
+// glFinish, after two warm-ups. Whole frames are always timed this way (the floor too), so the
+// ratios to the floor compare like with like on every driver.
 double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames);
 double medianFloorMs(Renderer& renderer, int frames);
-// Median wall milliseconds of each pass of the active pipeline over `frames` frames, in pass order.
-std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, const SceneSettings& scene, int frames);
+// Median milliseconds of each pass of the active pipeline over `frames` frames, in pass order: by
+// GPU timer queries where `clock` trusts them (no glFinish between passes), else wall time with a
+// glFinish after each pass (render/gpu_timer.h).
+std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, const SceneSettings& scene, int frames,
+                                                         const TimingClock& clock);
 
 }  // namespace oasis

@@ -278,7 +278,8 @@ void drawComparePanel(WindowState& state) {
         ImGui::EndCombo();
     }
     if (!showsDifference(c.mode)) ImGui::SliderFloat("divider (or drag it)", &c.divider, 0.0f, 1.0f, "%.2f");
-    ImGui::Checkbox("per-pass times (glFinish after each pass)", &c.passTimes);
+    ImGui::Checkbox("per-pass times", &c.passTimes);
+    if (c.passTimes && c.clock) ImGui::TextWrapped("pass clock: %s", c.clock->describe().c_str());
     ImGui::Text("A %-24s median %7.2f ms", c.a.label.c_str(), c.msA.median());
     ImGui::Text("B %-24s median %7.2f ms", c.b.label.c_str(), c.msB.median());
     ImGui::TextDisabled("medians of the last %zu frames each; reset when a setting changes", c.msA.count());
@@ -605,6 +606,8 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
     const CompareSide* sides[2] = {&c.a, &c.b};
     RollingMedian* medians[2] = {&c.msA, &c.msB};
     std::vector<std::pair<std::string, double>>* passes[2] = {&c.passesA, &c.passesB};
+    PassTimerQueries* queries[2] = {&c.queriesA, &c.queriesB};
+    if (c.passTimes && !c.clock) c.clock = session.timingClock();  // once: a few frames of each clock
     Image images[2];
     state.frameMs = 0.0;
     for (int s = 0; s < 2; ++s) {
@@ -616,7 +619,12 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         renderer.setViewWaterScene(config.waterScene);
         glFinish();
         auto start = std::chrono::steady_clock::now();
-        if (c.passTimes) {
+        if (c.passTimes && c.clock->gpuTimers) {
+            // Queries read a few frames later, never waited for: the table lags by those frames.
+            queries[s]->timeFrame(renderer, scene);
+            glFinish();
+            *passes[s] = queries[s]->latest();
+        } else if (c.passTimes) {
             *passes[s] = renderer.renderFrameTimingPasses(scene);
         } else {
             renderer.renderFrame(scene);

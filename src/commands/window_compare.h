@@ -4,10 +4,12 @@
 // the configuration or the scene's settings change). GL-free but for the renderer it drives.
 #pragma once
 #include <deque>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "render/gpu_timer.h"
 #include "render/image.h"
 #include "render/renderer.h"
 
@@ -48,7 +50,9 @@ struct WindowComparison {
     CompareMode mode = CompareMode::Off;
     float divider = 0.5f;       // split: where side B starts, 0..1 of the width
     size_t layoutB = 0;         // layouts modes: the second layout (gbufferLayouts() index)
-    bool passTimes = false;     // time each pass (glFinish after each) for the table
+    bool passTimes = false;     // time each pass for the table, by `clock`
+    std::optional<TimingClock> clock;  // measured when the table is first asked for
+    PassTimerQueries queriesA, queriesB;  // the sides' non-stalling queries, where `clock` trusts them
     RollingMedian msA, msB;
     std::string settingsKey;    // what the medians were measured for
     ImageDifference difference; // of the displayed sides

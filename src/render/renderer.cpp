@@ -159,6 +159,10 @@ void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBe
     runFrame(scene, stopBefore, {});
 }
 
+void Renderer::renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach) {
+    runFrame(scene, {}, afterEach);
+}
+
 std::vector<std::pair<std::string, double>> Renderer::renderFrameTimingPasses(const SceneSettings& scene) {
     using Clock = std::chrono::steady_clock;
     std::vector<std::pair<std::string, double>> times;

@@ -76,6 +76,8 @@ public:
     // The same frame with glFinish after every pass: wall milliseconds per pass, in order. The
     // synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
     std::vector<std::pair<std::string, double>> renderFrameTimingPasses(const SceneSettings& scene);
+    // The frame, calling `afterEach` after every pass that ran (render/gpu_timer.h's queries).
+    void renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach);
     // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
     // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
     void renderView(const std::string& viewName);

@@ -56,7 +56,7 @@ TEST_F(GpuTest, DISABLED_LightsTable) {
         }
         renderer.setPipeline(PipelineKind::Deferred);
         double volumes = 0.0, fullScreen = 0.0;
-        for (const auto& [name, passMs] : medianPassMs(renderer, scene, std::max(1, frames / 2))) {
+        for (const auto& [name, passMs] : medianPassMs(renderer, scene, std::max(1, frames / 2), TimingClock{})) {
             if (name.rfind("LightVolumePass", 0) == 0) volumes += passMs;
             if (name == "LightingPass") fullScreen = passMs;
         }

@@ -1,0 +1,178 @@
+// The timer-query check and the non-stalling per-pass timer.
+#include "render/gpu_timer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "render/renderer.h"
+
+namespace oasis {
+namespace {
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+bool hasTimerQueries() {
+    GLint bits = 0;
+    glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
+    return bits > 0;
+}
+
+}  // namespace
+
+std::string TimingClock::describe() const {
+    return (gpuTimers ? "GPU timer queries (" : "wall time around glFinish (") + reason + ")";
+}
+
+TimingClock judgeTimerQueries(const PassTimes& queries, const PassTimes& wall) {
+    TimingClock clock;
+    if (queries.size() != wall.size() || wall.empty()) {
+        clock.reason = "timer queries not trusted: the check timed different passes each way";
+        return clock;
+    }
+    double wallSum = 0.0, querySum = 0.0, apart = 0.0, worst = -1.0;
+    size_t worstPass = 0;
+    for (size_t i = 0; i < wall.size(); ++i) {
+        if (queries[i].first != wall[i].first) {
+            clock.reason = "timer queries not trusted: the check timed different passes each way";
+            return clock;
+        }
+        double difference = std::fabs(queries[i].second - wall[i].second);
+        wallSum += wall[i].second;
+        querySum += queries[i].second;
+        apart += difference;
+        if (difference > worst) worst = difference, worstPass = i;
+    }
+    clock.disagreement = wallSum > 0.0 ? apart / wallSum : 1.0;
+    clock.gpuTimers = clock.disagreement <= kTimerDisagreement;
+    char text[512];
+    std::snprintf(text, sizeof(text),
+                  "%s: per pass, GL_TIME_ELAPSED (no glFinish between passes) and wall time with a glFinish after each "
+                  "differ by %.0f%% of the frame (limit %.0f%%; frame %.3g ms by queries, %.3g ms by wall time; most "
+                  "apart: %s, %.3g ms against %.3g ms)",
+                  clock.gpuTimers ? "timer queries trusted" : "timer queries not trusted", 100.0 * clock.disagreement,
+                  100.0 * kTimerDisagreement, querySum, wallSum, wall[worstPass].first.c_str(),
+                  queries[worstPass].second, wall[worstPass].second);
+    clock.reason = text;
+    return clock;
+}
+
+TimingClock measureTimingClock(Renderer& renderer, const SceneSettings& scene, int frames) {
+    if (!hasTimerQueries()) {
+        TimingClock clock;
+        clock.reason = "this context has no GL_TIME_ELAPSED timer queries (GL_QUERY_COUNTER_BITS is 0)";
+        return clock;
+    }
+    renderer.renderFrame(scene);  // warm-up: programs built, buffers sized
+    PassTimerQueries queries(frames + 1);
+    for (int i = 0; i < frames; ++i) queries.timeFrame(renderer, scene);
+    std::vector<PassTimes> queried = queries.drain(), walled;
+    for (int i = 0; i < frames; ++i) walled.push_back(renderer.renderFrameTimingPasses(scene));
+    return judgeTimerQueries(medianPassTimes(queried), medianPassTimes(walled));
+}
+
+PassTimes medianPassTimes(const std::vector<PassTimes>& frames) {
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<double>> samples;
+    for (const PassTimes& frame : frames)
+        for (const auto& [name, ms] : frame) {
+            if (!samples.count(name)) order.push_back(name);
+            samples[name].push_back(ms);
+        }
+    PassTimes medians;
+    for (const std::string& name : order) medians.emplace_back(name, median(samples[name]));
+    return medians;
+}
+
+PassTimerQueries::Query::Query() { glGenQueries(1, &name); }
+PassTimerQueries::Query::~Query() {
+    if (name) glDeleteQueries(1, &name);
+}
+
+PassTimerQueries::PassTimerQueries(int framesInFlight) : framesInFlight_(std::max(1, framesInFlight)) {}
+
+void PassTimerQueries::timeFrame(Renderer& renderer, const SceneSettings& scene) {
+    // Read what has landed first; a frame still pending when the ring is full is given up on,
+    // so the caller never waits for the GPU.
+    collectAvailable();
+    if (int(pending_.size()) >= framesInFlight_) {
+        for (auto& [name, query] : pending_.front().passes) spare_.push_back(std::move(query));
+        pending_.pop_front();
+        ++dropped_;
+    }
+    PendingFrame frame;
+    auto nextQuery = [&] {
+        if (spare_.empty()) return Query();
+        Query query = std::move(spare_.back());
+        spare_.pop_back();
+        return query;
+    };
+    // GL_TIME_ELAPSED queries cannot nest: one runs from the frame's start to the end of the first
+    // pass, the next from there to the end of the second, and so on (the gaps are the CPU's).
+    Query running = nextQuery();
+    glBeginQuery(GL_TIME_ELAPSED, running.name);
+    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+        glEndQuery(GL_TIME_ELAPSED);
+        frame.passes.emplace_back(pass.name(), std::move(running));
+        running = nextQuery();
+        glBeginQuery(GL_TIME_ELAPSED, running.name);
+    });
+    glEndQuery(GL_TIME_ELAPSED);  // the frame's tail after its last pass: not a pass
+    spare_.push_back(std::move(running));
+    pending_.push_back(std::move(frame));
+}
+
+bool PassTimerQueries::collect(PendingFrame& frame, bool wait, PassTimes& out) {
+    if (!wait) {
+        // The last query ends last: when it is available, all of the frame's are.
+        if (frame.passes.empty()) return true;
+        GLuint available = GL_FALSE;
+        glGetQueryObjectuiv(frame.passes.back().second.name, GL_QUERY_RESULT_AVAILABLE, &available);
+        if (!available) return false;
+    }
+    out.clear();
+    for (auto& [name, query] : frame.passes) {
+        GLuint64 nanoseconds = 0;
+        glGetQueryObjectui64v(query.name, GL_QUERY_RESULT, &nanoseconds);
+        out.emplace_back(name, double(nanoseconds) * 1e-6);
+        spare_.push_back(std::move(query));
+    }
+    frame.passes.clear();
+    return true;
+}
+
+void PassTimerQueries::collectAvailable() {
+    PassTimes ready;
+    while (!pending_.empty() && collect(pending_.front(), false, ready)) {
+        latest_ = ready;
+        read_.push_back(ready);
+        if (read_.size() > kKeptFrames) read_.pop_front();
+        pending_.pop_front();
+    }
+}
+
+const PassTimes& PassTimerQueries::latest() {
+    collectAvailable();
+    return latest_;
+}
+
+std::vector<PassTimes> PassTimerQueries::drain() {
+    std::vector<PassTimes> frames(read_.begin(), read_.end());
+    read_.clear();
+    for (PendingFrame& frame : pending_) {
+        PassTimes times;
+        collect(frame, true, times);
+        frames.push_back(times);
+    }
+    pending_.clear();
+    if (!frames.empty()) latest_ = frames.back();
+    return frames;
+}
+
+}  // namespace oasis
