@@ -15,6 +15,7 @@
 #include "render/file_output.h"
 #include "render/encoding_error.h"
 #include "render/pixel_probe.h"
+#include "debug/error_image.h"
 #include "debug/view_legend.h"
 
 namespace oasis {
@@ -206,15 +207,7 @@ Image encodingErrorImage(const Options& options, RenderSession& session, const E
     const std::vector<float>& values = error.*(view.values);
     ErrorSummary summary = summarizeError(values);
     auto [low, high] = options.viewControls.range.value_or(std::pair{0.0, summary.max > 0.0 ? summary.max : 1.0});
-    Image image(error.width, error.height);
-    for (int y = 0; y < error.height; ++y)
-        for (int x = 0; x < error.width; ++x) {
-            float v = values[size_t(y) * size_t(error.width) + size_t(x)];
-            uint8_t* out = image.pixel(x, error.height - 1 - y);
-            if (std::isfinite(v)) depthRampColour(float((double(v) - low) / (high - low)), out);
-            else out[0] = out[1] = out[2] = 40;
-            out[3] = 255;
-        }
+    Image image = encodingErrorPicture(values, error.width, error.height, low, high);
     char line[256];
     std::snprintf(line, sizeof(line), "%s, %s against full: median %.4g, 99%% %.4g, max %.4g over %ld surface pixels",
                   view.name.c_str(), error.layout.c_str(), summary.median, summary.p99, summary.max, summary.count);

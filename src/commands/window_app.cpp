@@ -25,8 +25,10 @@
 #include "commands/session.h"
 #include "commands/window_compare.h"
 #include "context/gl_context.h"
+#include "debug/error_image.h"
 #include "debug/debug_views.h"
 #include "debug/view_controls.h"
+#include "render/encoding_error.h"
 #include "render/pixel_probe.h"
 
 namespace oasis {
@@ -104,6 +106,7 @@ struct WindowState {
     WindowComparison comparison;
     std::unique_ptr<Renderer> sideB;  // the comparison's second renderer, made when first needed
     bool draggingDivider = false;
+    std::string errorViewSummary;  // an encoding-error view's numbers, for the panel
     WindowCounts counts;
 };
 
@@ -135,6 +138,7 @@ std::vector<std::string> viewNames() {
     std::vector<std::string> names;
     for (const DebugView& view : debugViews()) names.push_back(view.name);
     names.push_back(kOverviewName);
+    for (const EncodingErrorView& view : encodingErrorViews()) names.push_back(view.name);
     return names;
 }
 
@@ -484,6 +488,11 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         ImGui::EndCombo();
     }
     if (const DebugView* view = findDebugView(chosen.view)) ImGui::TextWrapped("%s", view->legend.c_str());
+    if (const EncodingErrorView* view = findEncodingErrorView(chosen.view)) {
+        ImGui::TextWrapped("%s (deferred, this layout against full; ramp from 0 to the frame's largest error, "
+                           "dark grey: no common surface)", view->legend.c_str());
+        if (!state.errorViewSummary.empty()) ImGui::TextWrapped("%s", state.errorViewSummary.c_str());
+    }
     if (chosen.view != "final" && chosen.pipeline == PipelineKind::Forward)
         ImGui::TextWrapped("(forward draws no G-buffer; G-buffer views come from the deferred geometry passes)");
     drawWaterSceneControl(renderer, chosen);
@@ -546,6 +555,25 @@ void printHoveredProbe(Inspector& inspector) {
 
 // After a view is drawn: its values through the view controls (and the overlay where any value
 // needs it) into Display, and the probes of the pixels hovered and pinned.
+// An encoding-error view as the window's frame: the layout's deferred frame against full's (two
+// more frames), on the depth ramp from 0 to the largest error, as `oasis render` draws it.
+void showEncodingError(Renderer& renderer, const SceneSettings& scene, const EncodingErrorView& view,
+                       WindowState& state) {
+    if (renderer.targets().layout().name == "full") {
+        state.errorViewSummary = view.name + " compares a layout against full: choose standard or compact (G)";
+        renderer.renderView("final");
+        return;
+    }
+    EncodingError error = measureEncodingError(renderer, scene, renderer.targets().layout());
+    const std::vector<float>& values = error.*(view.values);
+    ErrorSummary summary = summarizeError(values);
+    char line[256];
+    std::snprintf(line, sizeof(line), "%s against full: median %.4g, 99%% %.4g, max %.4g over %ld surface pixels",
+                  error.layout.c_str(), summary.median, summary.p99, summary.max, summary.count);
+    state.errorViewSummary = line;
+    renderer.showImage(encodingErrorPicture(values, error.width, error.height, 0.0, summary.max > 0.0 ? summary.max : 1.0));
+}
+
 void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector) {
     inspector.statistics.reset();
     const DebugView* view = findDebugView(config.view);
@@ -633,7 +661,8 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         medians[s]->add(ms);
         state.frameMs += ms;
-        renderer.renderView(config.view);
+        // The comparison shows the table's views; an encoding-error view is a comparison of its own.
+        renderer.renderView(findEncodingErrorView(config.view) ? std::string("final") : config.view);
         images[s] = renderer.readDisplay();
     }
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
@@ -671,7 +700,10 @@ void drawConfiguration(RenderSession& session, const Configuration& config, cons
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
     renderer.setViewExposure(state.inspector.exposureStops);
     renderer.setViewWaterScene(config.waterScene);
-    renderer.renderView(config.view);
+    if (const EncodingErrorView* errorView = findEncodingErrorView(config.view))
+        showEncodingError(renderer, scene, *errorView, state);
+    else
+        renderer.renderView(config.view);
     inspectFrame(renderer, config, state.inspector);
     renderer.present(width, height);
 }

@@ -7,7 +7,10 @@
 #   - hovering a pixel and pressing P prints the probe there, and it is `oasis probe --at X,Y`'s
 #     JSON, byte for byte;
 #   - a click pins a probe: a numbered marker appears at the pixel;
-#   - C splits the frame live: each half is its pipeline's headless frame, the divider between.
+#   - C splits the frame live: each half is its pipeline's headless frame, the divider between;
+#   - after a click on the panel the view keys still work (2: albedo, against the headless view);
+#   - M switches the views to the mirrored scene under the water: the albedo view and a water
+#     pixel's probe equal the headless `--water-scene mirrored` ones.
 #   usage: inspector.sh OASIS WORK_DIR
 set -uo pipefail
 . "$(dirname "$0")/window_lib.sh"
@@ -91,5 +94,39 @@ step "split: left half against forward $(half_against $left final-forward.png), 
 divider=$(python3 "$WINDOW_LIB_DIR/xwd_stats.py" "$WORK/split.xwd" --region 239,100,2,100 --png "$WORK/split.png")
 awk -v s="$divider" 'BEGIN { split(s, f, " "); exit !(f[2] > 250 && f[3] > 250 && f[4] > 250) }' ||
     fail "no white divider at column 239 ($divider)"
+press c c c c  # the comparison off again (C cycles the five modes)
+
+# Keys after a click on the panel: H shows it, a click on its title bar focuses it, then 2
+# (albedo) and H must still reach the window: the albedo view equals the headless one.
+press h
+sleep 1
+xdotool mousemove --window "$WINDOW" 200 18 click 1
+sleep 1
+xdotool mousemove --window "$WINDOW" 5 260
+press 2 h
+sleep 2
+compare_with_headless albedo ""
+
+# M: the views show the mirrored scene under the water; the albedo view then equals
+# `oasis render --water-scene mirrored`, and a water pixel's probe is `oasis probe --water-scene mirrored`.
+press m
+sleep 2
+scene+=(--water-scene mirrored)
+compare_with_headless albedo ""
+x=240 y=160
+xdotool mousemove --window "$WINDOW" "$x" "$y"
+sleep 1
+from=$(mark "$OUT_LOG")
+press p
+wait_for "$OUT_LOG" "$from" '^oasis: probe \{' 30
+window_probe=$(tail -n "+$((from + 1))" "$OUT_LOG" | grep -m1 '^oasis: probe {' | sed 's/^oasis: probe //' | without_encoding_error)
+headless_probe=$("$OASIS" probe "${scene[@]}" --at "$x,$y" --json | without_encoding_error) || fail "oasis probe failed"
+[[ $window_probe == "$headless_probe" ]] || {
+    echo "window:   $window_probe" >&2
+    echo "headless: $headless_probe" >&2
+    fail "the hovered water probe (M: mirrored) differs from oasis probe --water-scene mirrored --at $x,$y"
+}
+grep -q '"water_scene": "the mirrored scene' <<<"$window_probe" || fail "the water pixel's probe does not say mirrored"
+step "M, water pixel $x,$y: the window's probe equals oasis probe --water-scene mirrored"
 finish_oasis
 step "OK"
