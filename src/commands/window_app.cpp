@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 #include "cli/input_domains.h"
@@ -90,7 +91,24 @@ struct Inspector {
 // What happened in the window, printed when it closes (the window tests read it).
 struct WindowCounts {
     long framesDrawn = 0, pipelineSwitches = 0, resizes = 0, minimised = 0, switchesUndone = 0;
+    // Wall ms of each whole loop iteration (frame(s), views, panel, swap, glFinish), by what it
+    // showed: the cost of the comparison modes against single frames (docs/window_cost.sh).
+    std::map<std::string, std::vector<double>> loopMs;
+    std::vector<std::string> loopOrder;
 };
+
+std::string loopSummary(const WindowCounts& counts) {
+    std::string text;
+    for (const std::string& label : counts.loopOrder) {
+        std::vector<double> v = counts.loopMs.at(label);
+        std::sort(v.begin(), v.end());
+        char part[128];
+        std::snprintf(part, sizeof(part), "%s%s %.2f (%zu frames)", text.empty() ? "" : ", ", label.c_str(),
+                      v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]), v.size());
+        text += part;
+    }
+    return text.empty() ? "none" : text;
+}
 
 struct WindowState {
     Configuration chosen;                      // what the keys and the panel ask for
@@ -109,6 +127,15 @@ struct WindowState {
     std::string errorViewSummary;  // an encoding-error view's numbers, for the panel
     WindowCounts counts;
 };
+
+std::string loopLabel(const WindowState& state) {
+    const Configuration& shown = state.lastDrawn ? *state.lastDrawn : state.chosen;
+    std::string label = state.comparison.mode == CompareMode::Off ? std::string(pipelineName(shown.pipeline))
+                                                                 : compareModeName(state.comparison.mode);
+    if (shown.view != "final") label += " view " + shown.view;
+    if (state.inspector.sectionOpen) label += " inspector";
+    return label;
+}
 
 // The chosen configuration with the scene's own settings in it, and back.
 Configuration currentConfiguration(const WindowState& state, const SceneSettings& scene) {
@@ -839,6 +866,7 @@ int runWindowApp(const Options& options) {
             drawCompareLabels(window.window(), state.comparison);
             ImGui::Render();
 
+            auto loopStart = std::chrono::steady_clock::now();
             if (drawChosen(session, scene, state, width, height)) {
                 if (++state.counts.framesDrawn == 1) {  // scripts driving the window wait for this line
                     std::printf("oasis: first frame drawn (%dx%d)\n", width, height);
@@ -852,6 +880,11 @@ int runWindowApp(const Options& options) {
             }
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window.window());
+            glFinish();
+            std::string label = loopLabel(state);
+            if (!state.counts.loopMs.count(label)) state.counts.loopOrder.push_back(label);
+            state.counts.loopMs[label].push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loopStart).count());
         }
         state.sideB.reset();  // its GL objects go before the context
         ImGui_ImplOpenGL3_Shutdown();
@@ -862,6 +895,7 @@ int runWindowApp(const Options& options) {
                     "%ld resizes, minimised %ld times\n",
                     counts.framesDrawn, counts.pipelineSwitches, counts.switchesUndone, counts.resizes,
                     counts.minimised);
+        std::printf("oasis: window loop ms (median): %s\n", loopSummary(counts).c_str());
         return 0;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: %s\n", error.what());

@@ -14,7 +14,7 @@ window_test_begin() {
         for tool in xvfb-run xdotool xwd twm python3; do
             command -v "$tool" > /dev/null || { echo "oasis window test: $tool is missing (bash .ci/setup installs it)" >&2; exit 1; }
         done
-        exec env OASIS_WINDOW_TEST_IN_XVFB=1 xvfb-run -a -s "-screen 0 800x600x24" bash "${@:4}"
+        exec env OASIS_WINDOW_TEST_IN_XVFB=1 xvfb-run -a -s "-screen 0 ${OASIS_XVFB_SCREEN:-800x600x24}" bash "${@:4}"
     fi
     TEST_NAME=$1
     OASIS=$2
