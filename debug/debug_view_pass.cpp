@@ -111,36 +111,54 @@ void DebugViewPass::drawView(PassContext& context, const DebugView& view, Stenci
     drawTile(context, view, stencilPath, 0, 0, context.targets.width(), context.targets.height());
 }
 
-void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPath, const std::string& waterScene) {
-    gl::DebugGroup group((name() + ".overview").c_str());
-    const FrameTargets& targets = context.targets;
+std::vector<OverviewTile> overviewTiles(int width, int height) {
     const auto& views = debugViews();
     int columns = int(std::ceil(std::sqrt(double(views.size()))));
     int rows = int((views.size() + size_t(columns) - 1) / size_t(columns));
-    int tileWidth = targets.width() / columns, tileHeight = targets.height() / rows;
+    int cellWidth = width / columns, cellHeight = height / rows;
+    std::vector<OverviewTile> tiles;
+    for (size_t i = 0; i < views.size(); ++i) {
+        int column = int(i) % columns, row = int(i) / columns;
+        // One pixel gap between tiles keeps their edges apart.
+        tiles.push_back({&views[i], column * cellWidth + 1, row * cellHeight + 1, std::max(1, cellWidth - 2),
+                         std::max(1, cellHeight - 2)});
+    }
+    return tiles;
+}
+
+namespace {
+bool labelled(const OverviewTile& tile) { return tile.height + 2 >= 24; }
+float labelScale(const OverviewTile& tile) { return std::max(1.0f, float(tile.height + 2) / 200.0f); }
+}  // namespace
+
+int overviewLabelBand(const OverviewTile& tile) {
+    return labelled(tile) ? int(std::ceil(3.0f + 19.0f * labelScale(tile))) : 0;
+}
+
+void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPath, const std::string& waterScene) {
+    gl::DebugGroup group((name() + ".overview").c_str());
+    const FrameTargets& targets = context.targets;
+    const std::vector<OverviewTile> tiles = overviewTiles(targets.width(), targets.height());
 
     glBindFramebuffer(GL_FRAMEBUFFER, targets.displayFramebuffer());
     glViewport(0, 0, targets.width(), targets.height());
     glClearColor(0.08f, 0.08f, 0.08f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     std::vector<Label> labels;
-    for (size_t i = 0; i < views.size(); ++i) {
-        int column = int(i) % columns, row = int(i) / columns;
-        int x = column * tileWidth;
-        int yFromTop = row * tileHeight;
-        // One pixel gap between tiles keeps their edges apart.
-        drawTile(context, views[i], stencilPath, x + 1, targets.height() - yFromTop - tileHeight + 1,
-                 std::max(1, tileWidth - 2), std::max(1, tileHeight - 2));
+    for (const OverviewTile& tile : tiles) {
+        drawTile(context, *tile.view, stencilPath, tile.x, targets.height() - tile.y - tile.height, tile.width,
+                 tile.height);
         // The tiles of the frame's surfaces say which scene they show under the water.
-        std::string label = views[i].name;
-        if (readsSceneSurfaces(views[i]) && views[i].source != ViewSource::Stencil) label += " (water: " + waterScene + ")";
-        labels.push_back({label, float(x + 4), float(yFromTop + 4)});
+        std::string label = tile.view->name;
+        if (readsSceneSurfaces(*tile.view) && tile.view->source != ViewSource::Stencil)
+            label += " (water: " + waterScene + ")";
+        labels.push_back({label, float(tile.x + 3), float(tile.y + 3)});
     }
-    if (tileHeight >= 24) {
+    if (labelled(tiles.front())) {
         if (!labels_) labels_ = std::make_unique<LabelOverlay>();
         glBindFramebuffer(GL_FRAMEBUFFER, targets.displayFramebuffer());
         glViewport(0, 0, targets.width(), targets.height());
-        labels_->draw(labels, targets.width(), targets.height(), std::max(1.0f, float(tileHeight) / 200.0f));
+        labels_->draw(labels, targets.width(), targets.height(), labelScale(tiles.front()));
     }
 }
 

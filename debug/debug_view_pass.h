@@ -15,6 +15,18 @@ namespace oasis {
 enum class StencilViewPath { Texturing, ReadBack };
 const char* stencilViewPathName(StencilViewPath path);
 
+// Where the overview draws each view of the table: a grid of about square tiles, row-major from
+// the top left, one pixel of gap inside each tile's cell (x, y from the top).
+struct OverviewTile {
+    const DebugView* view;
+    int x, y, width, height;
+};
+std::vector<OverviewTile> overviewTiles(int width, int height);
+// The rows at the top of a tile its label covers (ImGui's 13-pixel font at the tiles' scale, its
+// padding, 3 pixels in from the corner); 0 when tiles are too small to be labelled. The render
+// command's overlay leaves them unpainted so the names stay readable.
+int overviewLabelBand(const OverviewTile& tile);
+
 class DebugViewPass {
 public:
     std::string name() const { return "DebugViewPass"; }

@@ -163,12 +163,19 @@ Image mapViewValues(const std::vector<float>& rgba, int width, int height, ViewC
 }
 
 void paintOverlay(Image& image, const std::vector<float>& rgba, ViewChannel channel, unsigned overlay) {
+    paintOverlayIn(image, {0, 0, image.width, image.height}, rgba, image.width, image.height, channel, overlay);
+}
+
+void paintOverlayIn(Image& image, ImageRect rect, const std::vector<float>& rgba, int frameWidth, int frameHeight,
+                    ViewChannel channel, unsigned overlay) {
     const OverlayColours nan = overlayColours(kOverlayNan), inf = overlayColours(kOverlayInfinity),
                          negative = overlayColours(kOverlayNegative), negativeInfinity{{255, 0, 255}, {128, 128, 128}};
     float values[3];
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-            int count = channelValues(&rgba[(size_t(y) * size_t(image.width) + size_t(x)) * 4], channel, values);
+    for (int ty = 0; ty < rect.height; ++ty)
+        for (int tx = 0; tx < rect.width; ++tx) {
+            // The frame's texel under the rectangle's pixel centre; y counts from the bottom in GL.
+            int x = int((tx + 0.5) * frameWidth / rect.width), y = int((ty + 0.5) * frameHeight / rect.height);
+            int count = channelValues(&rgba[(size_t(y) * size_t(frameWidth) + size_t(x)) * 4], channel, values);
             const OverlayColours* paint = nullptr;
             for (int c = 0; c < count && !paint; ++c)
                 if ((overlay & kOverlayNan) && std::isnan(values[c])) paint = &nan;
@@ -177,8 +184,8 @@ void paintOverlay(Image& image, const std::vector<float>& rgba, ViewChannel chan
             for (int c = 0; c < count && !paint; ++c)
                 if ((overlay & kOverlayNegative) && values[c] < 0.0f) paint = &negative;
             if (!paint) continue;
-            const uint8_t* colour = ((x / 2 + y / 2) % 2 == 0) ? paint->first : paint->second;
-            uint8_t* out = image.pixel(x, image.height - 1 - y);
+            const uint8_t* colour = ((tx / 2 + ty / 2) % 2 == 0) ? paint->first : paint->second;
+            uint8_t* out = image.pixel(rect.x + tx, rect.y + rect.height - 1 - ty);
             out[0] = colour[0], out[1] = colour[1], out[2] = colour[2], out[3] = 255;
         }
 }

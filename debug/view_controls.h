@@ -52,6 +52,11 @@ Image mapViewValues(const std::vector<float>& rgba, int width, int height, ViewC
 
 // Paints the overlay's checkers over any image of the frame (a view's own colours too).
 void paintOverlay(Image& image, const std::vector<float>& rgba, ViewChannel channel, unsigned overlay);
+// The same over one rectangle of `image` (x, y from the top) that shows the frame's values
+// (frameWidth x frameHeight) scaled to it, as the overview's tiles sample them (nearest texel).
+struct ImageRect { int x = 0, y = 0, width = 0, height = 0; };
+void paintOverlayIn(Image& image, ImageRect rect, const std::vector<float>& rgba, int frameWidth, int frameHeight,
+                    ViewChannel channel, unsigned overlay);
 // The channel a view's statistics and legend use when none is asked for: rgb where the view has
 // three values, else its first.
 ViewChannel defaultChannel(const DebugView& view);

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "commands/bench_report.h"
+#include "commands/overview_overlay.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
 #include "render/file_output.h"
@@ -231,8 +232,13 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     renderer.renderView(options.view);
     Image image = renderer.readDisplay();
     const DebugView* view = findDebugView(options.view);
-    if (!view) return image;  // the overview: every tile labelled
     const ViewControls& controls = options.viewControls;
+    if (!view) {  // the overview: every tile labelled, each with its own overlay and counts
+        for (const std::string& line : overlayOverviewTiles(image, renderer, controls.overlay))
+            std::fprintf(report, "oasis: %s\n", line.c_str());
+        std::fprintf(report, "oasis: overview overlay: %s\n", overlayNames(controls.overlay).c_str());
+        return image;
+    }
     std::vector<float> values = renderer.readViewValues(options.view);
     ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
     ValueStatistics statistics = valueStatistics(values, channel);

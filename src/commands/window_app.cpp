@@ -23,6 +23,7 @@
 #include <stdexcept>
 
 #include "cli/input_domains.h"
+#include "commands/overview_overlay.h"
 #include "commands/session.h"
 #include "commands/window_compare.h"
 #include "context/gl_context.h"
@@ -76,6 +77,7 @@ struct Inspector {
     float exposureStops = 0.0f;
     std::optional<ValueStatistics> statistics;  // of the last single view drawn
     bool sectionOpen = false;  // the panel shows the inspector this frame: only then are counts read
+    std::vector<std::string> overviewCounts;    // the overview's tiles' counts, while it is shown
     static constexpr size_t kMaxPins = 9;
 
     ViewControls controls() const {
@@ -369,6 +371,14 @@ std::string probeSummary(const PixelProbe& p) {
     return line;
 }
 
+void drawOverlayChoices(Inspector& inspector) {
+    ImGui::Checkbox("NaN", &inspector.overlayNan);
+    ImGui::SameLine();
+    ImGui::Checkbox("+-Inf", &inspector.overlayInfinity);
+    ImGui::SameLine();
+    ImGui::Checkbox("negative (overlay)", &inspector.overlayNegative);
+}
+
 // The inspector's section of the panel: view controls, value counts, the probes.
 void drawInspectorPanel(WindowState& state) {
     Inspector& inspector = state.inspector;
@@ -391,17 +401,16 @@ void drawInspectorPanel(WindowState& state) {
             ImGui::Checkbox("fit the range to the frame", &inspector.fitRange);
             if (!inspector.fitRange) ImGui::DragFloat2("range", inspector.range, 0.01f);
         }
-        ImGui::Checkbox("NaN", &inspector.overlayNan);
-        ImGui::SameLine();
-        ImGui::Checkbox("+-Inf", &inspector.overlayInfinity);
-        ImGui::SameLine();
-        ImGui::Checkbox("negative (overlay)", &inspector.overlayNegative);
+        drawOverlayChoices(inspector);
         if (view->remapDefine == "VIEW_HDR") ImGui::SliderFloat("exposure (stops)", &inspector.exposureStops, -20.0f, 20.0f);
         if (inspector.statistics) {
             const ValueStatistics& s = *inspector.statistics;
             ImGui::TextWrapped("values: NaN %ld, +Inf %ld, -Inf %ld, negative %ld of %ld; finite %.4g .. %.4g", s.nan,
                                s.positiveInfinity, s.negativeInfinity, s.negative, s.values, s.min, s.max);
         }
+    } else if (state.chosen.view == kOverviewName) {
+        drawOverlayChoices(inspector);
+        for (const std::string& line : inspector.overviewCounts) ImGui::TextWrapped("%s", line.c_str());
     }
     if (inspector.hoveredProbe) {
         if (ImGui::TreeNodeEx("under the cursor", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -623,6 +632,13 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
             renderer.showImage(image);
         }
         inspector.statistics = statistics;
+    }
+    // The overview's tiles get their overlays too, while the inspector section is open (13 reads).
+    inspector.overviewCounts.clear();
+    if (config.view == kOverviewName && inspector.sectionOpen && controls.overlay) {
+        Image image = renderer.readDisplay();
+        inspector.overviewCounts = overlayOverviewTiles(image, renderer, controls.overlay);
+        renderer.showImage(image);
     }
     auto inside = [&](glm::ivec2 p) { return p.x < renderer.targets().width() && p.y < renderer.targets().height(); };
     // Probing a forward frame fills its G-buffer first: only while the panel shows the probes, or P asks.

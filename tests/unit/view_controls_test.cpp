@@ -108,4 +108,21 @@ TEST(ViewControls, MappingIsLinearInTheRangeAndTheOverlayPaintsCheckers) {
 }
 
 }  // namespace
+TEST(ViewControls, TheOverlayInARectanglePaintsWhereTheRectangleSamplesTheFrame) {
+    // A 4x2 frame (bottom row first) with one NaN at texel (2, 1): the top row, third column.
+    const int frameWidth = 4, frameHeight = 2;
+    std::vector<float> rgba(size_t(frameWidth * frameHeight) * 4, 0.5f);
+    rgba[(size_t(1) * frameWidth + 2) * 4] = std::numeric_limits<float>::quiet_NaN();
+    Image image(12, 6);
+    for (uint8_t& byte : image.rgba) byte = 7;
+    // Shown at twice the size in the rectangle x 3..10, y 1..4 (from the top).
+    paintOverlayIn(image, {3, 1, 8, 4}, rgba, frameWidth, frameHeight, ViewChannel::R, kOverlayNan);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            bool inTexel = x >= 3 + 4 && x < 3 + 6 && y >= 1 && y < 3;  // the texel's 2x2 pixels, top half
+            const uint8_t* p = image.pixel(x, y);
+            EXPECT_EQ(p[0] != 7 || p[1] != 7 || p[2] != 7, inTexel) << "pixel " << x << "," << y;
+        }
+}
+
 }  // namespace oasis
