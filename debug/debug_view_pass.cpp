@@ -135,6 +135,14 @@ int overviewLabelBand(const OverviewTile& tile) {
     return labelled(tile) ? int(std::ceil(3.0f + 19.0f * labelScale(tile))) : 0;
 }
 
+std::string overviewLabel(const OverviewTile& tile, const std::string& waterScene) {
+    const DebugView& view = *tile.view;
+    if (!readsSceneSurfaces(view) || view.source == ViewSource::Stencil) return view.name;
+    std::string label = view.name + " (water: " + waterScene + ")";
+    bool fits = (7.0f * float(label.size()) + 6.0f) * labelScale(tile) + 3.0f <= float(tile.width);
+    return fits ? label : view.name;
+}
+
 void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPath, const std::string& waterScene) {
     gl::DebugGroup group((name() + ".overview").c_str());
     const FrameTargets& targets = context.targets;
@@ -148,11 +156,7 @@ void DebugViewPass::drawOverview(PassContext& context, StencilViewPath stencilPa
     for (const OverviewTile& tile : tiles) {
         drawTile(context, *tile.view, stencilPath, tile.x, targets.height() - tile.y - tile.height, tile.width,
                  tile.height);
-        // The tiles of the frame's surfaces say which scene they show under the water.
-        std::string label = tile.view->name;
-        if (readsSceneSurfaces(*tile.view) && tile.view->source != ViewSource::Stencil)
-            label += " (water: " + waterScene + ")";
-        labels.push_back({label, float(tile.x + 3), float(tile.y + 3)});
+        labels.push_back({overviewLabel(tile, waterScene), float(tile.x + 3), float(tile.y + 3)});
     }
     if (labelled(tiles.front())) {
         if (!labels_) labels_ = std::make_unique<LabelOverlay>();

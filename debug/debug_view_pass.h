@@ -26,6 +26,9 @@ std::vector<OverviewTile> overviewTiles(int width, int height);
 // padding, 3 pixels in from the corner); 0 when tiles are too small to be labelled. The render
 // command's overlay leaves them unpainted so the names stay readable.
 int overviewLabelBand(const OverviewTile& tile);
+// A tile's label: the view's name, and for the tiles of the frame's surfaces the water scene they
+// show ("albedo (water: direct)") where that fits in the tile (ImGui's font: 7 pixels a letter).
+std::string overviewLabel(const OverviewTile& tile, const std::string& waterScene);
 
 class DebugViewPass {
 public:

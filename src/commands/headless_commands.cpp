@@ -237,6 +237,8 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
         for (const std::string& line : overlayOverviewTiles(image, renderer, controls.overlay))
             std::fprintf(report, "oasis: %s\n", line.c_str());
         std::fprintf(report, "oasis: overview overlay: %s\n", overlayNames(controls.overlay).c_str());
+        std::fprintf(report, "oasis: overview: under the water its G-buffer, depth and light tiles show %s\n",
+                     renderer.viewScene().description.c_str());
         return image;
     }
     std::vector<float> values = renderer.readViewValues(options.view);

@@ -35,7 +35,9 @@ std::vector<OverviewTile> overviewTiles(int width, int height) {
         OverviewTile tile;
         tile.area = {x + 1, y + 1, x + tileWidth - 1, y + tileHeight - 1};
         // ImGui's default font: 13 px high, 7 px advance; 3 px padding at scale 1; label at (+4, +4).
-        int labelWidth = int(std::ceil((8.0f * float(debugViews()[i].name.size()) + 10.0f) * scale)) + 4;
+        // The tiles of the frame's surfaces name the water scene they show where it fits.
+        size_t letters = overviewLabel(oasis::overviewTiles(width, height)[i], "direct").size();
+        int labelWidth = int(std::ceil((8.0f * float(letters) + 10.0f) * scale)) + 4;
         int labelHeight = int(std::ceil(24.0f * scale)) + 4;
         tile.label = tileHeight >= 24 ? Region{x, y, std::min(x + labelWidth, x + tileWidth), std::min(y + labelHeight, y + tileHeight)}
                                       : Region{x, y, x, y};
@@ -158,13 +160,21 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
                 }
             }
         } else if (view && readsGBuffer(*view)) {
-            // The direct scene: deferred's outside the water, deferred-without-reflections' everywhere.
-            DifferingPixels versusDeferred = differingPixels(deferred, forward, inWater);
-            EXPECT_EQ(versusDeferred.elsewhere, 0) << "forward and deferred show different " << name
-                                                   << " outside the water";
-            EXPECT_GT(versusDeferred.where, 0) << "deferred shows the direct scene in the water (no mirrored G-buffer?)";
+            // Both pipelines show the water scene asked for (render/view_fill.h): the direct one by
+            // default, as deferred without reflections shows it; the mirrored one differs from it in
+            // the water only, and is the same in both pipelines too.
+            EXPECT_EQ(difference.maxAbs, 0) << "forward and deferred show different " << name;
             EXPECT_EQ(compareImages(deferredOff, forward).maxAbs, 0)
                 << "forward " << name << " differs from deferred with reflections off";
+            renderer.setViewWaterScene(WaterScene::Mirrored);
+            Image mirrored = renderView(renderer, pose.scene, PipelineKind::Deferred, name);
+            Image mirroredForward = renderView(renderer, pose.scene, PipelineKind::Forward, name);
+            renderer.setViewWaterScene(WaterScene::Direct);
+            DifferingPixels versusDirect = differingPixels(mirrored, deferred, inWater);
+            EXPECT_EQ(versusDirect.elsewhere, 0) << "the mirrored scene changed " << name << " outside the water";
+            EXPECT_GT(versusDirect.where, 0) << "the mirrored scene shows the direct one in the water";
+            EXPECT_EQ(compareImages(mirrored, mirroredForward).maxAbs, 0)
+                << "forward and deferred show a different mirrored " << name;
         } else {
             EXPECT_EQ(difference.maxAbs, 0) << "forward and deferred show different " << name << " (PSNR "
                                             << difference.psnrDb << " dB)";
@@ -173,7 +183,8 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
     }
 }
 
-// Filling the G-buffer for a view of a forward frame must not change the forward frame.
+// Filling the G-buffer for a view of a forward frame must not change the forward frame's picture
+// or stencil; its depth changes only under the water, where the views show the lakebed's.
 TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
@@ -187,8 +198,13 @@ TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
     renderer.renderView("final");
     Image after = renderer.readDisplay();
     EXPECT_EQ(compareImages(before, after).maxAbs, 0) << "the forward frame's Final changed";
-    EXPECT_TRUE(renderer.readDepth() == depthBefore) << "the forward frame's depth changed";
     EXPECT_TRUE(renderer.readStencil() == stencilBefore) << "the forward frame's stencil changed";
+    const std::vector<float> depthAfter = renderer.readDepth();
+    long changedOutsideWater = 0, changedInWater = 0;
+    for (size_t i = 0; i < depthAfter.size(); ++i)
+        if (depthAfter[i] != depthBefore[i]) ++(stencilBefore[i] == kStencilWater ? changedInWater : changedOutsideWater);
+    EXPECT_EQ(changedOutsideWater, 0) << "the forward frame's depth changed outside the water";
+    EXPECT_GT(changedInWater, 0) << "the depth under the water is not the lakebed's";
 }
 
 // The same for a forward frame stopped before a pass (renderFrame's stopBefore, the CLI's
@@ -234,6 +250,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     const Image atlasImage = atlas->read();
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
+    renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
     const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
     const std::vector<float> normal = renderer.readTarget(Target::Normal);
     // Stored, or reconstructed from depth by the GPU as lighting does (the compact layout).

@@ -20,6 +20,7 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     renderer.configure(kWidth, kHeight, layout);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.renderFrame(pose.scene);
+    renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
     const std::vector<float> positions = renderer.readSurfacePositions();
     const std::vector<float> normal = renderer.readTarget(Target::Normal);
     const std::vector<float> info = renderer.readTarget(Target::Info);
