@@ -7,8 +7,9 @@ namespace oasis {
 void VegetationPass::execute(PassContext& context) {
     beginSurfaceDraw(context, kStencilVegetation);
     glDisable(GL_CULL_FACE);
-    glUseProgram(surfaceProgram(context, "vegetation"));
-    context.vegetation.draw(mirroring_);
+    GLuint program = surfaceProgram(context, "vegetation");
+    glUseProgram(program);
+    context.vegetation.draw(mirroring_, program, context.frame.trimmedBillboards);
     endSurfaceDraw();
 }
 

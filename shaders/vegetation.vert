@@ -16,6 +16,10 @@ out vec3 vNormal;
 out vec3 vTint;
 out float vAtlasLod;
 
+// Each atlas cell's drawn bounds (u0, v0, u1, v1) in the cell (PlantAtlas::drawnBounds): the
+// billboard is trimmed to them, the rest of its cell would only be discarded.
+uniform vec4 plantDrawnBounds[OASIS_PLANT_MAX_CELLS];
+
 // Sideways displacement of a plant's top per unit of its height: at most 0.24 * wind strength
 // (scene/vegetation.cpp bounds chunks by 0.3 per unit of strength). The gusts are a detail noise
 // layer drifting with the wind (its direction and speed are in frame_setup.cpp's layer table).
@@ -30,7 +34,10 @@ vec2 windBend(vec2 relativeXZ, float phase) {
 void main() {
     vec3 base = baseSize.xyz;
     float size = baseSize.w;
-    vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1));  // (0,0) (1,0) (0,1) (1,1)
+    // The strip's corner (0,0) (1,0) (0,1) (1,1) of the cell, moved in to the drawn bounds; every
+    // quantity below is the whole cell's at that point, so the plant is drawn where it was.
+    vec4 drawn = plantDrawnBounds[int(variant)];
+    vec2 corner = mix(drawn.xy, drawn.zw, vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)));
 
     vec2 toCamera = -base.xz;
     float distance = length(toCamera);
@@ -40,9 +47,10 @@ void main() {
     const float rootV = float(OASIS_PLANT_ROOT_V);
     float aboveRoot = (corner.y - rootV) * size;
     vec3 relative = base + right * ((corner.x - 0.5) * size) + vec3(0.0, aboveRoot, 0.0);
-    // Bend grows with the square of the height above the root: a stem bends, its root does not.
-    float bend = max(corner.y - rootV, 0.0) / (1.0 - rootV);
-    relative.xz += windBend(base.xz, tintPhase.w) * size * bend * bend;
+    // The cell's top bends by the wind, its bottom edge not; between them the quad is sheared
+    // linearly (the whole cell's strip interpolates its corners' bend), so the trimmed strip takes
+    // that shear at its own corners: the cell's height fraction.
+    relative.xz += windBend(base.xz, tintPhase.w) * size * corner.y;
 
     // Lit as a tuft: mostly up, partly towards the camera, so plants take the ground's light.
     vNormal = normalize(vec3(0.0, 1.0, 0.0) + 0.6 * vec3(facing.x, 0.0, facing.y));

@@ -39,6 +39,8 @@ const char* kSceneOptionsHelp =
     "  --vegetation on|off       the plant billboards (default on)\n"
     "  --vegetation-density D    plants per unit of ground, times the default (default 1)\n"
     "  --wind S                  wind strength bending the plants (default 1)\n"
+    "  --billboards trimmed|whole  plant billboards trimmed to their atlas cell's drawn bounds, or\n"
+    "                            whole cells (default trimmed; whole: the reference for the trim)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
     "  --lights N                point lights (lanterns, fireflies) around the lake (default 0);\n"
     "                            they glow at night, e.g. --hour 21\n"
@@ -222,7 +224,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
-            "--absorption", "--vegetation", "--vegetation-density", "--wind", "--pipeline", "--view", "--out",
+            "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
             "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
@@ -299,6 +301,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value != "on" && value != "off")
                 return fail("--vegetation expects on or off, got '" + value + "'");
             options.scene.vegetation.enabled = value == "on";
+        } else if (flag == "--billboards") {
+            if (value != "trimmed" && value != "whole")
+                return fail("--billboards expects trimmed or whole, got '" + value + "'");
+            options.scene.vegetation.trimmedBillboards = value == "trimmed";
         } else if (flag == "--vegetation-density" || flag == "--wind") {
             double number = 0.0;
             bool density = flag == "--vegetation-density";

@@ -568,6 +568,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         ImGui::SliderFloat("wind", &vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
         ImGui::SliderFloat("draw distance", &vegetation.drawDistance, 50.0f, 1500.0f, "%.0f");
         ImGui::SliderFloat("thinning from", &vegetation.thinningStart, 10.0f, 600.0f, "%.0f");
+        ImGui::Checkbox("billboards trimmed to the drawn plant", &vegetation.trimmedBillboards);
         ImGui::TextWrapped("%s", describeVegetation(renderer).c_str());
     }
     drawLightsPanel(renderer, scene);

@@ -40,6 +40,7 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     setup.cameraAboveWater = setup.view.pose.position.y >= double(scene.water.level);
     setup.reflectionsActive = scene.water.reflections && setup.cameraAboveWater;
     setup.vegetationEnabled = scene.vegetation.enabled;
+    setup.trimmedBillboards = scene.vegetation.trimmedBillboards;
 
     FrameData& d = setup.data;
     d.viewProjection = setup.view.viewProjection();

@@ -57,6 +57,7 @@ struct FrameSetup {
     bool cameraAboveWater = true;   // at the level counts as above: the plane is seen edge-on
     bool reflectionsActive = true;  // reflections on and the camera above the water
     bool vegetationEnabled = true;
+    bool trimmedBillboards = true;  // VegetationSettings::trimmedBillboards
     bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
     FrameData data;
     std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)

@@ -101,6 +101,8 @@ PlantAtlas::PlantAtlas(ShaderLibrary& shaders, PlantInterpretation path, int cel
     const auto& variants = plantAtlasVariants();
     columns_ = int(plantPresets().size());
     rows_ = int((variants.size() + size_t(columns_) - 1) / size_t(columns_));
+    if (variants.size() > size_t(OASIS_PLANT_MAX_CELLS))
+        throw std::logic_error("the plant atlas has more cells than the billboards' bounds array holds (OASIS_PLANT_MAX_CELLS)");
     Clock::time_point start = Clock::now();
     std::vector<SegmentBuffer> buffers;
     GpuTurtleInterpreter gpu(shaders);
@@ -116,6 +118,7 @@ PlantAtlas::PlantAtlas(ShaderLibrary& shaders, PlantInterpretation path, int cel
     // Both paths fit the cells from the segments in the buffers (a read-back on the GPU path).
     for (const SegmentBuffer& buffer : buffers) segments_.push_back(readSegments(buffer));
     draw(shaders, buffers);
+    measureDrawnBounds();
     totalMs_ = millisecondsSince(start);
 }
 
@@ -155,6 +158,49 @@ void PlantAtlas::drawCell(GLuint program, size_t variant, const SegmentBuffer& b
     bindSegmentAttributes(buffer.buffer.name());
     glDrawArraysInstanced(GL_LINES, 0, 2, GLsizei(buffer.count));
     glBindVertexArray(0);
+}
+
+void PlantAtlas::measureDrawnBounds() {
+    // A texel reaches a sample only through bilinear filtering, i.e. within 1.5 texels of its
+    // centre at its level; a blend (bilinear, or trilinear between levels) of values all below
+    // the threshold stays below it. Two levels of 255 below the threshold absorb the filter's
+    // fixed-point rounding.
+    const int minimumByte = int(std::floor(OASIS_PLANT_ALPHA_MIN * 255.0)) - 2;
+    const size_t cells = variantCount();
+    std::vector<glm::vec4> box(cells, glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));  // empty: min > max
+    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    for (int level = 0; level < kMipLevels; ++level) {
+        const int w = std::max(1, width() >> level), h = std::max(1, height() >> level);
+        const float texel = float(1 << level);  // level-0 texels per texel of this level
+        std::vector<unsigned char> rgba(size_t(w) * size_t(h) * 4);
+        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), level);
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+        for (size_t cell = 0; cell < cells; ++cell) {
+            // The cell in level-0 texels, GL rows (bottom-up); cells are numbered from the top.
+            const float x0 = float(cellX(cell)), y0 = float(height() - cellY(cell) - cellSize_);
+            const float size = float(cellSize_);
+            // This level's texels whose footprint reaches the cell: one texel of border each side.
+            const int tx0 = std::max(0, int(std::floor(x0 / texel)) - 1), tx1 = std::min(w - 1, int((x0 + size) / texel));
+            const int ty0 = std::max(0, int(std::floor(y0 / texel)) - 1), ty1 = std::min(h - 1, int((y0 + size) / texel));
+            for (int y = ty0; y <= ty1; ++y)
+                for (int x = tx0; x <= tx1; ++x) {
+                    if (rgba[(size_t(y) * size_t(w) + size_t(x)) * 4 + 3] < minimumByte) continue;
+                    glm::vec4& b = box[cell];
+                    b.x = std::min(b.x, ((float(x) - 0.5f) * texel - x0) / size);
+                    b.y = std::min(b.y, ((float(y) - 0.5f) * texel - y0) / size);
+                    b.z = std::max(b.z, ((float(x) + 1.5f) * texel - x0) / size);
+                    b.w = std::max(b.w, ((float(y) + 1.5f) * texel - y0) / size);
+                }
+        }
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    drawnBounds_.clear();
+    for (glm::vec4 b : box) {
+        if (b.x > b.z) b = glm::vec4(0.0f);  // nothing drawn: a box of no area
+        drawnBounds_.push_back(glm::clamp(b, glm::vec4(0.0f), glm::vec4(1.0f)));
+    }
 }
 
 Image PlantAtlas::read() const {

@@ -3,6 +3,7 @@
 // brown-to-green lines into one RGBA8 texture with a transparent background, a cell per variant.
 #pragma once
 #include <string>
+#include <glm/glm.hpp>
 #include <vector>
 
 #include "gl/capabilities.h"
@@ -54,18 +55,26 @@ public:
     double totalMs() const { return totalMs_; }
     // Each variant's segments as drawn (read back from the GPU on that path).
     const std::vector<std::vector<Segment2D>>& segments() const { return segments_; }
+    // Each variant's drawn bounds in its cell, (u0, v0, u1, v1) in [0, 1] with v up (GL rows): the
+    // union over every mip level of where a billboard's alpha test can pass (texels at or above
+    // the lowest threshold, widened by the bilinear footprint). The billboards are trimmed to it,
+    // so the fragments a plant's empty corners would discard are never rasterised. Empty cells
+    // get an empty box.
+    const std::vector<glm::vec4>& drawnBounds() const { return drawnBounds_; }
 
     Image read() const;
 
 private:
     void draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& buffers);
     void drawCell(GLuint program, size_t variant, const SegmentBuffer& buffer);
+    void measureDrawnBounds();
 
     PlantInterpretation path_;
     int cellSize_;
     int columns_ = 1, rows_ = 1;
     gl::Texture texture_;
     std::vector<std::vector<Segment2D>> segments_;
+    std::vector<glm::vec4> drawnBounds_;
     double interpretMs_ = 0.0, totalMs_ = 0.0;
 };
 

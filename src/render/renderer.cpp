@@ -121,7 +121,7 @@ void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
     plantAtlas_ = atlas;
     debugViews_.setPlantAtlasTexture(atlas ? atlas->texture() : 0);
     if (atlas)
-        vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows());
+        vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows(), atlas->drawnBounds());
     else
         vegetationBuffers_.setAtlas(0, 1, 1);
 }

@@ -25,6 +25,9 @@ struct VegetationSettings {
     // Every plant is drawn out to this distance; beyond it the drawn fraction falls as start / d,
     // which keeps the number of plants per unit of screen height roughly constant.
     float thinningStart = 120.0f;
+    // Billboards trimmed to their atlas cell's drawn bounds (PlantAtlas::drawnBounds), or whole
+    // cells (the reference for what the trim saves and changes).
+    bool trimmedBillboards = true;
     static constexpr float kMaxDensity = 4.0f;
     static constexpr float kMaxWindStrength = 3.0f;
 };

@@ -76,6 +76,7 @@ scene_cases() {
 --absorption|11
 --absorption|-0.001
 --vegetation|maybe
+--billboards|half
 --vegetation-density|4.5
 --vegetation-density|-1
 --wind|3.5

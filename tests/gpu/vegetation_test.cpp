@@ -4,6 +4,8 @@
 // days of animation), and the CPU-interpreted atlas giving the same frame as the compute one.
 #include "gpu_test.h"
 
+#include <cstring>
+
 namespace oasis::gputest {
 namespace {
 
@@ -156,6 +158,87 @@ TEST_F(Vegetation, CpuAtlasDrawsTheSameFrame) {
     Image cpu = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
     EXPECT_EQ(compareImages(gpu, cpu).maxAbs, 0) << "the CPU-interpreted atlas draws a different frame";
     EXPECT_GT(renderer.vegetationStats().plantsDrawn, 0u);
+}
+
+// Fragment shader invocations of one frame, where the context counts them (GL 4.6 or
+// ARB_pipeline_statistics_query); -1 otherwise.
+long long fragmentInvocations(Renderer& renderer, const SceneSettings& scene) {
+    if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) return -1;
+    GLuint query = 0;
+    glGenQueries(1, &query);
+    glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
+    renderer.renderFrame(scene);
+    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+    GLuint64 count = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
+    glDeleteQueries(1, &query);
+    return (long long)count;
+}
+
+// Billboards trimmed to their cell's drawn bounds draw the plants they drew as whole cells: every
+// texel the alpha test can keep lies inside its cell's box, the frames agree but for single edge
+// pixels (interpolation rounding), and the plants cost fewer fragments.
+TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
+    NamedPose pose = poseNamed("meadow");
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+
+    const std::vector<glm::vec4>& bounds = atlas->drawnBounds();
+    ASSERT_EQ(bounds.size(), atlas->variantCount());
+    const Image cells = atlas->read();  // top row first
+    double boxArea = 0.0;
+    for (size_t cell = 0; cell < bounds.size(); ++cell) {
+        const glm::vec4 box = bounds[cell];
+        ASSERT_LT(box.x, box.z) << "cell " << cell << " has no drawn bounds";
+        boxArea += double(box.z - box.x) * double(box.w - box.y);
+        int outside = 0;
+        for (int y = 0; y < atlas->cellSize(); ++y)
+            for (int x = 0; x < atlas->cellSize(); ++x) {
+                const uint8_t* texel = &cells.rgba[(size_t(atlas->cellY(cell) + y) * size_t(cells.width) +
+                                                    size_t(atlas->cellX(cell) + x)) * 4];
+                if (texel[3] < uint8_t(OASIS_PLANT_ALPHA_MIN * 255.0)) continue;
+                float u = (float(x) + 0.5f) / float(atlas->cellSize());
+                float v = 1.0f - (float(y) + 0.5f) / float(atlas->cellSize());  // v up, as the box
+                if (u < box.x || u > box.z || v < box.y || v > box.w) ++outside;
+            }
+        EXPECT_EQ(outside, 0) << "cell " << cell << ": drawn texels outside its box";
+    }
+    const double meanArea = boxArea / double(bounds.size());
+    std::printf("[vegetation] drawn bounds: %.1f%% of a cell on average\n", 100.0 * meanArea);
+    EXPECT_LT(meanArea, 0.8) << "the boxes hardly trim the cells";
+
+    for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+        renderer.setPipeline(kind);
+        SceneSettings whole = pose.scene, none = pose.scene;
+        whole.vegetation.trimmedBillboards = false;
+        none.vegetation.enabled = false;
+        long long trimmedCount = fragmentInvocations(renderer, pose.scene);
+        renderer.renderFrame(pose.scene);
+        Image trimmed = renderer.readDisplay();
+        long long wholeCount = fragmentInvocations(renderer, whole);
+        renderer.renderFrame(whole);
+        Image reference = renderer.readDisplay();
+        long long noneCount = fragmentInvocations(renderer, none);
+
+        ImageDifference difference = compareImages(reference, trimmed);
+        long differing = 0;
+        for (size_t i = 0; i < reference.rgba.size(); i += 4)
+            if (std::memcmp(&reference.rgba[i], &trimmed.rgba[i], 3) != 0) ++differing;
+        std::printf("[vegetation] %s: trimmed vs whole billboards PSNR %.2f dB, %ld of %d pixels differ\n",
+                    pipelineName(kind), difference.psnrDb, differing, kWidth * kHeight);
+        EXPECT_GE(difference.psnrDb, 55.0) << pipelineName(kind);
+        EXPECT_LE(differing, long(kWidth * kHeight / 500)) << pipelineName(kind) << ": more than 0.2% of pixels";
+        if (trimmedCount < 0) {
+            std::printf("[vegetation] no pipeline statistics query here: fragment counts not checked\n");
+            continue;
+        }
+        double plantsTrimmed = double(trimmedCount - noneCount), plantsWhole = double(wholeCount - noneCount);
+        std::printf("[vegetation] %s: plant fragments %.0f trimmed, %.0f whole (%.1f%%)\n", pipelineName(kind),
+                    plantsTrimmed, plantsWhole, 100.0 * plantsTrimmed / plantsWhole);
+        EXPECT_GT(plantsWhole, 0.0);
+        EXPECT_LT(plantsTrimmed, 0.8 * plantsWhole) << pipelineName(kind);
+    }
 }
 
 }  // namespace
