@@ -16,8 +16,12 @@ void DepthCopyPass::execute(PassContext& context) {
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     glDisable(GL_STENCIL_TEST);
-    glUseProgram(context.shaders.program("depth.copy"));
+    // The mirrored copy is read only inside the water; outside it the two copies hold the same depth.
+    bool mirrored = mirroring_ == Mirroring::Mirrored;
+    if (mirrored) beginWaterBoundedDraw(context);
+    glUseProgram(context.shaders.program(mirrored ? "depth.copy.mirrored" : "depth.copy"));
     context.geometry.drawFullscreenTriangle();
+    if (mirrored) endWaterBoundedDraw(context);
     glDisable(GL_DEPTH_TEST);
 }
 

@@ -8,9 +8,11 @@ void LightingPass::execute(PassContext& context) {
     glDisable(GL_DEPTH_TEST);
     bindGBufferInputs(context.targets);
     beginMirroredDraw(mirroring_);
+    if (mirroring_ == Mirroring::Mirrored) beginWaterBoundedDraw(context);
     glUseProgram(context.shaders.program(
         context.targets.layout().program(mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting")));
     context.geometry.drawFullscreenTriangle();
+    if (mirroring_ == Mirroring::Mirrored) endWaterBoundedDraw(context);
     endMirroredDraw(mirroring_);
 }
 

@@ -14,6 +14,18 @@ void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirror
     glViewport(0, 0, targets.width(), targets.height());
 }
 
+void beginWaterBoundedDraw(const PassContext& context) {
+    if (!context.frame.waterBounded || !context.waterBounds) return;
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, context.waterBounds);
+    for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glEnable(plane);
+}
+
+void endWaterBoundedDraw(const PassContext& context) {
+    if (!context.frame.waterBounded || !context.waterBounds) return;
+    for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glDisable(plane);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, 0);
+}
+
 void beginMirroredDraw(Mirroring mirroring) {
     if (mirroring != Mirroring::Mirrored) return;
     glEnable(GL_STENCIL_TEST);

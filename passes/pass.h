@@ -22,6 +22,9 @@ struct PassContext {
     const SceneGeometry& geometry;
     const FrameSetup& frame;
     const VegetationBuffers& vegetation;
+    // The rectangle of visible water (common/water_bounds.glsl): 0 where the context cannot record
+    // it; recorded by WaterMaskPass, the reflection's passes clip to it when frame.waterBounded.
+    GLuint waterBounds = 0;
 };
 
 class Pass {
@@ -85,6 +88,10 @@ void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirror
 // reverses winding) and clip what lies below the water.
 void beginMirroredDraw(Mirroring mirroring);
 void endMirroredDraw(Mirroring mirroring);
+// The reflection's full-screen draws clip their triangle to the visible water (gl_ClipDistance
+// 1-4, written by common/water_bounds.glsl in fullscreen.vert) when the frame records it.
+void beginWaterBoundedDraw(const PassContext& context);
+void endWaterBoundedDraw(const PassContext& context);
 bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring);
 std::string variantName(const std::string& base, SurfaceOutput output, Mirroring mirroring);
 const char* surfaceOutputName(SurfaceOutput output);

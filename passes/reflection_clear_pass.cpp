@@ -21,8 +21,10 @@ void ReflectionClearPass::execute(PassContext& context) {
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     beginMirroredDraw(Mirroring::Mirrored);
+    beginWaterBoundedDraw(context);
     glUseProgram(context.shaders.program(targets.layout().program("gbuffer.clear")));
     context.geometry.drawFullscreenTriangle();
+    endWaterBoundedDraw(context);
     endMirroredDraw(Mirroring::Mirrored);
     glDisable(GL_DEPTH_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

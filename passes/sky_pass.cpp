@@ -10,8 +10,10 @@ void SkyPass::execute(PassContext& context) {
     glDepthFunc(context.targets.depth().nearerOrEqualFunc);
     glDepthMask(GL_FALSE);
     beginMirroredDraw(mirroring_);
+    if (mirroring_ == Mirroring::Mirrored) beginWaterBoundedDraw(context);
     glUseProgram(context.shaders.program(variantName("sky", SurfaceOutput::Forward, mirroring_)));
     context.geometry.drawFullscreenTriangle();
+    if (mirroring_ == Mirroring::Mirrored) endWaterBoundedDraw(context);
     endMirroredDraw(mirroring_);
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_TEST);

@@ -7,9 +7,8 @@ namespace oasis {
 void VegetationPass::execute(PassContext& context) {
     beginSurfaceDraw(context, kStencilVegetation);
     glDisable(GL_CULL_FACE);
-    GLuint program = surfaceProgram(context, "vegetation");
-    glUseProgram(program);
-    context.vegetation.draw(mirroring_, program, context.frame.trimmedBillboards);
+    glUseProgram(surfaceProgram(context, "vegetation"));
+    context.vegetation.draw(mirroring_);
     endSurfaceDraw();
 }
 

@@ -1,5 +1,9 @@
-// The water quad, stencil only.
+// The water quad, stencil only (and the rectangle of visible water, where it can be recorded).
 #include "passes/water_mask_pass.h"
+
+#include <limits>
+
+#include "render/texture_units.h"
 
 namespace oasis {
 
@@ -16,8 +20,19 @@ void WaterMaskPass::execute(PassContext& context) {
     glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glStencilMask(0xFF);
+    if (context.waterBounds) {
+        // An empty box (min > max) that the water's fragments widen (common/water_bounds.glsl).
+        const GLint empty[4] = {std::numeric_limits<GLint>::max(), std::numeric_limits<GLint>::max(),
+                                std::numeric_limits<GLint>::min(), std::numeric_limits<GLint>::min()};
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, context.waterBounds);
+        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(empty), empty);
+    }
     glUseProgram(context.shaders.program("water.mask"));
     context.geometry.drawWaterQuad();
+    if (context.waterBounds) {
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, 0);
+    }
     glDisable(GL_STENCIL_TEST);
     glDepthMask(GL_TRUE);
     glDisable(GL_DEPTH_CLAMP);

@@ -16,9 +16,6 @@ out vec3 vNormal;
 out vec3 vTint;
 out float vAtlasLod;
 
-// Each atlas cell's drawn bounds (u0, v0, u1, v1) in the cell (PlantAtlas::drawnBounds): the
-// billboard is trimmed to them, the rest of its cell would only be discarded.
-uniform vec4 plantDrawnBounds[OASIS_PLANT_MAX_CELLS];
 
 // Sideways displacement of a plant's top per unit of its height: at most 0.24 * wind strength
 // (scene/vegetation.cpp bounds chunks by 0.3 per unit of strength). The gusts are a detail noise
@@ -36,7 +33,7 @@ void main() {
     float size = baseSize.w;
     // The strip's corner (0,0) (1,0) (0,1) (1,1) of the cell, moved in to the drawn bounds; every
     // quantity below is the whole cell's at that point, so the plant is drawn where it was.
-    vec4 drawn = plantDrawnBounds[int(variant)];
+    vec4 drawn = frame.plantDrawnBounds[int(variant)];
     vec2 corner = mix(drawn.xy, drawn.zw, vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)));
 
     vec2 toCamera = -base.xz;

@@ -1,2 +1,11 @@
-// The water plane's pixels go to the stencil buffer only; no colour is written.
-void main() {}
+// The water plane's pixels go to the stencil buffer (and, with WATER_BOUNDS, widen the rectangle
+// of visible water: common/water_bounds.glsl); no colour is written. The tests run before the
+// shader, so only the water that is seen is recorded.
+#define WATER_BOUNDS_RECORDER
+#include "common/water_bounds.glsl"
+
+#if defined(WATER_BOUNDS)
+layout(early_fragment_tests) in;
+#endif
+
+void main() { recordWaterPixel(ivec2(gl_FragCoord.xy)); }

@@ -25,6 +25,10 @@ struct FrameData {
     vec4 waterTint;              // rgb colour deep water tends to; w Fresnel reflectance at normal incidence
     vec4 vegetation;             // x wind strength, y flutter phase (rad), zw unused
     vec4 vegetationAtlas;        // x atlas columns, y atlas rows, z texels per cell side, w pixels per world unit at unit eye distance
+    vec4 screen;                 // x width, y height (pixels), z 1 / width, w 1 / height
+    // Each atlas cell's drawn bounds (u0, v0, u1, v1) in the cell, v up (PlantAtlas::drawnBounds),
+    // or the whole cell (0, 0, 1, 1): the plant billboards are trimmed to them.
+    vec4 plantDrawnBounds[OASIS_PLANT_MAX_CELLS];
     // The camera's terrain-noise coordinates per octave, split in the skewed simplex lattice:
     // xy the fraction, zw the integer cell (exact in float to 2^24). See noise.glsl.
     vec4 terrainNoiseOrigins[OASIS_NOISE_MAX_OCTAVES];

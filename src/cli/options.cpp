@@ -33,6 +33,8 @@ const char* kSceneOptionsHelp =
     "  --hour H                  override the hour of day (6 sunrise, 18 sunset)\n"
     "  --camera X,Y,Z,YAW,PITCH  fixed camera instead of the flight (degrees; yaw 0 = -Z, 90 = +X)\n"
     "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
+    "  --reflection-bounds on|off  the reflection's passes clip to the rectangle of visible water the\n"
+    "                            water mask records (default on; off: the whole screen, stencil-masked)\n"
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
     "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
@@ -223,7 +225,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
-            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--water-level", "--ripples",
+            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
             "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend"};
@@ -301,6 +303,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value != "on" && value != "off")
                 return fail("--vegetation expects on or off, got '" + value + "'");
             options.scene.vegetation.enabled = value == "on";
+        } else if (flag == "--reflection-bounds") {
+            if (value != "on" && value != "off")
+                return fail("--reflection-bounds expects on or off, got '" + value + "'");
+            options.scene.water.reflectionBounds = value == "on";
         } else if (flag == "--billboards") {
             if (value != "trimmed" && value != "whole")
                 return fail("--billboards expects trimmed or whole, got '" + value + "'");

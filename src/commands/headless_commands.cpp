@@ -113,6 +113,7 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  %s\n", describePlantAtlas(session).c_str());
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
+    std::printf("  %s\n", describeReflectionBounds(*session.renderer, session.scene).c_str());
     for (const auto& [pipeline, passes] : {std::pair{"forward", &c.forwardPasses}, {"deferred", &c.deferredPasses}}) {
         if (passes->empty()) continue;
         std::printf("  %s per pass (median ms, %s):\n", pipeline,
@@ -280,6 +281,7 @@ int runRenderCommand(const Options& options) {
         std::fprintf(report, "oasis: %s\n", describePlantAtlas(session).c_str());
         std::fprintf(report, "oasis: %s\n", describeVegetation(renderer).c_str());
         std::fprintf(report, "oasis: %s\n", describeLights(renderer).c_str());
+        std::fprintf(report, "oasis: %s\n", describeReflectionBounds(renderer, session.scene).c_str());
         return 0;
     });
 }

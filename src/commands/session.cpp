@@ -180,6 +180,12 @@ std::string describeVegetation(const Renderer& renderer) {
     return text;
 }
 
+std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene) {
+    if (renderer.waterBoundsAvailable() && !scene.water.reflectionBounds)
+        return "reflection passes: whole screen, stencil-masked (--reflection-bounds off)";
+    return "reflection passes: " + renderer.waterBoundsReason();
+}
+
 std::string describeLights(const Renderer& renderer) {
     std::string text = "lights: " + std::to_string(renderer.lightsDrawn()) + ", path " + renderer.lightsPathReason();
     if (renderer.lightsDropped() > 0)

@@ -68,6 +68,8 @@ std::string describePlantAtlas(const RenderSession& session);
 std::string describeVegetation(const Renderer& renderer);
 // "lights: 64, path ssbo (GL 4.3 / ...)" for the last frame, with a warning when lights were dropped.
 std::string describeLights(const Renderer& renderer);
+// "reflection passes: bounded to the visible water (...)" or why they cover the whole screen.
+std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene);
 
 // Median wall-clock milliseconds of `frames` frames of the active pipeline, each ended by
 // glFinish, after two warm-ups. Whole frames are always timed this way (the floor too), so the

@@ -553,6 +553,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::CollapsingHeader("water")) {
         WaterSettings& water = scene.water;
         ImGui::Checkbox("reflections", &water.reflections);
+        ImGui::Checkbox("reflection bounded to the visible water", &water.reflectionBounds);
         ImGui::SliderFloat("level", &water.level, -20.0f, 30.0f);
         ImGui::ColorEdit3("tint", &water.tint.x);
         ImGui::SliderFloat("absorption", &water.absorption, 0.0f, 0.5f);

@@ -40,7 +40,6 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     setup.cameraAboveWater = setup.view.pose.position.y >= double(scene.water.level);
     setup.reflectionsActive = scene.water.reflections && setup.cameraAboveWater;
     setup.vegetationEnabled = scene.vegetation.enabled;
-    setup.trimmedBillboards = scene.vegetation.trimmedBillboards;
 
     FrameData& d = setup.data;
     d.viewProjection = setup.view.viewProjection();
@@ -68,6 +67,8 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     float wind = std::clamp(scene.vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
     d.vegetation = glm::vec4(wind, float(std::fmod(scene.timeSeconds * 2.3, kTwoPi)), 0.0f, 0.0f);
     d.vegetationAtlas = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the renderer fills in its atlas
+    d.screen = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+    for (glm::vec4& cell : d.plantDrawnBounds) cell = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);  // whole cells
     // Noise origins around the camera, in double: see shaders/common/noise.glsl.
     glm::dvec2 cameraXZ(setup.view.pose.position.x, setup.view.pose.position.z);
     NoiseOrigins terrain = terrainNoiseOrigins(scene.terrain, cameraXZ);

@@ -24,6 +24,7 @@ struct WaterSettings {
     glm::vec3 tint{0.02f, 0.11f, 0.10f};               // what deep water's scattered light looks like
     float fresnelF0 = 0.02f;                           // reflectance looking straight down (water: ~0.02)
     bool reflections = true;                           // the mirrored scene; off: the sky alone is reflected
+    bool reflectionBounds = true;                      // the reflection's passes clip to the visible water
 };
 
 // The point lights: how many (scene/point_lights.h places and animates them) and, when forced
@@ -56,8 +57,8 @@ struct FrameSetup {
     TerrainWedge wedge;
     bool cameraAboveWater = true;   // at the level counts as above: the plane is seen edge-on
     bool reflectionsActive = true;  // reflections on and the camera above the water
+    bool waterBounded = false;      // the reflection's passes clip to the visible water (set by the renderer)
     bool vegetationEnabled = true;
-    bool trimmedBillboards = true;  // VegetationSettings::trimmedBillboards
     bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
     FrameData data;
     std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)

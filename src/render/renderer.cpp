@@ -26,8 +26,7 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glGetIntegerv(GL_MAX_VERTEX_UNIFORM_BLOCKS, &maxVertexBlocks);
     glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_BLOCKS, &maxFragmentBlocks);
     uboLights_ = uboLightLayout(maxBlockSize, std::min(maxVertexBlocks, maxFragmentBlocks));
-    shaders_.setContextDefines({"LIGHTS_UBO_CAPACITY " + std::to_string(uboLights_.capacity),
-                                "LIGHTS_UBO_BLOCKS " + std::to_string(uboLights_.blocks)});
+    chooseWaterBounds();
     lightList_ = gl::createBuffer();
     lightCount_ = gl::createBuffer();
     glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
@@ -74,6 +73,51 @@ void Renderer::setSsboAvailable(bool available, const std::string& reason, const
     ssboAvailable_ = available;
     if (!available) ssboMissingReason_ = reason;
     lightsChoice_ = chooseLightsPath(ssboAvailable_, forced, ssboMissingReason_);
+    chooseWaterBounds();
+}
+
+void Renderer::chooseWaterBounds() {
+    GLint vertexBlocks = 0, fragmentBlocks = 0, clipDistances = 0;
+    if (ssboAvailable_) {
+        glGetIntegerv(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, &vertexBlocks);
+        glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
+    }
+    glGetIntegerv(GL_MAX_CLIP_DISTANCES, &clipDistances);
+    // GLSL 4.30's own storage blocks, atomics on them and early fragment tests: the extensions that
+    // bring them to older GLSL (softpipe's 3.30) are not worth a second spelling of the shader.
+    const bool glsl430 = epoxy_gl_version() >= 43;
+    waterBoundsAvailable_ = ssboAvailable_ && glsl430 && vertexBlocks >= 1 && fragmentBlocks >= 1 && clipDistances >= 5;
+    if (waterBoundsAvailable_)
+        waterBoundsReason_ = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances)";
+    else if (!ssboAvailable_)
+        waterBoundsReason_ = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
+    else if (!glsl430)
+        waterBoundsReason_ = "whole screen, stencil-masked (needs GL 4.3: storage blocks, their atomics and early "
+                             "fragment tests in GLSL 4.30; this context is " + std::to_string(epoxy_gl_version() / 10) +
+                             "." + std::to_string(epoxy_gl_version() % 10) + ")";
+    else
+        waterBoundsReason_ = "whole screen, stencil-masked (storage blocks in vertex/fragment shaders " +
+                             std::to_string(vertexBlocks) + "/" + std::to_string(fragmentBlocks) +
+                             ", clip distances " + std::to_string(clipDistances) + "; need 1/1 and 5)";
+    if (waterBoundsAvailable_ && !waterBounds_.name()) {
+        waterBounds_ = gl::createBuffer();
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
+        glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * sizeof(GLint), nullptr, GL_DYNAMIC_DRAW);
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    }
+    std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(uboLights_.capacity),
+                                        "LIGHTS_UBO_BLOCKS " + std::to_string(uboLights_.blocks)};
+    if (waterBoundsAvailable_) defines.push_back("WATER_BOUNDS 1");
+    if (defines != shaders_.contextDefines()) shaders_.setContextDefines(defines);
+}
+
+glm::ivec4 Renderer::readWaterBounds() const {
+    glm::ivec4 bounds(1, 1, 0, 0);
+    if (!waterBoundsAvailable_) return bounds;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(bounds), &bounds);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return bounds;
 }
 
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
@@ -121,13 +165,14 @@ void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
     plantAtlas_ = atlas;
     debugViews_.setPlantAtlasTexture(atlas ? atlas->texture() : 0);
     if (atlas)
-        vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows(), atlas->drawnBounds());
+        vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows());
     else
         vegetationBuffers_.setAtlas(0, 1, 1);
 }
 
 PassContext Renderer::context() {
-    return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_};
+    return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_,
+                       waterBoundsAvailable_ ? waterBounds_.name() : 0u};
 }
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {
@@ -137,6 +182,12 @@ void Renderer::prepareVegetation(const SceneSettings& scene) {
                           (2.0f * std::tan(glm::radians(frame_.view.projection.verticalFovDegrees) * 0.5f));
     frame_.data.vegetationAtlas = glm::vec4(float(vegetationBuffers_.atlasColumns()),
                                             float(vegetationBuffers_.atlasRows()), cellTexels, pixelsPerUnit);
+    // Trimmed billboards: each cell's drawn bounds (prepareFrame left whole cells).
+    if (plantAtlas_ && scene.vegetation.trimmedBillboards) {
+        const std::vector<glm::vec4>& drawn = plantAtlas_->drawnBounds();
+        for (size_t cell = 0; cell < drawn.size() && cell < size_t(OASIS_PLANT_MAX_CELLS); ++cell)
+            frame_.data.plantDrawnBounds[cell] = drawn[cell];
+    }
     vegetationList_.instances.clear();
     vegetationList_.directCount = vegetationList_.mirroredCount = 0;
     if (frame_.vegetationEnabled && plantAtlas_) {
@@ -187,6 +238,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     if (!sameGridDensity(scene.grid, geometry_.density())) geometry_ = SceneGeometry(scene.grid);
     frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth());
     frame_.positionFromDepth = targets_->layout().positionFromDepth();
+    frame_.waterBounded = waterBoundsAvailable_ && scene.water.reflectionBounds;
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     frame_.lightsPath = lightsChoice_.path;

@@ -64,6 +64,13 @@ public:
     // default asks the context directly.
     void setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced);
     const UboLightLayout& uboLights() const { return uboLights_; }
+    // Whether the reflection's passes can be bounded to the visible water (storage blocks in vertex
+    // and fragment shaders, five clip distances: follows setSsboAvailable), and why (not).
+    bool waterBoundsAvailable() const { return waterBoundsAvailable_; }
+    const std::string& waterBoundsReason() const { return waterBoundsReason_; }
+    // The last frame's rectangle of visible water in pixels (x0, y0, x1, y1 inclusive, rows bottom-up;
+    // empty: x0 > x1) as the GPU recorded it; reads it back (a stall: for tests and tools).
+    glm::ivec4 readWaterBounds() const;
     // Lights the last frame drew, and how many the UBO path had to drop (0 on the SSBO paths).
     int lightsDrawn() const { return int(frame_.lights.size()); }
     int lightsDropped() const { return lightsDropped_; }
@@ -144,6 +151,10 @@ private:
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
     bool ssboAvailable_ = false;
     std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
+    gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)
+    bool waterBoundsAvailable_ = false;
+    std::string waterBoundsReason_;
+    void chooseWaterBounds();  // from ssboAvailable_ and the context's limits; sets the context defines
     UboLightLayout uboLights_;
     LightsPathChoice lightsChoice_;
     int lightsDropped_ = 0;

@@ -75,7 +75,8 @@ bool expandIncludes(const std::string& root, const std::string& file, Preprocess
     return true;
 }
 
-// The light list's blocks (render/texture_units.h), whichever of them the program declares.
+// The light list's blocks and the water bounds (render/texture_units.h), whichever of them the
+// program declares.
 void bindLightBlocks(GLuint program) {
     GLuint count = glGetUniformBlockIndex(program, kLightCountBlockName);
     if (count != GL_INVALID_INDEX) glUniformBlockBinding(program, count, kLightCountBlockBinding);
@@ -89,7 +90,8 @@ void bindLightBlocks(GLuint program) {
                                      epoxy_has_gl_extension("GL_ARB_program_interface_query")))
         return;
     const std::pair<const char*, int> storage[] = {{kLightStorageName, kLightStorageBinding},
-                                                   {kLightCountStorageName, kLightCountStorageBinding}};
+                                                   {kLightCountStorageName, kLightCountStorageBinding},
+                                                   {kWaterBoundsStorageName, kWaterBoundsStorageBinding}};
     for (auto [blockName, binding] : storage) {
         GLuint index = glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, blockName);
         if (index != GL_INVALID_INDEX) glShaderStorageBlockBinding(program, index, GLuint(binding));

@@ -48,5 +48,8 @@ inline constexpr const char* kLightStorageName = "LightBuffer";
 inline constexpr int kLightStorageBinding = 6;
 inline constexpr const char* kLightCountStorageName = "LightCountBuffer";
 inline constexpr int kLightCountStorageBinding = 7;
+// The screen rectangle of the frame's visible water (shaders/common/water_bounds.glsl).
+inline constexpr const char* kWaterBoundsStorageName = "WaterBoundsBuffer";
+inline constexpr int kWaterBoundsStorageBinding = 5;
 
 }  // namespace oasis

@@ -3,7 +3,6 @@
 
 #include <cstddef>
 
-#include "common/shared_constants.glsl"
 #include "render/plant_atlas.h"
 #include "render/texture_units.h"
 
@@ -43,21 +42,15 @@ void VegetationBuffers::upload(const VegetationDrawList& list) {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void VegetationBuffers::setAtlas(GLuint texture, int columns, int rows, std::vector<glm::vec4> drawnBounds) {
+void VegetationBuffers::setAtlas(GLuint texture, int columns, int rows) {
     atlas_ = texture;
     columns_ = columns;
     rows_ = rows;
-    // Cells without a measured box (none given) stay whole.
-    wholeCells_.assign(OASIS_PLANT_MAX_CELLS, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
-    drawnBounds.resize(OASIS_PLANT_MAX_CELLS, glm::vec4(0.0f, 0.0f, 1.0f, 1.0f));
-    drawnBounds_ = std::move(drawnBounds);
 }
 
-void VegetationBuffers::draw(Mirroring mirroring, GLuint program, bool trimmed) const {
+void VegetationBuffers::draw(Mirroring mirroring) const {
     size_t count = this->count(mirroring);
     if (count == 0 || atlas_ == 0) return;
-    const std::vector<glm::vec4>& bounds = trimmed ? drawnBounds_ : wholeCells_;
-    glUniform4fv(glGetUniformLocation(program, "plantDrawnBounds"), GLsizei(bounds.size()), &bounds[0].x);
     size_t first = mirroring == Mirroring::Direct ? 0 : directCount_;
     glActiveTexture(GL_TEXTURE0 + kUnitPlantAtlas);
     glBindTexture(GL_TEXTURE_2D, atlas_);

@@ -3,10 +3,6 @@
 // that reads the plant atlas with mipmaps. Draws work on GL 3.3: a list is selected by pointing
 // the instanced attributes at its first instance, not by base-instance draws (GL 4.2).
 #pragma once
-#include <vector>
-
-#include <glm/glm.hpp>
-
 #include "gl/objects.h"
 #include "render/surface_output.h"
 #include "scene/vegetation.h"
@@ -19,14 +15,11 @@ public:
 
     // Replaces the instances (orphaning the old storage, so a frame in flight keeps its own).
     void upload(const VegetationDrawList& list);
-    // The atlas the billboards sample (0: nothing is drawn), its grid of cells and each cell's
-    // drawn bounds (PlantAtlas::drawnBounds; empty: whole cells).
-    void setAtlas(GLuint texture, int columns, int rows, std::vector<glm::vec4> drawnBounds = {});
+    // The atlas the billboards sample (0: nothing is drawn) and its grid of cells.
+    void setAtlas(GLuint texture, int columns, int rows);
     bool hasAtlas() const { return atlas_ != 0; }
-    // Binds the atlas and its sampler to the plant-atlas unit, hands `program` (a vegetation
-    // variant) the cells' drawn bounds (`trimmed`) or whole cells, and draws one list as 4-vertex
-    // strips.
-    void draw(Mirroring mirroring, GLuint program, bool trimmed) const;
+    // Binds the atlas and its sampler to the plant-atlas unit and draws one list as 4-vertex strips.
+    void draw(Mirroring mirroring) const;
     size_t count(Mirroring mirroring) const { return mirroring == Mirroring::Direct ? directCount_ : mirroredCount_; }
     int atlasColumns() const { return columns_; }
     int atlasRows() const { return rows_; }
@@ -37,8 +30,6 @@ private:
     gl::Sampler atlasSampler_;
     GLuint atlas_ = 0;
     int columns_ = 1, rows_ = 1;
-    std::vector<glm::vec4> drawnBounds_;  // one per cell, OASIS_PLANT_MAX_CELLS of them
-    std::vector<glm::vec4> wholeCells_;
     size_t directCount_ = 0, mirroredCount_ = 0;
 };
 

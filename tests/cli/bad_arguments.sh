@@ -77,6 +77,7 @@ scene_cases() {
 --absorption|-0.001
 --vegetation|maybe
 --billboards|half
+--reflection-bounds|maybe
 --vegetation-density|4.5
 --vegetation-density|-1
 --wind|3.5

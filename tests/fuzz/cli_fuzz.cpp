@@ -93,6 +93,7 @@ const std::vector<Flag>& flags() {
         {"--absorption", Value::Number, 0, 2},
         {"--vegetation", Value::Choice, 0, 0, {"on", "off"}},
         {"--billboards", Value::Choice, 0, 0, {"trimmed", "whole"}},
+        {"--reflection-bounds", Value::Choice, 0, 0, {"on", "off"}},
         {"--vegetation-density", Value::Number, 0, 4},
         {"--wind", Value::Number, 0, 3},
         {"--no-compute", Value::None},

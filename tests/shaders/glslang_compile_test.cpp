@@ -3,6 +3,7 @@
 // Broken-shader and line-number cases are in glslang_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -42,6 +43,34 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shaders, EveryVariant, ::testing::ValuesIn(variantNames()), testName);
+
+// The variants that record or clip to the visible water, with the context define that turns it on
+// where storage blocks exist (render/renderer.cpp, common/water_bounds.glsl).
+class WaterBoundedVariant : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(WaterBoundedVariant, CompilesAndLinksWithGlslang) {
+    std::string directory = findShaderDirectory();
+    ASSERT_FALSE(directory.empty()) << "shader directory not found";
+    ShaderLibrary library(directory);
+    library.setContextDefines({"WATER_BOUNDS 1"});
+    const ProgramVariant* variant = findProgramVariant(GetParam());
+    ASSERT_NE(variant, nullptr);
+    std::string log;
+    EXPECT_TRUE(compileVariant(library, *variant, log)) << variant->name << " with WATER_BOUNDS:\n" << log;
+}
+
+std::vector<std::string> waterBoundedVariantNames() {
+    std::vector<std::string> names;
+    for (const ProgramVariant& variant : programVariants()) {
+        const auto& d = variant.defines;
+        bool bounded = std::find(d.begin(), d.end(), "MIRRORED") != d.end() ||
+                       std::find(d.begin(), d.end(), "WATER_BOUNDED") != d.end() || variant.name == "water.mask";
+        if (bounded) names.push_back(variant.name);
+    }
+    return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Shaders, WaterBoundedVariant, ::testing::ValuesIn(waterBoundedVariantNames()), testName);
 
 TEST(ShaderVariants, TableCoversEveryShaderFile) {
     // Every .vert/.frag/.comp in shaders/ is used by some variant: no shader escapes compilation.

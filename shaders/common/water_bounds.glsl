@@ -1,0 +1,47 @@
+// The screen rectangle of the frame's visible water: the water mask's fragments (those that pass
+// its depth test, early) widen it, and the reflection's full-screen draws (its clear, the mirrored
+// depth copy, lighting and sky) clip their triangle to it, so they rasterise only where water is
+// seen, and nothing at all when none is. Clipping a full-screen triangle changes no pixel; the
+// mirrored geometry and the water quad are not clipped: new vertices at the clip edges would move
+// their interpolated attributes and depth by rounding, and the frame would no longer be the one
+// every fallback draws bit for bit (they stay stencil-masked). WATER_BOUNDS is a context define (render/renderer.cpp: where
+// vertex and fragment shaders have storage blocks); without it nothing is recorded or clipped.
+// The water mask's fragment shader defines WATER_BOUNDS_RECORDER before including this (it
+// records); every other includer is fullscreen.vert (it clips).
+#ifndef OASIS_WATER_BOUNDS_GLSL
+#define OASIS_WATER_BOUNDS_GLSL
+#include "common/frame_block.glsl"
+
+#if defined(WATER_BOUNDS)
+// Pixels (gl_FragCoord, bottom-up), inclusive: x min, y min, x max, y max; reset each frame to an
+// empty box (min > max) by WaterMaskPass. Bound by name (render/texture_units.h).
+buffer WaterBoundsBuffer { ivec4 waterPixels; };
+
+#if defined(WATER_BOUNDS_RECORDER)
+void recordWaterPixel(ivec2 pixel) {
+    // Bounds only ever widen, so a read that lags behind can only cause an atomic that was not
+    // needed, never skip one that was: most fragments change nothing and pay no atomic.
+    if (pixel.x < waterPixels.x) atomicMin(waterPixels.x, pixel.x);
+    if (pixel.y < waterPixels.y) atomicMin(waterPixels.y, pixel.y);
+    if (pixel.x > waterPixels.z) atomicMax(waterPixels.z, pixel.x);
+    if (pixel.y > waterPixels.w) atomicMax(waterPixels.w, pixel.y);
+}
+#else
+
+// gl_ClipDistance[1..4] against the rectangle's edges (pixel edges, so every water pixel's centre
+// is half a pixel inside); the passes of the reflection enable them (passes/pass.cpp).
+void clipToWaterBounds(vec4 clipPosition) {
+    vec4 edges = vec4(vec2(waterPixels.xy), vec2(waterPixels.zw) + 1.0) * frame.screen.zwzw * 2.0 - 1.0;
+    gl_ClipDistance[1] = clipPosition.x - edges.x * clipPosition.w;
+    gl_ClipDistance[2] = clipPosition.y - edges.y * clipPosition.w;
+    gl_ClipDistance[3] = edges.z * clipPosition.w - clipPosition.x;
+    gl_ClipDistance[4] = edges.w * clipPosition.w - clipPosition.y;
+}
+#endif
+#elif defined(WATER_BOUNDS_RECORDER)
+void recordWaterPixel(ivec2 pixel) {}
+#else
+void clipToWaterBounds(vec4 clipPosition) {}
+#endif
+
+#endif
