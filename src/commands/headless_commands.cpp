@@ -263,8 +263,8 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
                  view->name.c_str(), describeChannel(*view, channel).c_str(), statistics.values, statistics.nan,
                  statistics.positiveInfinity, statistics.negativeInfinity, statistics.negative, statistics.min,
                  statistics.max);
-    gl::endFrame();  // the frame ends with its view read back; the legend strip is drawn after it
     if (!options.legend) return image;
+    gl::endFrame();  // the frame ends with its view read back; the legend strip is a frame of its own
     const FrameData& frame = renderer.lastFrame().data;
     LegendRenderer legends;
     Legend legend = viewLegend(*view, controls, statistics, frame.depthRange.x, frame.depthRange.y,
@@ -284,7 +284,6 @@ int runRenderCommand(const Options& options) {
         std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
         Image image = errorView ? encodingErrorImage(options, session, *errorView, report)
                                 : renderedViewImage(options, renderer, report);
-        gl::endFrame();  // the frame ends with its view read back (and a capture of it is written)
         std::string error;
         if (!writePng(options.out, image, error)) {
             std::fprintf(stderr, "oasis: %s\n", error.c_str());

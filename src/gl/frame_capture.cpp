@@ -5,6 +5,7 @@
 #include <epoxy/gl.h>
 
 #include <cstdint>
+#include <string>
 
 namespace oasis::gl {
 namespace {
@@ -60,8 +61,26 @@ RenderDocApi* renderDoc(std::string* why) {
     return api;
 }
 
+// The tracer's own glFrameTerminatorGREMEDY, where a tracer is preloaded into this process.
+// apitrace's egltrace.so exports it but, on a desktop GL context made through EGL, does not list
+// GL_GREMEDY_frame_terminator in glGetStringi (measured: docs/captures.md), so the extension
+// check alone would miss it. Only a tracer's symbol counts: GLVND's libGL.so.1 exports a stub too.
+using Terminator = void (*)();
+Terminator tracerTerminator() {
+    static Terminator found = [] {
+        void* symbol = dlsym(RTLD_DEFAULT, "glFrameTerminatorGREMEDY");
+        Dl_info info{};
+        if (!symbol || !dladdr(symbol, &info) || !info.dli_fname) return Terminator(nullptr);
+        std::string library = info.dli_fname;
+        bool tracer = library.find("apitrace") != std::string::npos || library.find("renderdoc") != std::string::npos;
+        return tracer ? reinterpret_cast<Terminator>(symbol) : Terminator(nullptr);
+    }();
+    return found;
+}
+
 void terminate() {
-    if (epoxy_has_gl_extension("GL_GREMEDY_frame_terminator")) glFrameTerminatorGREMEDY();
+    if (Terminator tracer = tracerTerminator()) tracer();
+    else if (epoxy_has_gl_extension("GL_GREMEDY_frame_terminator")) glFrameTerminatorGREMEDY();
 }
 
 }  // namespace
@@ -69,12 +88,12 @@ void terminate() {
 void setFrameTerminators(bool on) { gTerminators = on; }
 
 void endFrame() {
-    if (gTerminators) terminate();
-    gFrameOpen = false;
-    if (gCapturing) {
+    if (gCapturing) {  // before the terminator: RenderDoc may treat that as the frame's end too
         renderDoc(nullptr)->endFrameCapture(nullptr, nullptr);
         gCapturing = false;
     }
+    if (gTerminators) terminate();
+    gFrameOpen = false;
 }
 
 void beginFrame() {
