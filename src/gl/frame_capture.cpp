@@ -79,8 +79,10 @@ Terminator tracerTerminator() {
 }
 
 void terminate() {
+    // Asked once: headless commands have one context, and the extension list is long to scan.
+    static const bool listed = epoxy_has_gl_extension("GL_GREMEDY_frame_terminator");
     if (Terminator tracer = tracerTerminator()) tracer();
-    else if (epoxy_has_gl_extension("GL_GREMEDY_frame_terminator")) glFrameTerminatorGREMEDY();
+    else if (listed) glFrameTerminatorGREMEDY();
 }
 
 }  // namespace
