@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <string>
@@ -160,24 +161,45 @@ HeadlessContext::HeadlessContext(MaxGlVersion max) {
     eglChooseConfig(display, configAttributes, &config, 1, &configCount);
     bool noConfig = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
     if (configCount < 1 && !noConfig) throw std::runtime_error("EGL has no OpenGL-renderable config");
-    for (auto [glMajor, glMinor] : kVersionsToTry) {
-        if (!allowed(max, glMajor, glMinor)) continue;
+    EGLConfig chosen = configCount ? config : EGL_NO_CONFIG_KHR;
+    auto makeCurrentContext = [&](int glMajor, int glMinor) -> EGLContext {
         EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION_KHR, glMajor, EGL_CONTEXT_MINOR_VERSION_KHR, glMinor,
                                EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR,
                                EGL_CONTEXT_FLAGS_KHR, EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR, EGL_NONE};
-        EGLContext context = eglCreateContext(display, configCount ? config : EGL_NO_CONFIG_KHR,
-                                              EGL_NO_CONTEXT, attributes);
-        if (context == EGL_NO_CONTEXT) continue;
+        EGLContext context = eglCreateContext(display, chosen, EGL_NO_CONTEXT, attributes);
+        if (context == EGL_NO_CONTEXT) return EGL_NO_CONTEXT;
         if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
             eglDestroyContext(display, context);
-            continue;
+            return EGL_NO_CONTEXT;
         }
-        context_ = context;
-        installDebugOutput();
-        return;
+        return context;
+    };
+    // The oldest version first: Mesa (like the other desktop drivers) answers a core request with
+    // its newest core version, so one call gives the context, and a trace of the command (apitrace)
+    // holds no refused eglCreateContext for its replay to stop at. Only a driver that gives exactly
+    // the version asked for is then asked for the newer ones, newest first.
+    auto [oldestMajor, oldestMinor] = kVersionsToTry[std::size(kVersionsToTry) - 1];
+    EGLContext context = makeCurrentContext(oldestMajor, oldestMinor);
+    if (context == EGL_NO_CONTEXT) {
+        eglTerminate(display);
+        throw std::runtime_error("EGL could not create an OpenGL 3.3+ core context on this driver");
     }
-    eglTerminate(display);
-    throw std::runtime_error("EGL could not create an OpenGL 3.3+ core context on this driver");
+    GLint givenMajor = 0, givenMinor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &givenMajor);
+    glGetIntegerv(GL_MINOR_VERSION, &givenMinor);
+    if (givenMajor == oldestMajor && givenMinor == oldestMinor) {
+        for (auto [glMajor, glMinor] : kVersionsToTry) {
+            if (!allowed(max, glMajor, glMinor) || (glMajor == oldestMajor && glMinor == oldestMinor)) continue;
+            if (EGLContext newer = makeCurrentContext(glMajor, glMinor); newer != EGL_NO_CONTEXT) {
+                eglDestroyContext(display, context);
+                context = newer;
+                break;
+            }
+        }
+        eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context);  // again where none newer was made
+    }
+    context_ = context;
+    installDebugOutput();
 }
 
 HeadlessContext::~HeadlessContext() {

@@ -5,6 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "context/epoxy_glx_probe.h"
+
 struct GLFWwindow;
 
 namespace oasis {
@@ -50,6 +52,9 @@ public:
     HeadlessContext& operator=(const HeadlessContext&) = delete;
 
 private:
+    // First, so that libepoxy's first lookups (eglGetPlatformDisplayEXT on) already see it, and
+    // last to go, after the context.
+    NoGlxContextForEpoxy noGlx_;
     void* display_ = nullptr;
     void* context_ = nullptr;
 };
