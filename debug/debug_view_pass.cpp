@@ -19,7 +19,7 @@ void DebugViewPass::uploadStencilCopy(const FrameTargets& targets) {
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencilBytes_.data());
     if (!stencilCopy_ || stencilCopyWidth_ != w || stencilCopyHeight_ != h) {
-        stencilCopy_ = gl::createTargetTexture(GL_R8UI, w, h);
+        stencilCopy_ = gl::createTargetTexture("stencil read-back copy", GL_R8UI, w, h);
         stencilCopyWidth_ = w;
         stencilCopyHeight_ = h;
     }

@@ -5,6 +5,9 @@
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
+#include "debug/imgui_gl_labels.h"
+#include "gl/objects.h"
+
 namespace oasis {
 namespace {
 
@@ -60,8 +63,10 @@ void LabelOverlay::drawWith(const std::function<void(ImDrawList&)>& paint, int w
     io.FontGlobalScale = scale;
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
+    nameImGuiObjects(*ImGui::GetForegroundDrawList(), "ImGui labels");
     paint(*ImGui::GetForegroundDrawList());
     ImGui::Render();
+    gl::DebugGroup group("LabelOverlay (ImGui)");
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 

@@ -156,8 +156,8 @@ Image LegendRenderer::draw(const Legend& legend, int width) {
     int height = int(std::ceil(2.0f * pad + float(textLines) * line + (bar ? 2.0f * line + pad : 0.0f) +
                                (swatches ? line + pad : 0.0f) + (overlay ? line : 0.0f)));
 
-    gl::Texture target = gl::createTargetTexture(GL_RGBA8, width, height);
-    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    gl::Texture target = gl::createTargetTexture("view legend", GL_RGBA8, width, height);
+    gl::Framebuffer framebuffer = gl::createFramebuffer("view legend");
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.name(), 0);
     glViewport(0, 0, width, height);

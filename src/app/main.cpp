@@ -10,6 +10,24 @@
 #include "commands/headless_commands.h"
 #include "commands/window_app.h"
 #include "context/gl_context.h"
+#include "gl/frame_capture.h"
+
+namespace {
+int runCommand(const oasis::Options& options) {
+    using namespace oasis;
+    switch (options.command) {
+        case Command::Render: return runRenderCommand(options);
+        case Command::Compare: return runCompareCommand(options);
+        case Command::Caps: return runCapsCommand(options);
+        case Command::Bench: return runBenchCommand(options);
+        case Command::Probe: return runProbeCommand(options);
+        case Command::Window: return runWindowApp(options);
+        case Command::Default:
+            return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);
+    }
+    return 2;
+}
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace oasis;
@@ -28,15 +46,21 @@ int main(int argc, char** argv) {
         std::fputs(usage(options.command).c_str(), stdout);
         return 0;
     }
-    switch (options.command) {
-        case Command::Render: return runRenderCommand(options);
-        case Command::Compare: return runCompareCommand(options);
-        case Command::Caps: return runCapsCommand(options);
-        case Command::Bench: return runBenchCommand(options);
-        case Command::Probe: return runProbeCommand(options);
-        case Command::Window: return runWindowApp(options);
-        case Command::Default:
-            return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);
+    std::string why;
+    if (options.capture && !gl::renderDocLoaded(&why)) {  // said before anything is rendered or written
+        std::fprintf(stderr, "oasis: --capture: %s\n", why.c_str());
+        return 1;
     }
-    return 0;
+    setGlDebugMode(options.glDebug);
+    int code = runCommand(options);
+    if (options.glDebug) std::fprintf(stderr, "oasis: %s\n", glDebugSummary().c_str());
+    if (options.capture) {
+        std::vector<std::string> captures = gl::renderDocCaptures();
+        for (const std::string& path : captures) std::printf("oasis: RenderDoc capture: %s\n", path.c_str());
+        if (captures.empty() && code == 0) {
+            std::fprintf(stderr, "oasis: --capture: RenderDoc wrote no capture\n");
+            return 1;
+        }
+    }
+    return code;
 }

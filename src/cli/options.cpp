@@ -44,6 +44,8 @@ const char* kSceneOptionsHelp =
     "  --billboards trimmed|whole  plant billboards trimmed to their atlas cell's drawn bounds, or\n"
     "                            whole cells (default trimmed; whole: the reference for the trim)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
+    "  --gl-debug                synchronous GL debug output: stop at the first GL error, naming its\n"
+    "                            debug group path; count performance warnings, printed at the end\n"
     "  --lights N                point lights (lanterns, fireflies) around the lake (default 0);\n"
     "                            they glow at night, e.g. --hour 21\n"
     "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
@@ -141,13 +143,17 @@ std::string usage(Command command) {
                    "                            direct (the lakebed, default) or mirrored (what the water reflects)\n"
                    "  --stop-before PASS        end the frame before the named pass, to see its inputs\n"
                    "                            (e.g. WaterCompositePass; a wrong name lists the passes);\n"
-                   "                            Final is black then: view the targets the frame reached\n" + scene;
+                   "                            Final is black then: view the targets the frame reached\n"
+                   "  --capture                 under RenderDoc: capture the rendered frame (set-up and shader\n"
+                   "                            builds outside it) and print where; without RenderDoc, exit 1\n" + scene;
         case Command::Compare:
             return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N] [--passes]\n"
                    "  renders the frame in both pipelines; prints PSNR, max abs and RMSE over 8-bit RGB and the\n"
                    "  median ms per frame of each (wall time around glFinish over N frames, default 9);\n"
                    "  writes forward.png, deferred.png and difference.png to DIR (default oasis-out);\n"
-                   "  --passes adds each pass's median ms (glFinish after every pass)\n" + scene;
+                   "  --passes adds each pass's median ms (glFinish after every pass)\n"
+                   "  --capture                 under RenderDoc: capture the forward and the deferred frame whose\n"
+                   "                            images are written (two captures); without RenderDoc, exit 1\n" + scene;
         case Command::Caps:
             return "usage: oasis caps [--json] [--force LIST]\n"
                    "  the context's GL version, vendor, renderer, GLSL version, the limits and extensions that\n"
@@ -166,6 +172,8 @@ std::string usage(Command command) {
                    "                            the most lights, 3 timed frames\n"
                    "  --json                    print the JSON to stdout (the table goes to stderr)\n"
                    "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"
+                   "  --capture                 under RenderDoc: capture the first timed frame (its time is then\n"
+                   "                            one sample of the median); without RenderDoc, exit 1\n"
                    "  the bench sets --size, --time, --camera, --gbuffer, --lights and the knobs itself; other scene\n"
                    "  options (e.g. --hour, --ripples) set the scene every configuration starts from\n" + scene;
         case Command::Probe:
@@ -256,6 +264,15 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (flag == "--json") { options.json = true; continue; }
         if (flag == "--passes") { options.passTimes = true; continue; }
         if (flag == "--no-compute") { options.scene.noCompute = true; continue; }
+        if (flag == "--gl-debug") { options.glDebug = true; continue; }
+        if (flag == "--capture") {
+            if (options.command != Command::Render && options.command != Command::Compare &&
+                options.command != Command::Bench)
+                return fail("option --capture belongs to `oasis render`, `oasis compare` and `oasis bench` (in the "
+                            "window: F9 or the panel's capture button)");
+            options.capture = true;
+            continue;
+        }
         if (!takesValue)
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         if (i + 1 >= arguments.size()) return fail("option " + flag + " needs a value (see --help)");

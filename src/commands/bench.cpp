@@ -18,12 +18,21 @@
 #include "commands/session.h"
 #include "commands/svg_plot.h"
 #include "context/gl_context.h"
+#include "gl/frame_capture.h"
 #include "render/gbuffer_layout.h"
 #include "render/file_output.h"
 #include "render/image.h"
 
 namespace oasis {
 namespace {
+
+bool gCaptured = false;  // --capture: the first timed frame has been armed
+
+std::string describeCapturedConfig(const BenchConfig& config) {
+    return std::string(pipelineName(config.pipeline)) + " " + config.layout + " " + std::to_string(config.width) + "x" +
+           std::to_string(config.height) + " " + config.variation(qualityKnobs()) + ", " +
+           std::to_string(config.lights) + " lights, depth " + config.depth;
+}
 
 using Clock = std::chrono::steady_clock;
 
@@ -142,6 +151,12 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
         for (int i = 0; i < plan.timedFrames; ++i)
             for (size_t c = 0; c < group.size(); ++c) {
                 group[c].renderer->setPipeline(group[c].result->config.pipeline);
+                if (plan.captureFirstTimedFrame && !gCaptured) {
+                    gl::armCaptures(1);
+                    gCaptured = true;
+                    std::fprintf(stderr, "oasis bench: capturing the first timed frame: %s\n",
+                                 describeCapturedConfig(group[c].result->config).c_str());
+                }
                 Clock::time_point start = Clock::now();
                 group[c].renderer->renderFrame(scenes[c]);
                 glFinish();
@@ -322,10 +337,13 @@ BenchPlan benchPlan(const Options& options) {
 int runBenchCommand(const Options& options) {
     try {
         HeadlessContext context;
+        gl::setFrameTerminators(true);  // each frame a frame for capture tools; set-up its own
         RenderSession session(options);
+        gl::endFrame();
         Renderer& renderer = *session.renderer;
         std::string rendererName = queryContextInfo().renderer;
         BenchPlan plan = benchPlan(options);
+        plan.captureFirstTimedFrame = options.capture;
         plan.clock = session.timingClock();
         const std::vector<QualityKnob>& knobs = qualityKnobs();
         const GBufferLayout& reference = findGBufferLayout("full") ? *findGBufferLayout("full") : gbufferLayouts()[0];

@@ -21,6 +21,7 @@ struct BenchPlan {
     int floorFrames = 9;
     bool cheapestOnly = false;
     TimingClock clock;               // how passes are timed: measured at the run's start
+    bool captureFirstTimedFrame = false;  // --capture: RenderDoc captures the run's first timed frame
 };
 BenchPlan benchPlan(const Options& options);
 

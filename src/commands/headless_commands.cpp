@@ -13,6 +13,7 @@
 #include "commands/overview_overlay.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "gl/frame_capture.h"
 #include "render/file_output.h"
 #include "render/encoding_error.h"
 #include "render/pixel_probe.h"
@@ -44,9 +45,15 @@ Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind k
     return renderer.readDisplay();
 }
 
-Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes) {
+// With `capture`, RenderDoc captures the forward and the deferred frame whose images are written.
+Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes, bool capture = false) {
     Renderer& renderer = *session.renderer;
     Comparison result;
+    for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {  // shader builds: frames of their own
+        renderer.setPipeline(kind);
+        renderer.buildPrograms(session.scene, "final");
+    }
+    if (capture) gl::armCaptures(2);
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
     result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
     result.difference = compareImages(result.forward, result.deferred);
@@ -168,12 +175,18 @@ void printJson(const Options& options, const RenderSession& session, const Compa
 }
 
 // Runs `body` with a headless context and a session, turning failures into messages and exit 1.
+// Frames for capture tools: the set-up (plant atlas) is a frame of its own, each renderFrame
+// starts one, the command's end closes the last (gl/frame_capture.h).
 template <typename Body>
 int withHeadlessSession(const Options& options, Body body) {
     try {
         HeadlessContext context(maxGlVersionFor(options.scene));
+        gl::setFrameTerminators(true);
         RenderSession session(options);
-        return body(session);
+        gl::endFrame();
+        int code = body(session);
+        gl::endFrame();
+        return code;
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: %s\n", error.what());
         return 1;
@@ -254,6 +267,7 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
                  statistics.positiveInfinity, statistics.negativeInfinity, statistics.negative, statistics.min,
                  statistics.max);
     if (!options.legend) return image;
+    gl::endFrame();  // the frame ends with its view read back; the legend strip is a frame of its own
     const FrameData& frame = renderer.lastFrame().data;
     LegendRenderer legends;
     Legend legend = viewLegend(*view, controls, statistics, frame.depthRange.x, frame.depthRange.y,
@@ -265,9 +279,12 @@ int runRenderCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
         Renderer& renderer = *session.renderer;
         renderer.setPipeline(options.pipeline);
+        const EncodingErrorView* errorView = findEncodingErrorView(options.view);
+        // Shader builds in a frame of their own; the frame after it (captured with --capture) only draws.
+        if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
+        if (options.capture) gl::armCaptures(1);
         renderer.renderFrame(session.scene, options.stopBefore);
         std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
-        const EncodingErrorView* errorView = findEncodingErrorView(options.view);
         Image image = errorView ? encodingErrorImage(options, session, *errorView, report)
                                 : renderedViewImage(options, renderer, report);
         std::string error;
@@ -288,7 +305,7 @@ int runRenderCommand(const Options& options) {
 
 int runCompareCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
-        Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
+        Comparison c = compareFrame(session, options.timingFrames, options.passTimes, options.capture);
         Image heat = differenceImage(c);
         std::vector<std::string> written;
         if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},

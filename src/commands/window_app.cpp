@@ -27,7 +27,9 @@
 #include "commands/session.h"
 #include "commands/window_compare.h"
 #include "context/gl_context.h"
+#include "gl/frame_capture.h"
 #include "debug/error_image.h"
+#include "debug/imgui_gl_labels.h"
 #include "debug/debug_views.h"
 #include "debug/view_controls.h"
 #include "render/encoding_error.h"
@@ -128,6 +130,7 @@ struct WindowState {
     bool draggingDivider = false;
     std::string errorViewSummary;  // an encoding-error view's numbers, for the panel
     WindowCounts counts;
+    std::optional<size_t> capturesBefore;  // F9: RenderDoc's capture count when the capture was asked for
 };
 
 std::string loopLabel(const WindowState& state) {
@@ -195,6 +198,27 @@ void reloadShaders(Renderer& renderer, WindowState& state) {
     for (size_t i = 1; i < failures.size(); ++i) std::fprintf(stderr, "oasis: reload: %s\n", failures[i].c_str());
 }
 
+// F9 or the panel's button: RenderDoc captures the next presented frame (scene, view and panel);
+// its path is reported once written. Without RenderDoc the panel says why nothing happens.
+void requestCapture(WindowState& state) {
+    std::string why;
+    if (!gl::renderDocLoaded(&why)) {
+        report(state, "capture: " + why, true);
+        return;
+    }
+    state.capturesBefore = gl::renderDocCaptures().size();
+    gl::triggerWindowCapture();
+    report(state, "capture: RenderDoc captures the next frame", false);
+}
+
+void reportNewCapture(WindowState& state) {
+    if (!state.capturesBefore) return;
+    std::vector<std::string> captures = gl::renderDocCaptures();
+    if (captures.size() <= *state.capturesBefore) return;
+    report(state, "RenderDoc capture: " + captures.back(), false);
+    state.capturesBefore.reset();
+}
+
 void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, WindowState& state,
                 SceneSettings& scene) {
     // Only a text field being edited keeps the keys: after a click on the panel (which focuses it)
@@ -217,6 +241,7 @@ void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, Win
     if (key == GLFW_KEY_M)
         chosen.waterScene = chosen.waterScene == WaterScene::Direct ? WaterScene::Mirrored : WaterScene::Direct;
     if (key == GLFW_KEY_C) state.comparison.mode = CompareMode((int(state.comparison.mode) + 1) % kCompareModeCount);
+    if (key == GLFW_KEY_F9) requestCapture(state);
 }
 
 // The cursor's framebuffer pixel (0,0 top left) when it is over the frame and not over the panel.
@@ -496,6 +521,8 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     ImGui::Begin("oasis");
     // The reload result first: a shader error must be seen without scrolling a small window.
     if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
+    ImGui::SameLine();
+    if (ImGui::Button("capture next frame (F9)")) requestCapture(state);
     if (state.messageIsError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.2f, 1.0f));
     if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
     if (state.messageIsError) ImGui::PopStyleColor();
@@ -882,6 +909,7 @@ int runWindowApp(const Options& options) {
             handleInspectorMouse(window.window(), state.inspector, state.comparison, state.draggingDivider);
             drawPinMarkers(window.window(), state.inspector);
             drawCompareLabels(window.window(), state.comparison);
+            nameImGuiObjects(*ImGui::GetBackgroundDrawList(), "ImGui panel");
             ImGui::Render();
 
             auto loopStart = std::chrono::steady_clock::now();
@@ -896,9 +924,13 @@ int runWindowApp(const Options& options) {
                 glClearColor(0.2f, 0.2f, 0.2f, 1.0f);
                 glClear(GL_COLOR_BUFFER_BIT);
             }
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            {
+                gl::DebugGroup group("UI (ImGui panel)");
+                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            }
             glfwSwapBuffers(window.window());
             glFinish();
+            reportNewCapture(state);
             std::string label = loopLabel(state);
             if (!state.counts.loopMs.count(label)) state.counts.loopOrder.push_back(label);
             state.counts.loopMs[label].push_back(

@@ -5,8 +5,14 @@
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
 
+#include "gl/objects.h"
+
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <map>
 #include <set>
 #include <string>
 #include <stdexcept>
@@ -37,9 +43,52 @@ std::string glString(GLenum name) {
     return text ? reinterpret_cast<const char*>(text) : "";
 }
 
+bool gGlDebug = false;
+GlDebugCounts gCounts;
+std::map<GLuint, int> gPerformanceById;  // --gl-debug's performance warnings, by message id
+
+bool debuggerAttached() {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind("TracerPid:", 0) == 0) return std::atoi(line.c_str() + 10) != 0;
+    return false;
+}
+
+void stopAtError(const std::string&) {
+    std::fflush(nullptr);
+    if (debuggerAttached()) {
+        std::raise(SIGTRAP);  // the debugger stops here, inside the GL call that failed; continue resumes
+        return;
+    }
+    std::fprintf(stderr, "oasis: --gl-debug: stopped at the first GL error (under gdb it stops in the call)\n");
+    std::_Exit(1);
+}
+GlErrorStop gStop = stopAtError;
+
+// --gl-debug: errors stop the program, with the debug group path (synchronous output: the
+// groups open now are those around the failing call); performance warnings are counted.
+bool handleGlDebug(GLenum type, GLuint id, const GLchar* message) {
+    if (!gGlDebug) return false;
+    if (type == GL_DEBUG_TYPE_ERROR) {
+        ++gCounts.errors;
+        std::string text = "GL error in " + gl::debugGroupPath() + ": " + message;
+        std::fprintf(stderr, "oasis: %s\n", text.c_str());
+        gStop(text);
+        return true;
+    }
+    if (type == GL_DEBUG_TYPE_PERFORMANCE) {
+        ++gCounts.performanceWarnings;
+        ++gPerformanceById[id];
+        return true;
+    }
+    ++gCounts.otherWarnings;
+    return false;
+}
+
 void GLAPIENTRY printDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei, const GLchar* message,
                                   const void*) {
     if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+    if (handleGlDebug(type, id, message)) return;
     // A shader that does not compile is reported by the shader library, with file:line.
     if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     static std::set<GLuint> seen;  // each message once: a per-frame warning must not flood the console
@@ -69,9 +118,31 @@ ContextInfo queryContextInfo() {
 }
 
 void installDebugOutput() {
-    if (epoxy_gl_version() < 43 && !epoxy_has_gl_extension("GL_KHR_debug")) return;
+    if (epoxy_gl_version() < 43 && !epoxy_has_gl_extension("GL_KHR_debug")) {
+        if (gGlDebug) std::fprintf(stderr, "oasis: --gl-debug: this context has no KHR_debug: no debug output\n");
+        return;
+    }
     glEnable(GL_DEBUG_OUTPUT);
+    if (gGlDebug) {
+        glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+        glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+    }
     glDebugMessageCallback(printDebugMessage, nullptr);
+}
+
+void setGlDebugMode(bool on) { gGlDebug = on; }
+bool glDebugMode() { return gGlDebug; }
+GlDebugCounts glDebugCounts() { return gCounts; }
+void setGlErrorStop(GlErrorStop stop) { gStop = stop ? stop : stopAtError; }
+
+std::string glDebugSummary() {
+    std::string ids;
+    for (const auto& [id, count] : gPerformanceById)
+        ids += (ids.empty() ? " (by message id: " : ", ") + std::to_string(id) + " x" + std::to_string(count);
+    if (!ids.empty()) ids += ")";
+    return "--gl-debug: " + std::to_string(gCounts.errors) + " GL errors, " +
+           std::to_string(gCounts.performanceWarnings) + " performance warnings" + ids + ", " +
+           std::to_string(gCounts.otherWarnings) + " other warnings (printed above)";
 }
 
 HeadlessContext::HeadlessContext(MaxGlVersion max) {
@@ -90,24 +161,45 @@ HeadlessContext::HeadlessContext(MaxGlVersion max) {
     eglChooseConfig(display, configAttributes, &config, 1, &configCount);
     bool noConfig = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
     if (configCount < 1 && !noConfig) throw std::runtime_error("EGL has no OpenGL-renderable config");
-    for (auto [glMajor, glMinor] : kVersionsToTry) {
-        if (!allowed(max, glMajor, glMinor)) continue;
+    EGLConfig chosen = configCount ? config : EGL_NO_CONFIG_KHR;
+    auto makeCurrentContext = [&](int glMajor, int glMinor) -> EGLContext {
         EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION_KHR, glMajor, EGL_CONTEXT_MINOR_VERSION_KHR, glMinor,
                                EGL_CONTEXT_OPENGL_PROFILE_MASK_KHR, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT_KHR,
                                EGL_CONTEXT_FLAGS_KHR, EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR, EGL_NONE};
-        EGLContext context = eglCreateContext(display, configCount ? config : EGL_NO_CONFIG_KHR,
-                                              EGL_NO_CONTEXT, attributes);
-        if (context == EGL_NO_CONTEXT) continue;
+        EGLContext context = eglCreateContext(display, chosen, EGL_NO_CONTEXT, attributes);
+        if (context == EGL_NO_CONTEXT) return EGL_NO_CONTEXT;
         if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
             eglDestroyContext(display, context);
-            continue;
+            return EGL_NO_CONTEXT;
         }
-        context_ = context;
-        installDebugOutput();
-        return;
+        return context;
+    };
+    // The oldest version first: Mesa (like the other desktop drivers) answers a core request with
+    // its newest core version, so one call gives the context, and a trace of the command (apitrace)
+    // holds no refused eglCreateContext for its replay to stop at. Only a driver that gives exactly
+    // the version asked for is then asked for the newer ones, newest first.
+    auto [oldestMajor, oldestMinor] = kVersionsToTry[std::size(kVersionsToTry) - 1];
+    EGLContext context = makeCurrentContext(oldestMajor, oldestMinor);
+    if (context == EGL_NO_CONTEXT) {
+        eglTerminate(display);
+        throw std::runtime_error("EGL could not create an OpenGL 3.3+ core context on this driver");
     }
-    eglTerminate(display);
-    throw std::runtime_error("EGL could not create an OpenGL 3.3+ core context on this driver");
+    GLint givenMajor = 0, givenMinor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &givenMajor);
+    glGetIntegerv(GL_MINOR_VERSION, &givenMinor);
+    if (givenMajor == oldestMajor && givenMinor == oldestMinor) {
+        for (auto [glMajor, glMinor] : kVersionsToTry) {
+            if (!allowed(max, glMajor, glMinor) || (glMajor == oldestMajor && glMinor == oldestMinor)) continue;
+            if (EGLContext newer = makeCurrentContext(glMajor, glMinor); newer != EGL_NO_CONTEXT) {
+                eglDestroyContext(display, context);
+                context = newer;
+                break;
+            }
+        }
+        eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context);  // again where none newer was made
+    }
+    context_ = context;
+    installDebugOutput();
 }
 
 HeadlessContext::~HeadlessContext() {

@@ -5,6 +5,8 @@
 #include <memory>
 #include <string>
 
+#include "context/epoxy_glx_probe.h"
+
 struct GLFWwindow;
 
 namespace oasis {
@@ -18,6 +20,23 @@ ContextInfo queryContextInfo();
 
 // Routes GL debug output (errors and warnings; notifications are dropped) to stderr.
 void installDebugOutput();
+
+// --gl-debug: contexts made after this deliver debug output synchronously (inside the call that
+// caused it, so a debugger's stack shows the call), stop at the first GL error with the message
+// and the debug group path it happened in (gl::debugGroupPath), and count performance warnings
+// instead of printing them.
+void setGlDebugMode(bool on);
+bool glDebugMode();
+struct GlDebugCounts {
+    int errors = 0, performanceWarnings = 0, otherWarnings = 0;
+};
+GlDebugCounts glDebugCounts();
+// "oasis: --gl-debug: 0 GL errors, 3 performance warnings (...), 0 other warnings": printed at the end.
+std::string glDebugSummary();
+// What --gl-debug does at the first error, after printing it: by default a SIGTRAP where a
+// debugger is attached (it stops in the GL call's stack), else exit 1. Tests record instead.
+using GlErrorStop = void (*)(const std::string& message);
+void setGlErrorStop(GlErrorStop stop);
 
 // The newest core version a context may have: {4, 6} by default, {3, 3} with --force gl33.
 struct MaxGlVersion {
@@ -33,6 +52,9 @@ public:
     HeadlessContext& operator=(const HeadlessContext&) = delete;
 
 private:
+    // First, so that libepoxy's first lookups (eglGetPlatformDisplayEXT on) already see it, and
+    // last to go, after the context.
+    NoGlxContextForEpoxy noGlx_;
     void* display_ = nullptr;
     void* context_ = nullptr;
 };

@@ -1,11 +1,57 @@
 // GL object wrappers, live counts and debug groups.
 #include "gl/objects.h"
 
+#include <algorithm>
 #include <array>
+#include <vector>
 
 namespace oasis::gl {
 namespace {
 std::array<int, size_t(ObjectKind::Count)> gLiveObjects{};
+std::vector<std::string> gOpenGroups;  // DebugGroup's names, outermost first (copies: callers pass temporaries)
+
+GLenum labelIdentifier(ObjectKind kind) {
+    switch (kind) {
+        case ObjectKind::Buffer: return GL_BUFFER;
+        case ObjectKind::Texture: return GL_TEXTURE;
+        case ObjectKind::Framebuffer: return GL_FRAMEBUFFER;
+        case ObjectKind::VertexArray: return GL_VERTEX_ARRAY;
+        case ObjectKind::Program: return GL_PROGRAM;
+        case ObjectKind::Shader: return GL_SHADER;
+        case ObjectKind::Sampler: return GL_SAMPLER;
+        case ObjectKind::Count: break;
+    }
+    return GL_NONE;
+}
+
+// glGen* hands out names that become objects only when first bound, and glObjectLabel needs an
+// object: each create binds its new name once and puts the previous binding back, so creating
+// never changes what is bound.
+template <typename Bind>
+void bindOnce(GLenum bindingQuery, GLuint name, Bind bind) {
+    GLint previous = 0;
+    glGetIntegerv(bindingQuery, &previous);
+    bind(name);
+    bind(GLuint(previous));
+}
+}  // namespace
+
+bool hasObjectLabels() { return hasDebugGroups(); }
+
+void setLabel(ObjectKind kind, GLuint name, const std::string& label) {
+    if (!name || !hasObjectLabels()) return;
+    GLint maxLength = 0;
+    glGetIntegerv(GL_MAX_LABEL_LENGTH, &maxLength);
+    GLsizei length = GLsizei(std::min<size_t>(label.size(), size_t(std::max(maxLength - 1, 0))));
+    glObjectLabel(labelIdentifier(kind), name, length, label.c_str());
+}
+
+std::string objectLabel(ObjectKind kind, GLuint name) {
+    if (!name || !hasObjectLabels()) return {};
+    char text[256] = {};
+    GLsizei length = 0;
+    glGetObjectLabel(labelIdentifier(kind), name, sizeof(text), &length, text);
+    return std::string(text, size_t(std::max(length, 0)));
 }
 
 int liveObjectCount(ObjectKind kind) { return gLiveObjects[size_t(kind)]; }
@@ -43,15 +89,49 @@ template class Object<ObjectKind::Program>;
 template class Object<ObjectKind::Shader>;
 template class Object<ObjectKind::Sampler>;
 
-Buffer createBuffer() { GLuint n = 0; glGenBuffers(1, &n); return Buffer(n); }
-Texture createTexture() { GLuint n = 0; glGenTextures(1, &n); return Texture(n); }
-Framebuffer createFramebuffer() { GLuint n = 0; glGenFramebuffers(1, &n); return Framebuffer(n); }
-VertexArray createVertexArray() { GLuint n = 0; glGenVertexArrays(1, &n); return VertexArray(n); }
-Sampler createSampler() { GLuint n = 0; glGenSamplers(1, &n); return Sampler(n); }
+Buffer createBuffer(const std::string& label) {
+    GLuint n = 0;
+    glGenBuffers(1, &n);
+    if (hasObjectLabels()) {
+        bindOnce(GL_COPY_WRITE_BUFFER_BINDING, n, [](GLuint b) { glBindBuffer(GL_COPY_WRITE_BUFFER, b); });
+        setLabel(ObjectKind::Buffer, n, label);
+    }
+    return Buffer(n);
+}
 
-Texture createTargetTexture(GLenum internalFormat, int width, int height, int levels) {
-    Texture texture = createTexture();
+Framebuffer createFramebuffer(const std::string& label) {
+    GLuint n = 0;
+    glGenFramebuffers(1, &n);
+    if (hasObjectLabels()) {
+        bindOnce(GL_DRAW_FRAMEBUFFER_BINDING, n, [](GLuint f) { glBindFramebuffer(GL_DRAW_FRAMEBUFFER, f); });
+        setLabel(ObjectKind::Framebuffer, n, label);
+    }
+    return Framebuffer(n);
+}
+
+VertexArray createVertexArray(const std::string& label) {
+    GLuint n = 0;
+    glGenVertexArrays(1, &n);
+    if (hasObjectLabels()) {
+        bindOnce(GL_VERTEX_ARRAY_BINDING, n, [](GLuint v) { glBindVertexArray(v); });
+        setLabel(ObjectKind::VertexArray, n, label);
+    }
+    return VertexArray(n);
+}
+
+Sampler createSampler(const std::string& label) {
+    GLuint n = 0;
+    glGenSamplers(1, &n);  // a sampler is an object from glGenSamplers on
+    setLabel(ObjectKind::Sampler, n, label);
+    return Sampler(n);
+}
+
+Texture createTargetTexture(const std::string& label, GLenum internalFormat, int width, int height, int levels) {
+    GLuint n = 0;
+    glGenTextures(1, &n);
+    Texture texture(n);
     glBindTexture(GL_TEXTURE_2D, texture.name());
+    setLabel(texture, label);
     glTexStorage2D(GL_TEXTURE_2D, levels, internalFormat, width, height);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -68,11 +148,20 @@ bool hasDebugGroups() {
 DebugGroup::DebugGroup(const char* name) {
     if (!hasDebugGroups()) return;
     glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, name);
+    gOpenGroups.push_back(name);
     open_ = true;
 }
 
 DebugGroup::~DebugGroup() {
-    if (open_) glPopDebugGroup();
+    if (!open_) return;
+    glPopDebugGroup();
+    gOpenGroups.pop_back();
+}
+
+std::string debugGroupPath() {
+    std::string path;
+    for (const std::string& name : gOpenGroups) path += (path.empty() ? "" : " / ") + name;
+    return path.empty() ? "(no debug group)" : path;
 }
 
 std::string errorString(GLenum error) {

@@ -1,5 +1,6 @@
 // Owning wrappers for OpenGL object names. Each wrapper deletes its name on destruction and
-// counts itself, so tests can check that pipeline switches and resizes leak nothing.
+// counts itself, so tests can check that pipeline switches and resizes leak nothing; every one is
+// made with a name (a KHR_debug label) that RenderDoc, apitrace and debug messages show.
 #pragma once
 #include <epoxy/gl.h>
 
@@ -46,15 +47,25 @@ using Program = Object<ObjectKind::Program>;
 using Shader = Object<ObjectKind::Shader>;
 using Sampler = Object<ObjectKind::Sampler>;
 
-Buffer createBuffer();
-Texture createTexture();
-Framebuffer createFramebuffer();
-VertexArray createVertexArray();
-Sampler createSampler();
+// Each is created and named at once: `label` is what capture tools list it as ("G-buffer albedo
+// (compact)", "point lights"). Labels need KHR_debug (GL 4.3); without it they are skipped.
+Buffer createBuffer(const std::string& label);
+Framebuffer createFramebuffer(const std::string& label);
+VertexArray createVertexArray(const std::string& label);
+Sampler createSampler(const std::string& label);
 
 // A texture for a render target: immutable storage, nearest filtering (of level 0), clamped.
 // `levels` > 1 leaves room for a mipmap chain that a sampler object may read.
-Texture createTargetTexture(GLenum internalFormat, int width, int height, int levels = 1);
+Texture createTargetTexture(const std::string& label, GLenum internalFormat, int width, int height, int levels = 1);
+
+// (Re)names an existing object (one already bound once, or a program or shader). Labels longer
+// than the driver's GL_MAX_LABEL_LENGTH are cut to it.
+void setLabel(ObjectKind kind, GLuint name, const std::string& label);
+template <ObjectKind Kind>
+void setLabel(const Object<Kind>& object, const std::string& label) { setLabel(Kind, object.name(), label); }
+// What setLabel gave the object ("" without KHR_debug or a label): for tests and messages.
+std::string objectLabel(ObjectKind kind, GLuint name);
+bool hasObjectLabels();
 
 // Opens a KHR_debug group for the lifetime of the scope, when the context has KHR_debug.
 class DebugGroup {
@@ -68,6 +79,9 @@ private:
 };
 
 bool hasDebugGroups();
+// The names of the debug groups open now, outermost first ("LightingPass / DebugViewPass"): what
+// --gl-debug prints with an error. Kept by DebugGroup, so it holds only oasis's own groups.
+std::string debugGroupPath();
 std::string errorString(GLenum error);
 
 }  // namespace oasis::gl

@@ -5,8 +5,8 @@ namespace oasis {
 
 void FloatReadback::bindForDrawing(int width, int height) {
     if (!texture_ || width != width_ || height != height_) {
-        texture_ = gl::createTargetTexture(GL_RGBA32F, width, height);
-        framebuffer_ = gl::createFramebuffer();
+        texture_ = gl::createTargetTexture("float read-back", GL_RGBA32F, width, height);
+        framebuffer_ = gl::createFramebuffer("float read-back");
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), 0);
         width_ = width;

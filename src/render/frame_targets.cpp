@@ -23,6 +23,20 @@ std::string gibibytes(double bytes) {
     return text;
 }
 
+// What capture tools list a target as: the G-buffer's by role and layout ("G-buffer albedo
+// (compact)"), its depth-stencil also by depth convention; the others by role.
+std::string targetLabel(const GBufferLayout& layout, const DepthConvention& depth, Target target) {
+    switch (target) {
+        case Target::DepthStencil:
+            return "G-buffer depth-stencil (" + layout.name + ", " + depth.name + " depth)";
+        case Target::Radiance: return "Radiance";
+        case Target::Reflection: return "Reflection";
+        case Target::Final: return "Final";
+        case Target::SceneDepth: return "SceneDepth copy";
+        default: return std::string("G-buffer ") + targetName(target) + " (" + layout.name + ")";
+    }
+}
+
 int bytesPerPixelOfAllTargets(const GBufferLayout& layout, const DepthConvention& depth) {
     int total = 4;  // Display
     for (int t = 0; t < int(Target::Count); ++t) total += targetFormat(layout, depth, Target(t)).bytesPerPixel;
@@ -50,13 +64,14 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     while (glGetError() != GL_NO_ERROR) {}
     for (int t = 0; t < int(Target::Count); ++t)
         if (layout.stores(Target(t)))
-            textures_[t] = gl::createTargetTexture(targetFormat(layout, depth, Target(t)).internalFormat, width, height);
-    display_ = gl::createTargetTexture(GL_RGBA8, width, height);
+            textures_[t] = gl::createTargetTexture(targetLabel(layout, depth, Target(t)),
+                                                   targetFormat(layout, depth, Target(t)).internalFormat, width, height);
+    display_ = gl::createTargetTexture("Display", GL_RGBA8, width, height);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         throw std::runtime_error("allocating " + std::to_string(width) + "x" + std::to_string(height) +
                                  " render targets failed: " + gl::errorString(error));
 
-    gbufferFbo_ = gl::createFramebuffer();
+    gbufferFbo_ = gl::createFramebuffer("G-buffer (" + layout.name + "): geometry passes");
     glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo_.name());
     // The stored colour targets on consecutive attachments, no gaps (gbuffer.glsl's output
     // locations follow): zink leaves every column past 1024 unrendered at 1280x720 when a draw
@@ -74,24 +89,26 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     glDrawBuffers(slots, drawBuffers);
     checkComplete("G-buffer");
 
-    auto colourWithDepthStencil = [&](gl::Framebuffer& fbo, Target colour, const char* what) {
-        fbo = gl::createFramebuffer();
+    auto colourWithDepthStencil = [&](gl::Framebuffer& fbo, Target colour, const char* what, const char* label) {
+        fbo = gl::createFramebuffer(label);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(colour), 0);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                texture(Target::DepthStencil), 0);
         checkComplete(what);
     };
-    colourWithDepthStencil(radianceFbo_, Target::Radiance, "radiance");
-    colourWithDepthStencil(reflectionFbo_, Target::Reflection, "reflection");
+    colourWithDepthStencil(radianceFbo_, Target::Radiance, "radiance",
+                           "Radiance + depth-stencil: lighting, light volumes, forward, water passes");
+    colourWithDepthStencil(reflectionFbo_, Target::Reflection, "reflection",
+                           "Reflection + depth-stencil: mirrored lighting, forward mirrored passes");
 
-    finalFbo_ = gl::createFramebuffer();
+    finalFbo_ = gl::createFramebuffer("Final: ToneMapPass");
     glBindFramebuffer(GL_FRAMEBUFFER, finalFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Final), 0);
     checkComplete("final");
 
     if (layout.stores(Target::SceneDepth)) {
-        sceneDepthFbo_ = gl::createFramebuffer();
+        sceneDepthFbo_ = gl::createFramebuffer("SceneDepth copy: DepthCopyPass");
         glBindFramebuffer(GL_FRAMEBUFFER, sceneDepthFbo_.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                texture(Target::SceneDepth), 0);
@@ -100,7 +117,7 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
         checkComplete("scene depth");
     }
 
-    displayFbo_ = gl::createFramebuffer();
+    displayFbo_ = gl::createFramebuffer("Display: debug views");
     glBindFramebuffer(GL_FRAMEBUFFER, displayFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display_.name(), 0);
     checkComplete("display");

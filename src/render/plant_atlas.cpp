@@ -125,8 +125,8 @@ PlantAtlas::PlantAtlas(ShaderLibrary& shaders, PlantInterpretation path, int cel
 void PlantAtlas::draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& buffers) {
     // Nearest filtering of level 0, like every target the debug views sample; the billboards read
     // the mipmaps through their own sampler (src/render/vegetation_buffers.h).
-    texture_ = gl::createTargetTexture(GL_RGBA8, width(), height(), kMipLevels);
-    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    texture_ = gl::createTargetTexture("plant atlas", GL_RGBA8, width(), height(), kMipLevels);
+    gl::Framebuffer framebuffer = gl::createFramebuffer("plant atlas: PlantAtlas");
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), 0);
     const GLfloat transparent[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -153,7 +153,7 @@ void PlantAtlas::drawCell(GLuint program, size_t variant, const SegmentBuffer& b
     glUniform1f(glGetUniformLocation(program, "maxDistance"), fit.maxDistance);
     // GL rows run bottom-up; cells are numbered from the top row.
     glViewport(cellX(variant), height() - cellY(variant) - cellSize_, cellSize_, cellSize_);
-    gl::VertexArray vertexArray = gl::createVertexArray();
+    gl::VertexArray vertexArray = gl::createVertexArray("plant segments");
     glBindVertexArray(vertexArray.name());
     bindSegmentAttributes(buffer.buffer.name());
     glDrawArraysInstanced(GL_LINES, 0, 2, GLsizei(buffer.count));
@@ -168,7 +168,7 @@ void PlantAtlas::measureDrawnBounds() {
     const int minimumByte = int(std::floor(OASIS_PLANT_ALPHA_MIN * 255.0)) - 2;
     const size_t cells = variantCount();
     std::vector<glm::vec4> box(cells, glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));  // empty: min > max
-    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    gl::Framebuffer framebuffer = gl::createFramebuffer("plant atlas: drawn-bounds read-back");
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     for (int level = 0; level < kMipLevels; ++level) {
@@ -205,7 +205,7 @@ void PlantAtlas::measureDrawnBounds() {
 
 Image PlantAtlas::read() const {
     Image image(width(), height());
-    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    gl::Framebuffer framebuffer = gl::createFramebuffer("plant atlas read-back");
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
     glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), 0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

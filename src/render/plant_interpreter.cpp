@@ -22,9 +22,9 @@ enum Binding : GLuint {
     kTransformIn = 4, kTransformOut = 5, kSegments = 6,
 };
 
-gl::Buffer storageBuffer(size_t bytes, const void* data) {
+gl::Buffer storageBuffer(const std::string& label, size_t bytes, const void* data) {
     // Made through a target every context has: the CPU path uses these too, where SSBOs may not exist.
-    gl::Buffer buffer = gl::createBuffer();
+    gl::Buffer buffer = gl::createBuffer(label);
     glBindBuffer(GL_COPY_WRITE_BUFFER, buffer.name());
     // Never zero bytes: a plant without an F still binds a valid buffer.
     glBufferData(GL_COPY_WRITE_BUFFER, GLsizeiptr(std::max<size_t>(bytes, 4)), data, GL_STATIC_DRAW);
@@ -59,7 +59,7 @@ bool contextHasComputeShaders() { return gl::measureCapabilities().computeAvaila
 
 SegmentBuffer uploadSegments(const std::vector<Segment2D>& segments) {
     SegmentBuffer result;
-    result.buffer = storageBuffer(segments.size() * sizeof(Segment2D), segments.data());
+    result.buffer = storageBuffer("plant segments (cpu turtle)", segments.size() * sizeof(Segment2D), segments.data());
     result.count = uint32_t(segments.size());
     return result;
 }
@@ -100,12 +100,15 @@ SegmentBuffer GpuTurtleInterpreter::interpret(const TurtleProgram& program, floa
                                  " instructions exceeds one compute dispatch");
     const uint32_t n = uint32_t(program.size());
     GpuTurtleLinks links = linkForGpu(program);
-    gl::Buffer opcodes = storageBuffer(program.size() * sizeof(uint32_t), program.data());
-    gl::Buffer linkBuffer = storageBuffer(links.links.size() * sizeof(GpuTurtleLinks::Link), links.links.data());
-    gl::Buffer predecessors[2] = {storageBuffer(n * sizeof(int32_t), nullptr), storageBuffer(n * sizeof(int32_t), nullptr)};
-    gl::Buffer transforms[2] = {storageBuffer(n * kTransformStride, nullptr), storageBuffer(n * kTransformStride, nullptr)};
+    gl::Buffer opcodes = storageBuffer("turtle opcodes (ssbo)", program.size() * sizeof(uint32_t), program.data());
+    gl::Buffer linkBuffer = storageBuffer("turtle bracket links (ssbo)",
+                                         links.links.size() * sizeof(GpuTurtleLinks::Link), links.links.data());
+    gl::Buffer predecessors[2] = {storageBuffer("turtle predecessors A (ssbo)", n * sizeof(int32_t), nullptr),
+                                  storageBuffer("turtle predecessors B (ssbo)", n * sizeof(int32_t), nullptr)};
+    gl::Buffer transforms[2] = {storageBuffer("turtle transforms A (ssbo)", n * kTransformStride, nullptr),
+                                storageBuffer("turtle transforms B (ssbo)", n * kTransformStride, nullptr)};
     SegmentBuffer segments;
-    segments.buffer = storageBuffer(links.segmentCount * sizeof(Segment2D), nullptr);
+    segments.buffer = storageBuffer("plant segments (gpu turtle, ssbo)", links.segmentCount * sizeof(Segment2D), nullptr);
     segments.count = links.segmentCount;
     if (n == 0) return segments;
 

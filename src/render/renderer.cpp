@@ -1,18 +1,21 @@
 // Frame orchestration: upload the frame's uniforms, run the active pipeline, draw debug views.
 #include "render/renderer.h"
 
+#include "gl/frame_capture.h"
+
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
 #include "gl/capabilities.h"
+#include "gl/frame_capture.h"
 #include "render/texture_units.h"
 
 namespace oasis {
 
 Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     : shaders_(shaders), geometry_(scene.grid) {
-    frameUniforms_ = gl::createBuffer();
+    frameUniforms_ = gl::createBuffer("frame data (ubo)");
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
@@ -27,8 +30,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_BLOCKS, &maxFragmentBlocks);
     uboLights_ = uboLightLayout(maxBlockSize, std::min(maxVertexBlocks, maxFragmentBlocks));
     chooseWaterBounds();
-    lightList_ = gl::createBuffer();
-    lightCount_ = gl::createBuffer();
+    lightList_ = gl::createBuffer("point lights");  // named by its path once a frame picks one
+    lightCount_ = gl::createBuffer("point light count");
     glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
     glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(std::max(kMaxLights, uboLights_.maxLights()) * sizeof(PointLight)),
                  nullptr, GL_DYNAMIC_DRAW);
@@ -100,7 +103,7 @@ void Renderer::chooseWaterBounds() {
                              std::to_string(vertexBlocks) + "/" + std::to_string(fragmentBlocks) +
                              ", clip distances " + std::to_string(clipDistances) + "; need 1/1 and 5)";
     if (waterBoundsAvailable_ && !waterBounds_.name()) {
-        waterBounds_ = gl::createBuffer();
+        waterBounds_ = gl::createBuffer("visible water rectangle");
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
         glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * sizeof(GLint), nullptr, GL_DYNAMIC_DRAW);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
@@ -127,6 +130,10 @@ void Renderer::uploadLights() {
     if (frame_.lightsPath == LightsPath::Ubo && int(frame_.lights.size()) > uboLights_.maxLights()) {
         lightsDropped_ = int(frame_.lights.size()) - uboLights_.maxLights();
         frame_.lights.resize(size_t(uboLights_.maxLights()));
+    }
+    if (labelledLightsPath_ != frame_.lightsPath) {  // "point lights (ssbo)": what the shaders read it as
+        gl::setLabel(lightList_, std::string("point lights (") + lightsPathName(frame_.lightsPath) + ")");
+        labelledLightsPath_ = frame_.lightsPath;
     }
     GLsizeiptr bytes = GLsizeiptr(frame_.lights.size() * sizeof(PointLight));
     glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
@@ -207,16 +214,32 @@ const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
 }
 
 void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBefore) {
+    gl::beginFrame();
     runFrame(scene, stopBefore, {});
 }
 
 void Renderer::renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach) {
+    gl::beginFrame();
     runFrame(scene, {}, afterEach);
+}
+
+void Renderer::buildPrograms(const SceneSettings& scene, const std::string& view) {
+    gl::beginFrame();
+    // The marker names this frame in RenderDoc's event list and in apitrace's dump.
+    const char* marker = "warm-up: programs built, rasterizer discard on, nothing drawn";
+    if (gl::hasDebugGroups())
+        glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_MARKER, 0, GL_DEBUG_SEVERITY_NOTIFICATION, -1,
+                             marker);
+    glEnable(GL_RASTERIZER_DISCARD);
+    runFrame(scene, {}, {});
+    if (!view.empty()) renderView(view);
+    glDisable(GL_RASTERIZER_DISCARD);
 }
 
 std::vector<std::pair<std::string, double>> Renderer::renderFrameTimingPasses(const SceneSettings& scene) {
     using Clock = std::chrono::steady_clock;
     std::vector<std::pair<std::string, double>> times;
+    gl::beginFrame();
     glFinish();
     Clock::time_point start = Clock::now();
     runFrame(scene, {}, [&](const Pass& pass) {
@@ -337,6 +360,7 @@ std::vector<float> Renderer::readViewValues(const std::string& viewName) {
 }
 
 void Renderer::renderFloor() {
+    gl::beginFrame();
     PassContext passContext = context();
     floor_.run(passContext);
     forgetGBuffer();

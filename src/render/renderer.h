@@ -80,6 +80,10 @@ public:
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
     // std::invalid_argument (listing the pipeline's passes) if no pass has that name.
     void renderFrame(const SceneSettings& scene, const std::string& stopBefore = {});
+    // Builds every program the active pipeline's frame and `view` (a debug view name, or "") use,
+    // by running them with GL_RASTERIZER_DISCARD: a frame of its own for capture tools, so the
+    // frames after it hold drawing and no shader compiles. Costs the frame's vertex work.
+    void buildPrograms(const SceneSettings& scene, const std::string& view);
     // The same frame with glFinish after every pass: wall milliseconds per pass, in order. The
     // synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
     std::vector<std::pair<std::string, double>> renderFrameTimingPasses(const SceneSettings& scene);
@@ -149,6 +153,7 @@ private:
     FloatReadback positionsReadback_;  // readSurfacePositions' float target
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
+    std::optional<LightsPath> labelledLightsPath_;  // the path lightList_'s label names
     bool ssboAvailable_ = false;
     std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
     gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)

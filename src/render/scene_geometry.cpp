@@ -8,9 +8,9 @@ namespace oasis {
 SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(density) {
     GridMesh mesh = buildTerrainGrid(density);
     indexCount_ = int(mesh.indices.size());
-    terrainVao_ = gl::createVertexArray();
-    terrainVertices_ = gl::createBuffer();
-    terrainIndices_ = gl::createBuffer();
+    terrainVao_ = gl::createVertexArray("terrain grid");
+    terrainVertices_ = gl::createBuffer("terrain grid vertices");
+    terrainIndices_ = gl::createBuffer("terrain grid indices");
     glBindVertexArray(terrainVao_.name());
     glBindBuffer(GL_ARRAY_BUFFER, terrainVertices_.name());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(glm::vec2)), mesh.vertices.data(),
@@ -21,12 +21,12 @@ SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(densi
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
                  GL_STATIC_DRAW);
     glBindVertexArray(0);
-    emptyVao_ = gl::createVertexArray();
+    emptyVao_ = gl::createVertexArray("full-screen triangle (no attributes)");
 
     std::vector<glm::vec3> sphere = lightVolumeMesh();
     lightVolumeVertexCount_ = int(sphere.size());
-    lightVolumeVao_ = gl::createVertexArray();
-    lightVolumeVertices_ = gl::createBuffer();
+    lightVolumeVao_ = gl::createVertexArray("light volume sphere");
+    lightVolumeVertices_ = gl::createBuffer("light volume sphere vertices");
     glBindVertexArray(lightVolumeVao_.name());
     glBindBuffer(GL_ARRAY_BUFFER, lightVolumeVertices_.name());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(sphere.size() * sizeof(glm::vec3)), sphere.data(), GL_STATIC_DRAW);

@@ -217,6 +217,7 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
     if (storageLights && glslVersionNumber(dialect_.versionLine) < 430)
         insertAfterVersionLine(source.text, "#extension GL_ARB_shader_storage_buffer_object : require\n");
     gl::Shader shader(glCreateShader(stage));
+    gl::setLabel(shader, file);  // build() names it with its program's variant once compiled
     const char* text = source.text.c_str();
     glShaderSource(shader.name(), 1, &text, nullptr);
     glCompileShader(shader.name());
@@ -242,8 +243,10 @@ bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::
             error = "program " + variant.name + ": " + error;
             return false;
         }
+        gl::setLabel(shaders[i], variant.name + ": " + files[i]);
     }
     gl::Program program(glCreateProgram());
+    gl::setLabel(program, variant.name);  // the variant table's name: "lighting.compact", "terrain.forward"
     for (const gl::Shader& shader : shaders) glAttachShader(program.name(), shader.name());
     glLinkProgram(program.name());
     GLint ok = GL_FALSE;

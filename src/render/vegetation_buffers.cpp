@@ -14,9 +14,9 @@ constexpr GLuint kBaseSizeAttribute = 0, kTintPhaseAttribute = 1, kVariantAttrib
 }  // namespace
 
 VegetationBuffers::VegetationBuffers() {
-    vertexArray_ = gl::createVertexArray();
-    instances_ = gl::createBuffer();
-    atlasSampler_ = gl::createSampler();
+    vertexArray_ = gl::createVertexArray("vegetation billboards");
+    instances_ = gl::createBuffer("vegetation instances");
+    atlasSampler_ = gl::createSampler("plant atlas (trilinear)");
     // Trilinear, so a far plant samples a level where its lines still cover a texel; the last
     // level is the atlas's smallest that keeps cells apart.
     glSamplerParameteri(atlasSampler_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);

@@ -121,6 +121,7 @@ for command in render window caps; do
 done
 for command in render window; do expect 2 $command --json; done
 for command in "" render compare caps window; do expect 2 ${command:+"$command"} --quick; done
+for command in "" caps window probe; do expect 2 ${command:+"$command"} --capture; done
 expect 2 bench --passes
 expect 2 bench --depth standard
 expect 2 bench --size 64x36
@@ -145,6 +146,15 @@ for command in "" compare bench; do
     expect 2 "$@" --out-dir ""
 done
 [ -e "$scratch/x.jpg" ] && fail "render wrote a .jpg"
+
+# --capture outside RenderDoc: exit 1 saying so, before rendering or writing anything.
+for command in "render --size 16x9 --out $scratch/capture.png" "compare --size 16x9 --frames 1 --out-dir $scratch/capture" \
+               "bench --quick --out-dir $scratch/capture-bench"; do
+    # shellcheck disable=SC2086
+    expect 1 $command --capture
+    grep -q 'not running under RenderDoc' "$scratch/stderr" || fail "oasis $command --capture: $(cat "$scratch/stderr")"
+done
+[ -e "$scratch/capture.png" ] && fail "render --capture without RenderDoc wrote its PNG"
 
 # A bad OASIS_SHADER_DIR: exit 1 naming the variable, for every command that renders or reports.
 mkdir -p "$scratch/no-shaders"

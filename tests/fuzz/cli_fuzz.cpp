@@ -119,6 +119,8 @@ const std::vector<Flag>& flags() {
         {"--legend", Value::Choice, 0, 0, {"on", "off"}},
         {"--water-scene", Value::Choice, 0, 0, {"direct", "mirrored"}},
         {"--quick", Value::None},
+        {"--capture", Value::None},   // exit 1 here: no RenderDoc (tests/capture checks the capture)
+        {"--gl-debug", Value::None},
         {"--help", Value::None},
         {"-h", Value::None},
     };

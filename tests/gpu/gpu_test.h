@@ -204,12 +204,12 @@ std::vector<glm::vec3> probeGpuHeights(ShaderLibrary& shaders, const Renderer& r
         input[i * 4] = float(double(points[i].x) - camera.x);
         input[i * 4 + 1] = float(double(points[i].y) - camera.z);
     }
-    gl::Texture source = gl::createTargetTexture(GL_RGBA32F, side, side);
+    gl::Texture source = gl::createTargetTexture("test source", GL_RGBA32F, side, side);
     glBindTexture(GL_TEXTURE_2D, source.name());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, side, side, GL_RGBA, GL_FLOAT, input.data());
-    gl::Texture output = gl::createTargetTexture(GL_RGBA32F, side, side);
-    gl::Framebuffer framebuffer = gl::createFramebuffer();
+    gl::Texture output = gl::createTargetTexture("test output", GL_RGBA32F, side, side);
+    gl::Framebuffer framebuffer = gl::createFramebuffer("test output");
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, output.name(), 0);
     EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
