@@ -1,5 +1,8 @@
-// One full-screen triangle; every pixel's surface comes from the G-buffer.
+// One full-screen triangle; every pixel's surface comes from the G-buffer. With the tiled light
+// method the variant also adds the lights its LightTilingPass listed for the pixel's tile.
 #include "passes/lighting_pass.h"
+
+#include "passes/light_tiling_pass.h"
 
 namespace oasis {
 
@@ -8,8 +11,9 @@ void LightingPass::execute(PassContext& context) {
     glDisable(GL_DEPTH_TEST);
     bindGBufferInputs(context.targets);
     beginMirroredDraw(mirroring_);
-    glUseProgram(context.shaders.program(
-        context.targets.layout().program(mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting")));
+    std::string program = mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting";
+    if (LightTilingPass::tiledLightsActive(context.frame, mirroring_)) program += ".tiled";
+    glUseProgram(context.shaders.program(context.targets.layout().program(program)));
     context.geometry.drawFullscreenTriangle();
     endMirroredDraw(mirroring_);
 }

@@ -64,6 +64,15 @@ public:
     // default asks the context directly.
     void setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced);
     const UboLightLayout& uboLights() const { return uboLights_; }
+    // How the deferred pipeline adds the lights (render/light_method.h), decided each frame from
+    // SceneSettings::lights.method and whether compute shaders (with SSBOs) exist; tiled asked for
+    // without them falls back to volumes. The method and the reason of the last frame.
+    LightMethod lightMethod() const { return lightMethodChoice_.method; }
+    const std::string& lightMethodReason() const { return lightMethodChoice_.reason; }
+    bool computeAvailable() const { return computeAvailable_; }
+    // The session's capability report decides (it honours --force no-compute, no-ssbo, gl33).
+    void setComputeAvailable(bool available, const std::string& reason,
+                             const std::optional<LightMethod>& forced = std::nullopt);
     // Lights the last frame drew, and how many the UBO path had to drop (0 on the SSBO paths).
     int lightsDrawn() const { return int(frame_.lights.size()); }
     int lightsDropped() const { return lightsDropped_; }
@@ -146,6 +155,9 @@ private:
     std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
     UboLightLayout uboLights_;
     LightsPathChoice lightsChoice_;
+    bool computeAvailable_ = false;
+    std::string computeReason_;
+    LightMethodChoice lightMethodChoice_;
     int lightsDropped_ = 0;
     FrameSetup frame_;
     const DepthConvention* depthRequested_ = &standardDepthConvention();

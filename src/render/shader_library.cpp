@@ -89,7 +89,8 @@ void bindLightBlocks(GLuint program) {
                                      epoxy_has_gl_extension("GL_ARB_program_interface_query")))
         return;
     const std::pair<const char*, int> storage[] = {{kLightStorageName, kLightStorageBinding},
-                                                   {kLightCountStorageName, kLightCountStorageBinding}};
+                                                   {kLightCountStorageName, kLightCountStorageBinding},
+                                                   {kLightTileStorageName, kLightTileStorageBinding}};
     for (auto [blockName, binding] : storage) {
         GLuint index = glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, blockName);
         if (index != GL_INVALID_INDEX) glShaderStorageBlockBinding(program, index, GLuint(binding));
@@ -210,7 +211,7 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
     if (stage == GL_COMPUTE_SHADER) insertAfterVersionLine(source.text, computeExtensionLines(dialect_));
     // The SSBO light paths below GLSL 4.30 (a 3.3 context with the extension): storage blocks.
     bool storageLights = std::any_of(defines.begin(), defines.end(), [](const std::string& define) {
-        return define == "LIGHTS_SSBO" || define == "LIGHTS_SSBO_COUNT";
+        return define == "LIGHTS_SSBO" || define == "LIGHTS_SSBO_COUNT" || define == "LIGHTS_TILED";
     });
     if (storageLights && glslVersionNumber(dialect_.versionLine) < 430)
         insertAfterVersionLine(source.text, "#extension GL_ARB_shader_storage_buffer_object : require\n");

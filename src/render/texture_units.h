@@ -46,6 +46,9 @@ inline constexpr const char* kLightBlockName = "LightBlock";
 inline constexpr int kLightBlockFirstBinding = 2;
 inline constexpr const char* kLightStorageName = "LightBuffer";
 inline constexpr int kLightStorageBinding = 6;
+// The tiled light method's per-tile lists (shaders/common/light_tiles.glsl), bound by its pass.
+inline constexpr const char* kLightTileStorageName = "LightTileBuffer";
+inline constexpr int kLightTileStorageBinding = 5;
 inline constexpr const char* kLightCountStorageName = "LightCountBuffer";
 inline constexpr int kLightCountStorageBinding = 7;
 

@@ -1,0 +1,33 @@
+// Tiled light culling: one work group per screen tile; the lists are made visible to the
+// lighting pass's storage reads by a barrier. The buffer grows with the frame and is kept.
+#include "passes/light_tiling_pass.h"
+
+#include "common/shared_constants.glsl"
+#include "render/texture_units.h"
+
+namespace oasis {
+
+int LightTilingPass::tilesAcross(int pixels) { return (pixels + OASIS_LIGHT_TILE_SIZE - 1) / OASIS_LIGHT_TILE_SIZE; }
+
+size_t LightTilingPass::listBytes(int width, int height) {
+    return size_t(tilesAcross(width)) * size_t(tilesAcross(height)) * size_t(OASIS_LIGHT_TILE_MAX_LIGHTS + 1) *
+           sizeof(GLuint);
+}
+
+void LightTilingPass::execute(PassContext& context) {
+    const FrameTargets& targets = context.targets;
+    size_t bytes = listBytes(targets.width(), targets.height());
+    if (!tiles_.name()) tiles_ = gl::createBuffer();
+    if (bytes > tilesBytes_) {
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, tiles_.name());
+        glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
+        tilesBytes_ = bytes;
+    }
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightTileStorageBinding, tiles_.name(), 0, GLsizeiptr(bytes));
+    bindGBufferInputs(targets);
+    glUseProgram(context.shaders.program(targets.layout().program("light.tiles")));
+    glDispatchCompute(GLuint(tilesAcross(targets.width())), GLuint(tilesAcross(targets.height())), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+}  // namespace oasis
