@@ -1,4 +1,4 @@
-// Tiled light culling: one work group per screen tile; the lists are made visible to the
+// Tiled light culling: one invocation per screen tile; the lists are made visible to the
 // lighting pass's storage reads by a barrier. The buffer grows with the frame and is kept.
 #include "passes/light_tiling_pass.h"
 
@@ -25,8 +25,9 @@ void LightTilingPass::execute(PassContext& context) {
     }
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightTileStorageBinding, tiles_.name(), 0, GLsizeiptr(bytes));
     bindGBufferInputs(targets);
-    glUseProgram(context.shaders.program(targets.layout().program("light.tiles")));
-    glDispatchCompute(GLuint(tilesAcross(targets.width())), GLuint(tilesAcross(targets.height())), 1);
+    glUseProgram(context.shaders.program(targets.layout().program(mirroring_ == Mirroring::Mirrored ? "light.tiles.mirrored" : "light.tiles")));
+    // One invocation per tile, 8x8 tiles a work group (light_tiles.comp).
+    glDispatchCompute(GLuint((tilesAcross(targets.width()) + 7) / 8), GLuint((tilesAcross(targets.height()) + 7) / 8), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

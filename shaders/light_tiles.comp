@@ -1,32 +1,19 @@
-// Tiled light culling: one work group per screen tile (OASIS_LIGHT_TILE_SIZE^2 pixels) bounds the
-// tile's G-buffer surfaces with a box (positions as the lighting pass reads them: stored, or rebuilt
+// Tiled light culling: one invocation per screen tile (OASIS_LIGHT_TILE_SIZE^2 pixels) bounds the
+// tile's G-buffer surfaces with two boxes (positions as the lighting pass reads them: stored, or rebuilt
 // from depth under either convention; a reflection's where it really is) and lists the lights whose
-// sphere reaches the box, in light order, into the tile's slice of LightTileBuffer. A box holds
+// sphere reaches the box, in light order, into the tile's slice of LightTileBuffer. The boxes hold
 // every surface of the tile, so any light that lights one of its pixels is listed; sky pixels are
-// left out, and a tile of sky alone lists nothing.
+// left out, and a tile of sky alone lists nothing. MIRRORED: the reflection's surfaces only.
 #define LIGHT_TILES_WRITE
 #include "common/frame_block.glsl"
 #include "common/gbuffer.glsl"
 #include "common/lights.glsl"
 #include "common/light_tiles.glsl"
 
-layout(local_size_x = OASIS_LIGHT_TILE_SIZE, local_size_y = OASIS_LIGHT_TILE_SIZE) in;
-
-const int THREADS = OASIS_LIGHT_TILE_SIZE * OASIS_LIGHT_TILE_SIZE;
-shared uint boxMin[3];           // the box, as order-preserving bit patterns of floats (atomics are on uints)
-shared uint boxMax[3];
-shared uint hitsOf[THREADS];     // lights each invocation found, then where its run starts in the list
-shared uint tileTotal;
-
-// Floats as uints whose unsigned order is the floats' order: negatives flipped whole, positives
-// with the sign bit set.
-uint orderedBits(float value) {
-    uint bits = floatBitsToUint(value);
-    return (bits & 0x80000000u) != 0u ? ~bits : (bits | 0x80000000u);
-}
-float fromOrderedBits(uint bits) {
-    return uintBitsToFloat((bits & 0x80000000u) != 0u ? (bits & 0x7FFFFFFFu) : ~bits);
-}
+// One invocation per tile, 8x8 tiles a group: no shared memory, atomics or barriers, which
+// llvmpipe runs slowly (a work group per tile took about twice as long there), and the list comes
+// out in light order by itself, so the lighting pass sums in the same order every frame.
+layout(local_size_x = 8, local_size_y = 8) in;
 
 // The sphere reaches the box: the box's nearest point lies inside it. The radius is widened by a
 // part in 10^4 so that rounding never leaves out a light pointLightRadiance() would count.
@@ -37,61 +24,66 @@ bool lightReachesBox(PointLight light, vec3 lo, vec3 hi) {
     return dot(offset, offset) < radius * radius;
 }
 
+// The tile's surfaces of this half: the direct scene's, or (MIRRORED) the reflection's, which lie
+// inside the water only; outside it the G-buffer still holds the direct scene, never lit here.
+bool tileSurfaceAt(ivec2 pixel, out vec3 position) {
+    uint flags = gbufferFlagsAt(pixel);
+#if defined(MIRRORED)
+    if ((flags & SURFACE_REFLECTED) == 0u) return false;
+#endif
+    if ((flags & SURFACE_SKY) != 0u) return false;
+    Surface s;
+    s.relativePosition = gbufferPositionAt(pixel);
+    s.flags = flags;
+    position = litPosition(s);
+    return true;
+}
+
 void main() {
     ivec2 frameSize = textureSize(gInfo, 0);
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    uint local = gl_LocalInvocationIndex;
-    if (local < 3u) {
-        boxMin[local] = 0xFFFFFFFFu;
-        boxMax[local] = 0u;
-    }
-    memoryBarrierShared();
-    barrier();
-    if (all(lessThan(pixel, frameSize)) && !gbufferSkyAt(pixel)) {
-        Surface s;
-        s.relativePosition = gbufferPositionAt(pixel);
-        s.flags = gbufferFlagsAt(pixel);
-        vec3 position = litPosition(s);
-        for (int axis = 0; axis < 3; ++axis) {
-            atomicMin(boxMin[axis], orderedBits(position[axis]));
-            atomicMax(boxMax[axis], orderedBits(position[axis]));
+    ivec2 tile = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 tiles = (frameSize + LIGHT_TILE_SIZE - 1) / LIGHT_TILE_SIZE;
+    if (any(greaterThanEqual(tile, tiles))) return;
+    ivec2 first = tile * LIGHT_TILE_SIZE, last = min(first + LIGHT_TILE_SIZE, frameSize);
+    // Two boxes, split at the middle of the tile's range of distances from the camera: a tile
+    // across a silhouette (a hill before the far shore) then leaves out the lights in the gap.
+    vec3 position;
+    float nearest = 3.0e38, farthest = 0.0;
+    for (int y = first.y; y < last.y; ++y)
+        for (int x = first.x; x < last.x; ++x)
+            if (tileSurfaceAt(ivec2(x, y), position)) {
+                float distanceToCamera = length(position);
+                nearest = min(nearest, distanceToCamera);
+                farthest = max(farthest, distanceToCamera);
+            }
+    int base = lightTileOf(first, frameSize) * LIGHT_TILE_STRIDE;
+    uint listed = 0u;
+    if (nearest <= farthest) {  // a tile without surfaces of this half lists nothing
+        float split = 0.5 * (nearest + farthest);
+        vec3 nearLo = vec3(3.0e38), nearHi = vec3(-3.0e38), farLo = nearLo, farHi = nearHi;
+        for (int y = first.y; y < last.y; ++y)
+            for (int x = first.x; x < last.x; ++x)
+                if (tileSurfaceAt(ivec2(x, y), position)) {
+                    if (length(position) <= split) {
+                        nearLo = min(nearLo, position);
+                        nearHi = max(nearHi, position);
+                    } else {
+                        farLo = min(farLo, position);
+                        farHi = max(farHi, position);
+                    }
+                }
+        int count = lightCount();
+        for (int i = 0; i < count; ++i) {
+            PointLight light = lightAt(i);
+            // An empty far box (all surfaces at one distance) has lo > hi: clamp then yields a point
+            // that is not in it, so it is skipped explicitly.
+            bool reaches = lightReachesBox(light, nearLo, nearHi) ||
+                           (farLo.x <= farHi.x && lightReachesBox(light, farLo, farHi));
+            if (!reaches) continue;
+            // Past the maximum only the count goes on: the lighting pass then uses every light.
+            if (listed < uint(LIGHT_TILE_MAX)) tileWords[base + 1 + int(listed)] = uint(i);
+            ++listed;
         }
     }
-    memoryBarrierShared();
-    barrier();
-
-    // Each invocation tests a contiguous run of the lights, so the list comes out in light order
-    // and the lighting pass sums in the same order every frame.
-    bool empty = boxMin[0] > boxMax[0];
-    vec3 lo = vec3(fromOrderedBits(boxMin[0]), fromOrderedBits(boxMin[1]), fromOrderedBits(boxMin[2]));
-    vec3 hi = vec3(fromOrderedBits(boxMax[0]), fromOrderedBits(boxMax[1]), fromOrderedBits(boxMax[2]));
-    int count = empty ? 0 : lightCount();
-    int perInvocation = (count + THREADS - 1) / THREADS;
-    int first = min(int(local) * perInvocation, count), last = min(first + perInvocation, count);
-    uint hits = 0u;
-    for (int i = first; i < last; ++i)
-        if (lightReachesBox(lightAt(i), lo, hi)) ++hits;
-    hitsOf[local] = hits;
-    memoryBarrierShared();
-    barrier();
-    if (local == 0u) {  // exclusive prefix sum: where each run starts
-        uint total = 0u;
-        for (int k = 0; k < THREADS; ++k) {
-            uint h = hitsOf[k];
-            hitsOf[k] = total;
-            total += h;
-        }
-        tileTotal = total;
-    }
-    memoryBarrierShared();
-    barrier();
-
-    int tile = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
-    int base = tile * LIGHT_TILE_STRIDE;
-    if (local == 0u) tileWords[base] = tileTotal;
-    // An overflowing tile's list is never read (the lighting pass loops over every light there).
-    if (tileTotal > uint(LIGHT_TILE_MAX)) return;
-    uint slot = hitsOf[local];
-    for (int i = first; i < last; ++i)
-        if (lightReachesBox(lightAt(i), lo, hi)) tileWords[base + 1 + int(slot++)] = uint(i);
+    tileWords[base] = listed;
 }

@@ -54,6 +54,7 @@ std::vector<ProgramVariant> buildVariants() {
         // lights from the storage block too whatever the light path (with the count from its own
         // block, which every driver compiles; the UBO block array cannot take a per-pixel index).
         {"light.tiles", "", "", {"LIGHTS_SSBO_COUNT"}, "light_tiles.comp"},
+        {"light.tiles.mirrored", "", "", {"MIRRORED", "LIGHTS_SSBO_COUNT"}, "light_tiles.comp"},
         {"lighting.tiled", "fullscreen.vert", "lighting.frag", {"LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
         {"lighting.mirrored.tiled", "fullscreen.vert", "lighting.frag", {"MIRRORED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
     };
