@@ -10,8 +10,9 @@ namespace oasis {
 int LightTilingPass::tilesAcross(int pixels) { return (pixels + OASIS_LIGHT_TILE_SIZE - 1) / OASIS_LIGHT_TILE_SIZE; }
 
 size_t LightTilingPass::listBytes(int width, int height) {
-    return size_t(tilesAcross(width)) * size_t(tilesAcross(height)) * size_t(OASIS_LIGHT_TILE_MAX_LIGHTS + 1) *
-           sizeof(GLuint);
+    // Per tile (common/light_tiles.glsl): its distance range, then per slice a count and a list.
+    size_t wordsPerTile = 2 + size_t(OASIS_LIGHT_TILE_SLICES) * size_t(OASIS_LIGHT_TILE_MAX_LIGHTS + 1);
+    return size_t(tilesAcross(width)) * size_t(tilesAcross(height)) * wordsPerTile * sizeof(GLuint);
 }
 
 void LightTilingPass::execute(PassContext& context) {

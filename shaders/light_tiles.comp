@@ -1,7 +1,7 @@
-// Tiled light culling: one invocation per screen tile (OASIS_LIGHT_TILE_SIZE^2 pixels) bounds the
-// tile's G-buffer surfaces with two boxes (positions as the lighting pass reads them: stored, or rebuilt
-// from depth under either convention; a reflection's where it really is) and lists the lights whose
-// sphere reaches the box, in light order, into the tile's slice of LightTileBuffer. The boxes hold
+// Tiled light culling: one invocation per screen tile (OASIS_LIGHT_TILE_SIZE^2 pixels) cuts the
+// range of distances of the tile's G-buffer surfaces into slices, bounds each slice's with a box (positions as the lighting pass reads them: stored, or rebuilt
+// from depth under either convention; a reflection's where it really is) and lists per slice the lights whose
+// sphere reaches its box, in light order, into the tile's part of LightTileBuffer. The boxes hold
 // every surface of the tile, so any light that lights one of its pixels is listed; sky pixels are
 // left out, and a tile of sky alone lists nothing. MIRRORED: the reflection's surfaces only.
 #define LIGHT_TILES_WRITE
@@ -45,8 +45,9 @@ void main() {
     ivec2 tiles = (frameSize + LIGHT_TILE_SIZE - 1) / LIGHT_TILE_SIZE;
     if (any(greaterThanEqual(tile, tiles))) return;
     ivec2 first = tile * LIGHT_TILE_SIZE, last = min(first + LIGHT_TILE_SIZE, frameSize);
-    // Two boxes, split at the middle of the tile's range of distances from the camera: a tile
-    // across a silhouette (a hill before the far shore) then leaves out the lights in the gap.
+    // The tile's range of distances, cut into slices, each bounded by a box: a tile across a
+    // silhouette (a hill before the far shore) leaves out the lights in the gap, and a pixel tests
+    // only the lights of its slice.
     vec3 position;
     float nearest = 3.0e38, farthest = 0.0;
     for (int y = first.y; y < last.y; ++y)
@@ -56,34 +57,47 @@ void main() {
                 nearest = min(nearest, distanceToCamera);
                 farthest = max(farthest, distanceToCamera);
             }
-    int base = lightTileOf(first, frameSize) * LIGHT_TILE_STRIDE;
-    uint listed = 0u;
-    if (nearest <= farthest) {  // a tile without surfaces of this half lists nothing
-        float split = 0.5 * (nearest + farthest);
-        vec3 nearLo = vec3(3.0e38), nearHi = vec3(-3.0e38), farLo = nearLo, farHi = nearHi;
+    int tileBase = lightTileOf(first, frameSize) * LIGHT_TILE_STRIDE;
+    tileWords[tileBase] = floatBitsToUint(nearest);
+    tileWords[tileBase + 1] = floatBitsToUint(farthest);
+    vec3 lo[LIGHT_TILE_SLICES], hi[LIGHT_TILE_SLICES];
+    for (int k = 0; k < LIGHT_TILE_SLICES; ++k) {
+        lo[k] = vec3(3.0e38);
+        hi[k] = vec3(-3.0e38);
+    }
+    if (nearest <= farthest)
         for (int y = first.y; y < last.y; ++y)
             for (int x = first.x; x < last.x; ++x)
                 if (tileSurfaceAt(ivec2(x, y), position)) {
-                    if (length(position) <= split) {
-                        nearLo = min(nearLo, position);
-                        nearHi = max(nearHi, position);
-                    } else {
-                        farLo = min(farLo, position);
-                        farHi = max(farHi, position);
-                    }
+                    float at = lightSlicePosition(length(position), nearest, farthest);
+                    int slice = lightSliceOf(at);
+                    lo[slice] = min(lo[slice], position);
+                    hi[slice] = max(hi[slice], position);
+                    // Near a slice's edge: in the neighbour's box too (see lightSlicePosition).
+                    float inSlice = at - float(slice);
+                    int neighbour = inSlice < 1e-3 ? slice - 1 : inSlice > 1.0 - 1e-3 ? slice + 1 : slice;
+                    neighbour = clamp(neighbour, 0, LIGHT_TILE_SLICES - 1);
+                    lo[neighbour] = min(lo[neighbour], position);
+                    hi[neighbour] = max(hi[neighbour], position);
                 }
-        int count = lightCount();
-        for (int i = 0; i < count; ++i) {
-            PointLight light = lightAt(i);
-            // An empty far box (all surfaces at one distance) has lo > hi: clamp then yields a point
-            // that is not in it, so it is skipped explicitly.
-            bool reaches = lightReachesBox(light, nearLo, nearHi) ||
-                           (farLo.x <= farHi.x && lightReachesBox(light, farLo, farHi));
-            if (!reaches) continue;
+    uint listed[LIGHT_TILE_SLICES];
+    vec3 tileLo = vec3(3.0e38), tileHi = vec3(-3.0e38);
+    for (int k = 0; k < LIGHT_TILE_SLICES; ++k) {
+        listed[k] = 0u;
+        tileLo = min(tileLo, lo[k]);
+        tileHi = max(tileHi, hi[k]);
+    }
+    int count = nearest <= farthest ? lightCount() : 0;  // a tile without surfaces of this half lists nothing
+    for (int i = 0; i < count; ++i) {
+        PointLight light = lightAt(i);
+        if (!lightReachesBox(light, tileLo, tileHi)) continue;  // most lights: one test for the whole tile
+        for (int k = 0; k < LIGHT_TILE_SLICES; ++k) {
+            // An empty slice's box has lo > hi, where clamp() would give a point outside it.
+            if (lo[k].x > hi[k].x || !lightReachesBox(light, lo[k], hi[k])) continue;
             // Past the maximum only the count goes on: the lighting pass then uses every light.
-            if (listed < uint(LIGHT_TILE_MAX)) tileWords[base + 1 + int(listed)] = uint(i);
-            ++listed;
+            if (listed[k] < uint(LIGHT_TILE_MAX)) tileWords[tileBase + 2 + k * LIGHT_SLICE_STRIDE + 1 + int(listed[k])] = uint(i);
+            ++listed[k];
         }
     }
-    tileWords[base] = listed;
+    for (int k = 0; k < LIGHT_TILE_SLICES; ++k) tileWords[tileBase + 2 + k * LIGHT_SLICE_STRIDE] = listed[k];
 }

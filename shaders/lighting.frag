@@ -15,10 +15,14 @@ in vec2 vScreenUv;
 layout(location = 0) out vec4 outColour;
 
 #if defined(LIGHTS_TILED)
-// The tile's listed lights, or every light where the tile's list overflowed (its count is past
-// the maximum); either way in light order, then carried to the eye once, as the volumes do per light.
+// The lights listed for the pixel's slice of its tile, or every light where that list overflowed
+// (its count is past the maximum); either way in light order, then carried to the eye once, as the
+// volumes do per light.
 vec3 tiledPointLights(Surface s, ivec2 pixel) {
-    int base = lightTileOf(pixel, textureSize(gInfo, 0)) * LIGHT_TILE_STRIDE;
+    int tileBase = lightTileOf(pixel, textureSize(gInfo, 0)) * LIGHT_TILE_STRIDE;
+    float nearest = uintBitsToFloat(tileWords[tileBase]), farthest = uintBitsToFloat(tileWords[tileBase + 1]);
+    int slice = lightSliceOf(lightSlicePosition(length(litPosition(s)), nearest, farthest));
+    int base = tileBase + 2 + slice * LIGHT_SLICE_STRIDE;
     int count = int(tileWords[base]);
     if (count == 0) return vec3(0.0);
     vec3 sum = vec3(0.0);

@@ -155,8 +155,8 @@ TEST_F(TiledLights, AgreeWithVolumesInEveryLayoutAndDepthConvention) {
 }
 
 // More lights reach one tile than its list holds (OASIS_LIGHT_TILE_MAX_LIGHTS): 1.5 times that
-// many, all within half a unit of one ground point in view and each reaching 8 units, so every
-// tile holding that point overflows. Its pixels are lit from the whole list and still agree: per
+// many, all within half a unit of one ground point in view and each reaching 8 units, so the list
+// of every tile slice holding that point overflows. Its pixels are lit from the whole list and still agree: per
 // texel within the volumes' 384 roundings (384 x 2^-11 = 0.19; measured 0.105), in total within
 // 0.05 (measured 0.011), where the third of the lights a truncated list would drop is 0.33.
 TEST_F(TiledLights, OverflowingTileKeepsEveryLight) {
