@@ -27,7 +27,8 @@ update() {
   case $1 in
     measurements) docs/measure.sh "$build/oasis" 9 | splice docs/measurements.md measure.sh ;;
     compatibility) docs/compat.sh "$build" 5 | splice docs/compatibility.md compat.sh ;;
-    lights) docs/measure_lights.sh "$build" 3 1024 | splice docs/lights.md measure_lights.sh ;;
+    lights) docs/measure_lights.sh "$build" 3 1024 | splice docs/lights.md measure_lights.sh
+            docs/measure_lights.sh --methods "$build" 3 | splice docs/lights.md "measure_lights.sh --methods" ;;
     window) { echo '```'; docs/window_cost.sh "$build/oasis"; echo '```'; } | splice docs/measurements.md window_cost.sh ;;
     bench)
       "$build/oasis" bench --out-dir oasis-out/bench > /dev/null

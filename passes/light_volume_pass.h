@@ -24,7 +24,8 @@ public:
         return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
     }
     bool active(const FrameSetup& frame) const override {
-        return !frame.lights.empty() && mirroredPassActive(frame, mirroring_);
+        return frame.lightMethod == LightMethod::Volumes && !frame.lights.empty() &&
+               mirroredPassActive(frame, mirroring_);
     }
 
 protected:

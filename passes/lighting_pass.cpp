@@ -1,5 +1,8 @@
-// One full-screen triangle; every pixel's surface comes from the G-buffer.
+// One full-screen triangle; every pixel's surface comes from the G-buffer. With the tiled light
+// method the variant also adds the lights its LightTilingPass listed for the pixel's tile.
 #include "passes/lighting_pass.h"
+
+#include "passes/light_tiling_pass.h"
 
 namespace oasis {
 
@@ -9,8 +12,9 @@ void LightingPass::execute(PassContext& context) {
     bindGBufferInputs(context.targets);
     beginMirroredDraw(mirroring_);
     if (mirroring_ == Mirroring::Mirrored) beginWaterBoundedDraw(context);
-    glUseProgram(context.shaders.program(
-        context.targets.layout().program(mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting")));
+    std::string program = mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting";
+    if (LightTilingPass::tiledLightsActive(context.frame, mirroring_)) program += ".tiled";
+    glUseProgram(context.shaders.program(context.targets.layout().program(program)));
     context.geometry.drawFullscreenTriangle();
     if (mirroring_ == Mirroring::Mirrored) endWaterBoundedDraw(context);
     endMirroredDraw(mirroring_);

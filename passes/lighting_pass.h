@@ -1,5 +1,6 @@
 // LightingPass: the deferred pipeline's shading. Reads the four G-buffer targets and writes
-// Radiance; mirrored, it lights the mirrored G-buffer into Reflection inside the water only.
+// Radiance; mirrored, it lights the mirrored G-buffer into Reflection inside the water only. With
+// the tiled light method it adds the point lights too (the list from LightTilingPass).
 #pragma once
 #include "passes/pass.h"
 

@@ -1,12 +1,40 @@
 // Deferred lighting: reads one pixel's surface from the G-buffer and shades it with the same
 // function the forward pipeline calls while drawing; where nothing was drawn (the SKY flag the
 // clear leaves) it evaluates the sky. MIRRORED: the same for the reflection, into Reflection.
+// LIGHTS_TILED: also adds the point lights of the pixel's tile (the tiled light method; the list
+// comes from light_tiles.comp), each with the light volumes' own pointLightRadiance().
 #include "common/frame_block.glsl"
 #include "common/gbuffer.glsl"
 #include "common/lighting.glsl"
+#if defined(LIGHTS_TILED)
+#include "common/lights.glsl"
+#include "common/light_tiles.glsl"
+#endif
 
 in vec2 vScreenUv;
 layout(location = 0) out vec4 outColour;
+
+#if defined(LIGHTS_TILED)
+// The lights listed for the pixel's slice of its tile, or every light where that list overflowed
+// (its count is past the maximum); either way in light order, then carried to the eye once, as the
+// volumes do per light.
+vec3 tiledPointLights(Surface s, ivec2 pixel) {
+    int tileBase = lightTileOf(pixel, textureSize(gInfo, 0)) * LIGHT_TILE_STRIDE;
+    float nearest = uintBitsToFloat(tileWords[tileBase]), farthest = uintBitsToFloat(tileWords[tileBase + 1]);
+    int slice = lightSliceOf(lightSlicePosition(length(litPosition(s)), nearest, farthest));
+    int base = tileBase + 2 + slice * LIGHT_SLICE_STRIDE;
+    int count = int(tileWords[base]);
+    if (count == 0) return vec3(0.0);
+    vec3 sum = vec3(0.0);
+    if (count <= LIGHT_TILE_MAX) {
+        for (int k = 0; k < count; ++k) sum += pointLightRadiance(s, lightAt(int(tileWords[base + 1 + k])));
+    } else {
+        int everyLight = lightCount();
+        for (int i = 0; i < everyLight; ++i) sum += pointLightRadiance(s, lightAt(i));
+    }
+    return sum * pointLightTransfer(s);
+}
+#endif
 
 void main() {
 #if defined(MIRRORED)
@@ -19,5 +47,10 @@ void main() {
         outColour = vec4(skySeenAlong(viewRayDirection(vScreenUv), reflected), 1.0);
         return;
     }
-    outColour = vec4(shadeSurface(readGBuffer(pixel)), 1.0);
+    Surface s = readGBuffer(pixel);
+    vec3 radiance = shadeSurface(s);
+#if defined(LIGHTS_TILED)
+    radiance += tiledPointLights(s, pixel);
+#endif
+    outColour = vec4(radiance, 1.0);
 }

@@ -18,6 +18,14 @@
 #define OASIS_DETAIL_LAYERS 5
 // The UBO light path's most uniform blocks (lights.glsl indexes them by constants before GLSL 4.00).
 #define OASIS_LIGHTS_UBO_MAX_BLOCKS 8
+// Tiled light culling (passes/light_tiling_pass.h): square screen tiles of this many pixels, one
+// compute invocation each, cut into this many slices by distance from the camera, each slice with
+// its list of at most OASIS_LIGHT_TILE_MAX_LIGHTS light indices. A slice reached by more lights
+// keeps its true count and is lit from the whole list instead (common/light_tiles.glsl), so no
+// light is ever dropped.
+#define OASIS_LIGHT_TILE_SIZE 16
+#define OASIS_LIGHT_TILE_SLICES 4
+#define OASIS_LIGHT_TILE_MAX_LIGHTS 256
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
 // Surface flags stored in the info target, flags / 255 in this channel: b in the layouts that

@@ -50,6 +50,9 @@ const char* kSceneOptionsHelp =
     "                            they glow at night, e.g. --hour 21\n"
     "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
     "                            where the context has SSBOs, else ubo)\n"
+    "  --light-method METHOD     how the deferred pipeline adds the lights: volumes (stencil volumes,\n"
+    "                            the default) or tiled (per-tile light lists from a compute pass; needs\n"
+    "                            compute shaders and SSBOs, else volumes, saying why)\n"
     "  --force LIST              switch capabilities off even where the driver has them, to reproduce\n"
     "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,\n"
     "                            no-clip-control,gl33 (gl33: an OpenGL 3.3 core context; no-clip-control:\n"
@@ -235,7 +238,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
-            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--force",
+            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
+            "--force",
             "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
@@ -342,6 +346,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!parseLightsPath(value, path))
                 return fail("--lights-path expects one of " + lightsPathNames() + ", got '" + value + "'");
             options.scene.lightsPath = path;
+        } else if (flag == "--light-method") {
+            LightMethod method;
+            if (!parseLightMethod(value, method))
+                return fail("--light-method expects one of " + lightMethodNames() + ", got '" + value + "'");
+            options.scene.lightMethod = method;
         } else if (flag == "--gbuffer") {
             if (!findGBufferLayout(value))
                 return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");

@@ -29,6 +29,7 @@ struct SceneOptions {
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
     int lights = 0;                          // point lights, 0..kMaxLights
     std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context
+    std::optional<LightMethod> lightMethod;  // forced deferred light method; empty = the default
     gl::ForcedFallbacks force;  // --force: capabilities switched off even where the driver has them
 };
 

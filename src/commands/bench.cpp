@@ -65,9 +65,11 @@ std::string timingNote(const TimingClock& clock) {
 }
 
 SceneSettings frameScene(const SceneSettings& base, const std::vector<QualityKnob>& knobs,
-                         const std::vector<int>& levels, int lights, const BenchFrame& frame) {
+                         const std::vector<int>& levels, int lights, const BenchFrame& frame,
+                         LightMethod method = LightMethod::Volumes) {
     SceneSettings scene = applyKnobs(base, knobs, levels);
     scene.lights.count = lights;
+    scene.lights.method = method;
     scene.timeSeconds = frame.time;
     scene.camera = frame.pose;
     return scene;
@@ -99,7 +101,7 @@ BenchResult measureError(Renderer& renderer, const SceneSettings& base, const Be
     double squaredError = 0.0, ssimSum = 0.0, sameKnobsSquared = 0.0;
     images.clear();
     for (size_t f = 0; f < frames.size(); ++f) {
-        Image image = renderFinalImage(renderer, frameScene(base, knobs, config.levels, config.lights, frames[f]));
+        Image image = renderFinalImage(renderer, frameScene(base, knobs, config.levels, config.lights, frames[f], config.lightMethod));
         ImageDifference difference = compareImages(image, references[f]);
         squaredError += difference.rmse * difference.rmse;
         result.maxAbs = std::max(result.maxAbs, difference.maxAbs);
@@ -143,7 +145,8 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
     for (const BenchFrame& frame : frames) {
         std::vector<SceneSettings> scenes;
         for (const Timed& t : group) {
-            scenes.push_back(frameScene(base, knobs, t.result->config.levels, t.result->config.lights, frame));
+            scenes.push_back(frameScene(base, knobs, t.result->config.levels, t.result->config.lights, frame,
+                                    t.result->config.lightMethod));
             t.renderer->setPipeline(t.result->config.pipeline);
             for (int warm = 0; warm < 2; ++warm) t.renderer->renderFrame(scenes.back());
         }
@@ -192,7 +195,9 @@ std::string sizeName(int width, int height) { return std::to_string(width) + "x"
 
 // The layout, and the depth convention where it is not the standard one: "standard+reversed-z".
 std::string layoutLabel(const BenchConfig& config) {
-    return config.depth == standardDepthConvention().name ? config.layout : config.layout + "+" + config.depth;
+    // A non-default depth or light method follows the layout: "standard+reversed-z", "full+tiled".
+    std::string label = config.depth == standardDepthConvention().name ? config.layout : config.layout + "+" + config.depth;
+    return config.lightMethod == LightMethod::Volumes ? label : label + "+" + lightMethodName(config.lightMethod);
 }
 
 std::string tableText(const std::vector<BenchResult>& results) {

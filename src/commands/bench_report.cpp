@@ -47,7 +47,8 @@ const std::vector<QualityKnob> kKnobs = {
 // volume's pixels. Measured in a full run on a loaded llvmpipe (2 cores) at 1280x720: forward 221,
 // 643 and 2404 ms a frame at 0, 4 and 32 lights, deferred (standard) 293, 381 and 364 ms; the 4-
 // and 32-light configurations took 222 s of the run's 660. 128 lights would add about 4x that.
-const std::vector<int> kLightCounts = {0, 4, 32};
+// 256 and 4096 compare the deferred light methods (forward stops at kForwardBenchMaxLights).
+const std::vector<int> kLightCounts = {0, 4, 32, 256, 4096};
 
 std::string format(const char* pattern, double value) {
     char text[64];
@@ -139,8 +140,14 @@ std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, con
                 config.pipeline = PipelineKind::Deferred;
                 for (const std::string& layout : layouts) {
                     config.layout = layout;
+                    config.lightMethod = LightMethod::Volumes;
+                    configs.push_back(config);
+                    if (lights == 0) continue;  // without lights the methods draw the same passes
+                    config.lightMethod = LightMethod::Tiled;
                     configs.push_back(config);
                 }
+                config.lightMethod = LightMethod::Volumes;
+                if (lights > kForwardBenchMaxLights) continue;
                 config.pipeline = PipelineKind::Forward;
                 config.layout = kNoLayout;
                 configs.push_back(config);
@@ -206,7 +213,7 @@ std::string jsonString(const std::string& text) {
 std::string benchCsvHeader() {
     return "pipeline,layout,width,height,variation,knobs,lights,ms_median,ms_min,ms_max,floor_ms,floor_ratio,"
            "psnr_db,rmse,max_abs,ssim,same_knobs_psnr_db,same_knobs_max_abs,bytes_per_pixel,gbuffer_bytes_per_pixel,target_mib,pareto,"
-           "pareto_in_pipeline,passes_ms,depth";
+           "pareto_in_pipeline,passes_ms,depth,light_method";
 }
 
 std::string benchCsvRow(const BenchResult& r) {
@@ -218,7 +225,8 @@ std::string benchCsvRow(const BenchResult& r) {
            format("%.4f", r.rmse) + "," + std::to_string(r.maxAbs) + "," + format("%.5f", r.ssim) + "," + format("%.3f", r.sameKnobsPsnrDb) + "," + std::to_string(r.sameKnobsMaxAbs) + "," +
            std::to_string(r.bytesPerPixel) + "," + std::to_string(r.gbufferBytesPerPixel) + "," +
            format("%.2f", r.targetMiB) + "," + (r.pareto ? "true" : "false") + "," +
-           (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r)) + "," + csvField(c.depth);
+           (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r)) + "," + csvField(c.depth) + "," +
+           lightMethodName(c.lightMethod);
 }
 
 std::string benchConfigJson(const BenchResult& r) {
@@ -228,7 +236,8 @@ std::string benchConfigJson(const BenchResult& r) {
     return "{\"pipeline\": " + jsonString(pipelineName(c.pipeline)) + ", \"layout\": " + jsonString(c.layout) +
            ", \"width\": " + std::to_string(c.width) + ", \"height\": " + std::to_string(c.height) +
            ", \"variation\": " + jsonString(r.variation) + ", \"knobs\": " + jsonString(r.knobSettings) +
-           ", \"lights\": " + std::to_string(c.lights) + ", \"ms_median\": " + jsonNumber(r.msMedian) + ", \"ms_min\": " + jsonNumber(r.msMin) +
+           ", \"lights\": " + std::to_string(c.lights) +
+           ", \"light_method\": " + jsonString(lightMethodName(c.lightMethod)) + ", \"ms_median\": " + jsonNumber(r.msMedian) + ", \"ms_min\": " + jsonNumber(r.msMin) +
            ", \"ms_max\": " + jsonNumber(r.msMax) + ", \"floor_ms\": " + jsonNumber(r.floorMs) +
            ", \"floor_ratio\": " + jsonNumber(r.floorRatio()) + ", \"psnr_db\": " + jsonNumber(r.psnrDb) +
            ", \"rmse\": " + jsonNumber(r.rmse, 6) + ", \"max_abs\": " + std::to_string(r.maxAbs) +

@@ -37,6 +37,10 @@ const std::vector<int>& benchLightCounts();
 int defaultLightCount();  // SceneSettings' own
 // --quick: the default count and the most.
 std::vector<int> quickLightCounts();
+// Forward is timed up to this many lights only: it shades every light in every fragment (about 21 ms
+// per light per frame at 1280x720 on llvmpipe, docs/lights.md), so 256 lights take seconds a frame
+// and 4096 over a minute; above it the counts compare the deferred light methods.
+inline constexpr int kForwardBenchMaxLights = 32;
 
 // The layout name of a forward configuration: forward writes no G-buffer, so no layout applies.
 constexpr const char* kNoLayout = "none";
@@ -48,6 +52,8 @@ struct BenchConfig {
     std::vector<int> levels;  // one level index per knob of `knobs`
     int variedKnob = -1;      // the knob set away from its default, -1 for every knob at its default
     int lights = defaultLightCount();  // point lights in every frame (and in its reference)
+    // Deferred's light method (the reference is volumes); rows with lights come in both methods.
+    LightMethod lightMethod = LightMethod::Volumes;
 
     // "default" or e.g. "grid=coarse" or "lights=32": what this configuration changes.
     std::string variation(const std::vector<QualityKnob>& knobs) const;
@@ -66,8 +72,9 @@ SceneSettings applyKnobs(SceneSettings scene, const std::vector<QualityKnob>& kn
 // Per size and light count (in the order given): at the default light count, every knob at its
 // default, then each knob alone at each other level (`cheapestOnly`: only its cheapest level); at
 // any other count, every knob at its default only (a count is a workload, not crossed with every
-// knob). For each of those, deferred with every layout (in the order given), then forward once (it
-// writes no G-buffer, so the layout does not change it).
+// knob). For each of those, deferred with every layout (in the order given), each layout with the
+// volumes and, with lights, the tiled light method, then forward once (it writes no G-buffer, so
+// the layout does not change it; up to kForwardBenchMaxLights).
 std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, const std::vector<std::string>& layouts,
                                       const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly,
                                       const std::vector<int>& lightCounts = {defaultLightCount()});

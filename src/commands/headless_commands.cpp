@@ -161,6 +161,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
+                "\"light_method\": \"%s\", \"light_method_reason\": \"%s\", "
                 "\"frame_clock\": \"wall-glfinish\"%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
                 targets.width(), targets.height(), targets.layout().name.c_str(),
@@ -170,6 +171,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
                 session.renderer->lightsDrawn(), lightsPathName(session.renderer->lightsPath()),
                 session.renderer->lightsPathReason().c_str(), session.renderer->lightsDropped(),
+                lightMethodName(session.renderer->lightMethod()), session.renderer->lightMethodReason().c_str(),
                 passClockJson(c).c_str(), passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
                 passTimesJson("deferred_passes_ms", c.deferredPasses).c_str());
 }

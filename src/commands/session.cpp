@@ -19,6 +19,7 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.vegetation = options.vegetation;
     scene.lights.count = options.lights;
     scene.lights.path = options.lightsPath;
+    scene.lights.method = options.lightMethod;
     return scene;
 }
 
@@ -69,6 +70,8 @@ std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     std::string whyNoSsbo, clipControlReason;
     bool ssbo = caps.ssboAvailable(&whyNoSsbo);
     second->setSsboAvailable(ssbo, whyNoSsbo, scene.lights.path);
+    std::string computeReason;
+    second->setComputeAvailable(caps.computeAvailable(&computeReason), computeReason, scene.lights.method);
     second->setClipControlAvailable(caps.clipControlAvailable(&clipControlReason), clipControlReason);
     second->setDepthConvention(renderer->depthConvention());
     second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
@@ -92,6 +95,8 @@ RenderSession::RenderSession(const Options& options, Shaders need)
     std::string whyNoSsbo;
     bool ssbo = caps.ssboAvailable(&whyNoSsbo);
     renderer->setSsboAvailable(ssbo, whyNoSsbo, scene.lights.path);
+    std::string computeReason;
+    renderer->setComputeAvailable(caps.computeAvailable(&computeReason), computeReason, scene.lights.method);
     std::string clipControlReason;
     bool clipControl = caps.clipControlAvailable(&clipControlReason);
     renderer->setClipControlAvailable(clipControl, clipControlReason);
@@ -125,6 +130,13 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     bool ssbo = renderer->lightsPath() != LightsPath::Ubo;
     list.push_back({"ssbo-light-list", ssbo, ssbo ? "SSBO light list, path " + renderer->lightsPathReason()
                                                   : "fallback: UBO light list, path " + renderer->lightsPathReason()});
+    // The deferred light method (--light-method): tiled where asked for and compute exists.
+    bool tiled = renderer->lightMethod() == LightMethod::Tiled;
+    bool tiledRefused = !tiled && scene.lights.method == LightMethod::Tiled;
+    list.push_back({"tiled-light-culling", tiled,
+                    tiled ? "deferred lights by " + renderer->lightMethodReason()
+                          : (tiledRefused ? "fallback: deferred lights by " : "not used: deferred lights by ") +
+                                renderer->lightMethodReason()});
     bool gpuPlants = plantAtlas ? plantAtlas->path() == PlantInterpretation::Gpu : plantPath == PlantInterpretation::Gpu;
     list.push_back({"compute-plant-interpretation", gpuPlants,
                     gpuPlants ? plantPathReason : "fallback: " + plantPathReason});
@@ -187,7 +199,8 @@ std::string describeReflectionBounds(const Renderer& renderer, const SceneSettin
 }
 
 std::string describeLights(const Renderer& renderer) {
-    std::string text = "lights: " + std::to_string(renderer.lightsDrawn()) + ", path " + renderer.lightsPathReason();
+    std::string text = "lights: " + std::to_string(renderer.lightsDrawn()) + ", path " + renderer.lightsPathReason() +
+                       ", method " + renderer.lightMethodReason();
     if (renderer.lightsDropped() > 0)
         text += "; WARNING: " + std::to_string(renderer.lightsDropped()) + " lights dropped (the ubo path holds " +
                 std::to_string(renderer.uboLights().maxLights()) + ")";

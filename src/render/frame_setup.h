@@ -7,6 +7,7 @@
 #include "render/depth_convention.h"
 #include "render/frame_data.h"
 #include "render/light_data.h"
+#include "render/light_method.h"
 #include "render/light_paths.h"
 #include "scene/camera.h"
 #include "scene/point_lights.h"
@@ -32,6 +33,7 @@ struct WaterSettings {
 struct LightSettings {
     int count = 0;                                    // 0..kMaxLights
     std::optional<LightsPath> path;                   // forced path; empty = automatic
+    std::optional<LightMethod> method;                // forced deferred light method; empty = the default
     std::optional<std::vector<WorldPointLight>> list; // replaces the generated lights (tests, tools)
 };
 
@@ -63,6 +65,7 @@ struct FrameSetup {
     FrameData data;
     std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)
     LightsPath lightsPath = LightsPath::Ubo;  // set by the renderer from the context and the settings
+    LightMethod lightMethod = LightMethod::Volumes;  // the deferred lights' method, set by the renderer too
 };
 
 // `depth`: the convention of the targets drawn into (the renderer's); the camera projects with it.

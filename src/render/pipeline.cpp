@@ -5,6 +5,7 @@
 
 #include "passes/clear_pass.h"
 #include "passes/depth_copy_pass.h"
+#include "passes/light_tiling_pass.h"
 #include "passes/light_volume_pass.h"
 #include "passes/lighting_pass.h"
 #include "passes/reflection_clear_pass.h"
@@ -32,6 +33,9 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<DepthCopyPass>());
+        // The point lights: tiled (a light list per screen tile, added by LightingPass) or the
+        // stencil volumes after it; each pass is active only with its method.
+        add(std::make_unique<LightTilingPass>());
         add(std::make_unique<LightingPass>());
         // Before the water mask: the depth under the water is still the terrain's, which the
         // volumes test against (the G-buffer there holds that terrain).
@@ -41,6 +45,7 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
         add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
         add(std::make_unique<DepthCopyPass>(Mirroring::Mirrored));
+        add(std::make_unique<LightTilingPass>(Mirroring::Mirrored));
         add(std::make_unique<LightingPass>(Mirroring::Mirrored));
         add(std::make_unique<LightVolumePass>(Mirroring::Mirrored));
     } else {

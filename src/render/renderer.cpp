@@ -39,6 +39,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
+    computeAvailable_ = caps.computeAvailable(&computeReason_);
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_);
     // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
     clipControlAvailable_ = caps.clipControlAvailable(&clipControlReason_);
     setDepthConvention(standardDepthConvention());
@@ -121,6 +123,12 @@ glm::ivec4 Renderer::readWaterBounds() const {
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(bounds), &bounds);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return bounds;
+}
+
+void Renderer::setComputeAvailable(bool available, const std::string& reason, const std::optional<LightMethod>& forced) {
+    computeAvailable_ = available;
+    computeReason_ = reason;
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, forced, computeReason_);
 }
 
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
@@ -265,6 +273,8 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     frame_.lightsPath = lightsChoice_.path;
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_);
+    frame_.lightMethod = lightMethodChoice_.method;
     uploadLights();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);

@@ -71,6 +71,15 @@ public:
     // The last frame's rectangle of visible water in pixels (x0, y0, x1, y1 inclusive, rows bottom-up;
     // empty: x0 > x1) as the GPU recorded it; reads it back (a stall: for tests and tools).
     glm::ivec4 readWaterBounds() const;
+    // How the deferred pipeline adds the lights (render/light_method.h), decided each frame from
+    // SceneSettings::lights.method and whether compute shaders (with SSBOs) exist; tiled asked for
+    // without them falls back to volumes. The method and the reason of the last frame.
+    LightMethod lightMethod() const { return lightMethodChoice_.method; }
+    const std::string& lightMethodReason() const { return lightMethodChoice_.reason; }
+    bool computeAvailable() const { return computeAvailable_; }
+    // The session's capability report decides (it honours --force no-compute, no-ssbo, gl33).
+    void setComputeAvailable(bool available, const std::string& reason,
+                             const std::optional<LightMethod>& forced = std::nullopt);
     // Lights the last frame drew, and how many the UBO path had to drop (0 on the SSBO paths).
     int lightsDrawn() const { return int(frame_.lights.size()); }
     int lightsDropped() const { return lightsDropped_; }
@@ -162,6 +171,9 @@ private:
     void chooseWaterBounds();  // from ssboAvailable_ and the context's limits; sets the context defines
     UboLightLayout uboLights_;
     LightsPathChoice lightsChoice_;
+    bool computeAvailable_ = false;
+    std::string computeReason_;
+    LightMethodChoice lightMethodChoice_;
     int lightsDropped_ = 0;
     FrameSetup frame_;
     const DepthConvention* depthRequested_ = &standardDepthConvention();

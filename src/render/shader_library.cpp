@@ -91,6 +91,7 @@ void bindLightBlocks(GLuint program) {
         return;
     const std::pair<const char*, int> storage[] = {{kLightStorageName, kLightStorageBinding},
                                                    {kLightCountStorageName, kLightCountStorageBinding},
+                                                   {kLightTileStorageName, kLightTileStorageBinding},
                                                    {kWaterBoundsStorageName, kWaterBoundsStorageBinding}};
     for (auto [blockName, binding] : storage) {
         GLuint index = glGetProgramResourceIndex(program, GL_SHADER_STORAGE_BLOCK, blockName);
@@ -212,7 +213,7 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
     if (stage == GL_COMPUTE_SHADER) insertAfterVersionLine(source.text, computeExtensionLines(dialect_));
     // The SSBO light paths below GLSL 4.30 (a 3.3 context with the extension): storage blocks.
     bool storageLights = std::any_of(defines.begin(), defines.end(), [](const std::string& define) {
-        return define == "LIGHTS_SSBO" || define == "LIGHTS_SSBO_COUNT";
+        return define == "LIGHTS_SSBO" || define == "LIGHTS_SSBO_COUNT" || define == "LIGHTS_TILED";
     });
     if (storageLights && glslVersionNumber(dialect_.versionLine) < 430)
         insertAfterVersionLine(source.text, "#extension GL_ARB_shader_storage_buffer_object : require\n");

@@ -15,6 +15,7 @@ namespace {
 bool touchesGBuffer(const ProgramVariant& variant) {
     const auto& d = variant.defines;
     bool writes = std::find(d.begin(), d.end(), "OUTPUT_GBUFFER") != d.end();
+    if (variant.computeFile == "light_tiles.comp") return true;  // reads the surfaces' positions
     const std::string readers[] = {"lighting.frag", "light_volume.frag", "gbuffer_clear.frag", "floor.frag",
                                    "debug_view.frag", "gbuffer_positions.frag", "probe.frag"};
     bool marksOnly = std::find(d.begin(), d.end(), "MARK_ONLY") != d.end();
@@ -49,6 +50,14 @@ std::vector<ProgramVariant> buildVariants() {
         {"lsystem.local", "", "", {"PASS_LOCAL_TRANSFORMS"}, "lsystem_interpret.comp"},
         {"lsystem.compose", "", "", {"PASS_COMPOSE_ROUND"}, "lsystem_interpret.comp"},
         {"lsystem.segments", "", "", {"PASS_EMIT_SEGMENTS"}, "lsystem_interpret.comp"},
+        // The tiled light method (render/light_method.h): the per-tile light lists, then the
+        // lighting pass adding each tile's lights. It needs SSBOs for its lists, so it reads the
+        // lights from the storage block too whatever the light path (with the count from its own
+        // block, which every driver compiles; the UBO block array cannot take a per-pixel index).
+        {"light.tiles", "", "", {"LIGHTS_SSBO_COUNT"}, "light_tiles.comp"},
+        {"light.tiles.mirrored", "", "", {"MIRRORED", "LIGHTS_SSBO_COUNT"}, "light_tiles.comp"},
+        {"lighting.tiled", "fullscreen.vert", "lighting.frag", {"LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
+        {"lighting.mirrored.tiled", "fullscreen.vert", "lighting.frag", {"MIRRORED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
     };
     // Point lights, once per light path (render/light_paths.h): the forward surfaces' light loop
     // (terrain and plants) and the deferred light volumes (stencil marking, then shading), direct

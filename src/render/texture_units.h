@@ -46,10 +46,14 @@ inline constexpr const char* kLightBlockName = "LightBlock";
 inline constexpr int kLightBlockFirstBinding = 2;
 inline constexpr const char* kLightStorageName = "LightBuffer";
 inline constexpr int kLightStorageBinding = 6;
+// The tiled light method's per-tile lists (shaders/common/light_tiles.glsl), bound by its pass.
+inline constexpr const char* kLightTileStorageName = "LightTileBuffer";
+inline constexpr int kLightTileStorageBinding = 5;
 inline constexpr const char* kLightCountStorageName = "LightCountBuffer";
 inline constexpr int kLightCountStorageBinding = 7;
-// The screen rectangle of the frame's visible water (shaders/common/water_bounds.glsl).
+// The screen rectangle of the frame's visible water (shaders/common/water_bounds.glsl): its own
+// binding, as the tiled mirrored lighting reads it beside the tile lists.
 inline constexpr const char* kWaterBoundsStorageName = "WaterBoundsBuffer";
-inline constexpr int kWaterBoundsStorageBinding = 5;
+inline constexpr int kWaterBoundsStorageBinding = 4;
 
 }  // namespace oasis

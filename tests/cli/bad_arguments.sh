@@ -87,13 +87,15 @@ scene_cases() {
 --lights|+3
 --lights|1.5
 --lights-path|nope
+--light-method|nope
+--light-method|Tiled
 --force|nope
 EOF
 }
 
 # Options that take a value (each is tried with its value missing).
 value_flags="--size --time --hour --camera --gbuffer --depth --reflections --water-level --ripples --absorption
-  --vegetation --vegetation-density --wind --lights --lights-path --force --pipeline --view --out --stencil-view
+  --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
   --stop-before --out-dir --frames"
 
 for command in "" render compare caps bench window; do

@@ -99,6 +99,7 @@ const std::vector<Flag>& flags() {
         {"--no-compute", Value::None},
         {"--lights", Value::Integer, 0, 4096},
         {"--lights-path", Value::Choice, 0, 0, {"ssbo", "ssbo-count", "ubo"}},
+        {"--light-method", Value::Choice, 0, 0, {"volumes", "tiled"}},
         {"--force", Value::ForceList},
         {"--depth", Value::Choice, 0, 0, {"standard", "reversed-z"}},
         {"--gbuffer", Value::Choice},

@@ -121,35 +121,46 @@ TEST(BenchConfigs, DefaultFirstThenEachKnobAloneDeferredLayoutsThenForward) {
 TEST(BenchConfigs, OtherLightCountsAtTheDefaultKnobsOnly) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
     std::vector<std::string> layouts = {"full", "standard"};
-    const std::vector<int> counts = {0, 4, 32};
+    const std::vector<int> counts = {0, 4, 32, 256};
     ASSERT_EQ(defaultLightCount(), 0);
+    ASSERT_LT(32, kForwardBenchMaxLights + 1);
+    ASSERT_GT(256, kForwardBenchMaxLights);
     std::vector<BenchConfig> configs = benchConfigs(knobs, layouts, {{640, 360}, {32, 18}}, false, counts);
     std::vector<BenchConfig> plain = benchConfigs(knobs, layouts, {{640, 360}, {32, 18}}, false);
-    const size_t perSetting = layouts.size() + 1;
-    ASSERT_EQ(configs.size(), plain.size() + 2 * 2 * perSetting);
-    const size_t perSize = plain.size() / 2 + 2 * perSetting;
+    // With lights: each layout with volumes then tiled, then forward up to kForwardBenchMaxLights.
+    const size_t withForward = 2 * layouts.size() + 1, deferredOnly = 2 * layouts.size();
+    const size_t perSize = plain.size() / 2 + 2 * withForward + deferredOnly;
+    ASSERT_EQ(configs.size(), 2 * perSize);
     for (size_t i = 0; i < configs.size(); ++i) {
         const BenchConfig& c = configs[i];
         size_t inSize = i % perSize;
-        int expectedLights = inSize < plain.size() / 2 ? 0 : counts[1 + (inSize - plain.size() / 2) / perSetting];
+        size_t lit = inSize - plain.size() / 2;
+        int expectedLights = inSize < plain.size() / 2 ? 0 : lit < 2 * withForward ? counts[1 + lit / withForward] : 256;
         EXPECT_EQ(c.lights, expectedLights) << i;
         EXPECT_EQ(c.width, i < perSize ? 640 : 32) << i;
+        if (c.lights == 0) EXPECT_EQ(c.lightMethod, LightMethod::Volumes) << "without lights the methods are the same";
+        if (c.lights > kForwardBenchMaxLights) EXPECT_EQ(c.pipeline, PipelineKind::Deferred) << i;
         if (c.lights != defaultLightCount()) {
             EXPECT_EQ(c.variedKnob, -1) << "knobs are varied at the default light count only";
             EXPECT_EQ(c.levels, defaultLevels(knobs));
             EXPECT_EQ(c.variation(knobs), "lights=" + std::to_string(c.lights));
         }
     }
-    // The first configuration at 4 lights: deferred with each layout, then forward.
+    // The first configurations at 4 lights: each layout with volumes, then tiled, then forward.
     const size_t first4 = plain.size() / 2;
     EXPECT_EQ(configs[first4].layout, "full");
-    EXPECT_EQ(configs[first4 + 1].layout, "standard");
-    EXPECT_EQ(configs[first4 + 2].pipeline, PipelineKind::Forward);
+    EXPECT_EQ(configs[first4].lightMethod, LightMethod::Volumes);
+    EXPECT_EQ(configs[first4 + 1].layout, "full");
+    EXPECT_EQ(configs[first4 + 1].lightMethod, LightMethod::Tiled);
+    EXPECT_EQ(configs[first4 + 2].layout, "standard");
+    EXPECT_EQ(configs[first4 + 4].pipeline, PipelineKind::Forward);
     EXPECT_EQ(configs[0].variation(knobs), "default");
 
     std::vector<BenchConfig> quick = benchConfigs(knobs, layouts, {{320, 180}}, true, quickLightCounts());
     EXPECT_EQ(quick.back().lights, benchLightCounts().back());
-    EXPECT_EQ(quick.back().pipeline, PipelineKind::Forward);
+    // The most lights are past forward's limit: the quick run ends with deferred's tiled method.
+    EXPECT_EQ(quick.back().pipeline, PipelineKind::Deferred);
+    EXPECT_EQ(quick.back().lightMethod, LightMethod::Tiled);
 }
 
 TEST(Pareto, DominatedPointsAreOff) {
