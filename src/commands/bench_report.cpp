@@ -31,6 +31,16 @@ KnobLevel reflectionLevel(const char* label, bool on) {
     return {label, [on](SceneSettings& scene) { scene.water.reflections = on; }};
 }
 
+// Work the frame saves without changing its picture: the saving is the time of the default level
+// against the reference's (the work done in full), at the same error.
+KnobLevel billboardLevel(const char* label, bool trimmed) {
+    return {label, [trimmed](SceneSettings& scene) { scene.vegetation.trimmedBillboards = trimmed; }};
+}
+
+KnobLevel reflectionBoundsLevel(const char* label, bool bounded) {
+    return {label, [bounded](SceneSettings& scene) { scene.water.reflectionBounds = bounded; }};
+}
+
 const std::vector<QualityKnob> kKnobs = {
     {"grid", "terrain grid rings x segments (38,400 triangles at medium)",
      {gridLevel("coarse", 75, 64), gridLevel("medium", 150, 128), gridLevel("fine", 300, 256)}, 1},
@@ -39,6 +49,10 @@ const std::vector<QualityKnob> kKnobs = {
     {"vegetation", "plant density (off, or times the default candidates per chunk)",
      {vegetationLevel("off", false, 1.0f), vegetationLevel("0.5", true, 0.5f), vegetationLevel("1", true, 1.0f)}, 2},
     {"reflections", "the mirrored scene in the water", {reflectionLevel("off", false), reflectionLevel("on", true)}, 1},
+    {"billboards", "plant billboards trimmed to their atlas cell's drawn bounds, or whole cells",
+     {billboardLevel("trimmed", true), billboardLevel("whole", false)}, 0},
+    {"reflection-bounds", "the reflection's full-screen draws clipped to the visible water, or the whole screen",
+     {reflectionBoundsLevel("on", true), reflectionBoundsLevel("off", false)}, 0},
 };
 
 // Light counts: none (the default scene), 4 (where deferred starts to win on llvmpipe: the README's
