@@ -15,15 +15,18 @@ void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirror
 }
 
 void beginWaterBoundedDraw(const PassContext& context) {
-    if (!context.frame.waterBounded || !context.waterBounds) return;
+    if (!context.waterBounds) return;
+    // Bound whenever the programs declare it (the context can record it), used only when bounded.
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, context.waterBounds);
+    if (!context.frame.waterBounded) return;
     for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glEnable(plane);
 }
 
 void endWaterBoundedDraw(const PassContext& context) {
-    if (!context.frame.waterBounded || !context.waterBounds) return;
-    for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glDisable(plane);
+    if (!context.waterBounds) return;
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, 0);
+    if (!context.frame.waterBounded) return;
+    for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glDisable(plane);
 }
 
 void beginMirroredDraw(Mirroring mirroring) {

@@ -52,11 +52,14 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
                 SceneSettings unbounded = pose.scene;
                 unbounded.water.reflectionBounds = false;
                 renderer.renderFrame(unbounded);
+                renderer.renderView("final");
                 const Image reference = renderer.readDisplay();
                 const long long fragmentsUnbounded = reflectionFragments(renderer, unbounded);
 
                 renderer.renderFrame(pose.scene);
+                renderer.renderView("final");
                 const Image bounded = renderer.readDisplay();
+                EXPECT_TRUE(hasContent(bounded));
                 const glm::ivec4 rect = renderer.readWaterBounds();  // x0, y0, x1, y1, rows bottom-up
                 const std::vector<uint8_t> stencil = renderer.readStencil();  // rows bottom-up
                 const long long fragmentsBounded = reflectionFragments(renderer, pose.scene);
@@ -115,13 +118,16 @@ TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
     if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
+    renderer.renderView("final");
     const Image bounded = renderer.readDisplay();
+    EXPECT_TRUE(hasContent(bounded));
 
     renderer.setSsboAvailable(false, "switched off by the test", std::nullopt);
     EXPECT_FALSE(renderer.waterBoundsAvailable());
     EXPECT_NE(renderer.waterBoundsReason().find("switched off by the test"), std::string::npos)
         << renderer.waterBoundsReason();
     renderer.renderFrame(pose.scene);
+    renderer.renderView("final");
     const Image whole = renderer.readDisplay();
     EXPECT_EQ(compareImages(bounded, whole).maxAbs, 0);
 }

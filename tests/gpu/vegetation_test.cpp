@@ -177,7 +177,8 @@ long long fragmentInvocations(Renderer& renderer, const SceneSettings& scene) {
 
 // Billboards trimmed to their cell's drawn bounds draw the plants they drew as whole cells: every
 // texel the alpha test can keep lies inside its cell's box, the frames agree but for single edge
-// pixels (interpolation rounding), and the plants cost fewer fragments.
+// pixels (the mip level and atlas coordinates, interpolated from other corners), and the plants
+// cost fewer fragments.
 TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
     NamedPose pose = poseNamed("meadow");
     Renderer renderer(*shaders_, pose.scene);
@@ -215,9 +216,12 @@ TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
         none.vegetation.enabled = false;
         long long trimmedCount = fragmentInvocations(renderer, pose.scene);
         renderer.renderFrame(pose.scene);
+        renderer.renderView("final");
         Image trimmed = renderer.readDisplay();
+        EXPECT_TRUE(hasContent(trimmed));
         long long wholeCount = fragmentInvocations(renderer, whole);
         renderer.renderFrame(whole);
+        renderer.renderView("final");
         Image reference = renderer.readDisplay();
         long long noneCount = fragmentInvocations(renderer, none);
 
@@ -227,8 +231,10 @@ TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
             if (std::memcmp(&reference.rgba[i], &trimmed.rgba[i], 3) != 0) ++differing;
         std::printf("[vegetation] %s: trimmed vs whole billboards PSNR %.2f dB, %ld of %d pixels differ\n",
                     pipelineName(kind), difference.psnrDb, differing, kWidth * kHeight);
-        EXPECT_GE(difference.psnrDb, 55.0) << pipelineName(kind);
-        EXPECT_LE(differing, long(kWidth * kHeight / 500)) << pipelineName(kind) << ": more than 0.2% of pixels";
+        // Measured: 66-69 dB, 135-158 edge pixels at 320x180 (a trimmed corner's own mip level and
+        // coordinates interpolate a little differently from the whole cell's).
+        EXPECT_GE(difference.psnrDb, 60.0) << pipelineName(kind);
+        EXPECT_LE(differing, long(kWidth * kHeight / 200)) << pipelineName(kind) << ": more than 0.5% of pixels";
         if (trimmedCount < 0) {
             std::printf("[vegetation] no pipeline statistics query here: fragment counts not checked\n");
             continue;
