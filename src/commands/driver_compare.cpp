@@ -215,6 +215,15 @@ int runDriverCompare(const Options& options) {
         for (Side& side : sides) {
             if (side.reference) continue;
             side.path = options.outDir + "/" + side.label + ".png";
+            struct stat rendered, reference;
+            if (!options.reference.empty() && stat(side.path.c_str(), &rendered) == 0 &&
+                stat(options.reference.c_str(), &reference) == 0 && rendered.st_dev == reference.st_dev &&
+                rendered.st_ino == reference.st_ino) {  // the child would overwrite the file sent
+                std::fprintf(stderr, "oasis: --reference %s is where %s's frame is written: move it, or give "
+                             "another --out-dir\n", options.reference.c_str(), side.label.c_str());
+                code = 2;
+                break;
+            }
             if ((code = renderSide(options, side, extraArguments, runtimeDir)) != 0) break;
         }
     } catch (const std::exception& error) {

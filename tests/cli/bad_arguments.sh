@@ -168,6 +168,9 @@ grep -q 'not a PNG' "$scratch/stderr" || fail "a text file as --reference: $(cat
 expect 2 compare --reference "$scratch/small.png" --size 64x36 --out-dir "$scratch/driver-never"
 grep -q '32x18 but --size is 64x36' "$scratch/stderr" || fail "a reference of another size: $(cat "$scratch/stderr")"
 [ -e "$scratch/driver-never" ] && fail "compare --reference with bad input created its output directory"
+mkdir -p "$scratch/sent" && cp "$scratch/small.png" "$scratch/sent/here.png"
+expect 2 compare --reference "$scratch/sent/here.png" --out-dir "$scratch/sent"
+cmp -s "$scratch/small.png" "$scratch/sent/here.png" || fail "compare --reference overwrote the reference with its own frame"
 
 # --capture outside RenderDoc: exit 1 saying so, before rendering or writing anything.
 for command in "render --size 16x9 --out $scratch/capture.png" "compare --size 16x9 --frames 1 --out-dir $scratch/capture" \
