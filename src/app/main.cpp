@@ -7,6 +7,7 @@
 #include "cli/options.h"
 #include "commands/caps_command.h"
 #include "commands/bench.h"
+#include "commands/driver_compare.h"
 #include "commands/headless_commands.h"
 #include "commands/window_app.h"
 #include "context/gl_context.h"
@@ -17,7 +18,8 @@ int runCommand(const oasis::Options& options) {
     using namespace oasis;
     switch (options.command) {
         case Command::Render: return runRenderCommand(options);
-        case Command::Compare: return runCompareCommand(options);
+        case Command::Compare:
+            return options.comparesDrivers() ? runDriverCompare(options) : runCompareCommand(options);
         case Command::Caps: return runCapsCommand(options);
         case Command::Bench: return runBenchCommand(options);
         case Command::Probe: return runProbeCommand(options);

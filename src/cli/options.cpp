@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "cli/driver_setups.h"
 #include "cli/input_domains.h"
 #include "debug/debug_views.h"
 #include "render/depth_convention.h"
@@ -156,7 +157,19 @@ std::string usage(Command command) {
                    "  writes forward.png, deferred.png and difference.png to DIR (default oasis-out);\n"
                    "  --passes adds each pass's median ms (glFinish after every pass)\n"
                    "  --capture                 under RenderDoc: capture the forward and the deferred frame whose\n"
-                   "                            images are written (two captures); without RenderDoc, exit 1\n" + scene;
+                   "                            images are written (two captures); without RenderDoc, exit 1\n"
+                   "       oasis compare --driver A --driver B [scene options] [--pipeline P] [--out-dir DIR] [--json]\n"
+                   "       oasis compare [--driver A] --reference FILE.png [scene options] [--pipeline P] [--out-dir DIR]\n"
+                   "  renders the same frame (final view, no legend) on driver set-ups of this machine, each in a\n"
+                   "  child `oasis render` with the set-up's environment, and compares the two: PSNR, max abs, RMSE;\n"
+                   "  writes DIR/A.png, DIR/B.png and DIR/difference.png (legend as above); a set-up whose driver is\n"
+                   "  missing here, or whose render fails, is exit 1 naming it\n"
+                   "  --driver NAME             a set-up: " + driverSetupNames() + "\n"
+                   "  --reference FILE.png      compare against a saved frame (e.g. from another machine) instead of\n"
+                   "                            a second set-up; without --driver, against the frame rendered here\n"
+                   "                            (this process's environment); without --size, the frame is rendered\n"
+                   "                            at the reference's size (a different --size is exit 2)\n"
+                   "  --pipeline forward|deferred  the pipeline of the rendered frames (default deferred)\n" + scene;
         case Command::Caps:
             return "usage: oasis caps [--json] [--force LIST]\n"
                    "  the context's GL version, vendor, renderer, GLSL version, the limits and extensions that\n"
@@ -240,7 +253,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
             "--force",
-            "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend"};
+            "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend",
+            "--driver", "--reference"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
@@ -267,8 +281,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts and knobs)");
         if (flag == "--json") { options.json = true; continue; }
         if (flag == "--passes") { options.passTimes = true; continue; }
-        if (flag == "--no-compute") { options.scene.noCompute = true; continue; }
-        if (flag == "--gl-debug") { options.glDebug = true; continue; }
+        if (flag == "--no-compute" || flag == "--gl-debug") {  // scene switches: a child render gets them too
+            (flag == "--no-compute" ? options.scene.noCompute : options.glDebug) = true;
+            if (options.command == Command::Compare) options.sceneArguments.push_back(flag);
+            continue;
+        }
         if (flag == "--capture") {
             if (options.command != Command::Render && options.command != Command::Compare &&
                 options.command != Command::Bench)
@@ -284,14 +301,35 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         bool renderOnly = flag == "--pipeline" || flag == "--view" || flag == "--out" || flag == "--stencil-view" ||
                           flag == "--stop-before" || flag == "--view-exposure" || flag == "--channel" ||
                           flag == "--range" || flag == "--overlay" || flag == "--legend";
-        if (flag == "--pipeline" && options.command == Command::Probe) renderOnly = false;
+        if (flag == "--pipeline" && (options.command == Command::Probe || options.command == Command::Compare))
+            renderOnly = false;  // compare: only with --driver / --reference (checked after the loop)
+        if ((flag == "--driver" || flag == "--reference") && options.command != Command::Compare)
+            return fail("option " + flag + " belongs to `oasis compare`");
+        // What a child `oasis render` of compare --driver needs to draw the same frame.
+        static const std::vector<std::string> kNotForwarded = {"--driver", "--reference", "--out-dir", "--frames"};
+        if (options.command == Command::Compare &&
+            std::find(kNotForwarded.begin(), kNotForwarded.end(), flag) == kNotForwarded.end()) {
+            options.sceneArguments.push_back(flag);
+            options.sceneArguments.push_back(value);
+        }
         if (renderOnly && options.command != Command::Render)
             return fail("option " + flag + " belongs to `oasis render`");
         if (flag == "--at" && options.command != Command::Probe) return fail("option --at belongs to `oasis probe`");
         if (flag == "--water-scene" && options.command != Command::Render && options.command != Command::Probe &&
             options.command != Command::Window && options.command != Command::Default)
             return fail("option --water-scene belongs to `oasis render`, `oasis probe` and the window");
-        if (flag == "--size") {
+        if (flag == "--driver") {
+            if (!findDriverSetup(value))
+                return fail("--driver: unknown set-up '" + value + "' (one of: " + driverSetupNames() + ")");
+            if (options.drivers.size() == 2)
+                return fail("--driver given three times: compare takes two set-ups, or one and --reference FILE.png");
+            options.drivers.push_back(value);
+        } else if (flag == "--reference") {
+            if (!endsWith(value, ".png")) return fail("--reference expects a PNG file (FILE.png), got '" + value + "'");
+            if (!options.reference.empty()) return fail("--reference given twice");
+            options.reference = value;
+        } else if (flag == "--size") {
+            options.sizeGiven = true;
             std::string error;
             if (!parseSize(value, options.scene.width, options.scene.height, &error)) return fail(error);
         } else if (flag == "--time") {
@@ -362,6 +400,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         } else if (flag == "--pipeline") {
             if (!parsePipelineKind(value, options.pipeline))
                 return fail("--pipeline expects forward or deferred, got '" + value + "'");
+            options.pipelineGiven = true;
         } else if (flag == "--view") {
             if (!findDebugView(value) && value != kOverviewName && !findEncodingErrorView(value))
                 return fail("--view: unknown view '" + value + "' (one of: " + debugViewNames() + ", " +
@@ -442,6 +481,18 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (!pipeline.hasPass(options.stopBefore))
             return fail("--stop-before: the " + std::string(pipelineName(options.pipeline)) + " pipeline has no pass '" +
                         options.stopBefore + "' (its passes: " + pipeline.passNames() + ")");
+    }
+    if (options.command == Command::Compare && !options.help) {
+        if (options.drivers.size() == 2 && !options.reference.empty())
+            return fail("compare takes two --driver set-ups, or one --driver and --reference FILE.png, not both");
+        if (options.drivers.size() == 1 && options.reference.empty())
+            return fail("--driver " + options.drivers[0] + " needs a second --driver or --reference FILE.png");
+        if (options.pipelineGiven && !options.comparesDrivers())
+            return fail("option --pipeline belongs to `oasis render` and to `oasis compare --driver/--reference` "
+                        "(plain compare renders both pipelines)");
+        if (options.comparesDrivers() && (options.passTimes || options.timingFramesGiven || options.capture))
+            return fail("--passes, --frames and --capture belong to the pipeline comparison, not compare "
+                        "--driver/--reference (it times nothing)");
     }
     if (findEncodingErrorView(options.view) && options.viewControls.channel)
         return fail("--channel: the " + options.view + " view has one value a pixel (use --range)");

@@ -58,6 +58,14 @@ struct Options {
     std::optional<std::pair<int, int>> probeAt;  // probe: the pixel, 0,0 top left
     bool capture = false;  // render, compare, bench: RenderDoc captures of the rendered frames
     bool glDebug = false;  // every subcommand: synchronous debug output, stop at the first GL error
+    // compare --driver / --reference (commands/driver_compare.h): the set-ups (cli/driver_setups.h),
+    // the saved image, and the scene options as given, passed on to each child `oasis render`.
+    std::vector<std::string> drivers;
+    std::string reference;
+    std::vector<std::string> sceneArguments;
+    bool sizeGiven = false;  // --size on the command line (else a --reference's size is used)
+    bool pipelineGiven = false;
+    bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }
 };
 
 struct ParseResult {

@@ -1,7 +1,10 @@
 // The headless commands: `render`, `compare`, `probe` and the main job (what `oasis` runs with no display).
 // Each returns the process exit code: 0 done, 1 a runtime failure (message printed).
 #pragma once
+#include <string>
+
 #include "cli/options.h"
+#include "render/image.h"
 
 namespace oasis {
 
@@ -10,5 +13,9 @@ int runCompareCommand(const Options& options);
 int runMainJob(const Options& options);
 // Prints every target's value at --at X,Y of the frame (render/pixel_probe.h).
 int runProbeCommand(const Options& options);
+
+// The difference image compare writes: the heat map of a against b (render/image.h, full scale 16
+// levels) with a legend strip naming them and giving PSNR, max abs and RMSE. Sizes must agree.
+Image differenceImage(const Image& a, const std::string& aName, const Image& b, const std::string& bName);
 
 }  // namespace oasis

@@ -3,11 +3,15 @@
 
 #include "render/file_output.h"
 
+#include <stb_image.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 namespace oasis {
@@ -42,6 +46,27 @@ bool writePng(const std::string& path, const Image& image, std::string& error) {
         return false;
     }
     return writeFileWhole(path, png, error);
+}
+
+bool readPng(const std::string& path, Image& image, std::string& error) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) { error = "cannot read " + path + ": " + std::strerror(errno); return false; }
+    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (file.bad()) { error = "cannot read " + path + ": read error"; return false; }
+    static const char kSignature[] = "\x89PNG\r\n\x1a\n";
+    // stb_image reads JPEG, BMP and more too: a reference must be what oasis writes.
+    if (bytes.compare(0, 8, kSignature, 8) != 0) { error = "cannot read " + path + ": not a PNG file"; return false; }
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &width,
+                                            &height, &channels, 4);
+    if (!pixels) {
+        error = "cannot read " + path + ": not a readable PNG (" + stbi_failure_reason() + ")";
+        return false;
+    }
+    image = Image(width, height);
+    std::memcpy(image.rgba.data(), pixels, image.rgba.size());
+    stbi_image_free(pixels);
+    return true;
 }
 
 ImageDifference compareImages(const Image& a, const Image& b) {

@@ -1,4 +1,4 @@
-// 8-bit RGBA images (top row first): PNG output and the comparisons oasis reports between
+// 8-bit RGBA images (top row first): PNG output and input and the comparisons oasis reports between
 // frames (PSNR, RMSE and max absolute difference over RGB, and a difference heat map).
 #pragma once
 #include <cstdint>
@@ -24,6 +24,11 @@ bool encodePng(const Image& image, std::string& png);
 // Writes a PNG whole or not at all (render/file_output.h); on failure returns false and `error`
 // says "cannot write PATH: REASON".
 bool writePng(const std::string& path, const Image& image, std::string& error);
+
+// Reads a PNG file (any bit depth or channel count; converted to 8-bit RGBA, alpha 255 where it
+// has none). False with `error` saying "cannot read PATH: REASON" if it is missing, unreadable or
+// not a PNG.
+bool readPng(const std::string& path, Image& image, std::string& error);
 
 // PSNR is capped at kPsnrIdentical (identical images have infinite PSNR).
 constexpr double kPsnrIdentical = 100.0;

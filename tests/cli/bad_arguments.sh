@@ -96,7 +96,7 @@ EOF
 # Options that take a value (each is tried with its value missing).
 value_flags="--size --time --hour --camera --gbuffer --depth --reflections --water-level --ripples --absorption
   --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
-  --stop-before --out-dir --frames"
+  --stop-before --out-dir --frames --driver --reference"
 
 for command in "" render compare caps bench window; do
     set -- ${command:+"$command"}
@@ -148,6 +148,29 @@ for command in "" compare bench; do
     expect 2 "$@" --out-dir ""
 done
 [ -e "$scratch/x.jpg" ] && fail "render wrote a .jpg"
+
+# compare --driver / --reference: unknown set-ups (listing the valid ones), one or three set-ups,
+# both forms at once, a reference that is no readable PNG or not the --size asked for; nothing rendered.
+expect 2 compare --driver nope --driver llvmpipe
+grep -q 'one of: llvmpipe, zink, softpipe' "$scratch/stderr" || fail "unknown --driver does not list the set-ups: $(cat "$scratch/stderr")"
+expect 2 compare --driver llvmpipe
+expect 2 compare --driver llvmpipe --driver zink --driver softpipe
+expect 2 compare --driver llvmpipe --driver llvmpipe --reference "$scratch/ref.png"
+expect 2 compare --driver llvmpipe --driver llvmpipe --frames 3
+expect 2 render --driver llvmpipe
+expect 2 caps --reference "$scratch/ref.png"
+expect 2 compare --reference "$scratch/ref.jpg"
+expect 2 compare --reference "$scratch/missing.png" --out-dir "$scratch/driver-never"
+echo "not a picture" > "$scratch/text.png"
+expect 2 compare --reference "$scratch/text.png" --out-dir "$scratch/driver-never"
+grep -q 'not a PNG' "$scratch/stderr" || fail "a text file as --reference: $(cat "$scratch/stderr")"
+"$oasis" render --size 32x18 --legend off --out "$scratch/small.png" > /dev/null 2>&1 || fail "render of a 32x18 reference failed"
+expect 2 compare --reference "$scratch/small.png" --size 64x36 --out-dir "$scratch/driver-never"
+grep -q '32x18 but --size is 64x36' "$scratch/stderr" || fail "a reference of another size: $(cat "$scratch/stderr")"
+[ -e "$scratch/driver-never" ] && fail "compare --reference with bad input created its output directory"
+mkdir -p "$scratch/sent" && cp "$scratch/small.png" "$scratch/sent/here.png"
+expect 2 compare --reference "$scratch/sent/here.png" --out-dir "$scratch/sent"
+cmp -s "$scratch/small.png" "$scratch/sent/here.png" || fail "compare --reference overwrote the reference with its own frame"
 
 # --capture outside RenderDoc: exit 1 saying so, before rendering or writing anything.
 for command in "render --size 16x9 --out $scratch/capture.png" "compare --size 16x9 --frames 1 --out-dir $scratch/capture" \

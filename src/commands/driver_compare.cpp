@@ -1,0 +1,282 @@
+// compare --driver / --reference (commands/driver_compare.h): child processes, their output and
+// the driver check, then the comparison of the two PNGs.
+#include "commands/driver_compare.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/driver_setups.h"
+#include "commands/bench_report.h"
+#include "commands/headless_commands.h"
+#include "context/gl_context.h"
+#include "render/image.h"
+
+extern char** environ;
+
+namespace oasis {
+namespace {
+
+// One side of the comparison: a set-up rendered here (null setup = this process's own environment,
+// "here"), or the reference file.
+struct Side {
+    explicit Side(std::string name, const DriverSetup* driver = nullptr) : label(std::move(name)), setup(driver) {}
+    std::string label;  // in messages, the legend and the image's file name
+    const DriverSetup* setup = nullptr;
+    bool reference = false;
+    std::string path;      // the PNG
+    std::string renderer;  // GL_RENDERER the child reported
+    Image image;
+};
+
+struct ChildResult {
+    int status = 0;
+    std::string output;  // stdout and stderr together, in the order written
+};
+
+// The child's environment: ours, less the driver-selecting variables when a set-up is named
+// (the table alone says what it is), plus the set-up's variables.
+std::vector<std::string> childEnvironment(const DriverSetup* setup, const std::string& runtimeDir) {
+    std::vector<std::string> environment;
+    auto overridden = [&](const std::string& entry) {
+        std::string name = entry.substr(0, entry.find('='));
+        if (!setup) return false;
+        for (const std::string& variable : driverSelectingVariables())
+            if (name == variable) return true;
+        for (const auto& [variable, value] : setup->environment)
+            if (name == variable) return true;
+        return false;
+    };
+    for (char** entry = environ; *entry; ++entry)
+        if (!overridden(*entry)) environment.push_back(*entry);
+    if (setup)
+        for (const auto& [variable, value] : setup->environment)
+            environment.push_back(variable + "=" + (value == kRuntimeDirValue ? runtimeDir : value));
+    return environment;
+}
+
+// Runs `arguments` (argv[0] first) as /proc/self/exe with `environment`, collecting its output.
+// Throws std::runtime_error when it cannot be started.
+ChildResult runChild(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+    int pipeEnds[2];
+    if (pipe2(pipeEnds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDERR_FILENO);
+    std::vector<char*> argv, envp;
+    for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
+    for (const std::string& entry : environment) envp.push_back(const_cast<char*>(entry.c_str()));
+    argv.push_back(nullptr);
+    envp.push_back(nullptr);
+    pid_t pid = 0;
+    int spawnError = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), envp.data());
+    posix_spawn_file_actions_destroy(&actions);
+    close(pipeEnds[1]);
+    if (spawnError != 0) {
+        close(pipeEnds[0]);
+        throw std::runtime_error(std::string("cannot start /proc/self/exe: ") + std::strerror(spawnError));
+    }
+    ChildResult result;
+    char buffer[4096];
+    for (ssize_t n; (n = read(pipeEnds[0], buffer, sizeof(buffer))) != 0;) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) break;
+        result.output.append(buffer, size_t(n));
+    }
+    close(pipeEnds[0]);
+    while (waitpid(pid, &result.status, 0) < 0 && errno == EINTR) {}
+    return result;
+}
+
+std::string indented(const std::string& text) {
+    std::string out = "    ";
+    for (size_t i = 0; i < text.size(); ++i) {
+        out += text[i];
+        if (text[i] == '\n' && i + 1 < text.size()) out += "    ";
+    }
+    if (!out.empty() && out.back() != '\n') out += '\n';
+    return out;
+}
+
+// The renderer the child's `oasis render` reported ("oasis: renderer: NAME; GL VERSION"), or "".
+std::string reportedRenderer(const std::string& output) {
+    const std::string marker = "oasis: renderer: ";
+    size_t at = output.find(marker);
+    if (at == std::string::npos) return {};
+    size_t start = at + marker.size();
+    return output.substr(start, output.find_first_of(";\n", start) - start);
+}
+
+std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
+// Renders `side` in a child. Returns 0, or the exit code after saying what went wrong.
+int renderSide(const Options& options, Side& side, const std::vector<std::string>& extraArguments,
+               const std::string& runtimeDir) {
+    std::vector<std::string> arguments = {"oasis", "render"};
+    arguments.insert(arguments.end(), options.sceneArguments.begin(), options.sceneArguments.end());
+    arguments.insert(arguments.end(), extraArguments.begin(), extraArguments.end());
+    if (side.setup) arguments.insert(arguments.end(), side.setup->arguments.begin(), side.setup->arguments.end());
+    for (const char* argument : {"--view", "final", "--legend", "off", "--out"}) arguments.push_back(argument);
+    arguments.push_back(side.path);
+    ChildResult child = runChild(arguments, childEnvironment(side.setup, runtimeDir));
+    std::string name = side.setup ? "set-up " + side.setup->name : "the frame here";
+    if (WIFSIGNALED(child.status)) {
+        std::fprintf(stderr, "oasis: %s: `oasis render` was killed by signal %d (%s); its output:\n%s", name.c_str(),
+                     WTERMSIG(child.status), strsignal(WTERMSIG(child.status)), indented(child.output).c_str());
+        return 1;
+    }
+    int code = WIFEXITED(child.status) ? WEXITSTATUS(child.status) : 1;
+    // No EGL display or context under the set-up's variables: its driver is not on this machine
+    // (zink without lavapipe fails here rather than falling back).
+    bool noContext = child.output.find("oasis: cannot initialise a surfaceless EGL") != std::string::npos ||
+                     child.output.find("oasis: EGL ") != std::string::npos;
+    if (code != 0 && side.setup && noContext) {
+        std::fprintf(stderr, "oasis: set-up %s is not available here: no GL context under its environment (it "
+                     "needs %s); the child's output:\n%s", side.setup->name.c_str(), side.setup->needs.c_str(),
+                     indented(child.output).c_str());
+        return 1;
+    }
+    if (code != 0) {
+        std::fprintf(stderr, "oasis: %s: `oasis render` exited with %d%s; its output:\n%s", name.c_str(), code,
+                     side.setup ? (" (it needs " + side.setup->needs + ")").c_str() : "",
+                     indented(child.output).c_str());
+        return code == 2 ? 2 : 1;  // a usage error stays one (e.g. a reference's size outside --size's domain)
+    }
+    side.renderer = reportedRenderer(child.output);
+    if (side.setup && side.renderer.rfind(side.setup->rendererPrefix, 0) != 0) {
+        // Mesa falls back to another driver rather than failing: the frame is not the set-up's.
+        std::fprintf(stderr, "oasis: set-up %s is not available here: the frame was rendered by '%s', not %s (it needs %s)\n",
+                     side.setup->name.c_str(), side.renderer.empty() ? "an unreported renderer" : side.renderer.c_str(),
+                     side.setup->rendererPrefix.c_str(), side.setup->needs.c_str());
+        return 1;
+    }
+    std::string error;
+    if (!readPng(side.path, side.image, error)) {
+        std::fprintf(stderr, "oasis: %s: %s\n", name.c_str(), error.c_str());
+        return 1;
+    }
+    return 0;
+}
+
+std::string fileLabel(const std::string& path) {
+    size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+}  // namespace
+
+int runDriverCompare(const Options& options) {
+    std::vector<Side> sides;
+    for (const std::string& name : options.drivers) sides.push_back(Side(name, findDriverSetup(name)));
+    if (options.drivers.size() == 2 && options.drivers[0] == options.drivers[1]) sides[1].label += "-2";
+    if (!options.reference.empty() && sides.empty()) sides.push_back(Side("here"));
+    std::vector<std::string> extraArguments;
+    if (!options.reference.empty()) {
+        Side reference(fileLabel(options.reference));
+        reference.reference = true;
+        reference.path = options.reference;
+        std::string error;
+        if (!readPng(options.reference, reference.image, error)) {
+            std::fprintf(stderr, "oasis: --reference: %s\n", error.c_str());
+            return 2;
+        }
+        const SceneOptions& scene = options.scene;
+        if (options.sizeGiven && (reference.image.width != scene.width || reference.image.height != scene.height)) {
+            std::fprintf(stderr, "oasis: --reference %s is %s but --size is %s: give the reference's size, or leave "
+                         "--size out to render at the reference's size\n", options.reference.c_str(),
+                         sizeText(reference.image.width, reference.image.height).c_str(),
+                         sizeText(scene.width, scene.height).c_str());
+            return 2;
+        }
+        if (!options.sizeGiven) extraArguments = {"--size", sizeText(reference.image.width, reference.image.height)};
+        sides.push_back(std::move(reference));
+    }
+    if (mkdir(options.outDir.c_str(), 0755) != 0 && errno != EEXIST) {
+        std::fprintf(stderr, "oasis: cannot create directory %s: %s\n", options.outDir.c_str(), std::strerror(errno));
+        return 1;
+    }
+    // zink warns without XDG_RUNTIME_DIR; mkdtemp makes it 0700, as the runtime directory must be.
+    char runtimeTemplate[] = "/tmp/oasis-runtime-XXXXXX";
+    std::string runtimeDir = mkdtemp(runtimeTemplate) ? runtimeTemplate : "/tmp";
+    int code = 0;
+    try {
+        for (Side& side : sides) {
+            if (side.reference) continue;
+            side.path = options.outDir + "/" + side.label + ".png";
+            struct stat rendered, reference;
+            if (!options.reference.empty() && stat(side.path.c_str(), &rendered) == 0 &&
+                stat(options.reference.c_str(), &reference) == 0 && rendered.st_dev == reference.st_dev &&
+                rendered.st_ino == reference.st_ino) {  // the child would overwrite the file sent
+                std::fprintf(stderr, "oasis: --reference %s is where %s's frame is written: move it, or give "
+                             "another --out-dir\n", options.reference.c_str(), side.label.c_str());
+                code = 2;
+                break;
+            }
+            if ((code = renderSide(options, side, extraArguments, runtimeDir)) != 0) break;
+        }
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "oasis: %s\n", error.what());
+        code = 1;
+    }
+    if (runtimeDir != "/tmp") rmdir(runtimeDir.c_str());  // empty unless a driver left files: then kept
+    if (code != 0) return code;
+
+    const Side &a = sides[0], &b = sides[1];
+    if (a.image.width != b.image.width || a.image.height != b.image.height) {
+        std::fprintf(stderr, "oasis: %s is %s but %s is %s\n", a.label.c_str(),
+                     sizeText(a.image.width, a.image.height).c_str(), b.label.c_str(),
+                     sizeText(b.image.width, b.image.height).c_str());
+        return 1;
+    }
+    ImageDifference difference = compareImages(a.image, b.image);
+    Image heat;
+    try {
+        HeadlessContext context;  // the legend's text is drawn with GL, on this process's own driver
+        heat = differenceImage(a.image, a.label, b.image, b.label);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "oasis: difference.png: %s\n", error.what());
+        return 1;
+    }
+    std::string differencePath = options.outDir + "/difference.png", error;
+    if (!writePng(differencePath, heat, error)) {
+        std::fprintf(stderr, "oasis: %s\n", error.c_str());
+        return 1;
+    }
+    bool identical = difference.maxAbs == 0;
+    if (options.json) {
+        auto side = [](const Side& s) {
+            return "{\"name\": " + jsonString(s.label) + ", \"kind\": " +
+                   jsonString(s.reference ? "reference" : s.setup ? "set-up" : "here") + ", \"image\": " +
+                   jsonString(s.path) + ", \"renderer\": " + jsonString(s.renderer) + "}";
+        };
+        std::printf("{\"a\": %s, \"b\": %s, \"width\": %d, \"height\": %d, \"pipeline\": \"%s\", \"psnr_db\": %.4f, "
+                    "\"max_abs\": %d, \"rmse\": %.6f, \"identical\": %s, \"difference\": %s}\n",
+                    side(a).c_str(), side(b).c_str(), a.image.width, a.image.height, pipelineName(options.pipeline),
+                    difference.psnrDb, difference.maxAbs, difference.rmse, identical ? "true" : "false",
+                    jsonString(differencePath).c_str());
+        return 0;
+    }
+    std::printf("oasis: %s vs %s, %s, %s pipeline: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n",
+                a.label.c_str(), b.label.c_str(), sizeText(a.image.width, a.image.height).c_str(),
+                pipelineName(options.pipeline), difference.psnrDb, identical ? " (identical)" : "", difference.maxAbs,
+                difference.rmse);
+    for (const Side* s : {&a, &b})
+        std::printf("  %-12s %s\n", (s->label + ":").c_str(),
+                    s->reference ? ("saved image " + s->path).c_str() : (s->renderer + ", " + s->path).c_str());
+    std::printf("  wrote %s\n", differencePath.c_str());
+    return 0;
+}
+
+}  // namespace oasis

@@ -1,0 +1,76 @@
+#!/bin/sh
+# compare --driver / --reference end to end (commands/driver_compare.h), one case per ctest test:
+#   same       llvmpipe against llvmpipe: max abs 0, both frames and difference.png written
+#   forced     llvmpipe against no-ssbo (--force no-ssbo, bit-identical by design): max abs 0
+#   zink       llvmpipe against zink over lavapipe: a finite PSNR of at least $ZINK_MIN_PSNR dB
+#              (exit 77 = skipped, saying why, when zink is not on this machine)
+#   reference  a frame `render` wrote, as --reference: identical (the size taken from the file)
+#   altered    a frame of another hour as --reference: PSNR under 30 dB, difference.png with its legend
+# Usage: driver_compare.sh OASIS_EXECUTABLE SCRATCH_DIR CASE
+oasis=$1
+scratch=$2
+case=$3
+size=160x90
+ZINK_MIN_PSNR=30
+rm -rf "$scratch" && mkdir -p "$scratch" || exit 1
+
+fail() { echo "FAIL: $*"; exit 1; }
+# field NAME: a top-level number or boolean of the JSON in $scratch/out.json
+field() { python3 -c "import json,sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])" "$scratch/out.json" "$1"; }
+# png_size FILE: "WxH" from the PNG header
+png_size() { python3 -c "import struct,sys; d=open(sys.argv[1],'rb').read(24); assert d[:8]==b'\x89PNG\r\n\x1a\n'; print('%dx%d' % struct.unpack('>II', d[16:24]))" "$1"; }
+compare() {
+    "$oasis" compare --json --out-dir "$scratch/out" "$@" > "$scratch/out.json" 2> "$scratch/stderr"
+}
+expect_identical() {
+    [ "$(field max_abs)" = 0 ] || fail "max abs $(field max_abs), expected 0: $(cat "$scratch/out.json")"
+    [ "$(field identical)" = True ] || fail "not reported identical: $(cat "$scratch/out.json")"
+}
+expect_difference_png() {
+    [ -f "$scratch/out/difference.png" ] || fail "no difference.png"
+    got=$(png_size "$scratch/out/difference.png") || fail "difference.png is not a PNG"
+    # The heat map is the frame's size; the legend strip adds rows under it.
+    width=${got%x*}
+    height=${got#*x}
+    [ "$width" = 160 ] && [ "$height" -gt 90 ] || fail "difference.png is $got, expected 160 wide with a legend under 90 rows"
+}
+
+case $case in
+same)
+    compare --driver llvmpipe --driver llvmpipe --size $size || fail "exit $?: $(cat "$scratch/stderr")"
+    expect_identical
+    for image in llvmpipe.png llvmpipe-2.png; do
+        [ "$(png_size "$scratch/out/$image")" = $size ] || fail "$image is not a $size PNG (the frame alone, no legend)"
+    done
+    expect_difference_png ;;
+forced)
+    compare --driver llvmpipe --driver no-ssbo --size $size || fail "exit $?: $(cat "$scratch/stderr")"
+    expect_identical ;;
+zink)
+    compare --driver llvmpipe --driver zink --size $size
+    code=$?
+    if [ $code -ne 0 ] && grep -q "is not available here" "$scratch/stderr"; then
+        echo "SKIPPED: $(head -n 1 "$scratch/stderr")"
+        exit 77
+    fi
+    [ $code -eq 0 ] || fail "exit $code: $(cat "$scratch/stderr")"
+    psnr=$(field psnr_db)
+    python3 -c "import math,sys; p=float(sys.argv[1]); sys.exit(0 if math.isfinite(p) and p >= float(sys.argv[2]) else 1)" \
+        "$psnr" $ZINK_MIN_PSNR || fail "zink against llvmpipe: PSNR $psnr dB, expected finite and >= $ZINK_MIN_PSNR"
+    echo "zink against llvmpipe at $size: PSNR $psnr dB, max abs $(field max_abs)"
+    expect_difference_png ;;
+reference)
+    "$oasis" render --size $size --legend off --out "$scratch/ref.png" > /dev/null || fail "render failed"
+    compare --reference "$scratch/ref.png" || fail "exit $?: $(cat "$scratch/stderr")"
+    expect_identical ;;
+altered)
+    "$oasis" render --size $size --hour 18 --legend off --out "$scratch/ref.png" > /dev/null || fail "render failed"
+    compare --driver llvmpipe --reference "$scratch/ref.png" || fail "exit $?: $(cat "$scratch/stderr")"
+    psnr=$(field psnr_db)
+    python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) < 30 else 1)" "$psnr" ||
+        fail "a frame at 18:00 against 10:00: PSNR $psnr dB, expected under 30"
+    [ "$(field max_abs)" -gt 0 ] || fail "max abs 0 against a different frame"
+    expect_difference_png ;;
+*) fail "unknown case '$case'" ;;
+esac
+echo "PASS: $case"

@@ -1,0 +1,73 @@
+// Covers src/cli/driver_setups.h and compare --driver / --reference parsing in src/cli/options.cpp:
+// the set-up table, what a child render gets passed on, and the combinations refused.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "cli/driver_setups.h"
+#include "cli/options.h"
+
+namespace oasis {
+namespace {
+
+TEST(DriverSetups, TableSelectsDriversAndTiers) {
+    const DriverSetup* zink = findDriverSetup("zink");
+    ASSERT_NE(zink, nullptr);
+    EXPECT_EQ(zink->rendererPrefix, "zink");
+    bool runtimeDir = false, galliumZink = false;
+    for (const auto& [name, value] : zink->environment) {
+        runtimeDir |= name == "XDG_RUNTIME_DIR" && value == kRuntimeDirValue;
+        galliumZink |= name == "GALLIUM_DRIVER" && value == "zink";
+    }
+    EXPECT_TRUE(runtimeDir && galliumZink);
+    const DriverSetup* noSsbo = findDriverSetup("no-ssbo");
+    ASSERT_NE(noSsbo, nullptr);
+    EXPECT_TRUE(noSsbo->environment.empty());
+    EXPECT_EQ(noSsbo->arguments, (std::vector<std::string>{"--force", "no-ssbo"}));
+    ASSERT_NE(findDriverSetup("llvmpipe"), nullptr);
+    EXPECT_TRUE(findDriverSetup("llvmpipe")->environment.empty());
+    EXPECT_EQ(findDriverSetup("es"), nullptr);  // no ES tier yet
+    // Every named set-up is in the list the errors print, once.
+    for (const DriverSetup& setup : driverSetups()) {
+        std::string names = ", " + driverSetupNames() + ",";
+        EXPECT_NE(names.find(", " + setup.name + ","), std::string::npos) << setup.name;
+    }
+}
+
+TEST(DriverSetups, CompareParsesDriversAndPassesTheSceneOn) {
+    ParseResult r = parseCommandLine({"compare", "--driver", "llvmpipe", "--size", "160x90", "--hour", "18",
+                                      "--no-compute", "--driver", "zink", "--pipeline", "forward", "--out-dir", "d",
+                                      "--json"});
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.options.drivers, (std::vector<std::string>{"llvmpipe", "zink"}));
+    EXPECT_TRUE(r.options.comparesDrivers());
+    EXPECT_TRUE(r.options.sizeGiven);
+    EXPECT_EQ(r.options.sceneArguments,
+              (std::vector<std::string>{"--size", "160x90", "--hour", "18", "--no-compute", "--pipeline", "forward"}));
+    ParseResult reference = parseCommandLine({"compare", "--reference", "sent.png"});
+    ASSERT_TRUE(reference.ok) << reference.error;
+    EXPECT_EQ(reference.options.reference, "sent.png");
+    EXPECT_FALSE(reference.options.sizeGiven);
+    EXPECT_FALSE(parseCommandLine({"compare"}).options.comparesDrivers());
+}
+
+TEST(DriverSetups, RefusedCombinations) {
+    auto error = [](std::vector<std::string> args) {
+        ParseResult r = parseCommandLine(args);
+        EXPECT_FALSE(r.ok) << args.size();
+        return r.error;
+    };
+    EXPECT_NE(error({"compare", "--driver", "nope", "--driver", "zink"}).find("one of: llvmpipe, zink"), std::string::npos);
+    EXPECT_NE(error({"compare", "--driver", "zink"}).find("needs a second --driver or --reference"), std::string::npos);
+    EXPECT_NE(error({"compare", "--driver", "zink", "--driver", "zink", "--driver", "llvmpipe"}).find("three"),
+              std::string::npos);
+    EXPECT_NE(error({"compare", "--driver", "zink", "--driver", "llvmpipe", "--reference", "a.png"}).find("not both"),
+              std::string::npos);
+    EXPECT_NE(error({"compare", "--reference", "a.jpg"}).find("PNG"), std::string::npos);
+    EXPECT_NE(error({"render", "--driver", "zink"}).find("belongs to `oasis compare`"), std::string::npos);
+    EXPECT_NE(error({"compare", "--pipeline", "forward"}).find("--pipeline"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace oasis
