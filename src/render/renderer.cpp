@@ -40,7 +40,7 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     computeAvailable_ = caps.computeAvailable(&computeReason_);
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_);
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
     // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
     clipControlAvailable_ = caps.clipControlAvailable(&clipControlReason_);
     setDepthConvention(standardDepthConvention());
@@ -128,7 +128,7 @@ glm::ivec4 Renderer::readWaterBounds() const {
 void Renderer::setComputeAvailable(bool available, const std::string& reason, const std::optional<LightMethod>& forced) {
     computeAvailable_ = available;
     computeReason_ = reason;
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, forced, computeReason_);
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, forced, computeReason_, lightsChoice_.path);
 }
 
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
@@ -273,7 +273,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     frame_.lightsPath = lightsChoice_.path;
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_);
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
     frame_.lightMethod = lightMethodChoice_.method;
     uploadLights();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
