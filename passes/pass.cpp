@@ -29,6 +29,15 @@ void endWaterBoundedDraw(const PassContext& context) {
     for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glDisable(plane);
 }
 
+OnlyWhereWaterIsSeen::OnlyWhereWaterIsSeen(const PassContext& context, bool reflectionWork)
+    : conditional_(reflectionWork && context.waterSeen != 0) {
+    if (conditional_) glBeginConditionalRender(context.waterSeen, GL_QUERY_WAIT);
+}
+
+OnlyWhereWaterIsSeen::~OnlyWhereWaterIsSeen() {
+    if (conditional_) glEndConditionalRender();
+}
+
 void beginMirroredDraw(Mirroring mirroring) {
     if (mirroring != Mirroring::Mirrored) return;
     glEnable(GL_STENCIL_TEST);

@@ -25,6 +25,9 @@ struct PassContext {
     // The rectangle of visible water (common/water_bounds.glsl): 0 where the context cannot record
     // it; recorded by WaterMaskPass, the reflection's passes clip to it when frame.waterBounded.
     GLuint waterBounds = 0;
+    // An occlusion query (GL_ANY_SAMPLES_PASSED) around WaterMaskPass's draw when the frame bounds
+    // its reflection (frame.waterBounded), else 0: the reflection's passes render conditionally on it.
+    GLuint waterSeen = 0;
 };
 
 class Pass {
@@ -40,6 +43,10 @@ public:
     // counterpart, by which a forward frame's G-buffer is filled for the views. "" for passes that
     // only shade, copy or compose.
     virtual std::string sceneStep() const { return {}; }
+    // Whether the pass only draws the water's reflection: where the frame bounds its reflection,
+    // it renders conditionally on the water mask's occlusion query, so a frame with no water in
+    // view pays nothing for it (Pipeline::run).
+    virtual bool reflectionWork() const { return false; }
 
     void run(PassContext& context) {
         gl::DebugGroup group(name().c_str());
@@ -63,6 +70,7 @@ public:
     std::vector<Target> writes() const override;
     bool active(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return step_; }
+    bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
 
 protected:
     // Binds the output, depth-tests and writes depth; direct draws mark `stencilMark`, mirrored
@@ -92,6 +100,18 @@ void endMirroredDraw(Mirroring mirroring);
 // 1-4, written by common/water_bounds.glsl in fullscreen.vert) when the frame records it.
 void beginWaterBoundedDraw(const PassContext& context);
 void endWaterBoundedDraw(const PassContext& context);
+// Renders the scope's draws and clears only if the water mask's occlusion query saw a water
+// sample (GL_QUERY_WAIT: the query's result, not a guess), where `reflectionWork` and the frame has
+// the query; else the scope changes nothing.
+class OnlyWhereWaterIsSeen {
+public:
+    OnlyWhereWaterIsSeen(const PassContext& context, bool reflectionWork);
+    ~OnlyWhereWaterIsSeen();
+    OnlyWhereWaterIsSeen(const OnlyWhereWaterIsSeen&) = delete;
+    OnlyWhereWaterIsSeen& operator=(const OnlyWhereWaterIsSeen&) = delete;
+private:
+    bool conditional_ = false;
+};
 bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring);
 std::string variantName(const std::string& base, SurfaceOutput output, Mirroring mirroring);
 const char* surfaceOutputName(SurfaceOutput output);

@@ -28,6 +28,8 @@
 #define OASIS_LIGHT_TILE_MAX_LIGHTS 256
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
+// Set by the renderer when the reflection is bounded to the visible water this frame (--reflection-bounds).
+#define OASIS_WATER_BOUNDED_FLAG 2u
 // Surface flags stored in the info target, flags / 255 in this channel: b in the layouts that
 // store the surface as is, g in the compact layout's two-channel info (common/gbuffer.glsl).
 #define OASIS_INFO_FLAGS_CHANNEL 2

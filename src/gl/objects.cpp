@@ -19,6 +19,7 @@ GLenum labelIdentifier(ObjectKind kind) {
         case ObjectKind::Program: return GL_PROGRAM;
         case ObjectKind::Shader: return GL_SHADER;
         case ObjectKind::Sampler: return GL_SAMPLER;
+        case ObjectKind::Query: return GL_QUERY;
         case ObjectKind::Count: break;
     }
     return GL_NONE;
@@ -75,6 +76,7 @@ void Object<Kind>::reset() {
         case ObjectKind::Program: glDeleteProgram(name_); break;
         case ObjectKind::Shader: glDeleteShader(name_); break;
         case ObjectKind::Sampler: glDeleteSamplers(1, &name_); break;
+        case ObjectKind::Query: glDeleteQueries(1, &name_); break;
         case ObjectKind::Count: break;
     }
     track(-1);
@@ -88,6 +90,7 @@ template class Object<ObjectKind::VertexArray>;
 template class Object<ObjectKind::Program>;
 template class Object<ObjectKind::Shader>;
 template class Object<ObjectKind::Sampler>;
+template class Object<ObjectKind::Query>;
 
 Buffer createBuffer(const std::string& label) {
     GLuint n = 0;
@@ -124,6 +127,15 @@ Sampler createSampler(const std::string& label) {
     glGenSamplers(1, &n);  // a sampler is an object from glGenSamplers on
     setLabel(ObjectKind::Sampler, n, label);
     return Sampler(n);
+}
+
+Query createQuery(GLenum target, const std::string& label) {
+    GLuint n = 0;
+    glGenQueries(1, &n);
+    glBeginQuery(target, n);  // a query is an object from its first glBeginQuery on
+    glEndQuery(target);
+    setLabel(ObjectKind::Query, n, label);
+    return Query(n);
 }
 
 Texture createTargetTexture(const std::string& label, GLenum internalFormat, int width, int height, int levels) {

@@ -93,7 +93,8 @@ void Renderer::chooseWaterBounds() {
     const bool glsl430 = epoxy_gl_version() >= 43;
     waterBoundsAvailable_ = ssboAvailable_ && glsl430 && vertexBlocks >= 1 && fragmentBlocks >= 1 && clipDistances >= 5;
     if (waterBoundsAvailable_)
-        waterBoundsReason_ = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances)";
+        waterBoundsReason_ = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances; "
+                             "skipped where no water is seen: the water mask's occlusion query, conditional rendering)";
     else if (!ssboAvailable_)
         waterBoundsReason_ = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
     else if (!glsl430)
@@ -109,6 +110,7 @@ void Renderer::chooseWaterBounds() {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
         glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * sizeof(GLint), nullptr, GL_DYNAMIC_DRAW);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+        waterSeen_ = gl::createQuery(GL_ANY_SAMPLES_PASSED, "water seen (water mask's samples)");
     }
     std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(uboLights_.capacity),
                                         "LIGHTS_UBO_BLOCKS " + std::to_string(uboLights_.blocks)};
@@ -187,7 +189,7 @@ void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
 
 PassContext Renderer::context() {
     return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_,
-                       waterBoundsAvailable_ ? waterBounds_.name() : 0u};
+                       waterBoundsAvailable_ ? waterBounds_.name() : 0u, frame_.waterBounded ? waterSeen_.name() : 0u};
 }
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {
@@ -270,6 +272,8 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth());
     frame_.positionFromDepth = targets_->layout().positionFromDepth();
     frame_.waterBounded = waterBoundsAvailable_ && scene.water.reflectionBounds;
+    if (frame_.waterBounded)  // the shaders' copy of it: the mirrored billboards cull by the rectangle
+        frame_.data.water.w = float(unsigned(frame_.data.water.w) | OASIS_WATER_BOUNDED_FLAG);
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     frame_.lightsPath = lightsChoice_.path;

@@ -166,6 +166,7 @@ private:
     bool ssboAvailable_ = false;
     std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
     gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)
+    gl::Query waterSeen_;     // did the water mask pass a sample? (the reflection renders only then)
     bool waterBoundsAvailable_ = false;
     std::string waterBoundsReason_;
     void chooseWaterBounds();  // from ssboAvailable_ and the context's limits; sets the context defines
