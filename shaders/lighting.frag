@@ -44,7 +44,7 @@ void main() {
 #endif
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     if (gbufferSkyAt(pixel)) {
-        outColour = vec4(skySeenAlong(viewRayDirection(vScreenUv), reflected), 1.0);
+        outColour = vec4(skySeenAlong(viewRayThroughPixel(), reflected), 1.0);
         return;
     }
     Surface s = readGBuffer(pixel);

@@ -12,5 +12,5 @@ void main() {
 #else
     const bool reflected = false;
 #endif
-    outColour = vec4(skySeenAlong(viewRayDirection(vScreenUv), reflected), 1.0);
+    outColour = vec4(skySeenAlong(viewRayThroughPixel(), reflected), 1.0);
 }

@@ -15,7 +15,11 @@
 #define OASIS_DETAIL_GROUND_BROAD 2
 #define OASIS_DETAIL_GROUND_FINE 3
 #define OASIS_DETAIL_WIND_GUSTS 4
-#define OASIS_DETAIL_LAYERS 5
+#define OASIS_DETAIL_CLOUDS_BROAD 5
+#define OASIS_DETAIL_CLOUDS_FINE 6
+#define OASIS_DETAIL_LAYERS 7
+// The cloud deck's world height (common/sky.glsl): clouds are seen from below it only.
+#define OASIS_CLOUD_ALTITUDE 1100.0
 // The UBO light path's most uniform blocks (lights.glsl indexes them by constants before GLSL 4.00).
 #define OASIS_LIGHTS_UBO_MAX_BLOCKS 8
 // Tiled light culling (passes/light_tiling_pass.h): square screen tiles of this many pixels, one
