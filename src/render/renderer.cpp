@@ -369,11 +369,13 @@ void Renderer::fillStoppedFrame() {
 }
 
 void Renderer::renderView(const std::string& viewName) {
-    ensureRadiance();
     PassContext passContext = context();
     const DebugView* view = findDebugView(viewName);
     if (!view && viewName != kOverviewName)
         throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
+    // Only the views of Radiance ask for the water laid on: the final view (the window's every
+    // frame) keeps the fused frame's saving.
+    if (viewName == kOverviewName || view->source == ViewSource::Radiance) ensureRadiance();
     if (viewName == kOverviewName || (view && readsSceneSurfaces(*view))) ensureGBuffer();
     if (viewName == kOverviewName)
         debugViews_.drawOverview(passContext, stencilPath_, viewScene_.scene ? waterSceneName(*viewScene_.scene) : "as left");
@@ -385,7 +387,7 @@ std::vector<float> Renderer::readViewValues(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
                                            debugViewNames() + ")");
-    ensureRadiance();
+    if (view->source == ViewSource::Radiance) ensureRadiance();
     if (readsSceneSurfaces(*view)) ensureGBuffer();
     PassContext passContext = context();
     return debugViews_.readValues(passContext, *view, stencilPath_);
