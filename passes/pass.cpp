@@ -6,9 +6,10 @@
 
 namespace oasis {
 
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring) {
+void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring, bool toneMapFused) {
     GLuint framebuffer = output == SurfaceOutput::GBuffer ? targets.gbufferFramebuffer()
                          : mirroring == Mirroring::Mirrored ? targets.reflectionFramebuffer()
+                         : toneMapFused                     ? targets.radianceFinalFramebuffer()
                                                             : targets.radianceFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(0, 0, targets.width(), targets.height());
@@ -56,6 +57,10 @@ void endMirroredDraw(Mirroring mirroring) {
     glDisable(GL_CLIP_DISTANCE0);
 }
 
+bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring) {
+    return frame.toneMapFused && output == SurfaceOutput::Forward && mirroring == Mirroring::Direct;
+}
+
 bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring) {
     return mirroring == Mirroring::Direct || frame.reflectionsActive;
 }
@@ -71,7 +76,7 @@ std::vector<Target> SurfacePass::writes() const { return surfaceOutputTargets(ou
 bool SurfacePass::active(const FrameSetup& frame) const { return mirroredPassActive(frame, mirroring_); }
 
 void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const {
-    bindSurfaceOutput(context.targets, output_, mirroring_);
+    bindSurfaceOutput(context.targets, output_, mirroring_, toneMapFusedInto(context.frame, output_, mirroring_));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(context.targets.depth().nearerFunc);
     glDepthMask(GL_TRUE);
@@ -86,6 +91,7 @@ void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const 
 
 GLuint SurfacePass::surfaceProgram(PassContext& context, const std::string& shaderBase) const {
     std::string program = variantName(shaderBase, output_, mirroring_);
+    if (toneMapFusedInto(context.frame, output_, mirroring_)) program += ".tonemapped";
     if (output_ == SurfaceOutput::Forward) program += lightsVariantSuffix(context.frame.lightsPath);
     else program = context.targets.layout().program(program);
     return context.shaders.program(program);

@@ -91,7 +91,11 @@ private:
 
 // Binds the framebuffer a surface output draws into and sets the viewport to the whole frame:
 // the G-buffer, Radiance (forward, direct) or Reflection (forward, mirrored).
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring = Mirroring::Direct);
+// `toneMapFused`: a direct forward output also writes Final (its ".tonemapped" program variants).
+void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring = Mirroring::Direct,
+                       bool toneMapFused = false);
+// Whether a pass shading into `output` writes Final too this frame (the fused tone map).
+bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring);
 // Mirrored draws pass the stencil test only on water pixels, and flip the front face (a mirror
 // reverses winding) and clip what lies below the water.
 void beginMirroredDraw(Mirroring mirroring);

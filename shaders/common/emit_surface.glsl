@@ -1,6 +1,6 @@
 // Where a surface goes once the material has built it, chosen by the variant's #define:
 // OUTPUT_GBUFFER stores it in the G-buffer in the layout's encoding; OUTPUT_FORWARD shades it now (linear),
-// looping over the point lights of the variant's LIGHTS_* path.
+// looping over the point lights of the variant's LIGHTS_* path; TONE_MAP_FUSED also writes Final.
 #ifndef OASIS_EMIT_SURFACE_GLSL
 #define OASIS_EMIT_SURFACE_GLSL
 #include "common/surface.glsl"
@@ -12,9 +12,17 @@ void emitSurface(Surface s) { writeGBuffer(s); }
 #include "common/lighting.glsl"
 #include "common/lights.glsl"
 layout(location = 0) out vec4 outColour;
+#if defined(TONE_MAP_FUSED)
+#include "common/output.glsl"
+layout(location = 1) out vec4 outFinal;  // the display colour too: the last surface drawn here wins both
+#endif
 void emitSurface(Surface s) {
     // The sun and sky, then every point light (none unless the variant defines a LIGHTS_* path).
-    outColour = vec4(shadeSurface(s) + allPointLights(s), 1.0);
+    vec3 radiance = shadeSurface(s) + allPointLights(s);
+    outColour = vec4(radiance, 1.0);
+#if defined(TONE_MAP_FUSED)
+    outFinal = finalColour(radiance);
+#endif
 }
 #else
 #error "define OUTPUT_GBUFFER or OUTPUT_FORWARD"

@@ -62,6 +62,11 @@ struct FrameSetup {
     bool waterBounded = false;      // the reflection's passes clip to the visible water (set by the renderer)
     bool vegetationEnabled = true;
     bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
+    // The tone map is written by the passes that write each pixel's colour last (".tonemapped"
+    // variants), ToneMapPass skipped; set by the renderer: not for --stop-before, nor with the
+    // deferred light volumes (they add to Radiance after LightingPass).
+    bool toneMapFused = false;
+    bool runsToEnd = true;  // no --stop-before (set by the renderer): what a later pass writes need not be cleared
     FrameData data;
     std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)
     LightsPath lightsPath = LightsPath::Ubo;  // set by the renderer from the context and the settings

@@ -280,6 +280,12 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
     frame_.lightMethod = lightMethodChoice_.method;
     uploadLights();
+    // The separate tone map stays for a frame stopped early (its targets shown as they were) and
+    // when the deferred light volumes add to Radiance after LightingPass (it cannot write Final).
+    bool volumesAfterLighting = active_ == PipelineKind::Deferred && frame_.lightMethod == LightMethod::Volumes &&
+                                !frame_.lights.empty();
+    frame_.toneMapFused = toneMapFusionAllowed_ && stopBefore.empty() && !volumesAfterLighting;
+    frame_.runsToEnd = stopBefore.empty();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());
@@ -297,6 +303,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         if (afterEach) afterEach(pass);
     });
     gbufferHolds_.reset();
+    radianceAwaitsWater_ = frame_.toneMapFused && waterComposite_.active(frame_);
     stoppedBefore_ = stopBefore;
     stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(Target::Albedo);
 }
@@ -306,7 +313,20 @@ void Renderer::forgetGBuffer() {
     stoppedGBufferCurrent_ = false;
 }
 
+void Renderer::ensureRadiance() {
+    if (!radianceAwaitsWater_) return;
+    radianceAwaitsWater_ = false;
+    // The separate pass's composite, blended onto Radiance; the stencil and depth are still the
+    // frame's (ensureGBuffer calls this before a view fill redraws them).
+    frame_.toneMapFused = false;
+    PassContext passContext = context();
+    FrameClipControl clipControl(targets_->depth());
+    waterComposite_.run(passContext);
+    frame_.toneMapFused = true;
+}
+
 void Renderer::ensureGBuffer() {
+    ensureRadiance();
     if (!stoppedBefore_.empty()) {
         fillStoppedFrame();
         return;
@@ -357,6 +377,9 @@ void Renderer::renderView(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view && viewName != kOverviewName)
         throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
+    // Only the views of Radiance ask for the water laid on: the final view (the window's every
+    // frame) keeps the fused frame's saving.
+    if (viewName == kOverviewName || view->source == ViewSource::Radiance) ensureRadiance();
     if (viewName == kOverviewName || (view && readsSceneSurfaces(*view))) ensureGBuffer();
     if (viewName == kOverviewName)
         debugViews_.drawOverview(passContext, stencilPath_, viewScene_.scene ? waterSceneName(*viewScene_.scene) : "as left");
@@ -368,6 +391,7 @@ std::vector<float> Renderer::readViewValues(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
                                            debugViewNames() + ")");
+    if (view->source == ViewSource::Radiance) ensureRadiance();
     if (readsSceneSurfaces(*view)) ensureGBuffer();
     PassContext passContext = context();
     return debugViews_.readValues(passContext, *view, stencilPath_);
@@ -405,7 +429,8 @@ void Renderer::showImage(const Image& image) {
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-std::vector<float> Renderer::readTarget(Target target) const {
+std::vector<float> Renderer::readTarget(Target target) {
+    if (target == Target::Radiance) ensureRadiance();
     if (target == Target::DepthStencil || target == Target::SceneDepth)
         throw std::invalid_argument(std::string("readTarget reads colour targets; ") + targetName(target) +
                                     " is read with readDepth()");

@@ -20,9 +20,10 @@ enum TextureUnit : int {
     kUnitSource = 6,
     kUnitPlantAtlas = 7,
     kUnitProbeDepthStencil = 8,  // the probe's view of the depth-stencil target (compact's gDepth is the copy)
+    kUnitRadiance = 9,           // the fused water composite's view of what lies under the water
 };
 
-inline constexpr std::array<SamplerBinding, 9> kSamplerBindings{{
+inline constexpr std::array<SamplerBinding, 10> kSamplerBindings{{
     {"gAlbedo", kUnitAlbedo},
     {"gNormal", kUnitNormal},
     {"gPosition", kUnitPosition},
@@ -32,6 +33,7 @@ inline constexpr std::array<SamplerBinding, 9> kSamplerBindings{{
     {"sourceTexture", kUnitSource},
     {"plantAtlas", kUnitPlantAtlas},
     {"probeDepthStencil", kUnitProbeDepthStencil},
+    {"radianceTexture", kUnitRadiance},
 }};
 
 inline constexpr const char* kFrameBlockName = "FrameBlock";

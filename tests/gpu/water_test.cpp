@@ -23,7 +23,8 @@ struct FrameReadback {
     uint8_t stencilAt(int x, int y) const { return stencil[index(x, y)]; }
 };
 
-FrameReadback readBack(const Renderer& renderer, bool gbuffer) {
+// Not const: reading Radiance after a fused frame lays the water on first (Renderer::ensureRadiance).
+FrameReadback readBack(Renderer& renderer, bool gbuffer) {
     FrameReadback r;
     r.width = renderer.targets().width();
     r.height = renderer.targets().height();
