@@ -29,6 +29,12 @@ void endWaterBoundedDraw(const PassContext& context) {
     for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glDisable(plane);
 }
 
+namespace {
+bool gWaterClipByClipDistance = true;
+}
+
+void setWaterClipByClipDistance(bool on) { gWaterClipByClipDistance = on; }
+
 void beginMirroredDraw(Mirroring mirroring) {
     if (mirroring != Mirroring::Mirrored) return;
     glEnable(GL_STENCIL_TEST);
@@ -36,7 +42,7 @@ void beginMirroredDraw(Mirroring mirroring) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0x00);
     glFrontFace(GL_CW);
-    glEnable(GL_CLIP_DISTANCE0);
+    if (gWaterClipByClipDistance) glEnable(GL_CLIP_DISTANCE0);
 }
 
 void endMirroredDraw(Mirroring mirroring) {
@@ -44,7 +50,7 @@ void endMirroredDraw(Mirroring mirroring) {
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     glFrontFace(GL_CCW);
-    glDisable(GL_CLIP_DISTANCE0);
+    if (gWaterClipByClipDistance) glDisable(GL_CLIP_DISTANCE0);
 }
 
 bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring) {

@@ -5,6 +5,7 @@
 #include "common/frame_block.glsl"
 #include "common/detail_noise.glsl"
 #include "common/shared_constants.glsl"
+#include "common/water_clip_vertex.glsl"
 
 layout(location = 0) in vec4 baseSize;   // xyz base minus camera, w billboard height (world units)
 layout(location = 1) in vec4 tintPhase;  // rgb tint, w wind phase (radians)
@@ -57,7 +58,7 @@ void main() {
     // Cell rows are numbered from the atlas's top, which is GL's high v.
     vAtlasUv = vec2((column + corner.x) / columns, 1.0 - (row + 1.0 - corner.y) / rows);
 #if defined(MIRRORED)
-    gl_ClipDistance[0] = relative.y + frame.cameraPosition.y - frame.water.x;  // keep what is above the water
+    clipAtWater(relative.y + frame.cameraPosition.y - frame.water.x);  // keep what is above the water
     relative.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - relative.y;
 #endif
     vRelativePosition = relative;
