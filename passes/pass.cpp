@@ -30,6 +30,12 @@ void endWaterBoundedDraw(const PassContext& context) {
     for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glDisable(plane);
 }
 
+namespace {
+bool gWaterClipByClipDistance = true;
+}
+
+void setWaterClipByClipDistance(bool on) { gWaterClipByClipDistance = on; }
+
 OnlyWhereWaterIsSeen::OnlyWhereWaterIsSeen(const PassContext& context, bool reflectionWork)
     : conditional_(reflectionWork && context.waterSeen != 0) {
     if (conditional_) glBeginConditionalRender(context.waterSeen, GL_QUERY_WAIT);
@@ -46,7 +52,7 @@ void beginMirroredDraw(Mirroring mirroring) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0x00);
     glFrontFace(GL_CW);
-    glEnable(GL_CLIP_DISTANCE0);
+    if (gWaterClipByClipDistance) glEnable(GL_CLIP_DISTANCE0);
 }
 
 void endMirroredDraw(Mirroring mirroring) {
@@ -54,7 +60,7 @@ void endMirroredDraw(Mirroring mirroring) {
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     glFrontFace(GL_CCW);
-    glDisable(GL_CLIP_DISTANCE0);
+    if (gWaterClipByClipDistance) glDisable(GL_CLIP_DISTANCE0);
 }
 
 bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring) {

@@ -100,6 +100,10 @@ bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring m
 // reverses winding) and clip what lies below the water.
 void beginMirroredDraw(Mirroring mirroring);
 void endMirroredDraw(Mirroring mirroring);
+// Whether the shaders clip the mirrored geometry with gl_ClipDistance[0] (GL_CLIP_DISTANCE0 is
+// enabled around mirrored draws) or by discard (OpenGL ES without GL_EXT_clip_cull_distance, where
+// the enum does not exist): the shader library's dialect decides, the renderer says it here.
+void setWaterClipByClipDistance(bool on);
 // The reflection's full-screen draws clip their triangle to the visible water (gl_ClipDistance
 // 1-4, written by common/water_bounds.glsl in fullscreen.vert) when the frame records it.
 void beginWaterBoundedDraw(const PassContext& context);

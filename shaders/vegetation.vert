@@ -6,6 +6,7 @@
 #include "common/frame_block.glsl"
 #include "common/detail_noise.glsl"
 #include "common/shared_constants.glsl"
+#include "common/water_clip_vertex.glsl"
 #if defined(MIRRORED)
 #include "common/water_bounds.glsl"
 #endif
@@ -74,7 +75,7 @@ void main() {
     // Cell rows are numbered from the atlas's top, which is GL's high v.
     vAtlasUv = vec2((column + corner.x) / columns, 1.0 - (row + 1.0 - corner.y) / rows);
 #if defined(MIRRORED)
-    gl_ClipDistance[0] = relative.y + frame.cameraPosition.y - frame.water.x;  // keep what is above the water
+    clipAtWater(relative.y + frame.cameraPosition.y - frame.water.x);  // keep what is above the water
     relative = mirroredPoint(relative);
 #endif
     vRelativePosition = relative;

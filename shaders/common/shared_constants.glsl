@@ -20,6 +20,12 @@
 #define OASIS_DETAIL_LAYERS 7
 // The cloud deck's world height (common/sky.glsl): clouds are seen from below it only.
 #define OASIS_CLOUD_ALTITUDE 1100.0
+// Storage block bindings (render/texture_units.h binds them by name on desktop GL; OpenGL ES has no
+// glShaderStorageBlockBinding, so there the blocks state them: common/storage_layout.glsl).
+#define OASIS_BINDING_WATER_BOUNDS 4
+#define OASIS_BINDING_LIGHT_TILES 5
+#define OASIS_BINDING_LIGHTS 6
+#define OASIS_BINDING_LIGHT_COUNT 7
 // The UBO light path's most uniform blocks (lights.glsl indexes them by constants before GLSL 4.00).
 #define OASIS_LIGHTS_UBO_MAX_BLOCKS 8
 // Tiled light culling (passes/light_tiling_pass.h): square screen tiles of this many pixels, one

@@ -1,6 +1,9 @@
 // GL object wrappers, live counts and debug groups.
 #include "gl/objects.h"
 
+#include <cstring>
+#include <stdexcept>
+
 #include <algorithm>
 #include <array>
 #include <vector>
@@ -186,6 +189,18 @@ std::string errorString(GLenum error) {
         case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
         default: return "GL error " + std::to_string(error);
     }
+}
+
+void readBufferData(GLenum target, GLsizeiptr size, void* out) {
+    if (size <= 0) return;
+    if (epoxy_is_desktop_gl()) {
+        glGetBufferSubData(target, 0, size, out);
+        return;
+    }
+    const void* mapped = glMapBufferRange(target, 0, size, GL_MAP_READ_BIT);
+    if (!mapped) throw std::runtime_error("cannot map a buffer to read it back (glMapBufferRange failed)");
+    std::memcpy(out, mapped, size_t(size));
+    glUnmapBuffer(target);
 }
 
 }  // namespace oasis::gl

@@ -88,4 +88,8 @@ bool hasDebugGroups();
 std::string debugGroupPath();
 std::string errorString(GLenum error);
 
+// Copies `size` bytes from the start of the buffer bound to `target` into `out`: glGetBufferSubData
+// on desktop GL; OpenGL ES has none, so there through glMapBufferRange (read-only).
+void readBufferData(GLenum target, GLsizeiptr size, void* out);
+
 }  // namespace oasis::gl

@@ -124,7 +124,8 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
         glBindFramebuffer(GL_FRAMEBUFFER, sceneDepthFbo_.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                texture(Target::SceneDepth), 0);
-        glDrawBuffer(GL_NONE);
+        const GLenum none = GL_NONE;
+        glDrawBuffers(1, &none);  // glDrawBuffer is desktop-only; this is the same on both APIs
         glReadBuffer(GL_NONE);
         checkComplete("scene depth");
     }

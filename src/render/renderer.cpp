@@ -9,12 +9,17 @@
 
 #include "gl/capabilities.h"
 #include "gl/frame_capture.h"
+#include "passes/pass.h"
+#include "render/pixel_readback.h"
 #include "render/texture_units.h"
 
 namespace oasis {
 
 Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     : shaders_(shaders), geometry_(scene.grid) {
+    const std::vector<std::string>& dialectDefines = shaders.dialect().defines;
+    setWaterClipByClipDistance(std::find(dialectDefines.begin(), dialectDefines.end(), "OASIS_NO_CLIP_DISTANCE 1") ==
+                               dialectDefines.end());
     frameUniforms_ = gl::createBuffer("frame data (ubo)");
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
@@ -97,6 +102,9 @@ void Renderer::chooseWaterBounds() {
                              "skipped where no water is seen: the water mask's occlusion query, conditional rendering)";
     else if (!ssboAvailable_)
         waterBoundsReason_ = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
+    else if (!epoxy_is_desktop_gl())
+        waterBoundsReason_ = "whole screen, stencil-masked (not on OpenGL ES yet: the bounds' storage block is "
+                             "bound by name, which ES cannot do)";
     else if (!glsl430)
         waterBoundsReason_ = "whole screen, stencil-masked (needs GL 4.3: storage blocks, their atomics and early "
                              "fragment tests in GLSL 4.30; this context is " + std::to_string(epoxy_gl_version() / 10) +
@@ -122,7 +130,7 @@ glm::ivec4 Renderer::readWaterBounds() const {
     glm::ivec4 bounds(1, 1, 0, 0);
     if (!waterBoundsAvailable_) return bounds;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(bounds), &bounds);
+    gl::readBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(bounds), &bounds);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return bounds;
 }
@@ -448,7 +456,7 @@ std::vector<float> Renderer::readTarget(Target target) {
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
-    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_RGBA, GL_FLOAT, pixels.data());
+    readColourFloats(targets_->width(), targets_->height(), pixels.data());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     return pixels;
 }
@@ -467,15 +475,14 @@ std::vector<float> Renderer::readSurfacePositions() {
 std::vector<float> Renderer::readDepth() const {
     std::vector<float> depth(size_t(targets_->width()) * size_t(targets_->height()));
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
-    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    readDepthFloats(targets_->width(), targets_->height(), depth.data());
     return depth;
 }
 
 std::vector<uint8_t> Renderer::readStencil() const {
     std::vector<uint8_t> stencil(size_t(targets_->width()) * size_t(targets_->height()));
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
+    readStencilBytes(targets_->width(), targets_->height(), stencil.data());
     return stencil;
 }
 
