@@ -14,7 +14,6 @@ public:
         : output_(output), reflection_(reflection) {}
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
-    bool reflectionWork() const override { return true; }
     std::vector<Target> writes() const override {
         std::vector<Target> written{Target::DepthStencil};
         if (reflection_ == ReflectionTarget::Cleared) written.push_back(Target::Reflection);

@@ -37,7 +37,8 @@ long long reflectionFragments(Renderer& renderer, const SceneSettings& scene) {
 }
 
 // Shader invocations (`statistic`: GL_VERTEX_SHADER_INVOCATIONS_ARB, ...) of every pass that only
-// draws the reflection (Pass::reflectionWork: its clear, mirrored surfaces, copies, lighting, sky).
+// draws the reflection (Pass::reflectionWork: mirrored surfaces, copies, lighting, sky; the
+// reflection clear's draw is conditional inside its pass, and draws nothing without water anyway).
 long long reflectionWorkInvocations(Renderer& renderer, const SceneSettings& scene, GLenum statistic,
                                     const std::function<bool(const Pass&)>& counted = [](const Pass& pass) {
                                         return pass.reflectionWork();
