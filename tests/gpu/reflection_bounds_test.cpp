@@ -11,34 +11,11 @@ namespace {
 
 constexpr int kWidth = 320, kHeight = 180;
 
-// Fragment shader invocations of the reflection's full-screen passes (its clear, the mirrored depth
-// copy, lighting and sky) in one frame; -1 where the context has no pipeline statistics query. A query spans
-// each pass: it is ended and restarted after every pass that ran.
-long long reflectionFragments(Renderer& renderer, const SceneSettings& scene) {
-    if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) return -1;
-    auto isReflection = [](const std::string& name) {
-        return name == "DepthCopyPass.mirrored" || name == "LightingPass.mirrored" ||
-               name == "SkyPass.forward.mirrored" || name.rfind("ReflectionClearPass", 0) == 0;
-    };
-    GLuint query = 0;
-    glGenQueries(1, &query);
-    long long reflection = 0;
-    glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
-        glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-        GLuint64 count = 0;
-        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
-        if (isReflection(pass.name())) reflection += (long long)count;
-        glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
-    });
-    glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
-    glDeleteQueries(1, &query);
-    return reflection;
-}
-
 // Shader invocations (`statistic`: GL_VERTEX_SHADER_INVOCATIONS_ARB, ...) of every pass that only
 // draws the reflection (Pass::reflectionWork: mirrored surfaces, copies, lighting, sky; the
-// reflection clear's draw is conditional inside its pass, and draws nothing without water anyway).
+// reflection clear's draw is conditional inside its pass, and draws nothing without water anyway),
+// or of the passes `counted` picks; -1 where the context has no pipeline statistics query. A query
+// spans each pass: it is ended and restarted after every pass that ran.
 long long reflectionWorkInvocations(Renderer& renderer, const SceneSettings& scene, GLenum statistic,
                                     const std::function<bool(const Pass&)>& counted = [](const Pass& pass) {
                                         return pass.reflectionWork();
@@ -58,6 +35,16 @@ long long reflectionWorkInvocations(Renderer& renderer, const SceneSettings& sce
     glEndQuery(statistic);
     glDeleteQueries(1, &query);
     return reflection;
+}
+
+// Fragment shader invocations of the reflection's full-screen passes (its clear, the mirrored depth
+// copy, lighting and sky) in one frame; -1 where the context has no pipeline statistics query.
+long long reflectionFragments(Renderer& renderer, const SceneSettings& scene) {
+    return reflectionWorkInvocations(renderer, scene, GL_FRAGMENT_SHADER_INVOCATIONS_ARB, [](const Pass& pass) {
+        const std::string name = pass.name();
+        return name == "DepthCopyPass.mirrored" || name == "LightingPass.mirrored" ||
+               name == "SkyPass.forward.mirrored" || name.rfind("ReflectionClearPass", 0) == 0;
+    });
 }
 
 class ReflectionBounds : public GpuTest {};
