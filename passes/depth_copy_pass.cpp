@@ -16,7 +16,7 @@ void DepthCopyPass::execute(PassContext& context) {
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     glDisable(GL_STENCIL_TEST);
-    // The mirrored copy is read only inside the water; outside it the two copies hold the same depth.
+    // The mirrored copy is read only inside the water (stencil-tested passes).
     bool mirrored = mirroring_ == Mirroring::Mirrored;
     if (mirrored) beginWaterBoundedDraw(context);
     glUseProgram(context.shaders.program(mirrored ? "depth.copy.mirrored" : "depth.copy"));

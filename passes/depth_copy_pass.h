@@ -1,10 +1,13 @@
 // DepthCopyPass: in layouts that reconstruct position from depth (compact), copies the G-buffer's
-// depth into the SceneDepth target (a full-screen draw) before the passes that read it. They draw into framebuffers
-// with the depth-stencil target attached (stencil tests, the light volumes' depth test), so
-// sampling that same texture would be a feedback loop: undefined in GL, and visibly wrong on
-// zink at 1280x720. Mirrored, it copies the mirrored scene's depth for the reflection's lighting;
-// after the frame the copy holds what the G-buffer holds (the mirrored scene inside the water).
+// depth into the SceneDepth target (a full-screen draw) for the passes that read depth while they
+// test against the depth-stencil target: the light volumes (depth and stencil tests) and the
+// reflection's lighting (the stencil keeps it inside the water). Sampling the attached texture
+// there would be a feedback loop: undefined in GL, and visibly wrong on zink at 1280x720. Every
+// other reader (the direct lighting, tiling, views, probe) samples the target itself
+// (DepthRead::FromTarget), so the direct copy runs only in frames with light volumes. Mirrored,
+// it copies the mirrored scene's depth inside the water's rectangle, the only pixels read there.
 #pragma once
+#include "passes/light_volume_pass.h"
 #include "passes/pass.h"
 
 namespace oasis {
@@ -19,7 +22,9 @@ public:
     std::vector<Target> writes() const override { return {Target::SceneDepth}; }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override {
-        return frame.positionFromDepth && mirroredPassActive(frame, mirroring_);
+        if (!frame.positionFromDepth || !mirroredPassActive(frame, mirroring_)) return false;
+        return mirroring_ == Mirroring::Mirrored || !frame.depthReadInPlace ||
+               LightVolumePass::volumesActive(frame, mirroring_);
     }
 
 protected:

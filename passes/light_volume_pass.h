@@ -24,9 +24,10 @@ public:
         return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
     }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
-    bool active(const FrameSetup& frame) const override {
-        return frame.lightMethod == LightMethod::Volumes && !frame.lights.empty() &&
-               mirroredPassActive(frame, mirroring_);
+    bool active(const FrameSetup& frame) const override { return volumesActive(frame, mirroring_); }
+    // Whether the frame adds its lights with stencil volumes (for DepthCopyPass, which copies depth for them).
+    static bool volumesActive(const FrameSetup& frame, Mirroring mirroring) {
+        return frame.lightMethod == LightMethod::Volumes && !frame.lights.empty() && mirroredPassActive(frame, mirroring);
     }
 
 protected:

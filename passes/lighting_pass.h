@@ -16,7 +16,9 @@ public:
         return {Target::Albedo, Target::Normal, Target::Position, Target::Info};
     }
     std::vector<Target> writes() const override {
-        return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance};
+        // Final too where the tone map is fused into the direct lighting.
+        if (mirroring_ == Mirroring::Mirrored) return {Target::Reflection};
+        return {Target::Radiance, Target::Final};
     }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }

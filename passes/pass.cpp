@@ -77,7 +77,12 @@ SurfacePass::SurfacePass(const std::string& baseName, SurfaceOutput output, Mirr
       name_(variantName(baseName, output, mirroring)),
       step_(baseName + (mirroring == Mirroring::Mirrored ? ".mirrored" : "")) {}
 
-std::vector<Target> SurfacePass::writes() const { return surfaceOutputTargets(output_, mirroring_); }
+std::vector<Target> SurfacePass::writes() const {
+    std::vector<Target> written = surfaceOutputTargets(output_, mirroring_);
+    // The direct forward passes write Final too where the tone map is fused (toneMapFusedInto).
+    if (output_ == SurfaceOutput::Forward && mirroring_ == Mirroring::Direct) written.push_back(Target::Final);
+    return written;
+}
 
 bool SurfacePass::active(const FrameSetup& frame) const { return mirroredPassActive(frame, mirroring_); }
 
@@ -113,18 +118,22 @@ std::string variantName(const std::string& base, SurfaceOutput output, Mirroring
     return base + "." + surfaceOutputName(output) + (mirroring == Mirroring::Mirrored ? ".mirrored" : "");
 }
 
-void bindGBufferInputs(const FrameTargets& targets) {
+void bindGBufferInputs(const FrameTargets& targets, DepthRead depthRead) {
     const std::pair<int, Target> inputs[] = {{kUnitAlbedo, Target::Albedo}, {kUnitNormal, Target::Normal},
                                              {kUnitPosition, Target::Position}, {kUnitInfo, Target::Info}};
     for (auto [unit, target] : inputs) {
         glActiveTexture(GL_TEXTURE0 + unit);
         glBindTexture(GL_TEXTURE_2D, targets.texture(target));
     }
-    if (targets.layout().positionFromDepth()) {
-        // DepthCopyPass's copy, never the depth-stencil target these passes draw with. Nothing
-        // switches the copy to stencil sampling, so it keeps GL's default depth mode.
-        glActiveTexture(GL_TEXTURE0 + kUnitDepth);
+    if (!targets.layout().positionFromDepth()) return;
+    glActiveTexture(GL_TEXTURE0 + kUnitDepth);
+    if (depthRead == DepthRead::FromCopy) {
+        // Nothing switches the copy to stencil sampling, so it keeps GL's default depth mode.
         glBindTexture(GL_TEXTURE_2D, targets.texture(Target::SceneDepth));
+    } else {
+        // The stencil view switches the target to stencil sampling; depth is read here.
+        glBindTexture(GL_TEXTURE_2D, targets.texture(Target::DepthStencil));
+        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
     }
 }
 

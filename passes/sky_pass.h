@@ -12,7 +12,9 @@ public:
     std::string name() const override { return variantName("SkyPass", SurfaceOutput::Forward, mirroring_); }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
     std::vector<Target> writes() const override {
-        return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance};
+        // Final too where the tone map is fused into the direct sky.
+        if (mirroring_ == Mirroring::Mirrored) return {Target::Reflection};
+        return {Target::Radiance, Target::Final};
     }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }

@@ -10,7 +10,8 @@ class WaterCompositePass : public Pass {
 public:
     std::string name() const override { return "WaterCompositePass"; }
     std::vector<Target> reads() const override { return {Target::Reflection, Target::DepthStencil}; }
-    std::vector<Target> writes() const override { return {Target::Radiance, Target::DepthStencil}; }
+    // Final where the tone map is fused (it blends and tone-maps the water's pixels into Final).
+    std::vector<Target> writes() const override { return {Target::Radiance, Target::Final, Target::DepthStencil}; }
     bool active(const FrameSetup& frame) const override { return frame.cameraAboveWater; }
 
 protected:

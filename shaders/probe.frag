@@ -32,7 +32,7 @@ void main() {
         outValue = vec4(float(touching), float(lightCount()), litPosition(s).y, 0.0);
     }
 #if defined(GBUFFER_COMPACT)
-    // The depth copy the position was reconstructed from (what the G-buffer holds, see DepthCopyPass).
+    // The depth the position was reconstructed from (the depth-stencil target's, as lighting reads it).
     else if (slot == 6) outValue = vec4(texelFetch(gDepth, probePixel, 0).r, 0.0, 0.0, 0.0);
 #endif
     else outValue = vec4(0.0);

@@ -44,6 +44,10 @@ const char* kSceneOptionsHelp =
     "  --wind S                  wind strength bending the plants (default 1)\n"
     "  --billboards trimmed|whole  plant billboards trimmed to their atlas cell's drawn bounds, or\n"
     "                            whole cells (default trimmed; whole: the reference for the trim)\n"
+    "  --tone-map fused|separate  tone-map in the passes that write each pixel's colour last, or in a\n"
+    "                            separate full-screen ToneMapPass (default fused; the same picture)\n"
+    "  --depth-read in-place|copy  compact layout: the deferred lighting samples the depth-stencil target\n"
+    "                            itself, or a copy made every frame (default in-place; the same picture)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
     "  --gl-debug                synchronous GL debug output: stop at the first GL error, naming its\n"
     "                            debug group path; count performance warnings, printed at the end\n"
@@ -252,7 +256,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
-            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--water-level", "--ripples",
+            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--tone-map", "--depth-read", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
             "--force", "--api",
@@ -369,6 +373,14 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value != "on" && value != "off")
                 return fail("--reflection-bounds expects on or off, got '" + value + "'");
             options.scene.water.reflectionBounds = value == "on";
+        } else if (flag == "--tone-map") {
+            if (value != "fused" && value != "separate")
+                return fail("--tone-map expects fused or separate, got '" + value + "'");
+            options.scene.work.fuseToneMap = value == "fused";
+        } else if (flag == "--depth-read") {
+            if (value != "in-place" && value != "copy")
+                return fail("--depth-read expects in-place or copy, got '" + value + "'");
+            options.scene.work.depthReadInPlace = value == "in-place";
         } else if (flag == "--billboards") {
             if (value != "trimmed" && value != "whole")
                 return fail("--billboards expects trimmed or whole, got '" + value + "'");

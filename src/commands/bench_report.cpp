@@ -41,6 +41,14 @@ KnobLevel reflectionBoundsLevel(const char* label, bool bounded) {
     return {label, [bounded](SceneSettings& scene) { scene.water.reflectionBounds = bounded; }};
 }
 
+KnobLevel toneMapLevel(const char* label, bool fused) {
+    return {label, [fused](SceneSettings& scene) { scene.work.fuseToneMap = fused; }};
+}
+
+KnobLevel depthReadLevel(const char* label, bool inPlace) {
+    return {label, [inPlace](SceneSettings& scene) { scene.work.depthReadInPlace = inPlace; }};
+}
+
 const std::vector<QualityKnob> kKnobs = {
     {"grid", "terrain grid rings x segments (38,400 triangles at medium)",
      {gridLevel("coarse", 75, 64), gridLevel("medium", 150, 128), gridLevel("fine", 300, 256)}, 1},
@@ -53,6 +61,10 @@ const std::vector<QualityKnob> kKnobs = {
      {billboardLevel("trimmed", true), billboardLevel("whole", false)}, 0},
     {"reflection-bounds", "the reflection's full-screen draws clipped to the visible water, or the whole screen",
      {reflectionBoundsLevel("on", true), reflectionBoundsLevel("off", false)}, 0},
+    {"tone-map", "tone mapping fused into the passes that write each pixel last, or a separate pass",
+     {toneMapLevel("fused", true), toneMapLevel("separate", false)}, 0},
+    {"depth-read", "compact's lighting samples the depth-stencil target, or a copy made every frame",
+     {depthReadLevel("in-place", true), depthReadLevel("copy", false)}, 0},
 };
 
 // Light counts: none (the default scene), 4 (where deferred starts to win on llvmpipe: the README's

@@ -17,6 +17,7 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.camera = options.camera;
     scene.water = options.water;
     scene.vegetation = options.vegetation;
+    scene.work = options.work;
     scene.lights.count = options.lights;
     scene.lights.path = options.lightsPath;
     scene.lights.method = options.lightMethod;
@@ -153,6 +154,14 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
                     "on it (driver: " + (caps.driverHasDsa() ? std::string("has it") : "lacks it") +
                     (caps.forced.noDsa ? "; --force no-dsa accepted, nothing changes)" : ")")});
     list.push_back(clipControlFeature(caps, *renderer));
+    const GBufferLayout& layout = renderer->targets().layout();
+    list.push_back({"depth-read-in-place", layout.positionFromDepth(),
+                    layout.positionFromDepth()
+                        ? "the " + layout.name + " layout rebuilds position from depth: the direct lighting, tiling, "
+                          "views and probe sample the depth-stencil target itself (lighting draws without it "
+                          "attached); DepthCopyPass copies it only for passes that test against it while reading "
+                          "it (light volumes, the reflection's lighting: a feedback loop otherwise)"
+                        : "not used: the " + layout.name + " layout stores position, no pass reads depth"});
     bool clipDistances = caps.clipDistancesAvailable(&why);
     list.push_back({"clip-distances", clipDistances,
                     clipDistances ? "the reflection clipped at the water plane by " + why : why});

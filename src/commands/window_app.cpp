@@ -607,6 +607,11 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         ImGui::TextWrapped("%s", describeVegetation(renderer).c_str());
     }
     drawLightsPanel(renderer, scene);
+    if (ImGui::CollapsingHeader("frame work")) {
+        // Savings that keep the picture: switch one off to see what it saves (the pass times).
+        ImGui::Checkbox("tone map fused into the last colour passes", &scene.work.fuseToneMap);
+        ImGui::Checkbox("compact: lighting reads depth in place", &scene.work.depthReadInPlace);
+    }
     ImGui::Separator();
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
                 renderer.geometry().terrainTriangles());

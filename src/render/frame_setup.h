@@ -37,6 +37,13 @@ struct LightSettings {
     std::optional<std::vector<WorldPointLight>> list; // replaces the generated lights (tests, tools)
 };
 
+// Work a frame may save without changing its picture (bench knobs, whose reference does it all;
+// tests hold the two frames equal).
+struct FrameWorkSettings {
+    bool fuseToneMap = true;       // --tone-map fused: the passes that write a pixel last tone-map it
+    bool depthReadInPlace = true;  // --depth-read in-place: compact's lighting samples the depth target
+};
+
 struct SceneSettings {
     double timeSeconds = 0.0;
     std::optional<double> hour;          // overrides the clock's hour of day
@@ -50,6 +57,7 @@ struct SceneSettings {
     WaterSettings water;
     VegetationSettings vegetation;
     LightSettings lights;
+    FrameWorkSettings work;
 };
 
 struct FrameSetup {
@@ -62,6 +70,9 @@ struct FrameSetup {
     bool waterBounded = false;      // the reflection's passes clip to the visible water (set by the renderer)
     bool vegetationEnabled = true;
     bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
+    // Such a layout's direct lighting samples the depth-stencil target itself, drawn without it
+    // attached; false: it reads DepthCopyPass's copy, made every frame (set from the scene's work).
+    bool depthReadInPlace = true;
     // The tone map is written by the passes that write each pixel's colour last (".tonemapped"
     // variants), ToneMapPass skipped; set by the renderer: not for --stop-before, nor with the
     // deferred light volumes (they add to Radiance after LightingPass).

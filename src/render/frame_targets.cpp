@@ -104,15 +104,25 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
 
     colourWithDepthStencil(finalDepthFbo_, Target::Final, "final + depth",
                            "Final + depth-stencil: the water composite with the tone map fused");
-    radianceFinalFbo_ = gl::createFramebuffer("Radiance, Final + depth-stencil: passes with the tone map fused");
-    glBindFramebuffer(GL_FRAMEBUFFER, radianceFinalFbo_.name());
+    auto radianceFinal = [&](gl::Framebuffer& fbo, bool withDepthStencil, const char* what, const char* label) {
+        fbo = gl::createFramebuffer(label);
+        glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Radiance), 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture(Target::Final), 0);
+        if (withDepthStencil)
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                                   texture(Target::DepthStencil), 0);
+        const GLenum radianceFinalBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+        glDrawBuffers(2, radianceFinalBuffers);
+        checkComplete(what);
+    };
+    radianceFinal(radianceFinalFbo_, true, "radiance + final", "Radiance, Final + depth-stencil: passes with the tone map fused");
+    radianceFinal(radianceFinalOnlyFbo_, false, "radiance + final, no depth",
+                  "Radiance, Final: deferred lighting with the tone map fused (samples depth)");
+    radianceOnlyFbo_ = gl::createFramebuffer("Radiance: deferred lighting (samples depth)");
+    glBindFramebuffer(GL_FRAMEBUFFER, radianceOnlyFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Radiance), 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture(Target::Final), 0);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                           texture(Target::DepthStencil), 0);
-    const GLenum radianceFinalBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    glDrawBuffers(2, radianceFinalBuffers);
-    checkComplete("radiance + final");
+    checkComplete("radiance, no depth");
 
     finalFbo_ = gl::createFramebuffer("Final: ToneMapPass");
     glBindFramebuffer(GL_FRAMEBUFFER, finalFbo_.name());

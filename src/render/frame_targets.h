@@ -41,6 +41,11 @@ public:
     // the passes that shade; Final + depth-stencil for the water composite that reads Radiance.
     GLuint radianceFinalFramebuffer() const { return radianceFinalFbo_.name(); }
     GLuint finalDepthFramebuffer() const { return finalDepthFbo_.name(); }
+    // Radiance (and Final) without the depth-stencil target: the direct deferred lighting, which
+    // tests neither depth nor stencil and so may sample depth from that target itself.
+    GLuint radianceOnlyFramebuffer(bool withFinal) const {
+        return withFinal ? radianceFinalOnlyFbo_.name() : radianceOnlyFbo_.name();
+    }
     GLuint sceneDepthFramebuffer() const { return sceneDepthFbo_.name(); }  // SceneDepth; 0 if not stored
     GLuint displayFramebuffer() const { return displayFbo_.name(); }
 
@@ -51,7 +56,7 @@ private:
     std::array<gl::Texture, size_t(Target::Count)> textures_;
     gl::Texture display_;
     gl::Framebuffer gbufferFbo_, radianceFbo_, reflectionFbo_, finalFbo_, displayFbo_, sceneDepthFbo_;
-    gl::Framebuffer radianceFinalFbo_, finalDepthFbo_;
+    gl::Framebuffer radianceFinalFbo_, finalDepthFbo_, radianceOnlyFbo_, radianceFinalOnlyFbo_;
 };
 
 }  // namespace oasis

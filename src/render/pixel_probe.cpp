@@ -179,8 +179,11 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     probe.pipeline = pipelineName(renderer.pipeline());
     probe.layout = targets.layout().name;
     probe.depthConvention = targets.depth().name;
+    // The depth copy is not listed: it is made only for the passes that read depth while testing
+    // against it (light volumes, the reflection's lighting), so it need not hold this pixel's depth.
     for (int t = 0; t < int(Target::Count); ++t)
-        if (targets.layout().stores(Target(t))) probe.stored.push_back(readStoredTexel(targets, Target(t), glX, glY));
+        if (Target(t) != Target::SceneDepth && targets.layout().stores(Target(t)))
+            probe.stored.push_back(readStoredTexel(targets, Target(t), glX, glY));
 
     std::array<glm::vec4, kProbeSlots> slot = decodeOnGpu(renderer, glX, glY);
     probe.albedo = glm::vec3(slot[0]);
@@ -286,7 +289,7 @@ std::string probeText(const PixelProbe& p) {
         add("  normal         %s, length %.6g\n", vec(glm::dvec3(p.normal)).c_str(), double(p.normalLength));
         add("  position       camera-relative %s, world %s, eye distance |p| %.6g\n",
             vec(glm::dvec3(p.relativePosition)).c_str(), vec(p.worldPosition, "%.9g").c_str(), double(p.eyeDistance));
-        if (p.sceneDepth >= 0.0) add("                 rebuilt from the depth copy %.9g\n", p.sceneDepth);
+        if (p.sceneDepth >= 0.0) add("                 rebuilt from depth %.9g\n", p.sceneDepth);
         add("  info           specular power %g, intensity %.6g, flags %u (%s)\n", double(p.specularPower),
             double(p.specularIntensity), p.flags, p.flagNames.empty() ? "none" : joined(p.flagNames, ", ", false).c_str());
         add("  lights         %d of %d point lights reach the surface\n", p.lightsReaching, p.lightsInList);

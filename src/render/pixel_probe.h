@@ -35,7 +35,7 @@ struct PixelProbe {
     float specularPower = 0.0f, specularIntensity = 0.0f;
     unsigned flags = 0;
     std::vector<std::string> flagNames;  // "SKY", "REFLECTED", "PLANT"
-    double sceneDepth = -1.0;            // compact: the depth copy the position was rebuilt from; else -1
+    double sceneDepth = -1.0;            // compact: the depth the position was rebuilt from; else -1
 
     // The depth-stencil target.
     double depth = 0.0;            // window depth as stored (0..1)

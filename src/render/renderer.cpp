@@ -292,8 +292,9 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     // when the deferred light volumes add to Radiance after LightingPass (it cannot write Final).
     bool volumesAfterLighting = active_ == PipelineKind::Deferred && frame_.lightMethod == LightMethod::Volumes &&
                                 !frame_.lights.empty();
-    frame_.toneMapFused = toneMapFusionAllowed_ && stopBefore.empty() && !volumesAfterLighting;
+    frame_.toneMapFused = scene.work.fuseToneMap && stopBefore.empty() && !volumesAfterLighting;
     frame_.runsToEnd = stopBefore.empty();
+    frame_.depthReadInPlace = scene.work.depthReadInPlace;
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());

@@ -114,9 +114,6 @@ public:
     // under the water there; this lays the water onto Radiance as the separate pass would have
     // (the radiance view, the probe, readTarget). Once per frame, and only when something asks.
     void ensureRadiance();
-    // Whether frames may fuse the tone map (default yes); off, ToneMapPass always runs (tests
-    // compare the two frames).
-    void setToneMapFusion(bool allowed) { toneMapFusionAllowed_ = allowed; }
     void setViewWaterScene(WaterScene scene) { viewWaterScene_ = scene; }
     WaterScene viewWaterScene() const { return viewWaterScene_; }
     const ViewScene& viewScene() const { return viewScene_; }
@@ -138,7 +135,7 @@ public:
     // for a target the layout does not store.
     std::vector<float> readTarget(Target target);
     // The G-buffer's surface positions as lighting reads them (stored, or reconstructed from the
-    // depth copy DepthCopyPass last made: after a whole frame, the G-buffer's own surfaces):
+    // depth-stencil target's depth: after a whole frame, the G-buffer's own surfaces):
     // camera-relative xyz, w 1; 0 where the SKY flag is set. RGBA floats, bottom row first.
     std::vector<float> readSurfacePositions();
     std::vector<float> readDepth() const;
@@ -198,7 +195,6 @@ private:
     std::string stoppedBefore_;  // the pass the last frame stopped before, "" for a whole frame
     bool stoppedGBufferCurrent_ = false;  // a stopped frame's G-buffer already holds what it reached
     std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
-    bool toneMapFusionAllowed_ = true;
     bool radianceAwaitsWater_ = false;  // a fused frame's composite has not been laid onto Radiance
 };
 

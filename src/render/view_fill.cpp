@@ -2,7 +2,6 @@
 #include "render/view_fill.h"
 
 #include "passes/clear_pass.h"
-#include "passes/depth_copy_pass.h"
 #include "passes/reflection_clear_pass.h"
 #include "passes/terrain_pass.h"
 #include "passes/vegetation_pass.h"
@@ -23,7 +22,6 @@ ViewFill::ViewFill() {
         list.push_back(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
         list.push_back(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
         list.push_back(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));
-        list.push_back(std::make_unique<DepthCopyPass>());
     };
     directScene(direct_);
     direct_.push_back(std::make_unique<WaterMaskPass>(WaterDepth::Kept));
@@ -34,7 +32,6 @@ ViewFill::ViewFill() {
                                                               ReflectionClearPass::ReflectionTarget::Kept));
     mirrored_.push_back(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
     mirrored_.push_back(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
-    mirrored_.push_back(std::make_unique<DepthCopyPass>(Mirroring::Mirrored));
 }
 
 ViewScene ViewFill::run(PassContext& context, WaterScene scene) const {

@@ -83,6 +83,8 @@ scene_cases() {
 --vegetation|maybe
 --billboards|half
 --reflection-bounds|maybe
+--tone-map|maybe
+--depth-read|inplace
 --vegetation-density|4.5
 --vegetation-density|-1
 --wind|3.5

@@ -44,6 +44,11 @@ FrameRun observe(Renderer& renderer, const SceneSettings& scene) {
     return run;
 }
 
+SceneSettings withToneMap(SceneSettings scene, bool fused) {
+    scene.work.fuseToneMap = fused;
+    return scene;
+}
+
 bool ran(const FrameRun& run, const std::string& pass) {
     return std::find(run.passes.begin(), run.passes.end(), pass) != run.passes.end();
 }
@@ -61,14 +66,12 @@ TEST_F(ToneMapFusion, FusedFrameEqualsTheSeparatePassAndRadianceStaysWhole) {
             for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
                 SCOPED_TRACE(pose.name + ", " + pipelineName(kind) + ", " + layout);
                 renderer.setPipeline(kind);
-                renderer.setToneMapFusion(false);
-                renderer.renderFrame(pose.scene);
+                renderer.renderFrame(withToneMap(pose.scene, false));
                 const std::vector<float> separateRadiance = renderer.readTarget(Target::Radiance);
                 renderer.renderView("final");
                 const Image separate = renderer.readDisplay();
 
-                renderer.setToneMapFusion(true);
-                renderer.renderFrame(pose.scene);
+                renderer.renderFrame(withToneMap(pose.scene, true));
                 EXPECT_TRUE(renderer.lastFrame().toneMapFused);
                 renderer.renderView("final");
                 const Image fused = renderer.readDisplay();
@@ -112,14 +115,12 @@ TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
         SceneSettings scene = pose.scene;
         scene.lights.method = c.method;
         renderer.setPipeline(c.kind);
-        renderer.setToneMapFusion(false);
-        FrameRun separateRun = observe(renderer, scene);
+        FrameRun separateRun = observe(renderer, withToneMap(scene, false));
         renderer.renderView("final");
         const Image separate = renderer.readDisplay();
         EXPECT_TRUE(ran(separateRun, "ToneMapPass"));
 
-        renderer.setToneMapFusion(true);
-        FrameRun fusedRun = observe(renderer, scene);
+        FrameRun fusedRun = observe(renderer, withToneMap(scene, true));
         renderer.renderView("final");
         EXPECT_EQ(renderer.lastFrame().toneMapFused, c.fused);
         EXPECT_EQ(ran(fusedRun, "ToneMapPass"), !c.fused);
@@ -138,10 +139,8 @@ TEST_F(ToneMapFusion, FusedFrameRunsNoToneMapPassAndShadesAFullScreenFewer) {
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
             SCOPED_TRACE(pose.name + ", " + pipelineName(kind));
             renderer.setPipeline(kind);
-            renderer.setToneMapFusion(false);
-            FrameRun separate = observe(renderer, pose.scene);
-            renderer.setToneMapFusion(true);
-            FrameRun fused = observe(renderer, pose.scene);
+            FrameRun separate = observe(renderer, withToneMap(pose.scene, false));
+            FrameRun fused = observe(renderer, withToneMap(pose.scene, true));
             std::vector<std::string> expected = separate.passes;
             ASSERT_FALSE(expected.empty());
             EXPECT_EQ(expected.back(), "ToneMapPass");
