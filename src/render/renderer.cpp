@@ -463,6 +463,15 @@ std::vector<float> Renderer::readTarget(Target target) {
 }
 
 std::vector<float> Renderer::readSurfacePositions() {
+    // After a whole frame the water composite has written the water's depth over the mirrored
+    // scene the G-buffer holds there. A layout that rebuilds positions from depth reads them from
+    // those surfaces refilled with their own depth: the mirrored view fill, what the frame left.
+    if (targets_->layout().positionFromDepth() && stoppedBefore_.empty() && !gbufferHolds_) {
+        WaterScene asked = viewWaterScene_;
+        viewWaterScene_ = WaterScene::Mirrored;
+        ensureGBuffer();
+        viewWaterScene_ = asked;
+    }
     positionsReadback_.bindForDrawing(targets_->width(), targets_->height());
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);

@@ -135,7 +135,8 @@ public:
     // for a target the layout does not store.
     std::vector<float> readTarget(Target target);
     // The G-buffer's surface positions as lighting reads them (stored, or reconstructed from the
-    // depth-stencil target's depth: after a whole frame, the G-buffer's own surfaces):
+    // depth-stencil target's depth, refilled where the water's depth covers the mirrored scene:
+    // after a whole frame, the G-buffer's own surfaces):
     // camera-relative xyz, w 1; 0 where the SKY flag is set. RGBA floats, bottom row first.
     std::vector<float> readSurfacePositions();
     std::vector<float> readDepth() const;
