@@ -56,6 +56,8 @@ const std::vector<InputDomain>& inputDomains() {
          "also at most the driver's GL_MAX_TEXTURE_SIZE and 4 GiB of targets (checked on the context)"},
         {"--size H", "pixels", 1.0, 32768.0, DomainKind::Integer, "as --size W"},
         {"--frames", "frames", 1.0, 1000.0, DomainKind::Integer, "timed frames per measurement"},
+        {"--driver-timeout", "seconds", 0.1, 86400.0, DomainKind::Real,
+         "compare --driver: each child render's limit (default 300; softpipe takes ~10 s a 640x360 frame)"},
         {"--view-exposure", "stops", -20.0, 20.0, DomainKind::Real,
          "the HDR views' scale 2^stops: 1e-6 to 1e6 covers every value a half float holds"},
         {"--range LO", "the view's values", -1e9, 1e9, DomainKind::Real,

@@ -176,7 +176,9 @@ std::string usage(Command command) {
                    "                            a second set-up; without --driver, against the frame rendered here\n"
                    "                            (this process's environment); without --size, the frame is rendered\n"
                    "                            at the reference's size (a different --size is exit 2)\n"
-                   "  --pipeline forward|deferred  the pipeline of the rendered frames (default deferred)\n" + scene;
+                   "  --pipeline forward|deferred  the pipeline of the rendered frames (default deferred)\n"
+                   "  --driver-timeout SECONDS  kill a child render (its process group) still running after this\n"
+                   "                            long: exit 1 naming the set-up (default 300)\n" + scene;
         case Command::Caps:
             return "usage: oasis caps [--json] [--force LIST]\n"
                    "  the context's GL version, vendor, renderer, GLSL version, the limits and extensions that\n"
@@ -261,7 +263,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
             "--force", "--api",
             "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend",
-            "--driver", "--reference"};
+            "--driver", "--reference", "--driver-timeout"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
@@ -310,10 +312,12 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                           flag == "--range" || flag == "--overlay" || flag == "--legend";
         if (flag == "--pipeline" && (options.command == Command::Probe || options.command == Command::Compare))
             renderOnly = false;  // compare: only with --driver / --reference (checked after the loop)
-        if ((flag == "--driver" || flag == "--reference") && options.command != Command::Compare)
+        if ((flag == "--driver" || flag == "--reference" || flag == "--driver-timeout") &&
+            options.command != Command::Compare)
             return fail("option " + flag + " belongs to `oasis compare`");
         // What a child `oasis render` of compare --driver needs to draw the same frame.
-        static const std::vector<std::string> kNotForwarded = {"--driver", "--reference", "--out-dir", "--frames"};
+        static const std::vector<std::string> kNotForwarded = {"--driver", "--reference", "--driver-timeout", "--out-dir",
+                                                               "--frames"};
         if (options.command == Command::Compare &&
             std::find(kNotForwarded.begin(), kNotForwarded.end(), flag) == kNotForwarded.end()) {
             options.sceneArguments.push_back(flag);
@@ -331,6 +335,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (options.drivers.size() == 2)
                 return fail("--driver given three times: compare takes two set-ups, or one and --reference FILE.png");
             options.drivers.push_back(value);
+        } else if (flag == "--driver-timeout") {
+            std::string error;
+            if (!readNumber(flag, value, options.driverTimeoutSeconds, error)) return fail(error);
+            options.driverTimeoutGiven = true;
         } else if (flag == "--reference") {
             if (!endsWith(value, ".png")) return fail("--reference expects a PNG file (FILE.png), got '" + value + "'");
             if (!options.reference.empty()) return fail("--reference given twice");
@@ -514,6 +522,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (options.pipelineGiven && !options.comparesDrivers())
             return fail("option --pipeline belongs to `oasis render` and to `oasis compare --driver/--reference` "
                         "(plain compare renders both pipelines)");
+        if (options.driverTimeoutGiven && !options.comparesDrivers())
+            return fail("option --driver-timeout belongs to `oasis compare --driver/--reference` (the pipeline "
+                        "comparison runs no child)");
         if (options.comparesDrivers() && (options.passTimes || options.timingFramesGiven || options.capture))
             return fail("--passes, --frames and --capture belong to the pipeline comparison, not compare "
                         "--driver/--reference (it times nothing)");

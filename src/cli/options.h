@@ -66,6 +66,9 @@ struct Options {
     std::string reference;
     std::vector<std::string> sceneArguments;
     bool sizeGiven = false;  // --size on the command line (else a --reference's size is used)
+    // --driver-timeout: a child render still running after this many seconds is killed (exit 1).
+    double driverTimeoutSeconds = 300.0;
+    bool driverTimeoutGiven = false;
     bool pipelineGiven = false;
     bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }
 };

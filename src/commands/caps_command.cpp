@@ -40,6 +40,11 @@ std::vector<std::pair<std::string, std::string>> limitRows(const gl::Limits& l) 
     };
     return {{"max_uniform_block_size", std::to_string(l.maxUniformBlockSize)},
             {"max_shader_storage_block_size", std::to_string(l.maxShaderStorageBlockSize)},
+            {"max_shader_storage_buffer_bindings", std::to_string(l.maxShaderStorageBufferBindings)},
+            {"max_vertex_shader_storage_blocks", std::to_string(l.maxVertexShaderStorageBlocks)},
+            {"max_fragment_shader_storage_blocks", std::to_string(l.maxFragmentShaderStorageBlocks)},
+            {"max_compute_shader_storage_blocks", std::to_string(l.maxComputeShaderStorageBlocks)},
+            {"max_combined_shader_storage_blocks", std::to_string(l.maxCombinedShaderStorageBlocks)},
             {"max_draw_buffers", std::to_string(l.maxDrawBuffers)},
             {"max_color_attachments", std::to_string(l.maxColorAttachments)},
             {"max_texture_size", std::to_string(l.maxTextureSize)},

@@ -3,13 +3,17 @@
 #include "commands/driver_compare.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -18,6 +22,7 @@
 #include <vector>
 
 #include "cli/driver_setups.h"
+#include "cli/input_domains.h"
 #include "commands/bench_report.h"
 #include "commands/headless_commands.h"
 #include "context/gl_context.h"
@@ -42,11 +47,15 @@ struct Side {
 
 struct ChildResult {
     int status = 0;
+    bool timedOut = false;  // killed at the time limit
     std::string output;  // stdout and stderr together, in the order written
 };
 
-// The child's environment: ours, less the driver-selecting variables when a set-up is named
-// (the table alone says what it is), plus the set-up's variables.
+// A signal that ends this process while a child runs in its own process group: the terminal's
+// Ctrl-C no longer reaches the child, so the wait passes it on (kills the group) before dying.
+volatile std::sig_atomic_t endingSignal = 0;
+extern "C" void noteEndingSignal(int signal) { endingSignal = signal; }
+
 std::vector<std::string> childEnvironment(const DriverSetup* setup, const std::string& runtimeDir) {
     std::vector<std::string> environment;
     auto overridden = [&](const std::string& entry) {
@@ -66,37 +75,67 @@ std::vector<std::string> childEnvironment(const DriverSetup* setup, const std::s
     return environment;
 }
 
-// Runs `arguments` (argv[0] first) as /proc/self/exe with `environment`, collecting its output.
-// Throws std::runtime_error when it cannot be started.
-ChildResult runChild(const std::vector<std::string>& arguments, const std::vector<std::string>& environment) {
+// Reads the child's output until it closes the pipe, or until `limit` has passed since its start
+// (then true). poll() returns early on a signal, which the caller checks.
+bool readUntilClosed(int fd, std::string& output, std::chrono::steady_clock::time_point deadline) {
+    char buffer[4096];
+    for (;;) {
+        if (endingSignal) return false;
+        auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) return true;
+        pollfd readable{fd, POLLIN, 0};
+        int ready = poll(&readable, 1, int(std::min<long long>(left.count() + 1, 60000)));
+        if (ready <= 0) continue;  // EINTR (checked above) or a slice of the limit passed
+        ssize_t n = read(fd, buffer, sizeof(buffer));
+        if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) return false;
+        if (n > 0) output.append(buffer, size_t(n));
+    }
+}
+
+// Runs `arguments` (argv[0] first) as /proc/self/exe with `environment` in a process group of its
+// own (so a hang is killed whole: whatever the driver started too), collecting its output; after
+// `limitSeconds` the group is killed and the result says it timed out. Throws std::runtime_error
+// when it cannot be started.
+ChildResult runChild(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
+                     double limitSeconds) {
     int pipeEnds[2];
     if (pipe2(pipeEnds, O_CLOEXEC) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
     posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDERR_FILENO);
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attributes, 0);  // the child's own pid as its group
     std::vector<char*> argv, envp;
     for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
     for (const std::string& entry : environment) envp.push_back(const_cast<char*>(entry.c_str()));
     argv.push_back(nullptr);
     envp.push_back(nullptr);
+    const int endingSignals[] = {SIGINT, SIGTERM, SIGHUP};
+    struct sigaction noting {}, previous[3];
+    noting.sa_handler = noteEndingSignal;
+    sigemptyset(&noting.sa_mask);
+    for (int k = 0; k < 3; ++k) sigaction(endingSignals[k], &noting, &previous[k]);
+    auto deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limitSeconds));
     pid_t pid = 0;
-    int spawnError = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), envp.data());
+    int spawnError = posix_spawn(&pid, "/proc/self/exe", &actions, &attributes, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attributes);
     close(pipeEnds[1]);
-    if (spawnError != 0) {
-        close(pipeEnds[0]);
-        throw std::runtime_error(std::string("cannot start /proc/self/exe: ") + std::strerror(spawnError));
-    }
     ChildResult result;
-    char buffer[4096];
-    for (ssize_t n; (n = read(pipeEnds[0], buffer, sizeof(buffer))) != 0;) {
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) break;
-        result.output.append(buffer, size_t(n));
+    if (spawnError == 0) {
+        result.timedOut = readUntilClosed(pipeEnds[0], result.output, deadline);
+        if (result.timedOut || endingSignal) kill(-pid, SIGKILL);  // the group: nothing of the render is left
+        while (waitpid(pid, &result.status, 0) < 0 && errno == EINTR) {}
     }
     close(pipeEnds[0]);
-    while (waitpid(pid, &result.status, 0) < 0 && errno == EINTR) {}
+    for (int k = 0; k < 3; ++k) sigaction(endingSignals[k], &previous[k], nullptr);
+    if (endingSignal) raise(endingSignal);  // end as the signal asked, now that the child is gone
+    if (spawnError != 0)
+        throw std::runtime_error(std::string("cannot start /proc/self/exe: ") + std::strerror(spawnError));
     return result;
 }
 
@@ -130,8 +169,14 @@ int renderSide(const Options& options, Side& side, const std::vector<std::string
     if (side.setup) arguments.insert(arguments.end(), side.setup->arguments.begin(), side.setup->arguments.end());
     for (const char* argument : {"--view", "final", "--legend", "off", "--out"}) arguments.push_back(argument);
     arguments.push_back(side.path);
-    ChildResult child = runChild(arguments, childEnvironment(side.setup, runtimeDir));
+    ChildResult child = runChild(arguments, childEnvironment(side.setup, runtimeDir), options.driverTimeoutSeconds);
     std::string name = side.setup ? "set-up " + side.setup->name : "the frame here";
+    if (child.timedOut) {
+        std::fprintf(stderr, "oasis: %s: `oasis render` did not finish within --driver-timeout %s s: its process "
+                     "group was killed; its output until then:\n%s", name.c_str(),
+                     formatNumber(options.driverTimeoutSeconds).c_str(), indented(child.output).c_str());
+        return 1;
+    }
     if (WIFSIGNALED(child.status)) {
         std::fprintf(stderr, "oasis: %s: `oasis render` was killed by signal %d (%s); its output:\n%s", name.c_str(),
                      WTERMSIG(child.status), strsignal(WTERMSIG(child.status)), indented(child.output).c_str());

@@ -7,7 +7,8 @@
 
 namespace oasis {
 
-// 0 compared; 1 a set-up failed, was killed, or its driver is missing here (said which and why);
+// 0 compared; 1 a set-up failed, was killed (by a signal, or at --driver-timeout: its process group),
+// or its driver is missing here (said which and why);
 // 2 bad input found only now (a reference that is not a readable PNG or whose size differs from --size).
 int runDriverCompare(const Options& options);
 

@@ -4,6 +4,9 @@
 #include <epoxy/gl.h>
 
 #include <sstream>
+#include <tuple>
+
+#include "common/shared_constants.glsl"
 
 namespace oasis::gl {
 namespace {
@@ -87,6 +90,27 @@ std::string glString(GLenum name) {
 
 }  // namespace
 
+// The light list sits at OASIS_BINDING_LIGHTS and, on the ssbo-count path, its count at
+// OASIS_BINDING_LIGHT_COUNT: both read by light_volume.vert; lighting.frag reads them beside the
+// tile lists and (desktop GL) the water bounds, and fullscreen.vert in the same program those too.
+const StorageNeed kLightListStorage{"the SSBO light list", OASIS_BINDING_LIGHT_COUNT + 1, 2, 4, 0, 5};
+// lsystem_interpret.comp binds its 7 buffers at 0-6.
+const StorageNeed kPlantInterpreterStorage{"the compute plant interpretation", 7, 0, 0, 7, 7};
+
+std::string storageShortfall(const Limits& limits, const StorageNeed& need) {
+    const std::tuple<const char*, int, int> checks[] = {
+        {"GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS", limits.maxShaderStorageBufferBindings, need.bindings},
+        {"GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS", limits.maxVertexShaderStorageBlocks, need.vertexBlocks},
+        {"GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS", limits.maxFragmentShaderStorageBlocks, need.fragmentBlocks},
+        {"GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS", limits.maxComputeShaderStorageBlocks, need.computeBlocks},
+        {"GL_MAX_COMBINED_SHADER_STORAGE_BLOCKS", limits.maxCombinedShaderStorageBlocks, need.combinedBlocks}};
+    for (const auto& [name, have, needed] : checks)
+        if (have < needed)
+            return std::string(name) + " is " + std::to_string(have) + ", " + need.user + " needs " +
+                   std::to_string(needed);
+    return {};
+}
+
 std::string ForcedFallbacks::list() const {
     std::string text;
     for (const FallbackName& entry : kFallbackNames)
@@ -146,6 +170,9 @@ bool Capabilities::ssboAvailable(std::string* reason) const {
     if (forced.noSsbo) return answer(false, reason, "switched off by --force no-ssbo");
     std::string from = source(*this, kSsbo);
     if (from.empty()) return answer(false, reason, missing(*this, kSsbo));
+    // ES 3.1 has SSBOs but may allow none in fragment shaders, where the light list is read.
+    std::string shortfall = storageShortfall(limits, kLightListStorage);
+    if (!shortfall.empty()) return answer(false, reason, "SSBOs present (" + from + ") but " + shortfall);
     return answer(true, reason, "SSBOs present (" + from + ")");
 }
 
@@ -161,6 +188,8 @@ bool Capabilities::computeAvailable(std::string* reason) const {
         {source(*this, kGpuShader5), es ? "ES 3.2 / GL_EXT_gpu_shader5 (precise)" : "GL_ARB_gpu_shader5"}};
     for (const auto& [found, name] : needs)
         if (found.empty()) return answer(false, reason, "compute shaders present but no " + name + " for its GLSL");
+    std::string shortfall = storageShortfall(limits, kPlantInterpreterStorage);
+    if (!shortfall.empty()) return answer(false, reason, "compute shaders present (" + from + ") but " + shortfall);
     return answer(true, reason, "compute shaders and SSBOs present (" + from + ")");
 }
 
@@ -240,6 +269,7 @@ Capabilities measureCapabilities(const ForcedFallbacks& forced) {
     caps.es = !epoxy_is_desktop_gl();
     if (forced.gles30 && caps.es && caps.atLeast(3, 1)) {  // Mesa gives ES 3.2 for any 3.x request
         caps.version += " (treated as ES 3.0: --force gles30)";
+        caps.glslVersion += " (shaders as 300 es: --force gles30)";
         caps.major = 3;
         caps.minor = 0;
     }
@@ -265,7 +295,15 @@ Capabilities measureCapabilities(const ForcedFallbacks& forced) {
     limits.maxTextureSize = getInt(GL_MAX_TEXTURE_SIZE);
     limits.maxSamples = getInt(GL_MAX_SAMPLES);
     // The driver's limits, even where --force switches a feature off: the report shows both.
-    if (caps.driverHasSsbo()) limits.maxShaderStorageBlockSize = getInt(GL_MAX_SHADER_STORAGE_BLOCK_SIZE);
+    const std::pair<int Limits::*, GLenum> storageLimits[] = {
+        {&Limits::maxShaderStorageBlockSize, GL_MAX_SHADER_STORAGE_BLOCK_SIZE},
+        {&Limits::maxShaderStorageBufferBindings, GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS},
+        {&Limits::maxVertexShaderStorageBlocks, GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS},
+        {&Limits::maxFragmentShaderStorageBlocks, GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS},
+        {&Limits::maxComputeShaderStorageBlocks, GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS},
+        {&Limits::maxCombinedShaderStorageBlocks, GL_MAX_COMBINED_SHADER_STORAGE_BLOCKS}};
+    if (caps.driverHasSsbo())
+        for (const auto& [field, name] : storageLimits) limits.*field = getInt(name);
     if (caps.driverHasCompute()) {
         limits.maxComputeWorkGroupInvocations = getInt(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS);
         limits.maxComputeSharedMemorySize = getInt(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE);

@@ -44,7 +44,32 @@ struct Limits {
     int maxComputeWorkGroupCount[3] = {0, 0, 0};
     int maxComputeWorkGroupSize[3] = {0, 0, 0};
     int maxComputeSharedMemorySize = 0;
+    // Storage-block counts (measured where the driver has SSBOs): ES 3.1 guarantees only 4
+    // bindings, 4 blocks per program and none in the vertex and fragment stages, fewer than
+    // oasis's shaders use.
+    int maxShaderStorageBufferBindings = 0;
+    int maxVertexShaderStorageBlocks = 0;
+    int maxFragmentShaderStorageBlocks = 0;
+    int maxComputeShaderStorageBlocks = 0;
+    int maxCombinedShaderStorageBlocks = 0;
 };
+
+// What oasis's storage blocks need of those limits: the bindings are shaders/common/
+// shared_constants.glsl's (the light list's at 6 and 7) and the plant interpreter's 0-6; the
+// blocks are those of the largest shader of each stage and program.
+struct StorageNeed {
+    const char* user;  // "the SSBO light list", in the reason
+    int bindings;
+    int vertexBlocks;
+    int fragmentBlocks;
+    int computeBlocks;
+    int combinedBlocks;
+};
+extern const StorageNeed kLightListStorage;
+extern const StorageNeed kPlantInterpreterStorage;
+// "" when `limits` meet `need`, else the first limit below it, named, with both numbers:
+// "GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS is 0, the SSBO light list needs 4".
+std::string storageShortfall(const Limits& limits, const StorageNeed& need);
 
 // One feature oasis can use: whether it is used here, and why (why not when not).
 struct FeatureReport {

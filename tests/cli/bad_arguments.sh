@@ -103,7 +103,7 @@ EOF
 # Options that take a value (each is tried with its value missing).
 value_flags="--size --time --hour --camera --gbuffer --depth --reflections --water-level --ripples --absorption
   --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
-  --stop-before --out-dir --frames --driver --reference"
+  --stop-before --out-dir --frames --driver --reference --driver-timeout"
 
 for command in main render compare caps bench window; do
     [ "$part" = all ] || [ "$part" = "scene:$command" ] || continue
@@ -175,6 +175,15 @@ expect 2 compare --driver llvmpipe --driver zink --driver softpipe
 expect 2 compare --driver llvmpipe --driver llvmpipe --reference "$scratch/ref.png"
 expect 2 compare --driver llvmpipe --driver llvmpipe --frames 3
 expect 2 render --driver llvmpipe
+# --driver-timeout: seconds in [0.1, 86400], only with --driver / --reference.
+for value in 0 0.09 -1 86401 1e300 nan soon 10s ""; do
+    expect 2 compare --driver llvmpipe --driver zink --driver-timeout "$value" --out-dir "$scratch/driver-never"
+    grep -q "driver-timeout expects seconds in \[0.1, 86400\], got '$value'" "$scratch/stderr" ||
+        fail "--driver-timeout '$value': $(cat "$scratch/stderr")"
+done
+expect 2 compare --driver-timeout 5 --frames 1
+grep -q 'belongs to `oasis compare --driver/--reference`' "$scratch/stderr" || fail "plain compare --driver-timeout: $(cat "$scratch/stderr")"
+expect 2 render --driver-timeout 5
 expect 2 caps --reference "$scratch/ref.png"
 expect 2 compare --reference "$scratch/ref.jpg"
 expect 2 compare --reference "$scratch/missing.png" --out-dir "$scratch/driver-never"

@@ -125,6 +125,8 @@ const std::vector<Flag>& flags() {
         // compare's set-ups: the fast llvmpipe ones (zink and softpipe cost seconds a case).
         {"--driver", Value::Choice, 0, 0, {"llvmpipe", "no-ssbo", "gl33", "no-dsa"}},
         {"--reference", Value::OutFile},  // mostly missing files: the parse and read errors
+        // Low limits kill the children mid-render (exit 1): the kill path, fuzzed.
+        {"--driver-timeout", Value::Number, 0.1, 20},
         {"--quick", Value::None},
         {"--capture", Value::None},   // exit 1 here: no RenderDoc (tests/capture checks the capture)
         {"--gl-debug", Value::None},
@@ -282,10 +284,13 @@ std::vector<Args> sweepCases() {
     std::vector<Args> cases;
     for (const Flag& flag : flags()) {
         if (flag.value != Value::Number && flag.value != Value::Integer) continue;
-        std::string sub = flag.name == std::string("--frames") ? "compare" : "render";
+        const std::string name = flag.name;
+        std::string sub = name == "--frames" || name == "--driver-timeout" ? "compare" : "render";
         for (const std::string& value : kSweepNumbers) {
             Args args = {sub, flag.name, value, "--size", "32x18"};
             if (sub == "compare") args.insert(args.end(), {"--out-dir", "out"});
+            // A missing reference ends a good parse before any child starts: the sweep reads the number only.
+            if (name == "--driver-timeout") args.insert(args.end(), {"--reference", "missing.png"});
             cases.push_back(args);
         }
     }

@@ -4,6 +4,7 @@
 
 #include "cli/options.h"
 #include "gl/capabilities.h"
+#include "render/light_paths.h"
 
 namespace oasis {
 namespace {
@@ -13,6 +14,11 @@ gl::Capabilities contextOf(int major, int minor, std::set<std::string> extension
     caps.major = major;
     caps.minor = minor;
     caps.extensions = std::move(extensions);
+    // Storage-block limits as llvmpipe reports them on GL 4.5 and ES 3.2 (80 bindings and combined,
+    // 16 per stage).
+    gl::Limits& l = caps.limits;
+    l.maxShaderStorageBufferBindings = l.maxCombinedShaderStorageBlocks = 80;
+    l.maxVertexShaderStorageBlocks = l.maxFragmentShaderStorageBlocks = l.maxComputeShaderStorageBlocks = 16;
     return caps;
 }
 
@@ -84,6 +90,59 @@ TEST(Capabilities, EsVersionsAndExtensions) {
     // A desktop context is not answered by ES extensions.
     EXPECT_FALSE(contextOf(4, 5, {"GL_EXT_clip_control"}).es);
     EXPECT_TRUE(contextOf(3, 3).clipDistancesAvailable()) << "desktop GL 3.0 has gl_ClipDistance";
+}
+
+// ES 3.1 has storage blocks, but guarantees only 4 bindings and 4 blocks per program, none in the
+// vertex and fragment stages: there the light list takes the UBO path and the plants the CPU,
+// each saying which limit fell short, though the version alone would allow both.
+TEST(Capabilities, EsStorageLimitsBelowWhatOasisNeedsTakeTheFallbacks) {
+    gl::Capabilities es31 = esContextOf(1, {"GL_EXT_gpu_shader5"});  // the interpreter's `precise`
+    ASSERT_TRUE(es31.driverHasSsbo() && es31.driverHasCompute());
+    std::string reason;
+    EXPECT_TRUE(es31.ssboAvailable()) << "llvmpipe's limits are enough";
+    gl::Limits& l = es31.limits;
+    l.maxShaderStorageBufferBindings = 4;  // ES 3.1's minimums
+    l.maxVertexShaderStorageBlocks = l.maxFragmentShaderStorageBlocks = 0;
+    l.maxComputeShaderStorageBlocks = l.maxCombinedShaderStorageBlocks = 4;
+    EXPECT_FALSE(es31.ssboAvailable(&reason));
+    EXPECT_EQ(reason, "SSBOs present (ES 3.1) but GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS is 4, the SSBO light list "
+                      "needs 8");
+    EXPECT_FALSE(es31.computeAvailable(&reason));
+    EXPECT_EQ(reason.rfind("compute needs SSBOs: ", 0), 0u) << reason;
+    LightsPathChoice lights = chooseLightsPath(es31.ssboAvailable(&reason), LightsPath::Ssbo, reason);
+    EXPECT_EQ(lights.path, LightsPath::Ubo);
+    EXPECT_NE(lights.reason.find("GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS is 4"), std::string::npos) << lights.reason;
+    // Each limit alone: every binding but no storage block in the fragment stage.
+    l.maxShaderStorageBufferBindings = 8;
+    l.maxVertexShaderStorageBlocks = 2;
+    l.maxCombinedShaderStorageBlocks = 8;
+    EXPECT_FALSE(es31.ssboAvailable(&reason));
+    EXPECT_NE(reason.find("GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS is 0, the SSBO light list needs 4"),
+              std::string::npos) << reason;
+    l.maxFragmentShaderStorageBlocks = 3;
+    EXPECT_FALSE(es31.ssboAvailable()) << "one block short: light list, count, tiles and water bounds";
+    l.maxFragmentShaderStorageBlocks = 4;
+    l.maxVertexShaderStorageBlocks = 1;
+    EXPECT_FALSE(es31.ssboAvailable(&reason)) << "light_volume.vert reads the list and its count";
+    EXPECT_NE(reason.find("GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS is 1"), std::string::npos) << reason;
+    l.maxVertexShaderStorageBlocks = 2;
+    l.maxCombinedShaderStorageBlocks = 4;
+    EXPECT_FALSE(es31.ssboAvailable());
+    l.maxCombinedShaderStorageBlocks = 8;
+    EXPECT_TRUE(es31.ssboAvailable(&reason)) << reason;
+    // The light list fits, the interpreter's 7 buffers do not: SSBO lights, CPU plants.
+    EXPECT_FALSE(es31.computeAvailable(&reason));
+    EXPECT_EQ(reason, "compute shaders present (ES 3.1) but GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS is 4, the compute "
+                      "plant interpretation needs 7");
+    l.maxComputeShaderStorageBlocks = 7;
+    EXPECT_TRUE(es31.computeAvailable(&reason)) << reason;
+    l.maxShaderStorageBufferBindings = 7;  // the light count's binding 7 is one past
+    EXPECT_FALSE(es31.ssboAvailable());
+    // Desktop GL answers from the same limits (GL 4.3 allows 0 vertex-stage blocks too).
+    gl::Capabilities gl43 = contextOf(4, 3);
+    gl43.limits.maxVertexShaderStorageBlocks = 0;
+    EXPECT_FALSE(gl43.ssboAvailable(&reason));
+    EXPECT_NE(reason.find("GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS is 0"), std::string::npos) << reason;
 }
 
 TEST(Capabilities, ApiOptionAndTheEsTierForcing) {

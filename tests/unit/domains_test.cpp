@@ -36,6 +36,7 @@ std::vector<std::string> argumentsFor(const InputDomain& domain, const std::stri
     if (name == "--size W") return {"render", "--size", text + "x18"};
     if (name == "--size H") return {"render", "--size", "32x" + text};
     if (name == "--frames") return {"compare", "--frames", text};
+    if (name == "--driver-timeout") return {"compare", "--driver", "llvmpipe", "--driver", "zink", name, text};
     if (name == "--range LO") return {"render", "--view", "depth", "--range", text + ",1e9"};
     if (name == "--range HI") return {"render", "--view", "depth", "--range", "-1e9," + text};
     if (name == "--at X") return {"probe", "--size", "32768x18", "--at", text + ",0"};
@@ -52,7 +53,7 @@ std::string number(double value) {
 TEST(InputDomains, EveryNumericFlagHasARow) {
     for (const char* name : {"--time", "--hour", "--camera X", "--camera Y", "--camera Z", "--camera YAW",
                              "--camera PITCH", "--water-level", "--ripples", "--absorption", "--vegetation-density",
-                             "--wind", "--lights", "--size W", "--size H", "--frames"}) {
+                             "--wind", "--lights", "--size W", "--size H", "--frames", "--driver-timeout"}) {
         EXPECT_NO_THROW(inputDomain(name)) << name;
     }
     EXPECT_THROW(inputDomain("--nope"), std::out_of_range);
