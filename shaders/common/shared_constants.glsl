@@ -17,7 +17,8 @@
 #define OASIS_DETAIL_WIND_GUSTS 4
 #define OASIS_DETAIL_CLOUDS_BROAD 5
 #define OASIS_DETAIL_CLOUDS_FINE 6
-#define OASIS_DETAIL_LAYERS 7
+#define OASIS_DETAIL_ROCK_CRACKS 7
+#define OASIS_DETAIL_LAYERS 8
 // The cloud deck's world height (common/sky.glsl): clouds are seen from below it only.
 #define OASIS_CLOUD_ALTITUDE 1100.0
 // Storage block bindings (render/texture_units.h binds them by name on desktop GL; OpenGL ES has no

@@ -48,8 +48,9 @@ struct PlantPlacementSettings {
     int candidatesPerChunk = 96;    // drawn per chunk; the ground rules below reject some
     // Ground rules (every placed plant satisfies all three):
     float waterLevel = 0.0f;        // bases below the water plane are skipped
-    // Steeper ground is skipped: terrain.glsl starts blending in rock at slope 1 - normal.y = 0.30
-    // minus up to 0.06 of noise, so 0.76 keeps plants off anything that can show rock.
+    // Steeper ground is skipped: terrain.glsl's rock band reaches down to slope 1 - normal.y =
+    // 0.33 minus up to 0.075 of noise minus its half-width 0.012 (0.243), so 0.76 keeps plants off
+    // anything that can show rock.
     float minNormalY = 0.76f;
     // terrain.glsl turns high ground to rock from 48 - 8 = 40 units above the water.
     float maxHeightAboveWater = 40.0f;
