@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/lsystem.h"
 #include "scene/terrain.h"
 
 namespace oasis {
@@ -54,9 +55,23 @@ struct PlantPlacementSettings {
     float minNormalY = 0.76f;
     // terrain.glsl turns high ground to rock from 48 - 8 = 40 units above the water.
     float maxHeightAboveWater = 40.0f;
-    float minSize = 1.5f, maxSize = 4.0f;
+    // Atlas cells (render/plant_atlas.h): a preset's cell is its index in plantPresets() in the
+    // top row, one row down for its variant of one rewrite fewer; wrapped to this count.
     uint32_t variantCount = 1;
 };
+
+// One row of the placement table: an L-system preset (scene/lsystem.h) at its natural size. A
+// plant's size is its billboard's world height (the atlas cell's: the plant fills 90 % of it, less
+// where a wide plant is fitted to the cell's width).
+struct PlantKind {
+    const char* preset;
+    float minSize, maxSize;  // world units, drawn uniformly between them
+    float share;             // fraction of the candidates; the table's shares sum to 1
+};
+// Shrub to tree, in one table: low weeds and grass, ferny shrubs, young trees and broad trees.
+const std::vector<PlantKind>& plantPlacementTable();
+// The table row a candidate drawn with `unit` in [0, 1) falls in (by the cumulative shares).
+const PlantKind& plantKindAt(float unit);
 
 // The chunk whose square [c, c + 1) * chunkSize holds worldXZ.
 glm::ivec2 chunkContaining(const PlantPlacementSettings& settings, glm::vec2 worldXZ);
