@@ -20,12 +20,12 @@ void main() {
 #else
     const bool reflected = false;
 #endif
-    // The atlas's lines are a texel wide, so mip level L keeps about 2^-L of their coverage:
-    // lowering the threshold with it keeps a far plant about a pixel thick instead of letting it
-    // dissolve (the coverage preservation of alpha-tested mipmaps).
+    // One threshold at every mip level: the atlas's levels keep each plant's coverage at it
+    // (src/render/coverage_mips.h), so a plant neither thins nor swells as its level changes, and
+    // its edges do not crawl as the camera moves.
     float lod = max(vAtlasLod, 0.0);
     vec4 texel = textureLod(plantAtlas, vAtlasUv, lod);
-    bool transparent = texel.a < max(0.5 * exp2(-lod), float(OASIS_PLANT_ALPHA_MIN)) || belowWater();
+    bool transparent = texel.a < float(OASIS_PLANT_ALPHA_THRESHOLD) || belowWater();
 #if !defined(LIGHTS_UBO)
     if (transparent) discard;
 #endif

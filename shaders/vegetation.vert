@@ -91,8 +91,15 @@ void main() {
 #endif
     // The mip level: atlas texels per screen pixel along the billboard's height. Computed here from
     // the projected size rather than from derivatives in the fragment shader, whose dFdx with the
-    // alpha test's discard and the UBO light blocks crashed lavapipe (zink).
+    // alpha test's discard and the UBO light blocks crashed lavapipe (zink). One level for the
+    // whole billboard, taken at its cell's centre: every corner computes the same, so a trimmed
+    // strip samples the levels the whole cell would, and no level boundary crawls across a plant.
+    vec3 centre = billboardPoint(base, right, size, bend, vec2(0.5));
+#if defined(MIRRORED)
+    centre = mirroredPoint(centre);
+#endif
+    float centreW = (frame.viewProjection * vec4(centre, 1.0)).w;
     float texelsPerUnit = frame.vegetationAtlas.z / size;
-    float pixelsPerUnit = frame.vegetationAtlas.w / max(gl_Position.w, 1e-3);
+    float pixelsPerUnit = frame.vegetationAtlas.w / max(centreW, 1e-3);
     vAtlasLod = log2(max(texelsPerUnit / pixelsPerUnit, 1e-6));
 }

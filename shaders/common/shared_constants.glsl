@@ -17,7 +17,8 @@
 #define OASIS_DETAIL_WIND_GUSTS 4
 #define OASIS_DETAIL_CLOUDS_BROAD 5
 #define OASIS_DETAIL_CLOUDS_FINE 6
-#define OASIS_DETAIL_LAYERS 7
+#define OASIS_DETAIL_ROCK_CRACKS 7
+#define OASIS_DETAIL_LAYERS 8
 // The cloud deck's world height (common/sky.glsl): clouds are seen from below it only.
 #define OASIS_CLOUD_ALTITUDE 1100.0
 // Storage block bindings (render/texture_units.h binds them by name on desktop GL; OpenGL ES has no
@@ -49,9 +50,9 @@
 #define OASIS_SURFACE_PLANT 4u
 // A plant's root sits this fraction of its atlas cell above the cell's bottom edge, centred.
 #define OASIS_PLANT_ROOT_V 0.05
-// The plant billboards' alpha test keeps a texel whose coverage reaches max(0.5 * 2^-lod, this):
-// the lowest threshold at any mip level, so the atlas's drawn bounds are taken at it.
-#define OASIS_PLANT_ALPHA_MIN 0.12
+// The plant billboards' alpha test keeps a texel whose alpha reaches this, at every mip level: the
+// atlas's levels are built to keep each cell's coverage at it (src/render/coverage_mips.h).
+#define OASIS_PLANT_ALPHA_THRESHOLD 0.5
 // The most atlas cells (plant variants) the billboards' uniform array of drawn bounds holds.
 #define OASIS_PLANT_MAX_CELLS 16
 

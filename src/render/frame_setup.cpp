@@ -27,6 +27,8 @@ const DetailNoiseLayer kDetailNoiseLayers[] = {
     // world units drifting with the wind at about 9 and 12 units a second.
     {OASIS_DETAIL_CLOUDS_BROAD, 1.0 / 1800.0, {-0.943 * 0.005, -0.333 * 0.005}},
     {OASIS_DETAIL_CLOUDS_FINE, 1.0 / 450.0, {-0.943 * 0.027, -0.333 * 0.027}},
+    // Rock's vertical cracks (common/terrain.glsl): the noise's zero lines, cells of about 2.5 units.
+    {OASIS_DETAIL_ROCK_CRACKS, 0.4, {0.0, 0.0}},
 };
 static_assert(std::size(kDetailNoiseLayers) == OASIS_DETAIL_LAYERS, "one table row per detail layer");
 

@@ -138,11 +138,37 @@ void PlantAtlas::draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& 
     glUseProgram(program);
     for (size_t i = 0; i < buffers.size(); ++i) drawCell(program, i, buffers[i]);
     glUseProgram(0);
-    // The transparent background is black, so the box-filtered levels hold premultiplied colour.
-    glBindTexture(GL_TEXTURE_2D, texture_.name());
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glBindTexture(GL_TEXTURE_2D, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    buildCoverageMips();
+}
+
+void PlantAtlas::buildCoverageMips() {
+    // The transparent background is black, so the box-filtered levels hold premultiplied colour;
+    // each cell's alpha is then scaled per level so the billboards' fixed threshold keeps the
+    // coverage it has at level 0 (render/coverage_mips.h).
+    std::vector<MipImage> levels = boxFilteredMips(readLevel(0), kMipLevels);
+    preserveCoverage(levels, cellSize_, float(OASIS_PLANT_ALPHA_THRESHOLD));
+    glBindTexture(GL_TEXTURE_2D, texture_.name());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (size_t level = 1; level < levels.size(); ++level)
+        glTexSubImage2D(GL_TEXTURE_2D, GLint(level), 0, 0, levels[level].width, levels[level].height, GL_RGBA,
+                        GL_UNSIGNED_BYTE, levels[level].rgba.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+MipImage PlantAtlas::readLevel(int level) const {
+    MipImage image;
+    image.width = std::max(1, width() >> level);
+    image.height = std::max(1, height() >> level);
+    image.rgba.resize(size_t(image.width) * size_t(image.height) * 4);
+    gl::Framebuffer framebuffer = gl::createFramebuffer("plant atlas: level read-back");
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
+    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_.name(), level);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    return image;
 }
 
 void PlantAtlas::drawCell(GLuint program, size_t variant, const SegmentBuffer& buffer) {
@@ -151,21 +177,22 @@ void PlantAtlas::drawCell(GLuint program, size_t variant, const SegmentBuffer& b
     glUniform2f(glGetUniformLocation(program, "plantCentre"), fit.centre.x, fit.centre.y);
     glUniform1f(glGetUniformLocation(program, "plantScale"), fit.scale);
     glUniform1f(glGetUniformLocation(program, "maxDistance"), fit.maxDistance);
+    glUniform1f(glGetUniformLocation(program, "texelSize"), 2.0f / float(cellSize_));
     // GL rows run bottom-up; cells are numbered from the top row.
     glViewport(cellX(variant), height() - cellY(variant) - cellSize_, cellSize_, cellSize_);
     gl::VertexArray vertexArray = gl::createVertexArray("plant segments");
     glBindVertexArray(vertexArray.name());
     bindSegmentAttributes(buffer.buffer.name());
-    glDrawArraysInstanced(GL_LINES, 0, 2, GLsizei(buffer.count));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(buffer.count));
     glBindVertexArray(0);
 }
 
 void PlantAtlas::measureDrawnBounds() {
     // A texel reaches a sample only through bilinear filtering, i.e. within 1.5 texels of its
     // centre at its level; a blend (bilinear, or trilinear between levels) of values all below
-    // the threshold stays below it. Two levels of 255 below the threshold absorb the filter's
+    // the threshold (the same at every level) stays below it. Two levels of 255 below the threshold absorb the filter's
     // fixed-point rounding.
-    const int minimumByte = int(std::floor(OASIS_PLANT_ALPHA_MIN * 255.0)) - 2;
+    const int minimumByte = int(std::floor(OASIS_PLANT_ALPHA_THRESHOLD * 255.0)) - 2;
     const size_t cells = variantCount();
     std::vector<glm::vec4> box(cells, glm::vec4(1.0f, 1.0f, 0.0f, 0.0f));  // empty: min > max
     gl::Framebuffer framebuffer = gl::createFramebuffer("plant atlas: drawn-bounds read-back");

@@ -1,6 +1,7 @@
 // The plant atlas: at start-up every variant of the L-system preset table is interpreted into
 // segments (on the GPU when the context has compute shaders, else on the CPU) and drawn once as
-// brown-to-green lines into one RGBA8 texture with a transparent background, a cell per variant.
+// brown-to-green branches (thick at the root, thin at the tips) into one RGBA8 texture with a
+// transparent background, a cell per variant, with mip levels that keep the alpha test's coverage.
 #pragma once
 #include <string>
 #include <glm/glm.hpp>
@@ -8,6 +9,7 @@
 
 #include "gl/capabilities.h"
 #include "gl/objects.h"
+#include "render/coverage_mips.h"
 #include "render/image.h"
 #include "render/plant_interpreter.h"
 #include "render/shader_library.h"
@@ -57,16 +59,20 @@ public:
     const std::vector<std::vector<Segment2D>>& segments() const { return segments_; }
     // Each variant's drawn bounds in its cell, (u0, v0, u1, v1) in [0, 1] with v up (GL rows): the
     // union over every mip level of where a billboard's alpha test can pass (texels at or above
-    // the lowest threshold, widened by the bilinear footprint). The billboards are trimmed to it,
+    // the threshold, widened by the bilinear footprint). The billboards are trimmed to it,
     // so the fragments a plant's empty corners would discard are never rasterised. Empty cells
     // get an empty box.
     const std::vector<glm::vec4>& drawnBounds() const { return drawnBounds_; }
 
     Image read() const;
+    // One mip level as stored (GL rows, bottom-up): level 0 as drawn, the others box-filtered with
+    // each cell's alpha scaled to keep its alpha-test coverage (render/coverage_mips.h).
+    MipImage readLevel(int level) const;
 
 private:
     void draw(ShaderLibrary& shaders, const std::vector<SegmentBuffer>& buffers);
     void drawCell(GLuint program, size_t variant, const SegmentBuffer& buffer);
+    void buildCoverageMips();
     void measureDrawnBounds();
 
     PlantInterpretation path_;

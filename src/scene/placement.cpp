@@ -25,6 +25,13 @@ uint64_t chunkKey(uint32_t worldSeed, glm::ivec2 chunk) {
 
 constexpr float kTwoPi = float(2.0 * M_PI);
 
+uint32_t presetIndex(const char* name) {
+    const std::vector<PlantPreset>& presets = plantPresets();
+    for (size_t i = 0; i < presets.size(); ++i)
+        if (presets[i].name == name) return uint32_t(i);
+    throw std::logic_error(std::string("the plant placement table names no preset: ") + name);
+}
+
 // All random draws of one candidate, taken in a fixed order whether or not it is kept.
 PlantInstance drawCandidate(Lfsr113& random, const PlantPlacementSettings& settings,
                             glm::ivec2 chunk) {
@@ -33,13 +40,15 @@ PlantInstance drawCandidate(Lfsr113& random, const PlantPlacementSettings& setti
     float x = float(chunk.x) * settings.chunkSize + random.nextUnit() * settings.chunkSize;
     float z = float(chunk.y) * settings.chunkSize + random.nextUnit() * settings.chunkSize;
     plant.base = {x, 0.0f, z};
-    plant.size = random.uniform(settings.minSize, settings.maxSize);
+    const PlantKind& kind = plantKindAt(random.nextUnit());
+    plant.size = random.uniform(kind.minSize, kind.maxSize);
     float brightness = random.uniform(0.85f, 1.15f);
     float dryness = random.uniform(0.0f, 1.0f);
     dryness *= dryness;  // most plants fresh, a few dry
     plant.tint = brightness * glm::mix(glm::vec3(1.0f), glm::vec3(1.25f, 1.1f, 0.6f), dryness);
     uint32_t variants = settings.variantCount > 0 ? settings.variantCount : 1u;
-    plant.variant = random.nextU32() % variants;  // bias below 2^-24 for small counts
+    uint32_t fewerRewrites = random.nextU32() & 1u;  // the atlas's top (default) or bottom row
+    plant.variant = (presetIndex(kind.preset) + fewerRewrites * uint32_t(plantPresets().size())) % variants;
     plant.windPhase = random.uniform(0.0f, kTwoPi);
     return plant;
 }
@@ -91,6 +100,29 @@ float Lfsr113::nextUnit() {
 }
 
 float Lfsr113::uniform(float low, float high) { return low + (high - low) * nextUnit(); }
+
+const std::vector<PlantKind>& plantPlacementTable() {
+    // Sizes from the presets' shapes: "weed" and "grass" are single stalks, "fractal-plant" a
+    // fern-like shrub, "sprig" a small conifer-like tree, "bush" a broad crown on a trunk.
+    static const std::vector<PlantKind> table = {
+        {"grass", 0.4f, 0.9f, 0.30f},
+        {"weed", 0.5f, 1.1f, 0.25f},
+        {"fractal-plant", 1.2f, 2.6f, 0.20f},
+        {"sprig", 3.0f, 6.0f, 0.13f},
+        {"bush", 6.0f, 11.0f, 0.12f},
+    };
+    return table;
+}
+
+const PlantKind& plantKindAt(float unit) {
+    const std::vector<PlantKind>& table = plantPlacementTable();
+    float cumulative = 0.0f;
+    for (const PlantKind& kind : table) {
+        cumulative += kind.share;
+        if (unit < cumulative) return kind;
+    }
+    return table.back();  // rounding in the shares' sum
+}
 
 glm::ivec2 chunkContaining(const PlantPlacementSettings& settings, glm::vec2 worldXZ) {
     return glm::ivec2(glm::floor(worldXZ / settings.chunkSize));

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/lsystem.h"
 #include "scene/terrain.h"
 
 namespace oasis {
@@ -48,14 +49,29 @@ struct PlantPlacementSettings {
     int candidatesPerChunk = 96;    // drawn per chunk; the ground rules below reject some
     // Ground rules (every placed plant satisfies all three):
     float waterLevel = 0.0f;        // bases below the water plane are skipped
-    // Steeper ground is skipped: terrain.glsl starts blending in rock at slope 1 - normal.y = 0.30
-    // minus up to 0.06 of noise, so 0.76 keeps plants off anything that can show rock.
+    // Steeper ground is skipped: terrain.glsl's rock band reaches down to slope 1 - normal.y =
+    // 0.33 minus up to 0.075 of noise minus its half-width 0.012 (0.243), so 0.76 keeps plants off
+    // anything that can show rock.
     float minNormalY = 0.76f;
     // terrain.glsl turns high ground to rock from 48 - 8 = 40 units above the water.
     float maxHeightAboveWater = 40.0f;
-    float minSize = 1.5f, maxSize = 4.0f;
+    // Atlas cells (render/plant_atlas.h): a preset's cell is its index in plantPresets() in the
+    // top row, one row down for its variant of one rewrite fewer; wrapped to this count.
     uint32_t variantCount = 1;
 };
+
+// One row of the placement table: an L-system preset (scene/lsystem.h) at its natural size. A
+// plant's size is its billboard's world height (the atlas cell's: the plant fills 90 % of it, less
+// where a wide plant is fitted to the cell's width).
+struct PlantKind {
+    const char* preset;
+    float minSize, maxSize;  // world units, drawn uniformly between them
+    float share;             // fraction of the candidates; the table's shares sum to 1
+};
+// Shrub to tree, in one table: low weeds and grass, ferny shrubs, young trees and broad trees.
+const std::vector<PlantKind>& plantPlacementTable();
+// The table row a candidate drawn with `unit` in [0, 1) falls in (by the cumulative shares).
+const PlantKind& plantKindAt(float unit);
 
 // The chunk whose square [c, c + 1) * chunkSize holds worldXZ.
 glm::ivec2 chunkContaining(const PlantPlacementSettings& settings, glm::vec2 worldXZ);

@@ -51,8 +51,6 @@ PlantPlacementSettings VegetationField::defaultPlacement() {
     placement.worldSeed = 0x0A515u;
     placement.chunkSize = 32.0f;
     placement.candidatesPerChunk = 80;  // one candidate per 12.8 square units at density 1
-    placement.minSize = 1.2f;
-    placement.maxSize = 3.6f;
     return placement;
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "gpu_test.h"
+#include "common/shared_constants.glsl"
+#include "render/coverage_mips.h"
 #include "render/plant_atlas.h"
 #include "render/plant_interpreter.h"
 #include "scene/lsystem.h"
@@ -150,6 +152,44 @@ TEST_F(PlantAtlasTest, CpuPathDrawsTheSameAtlasAsTheGpuPath) {
     if (sameSegments) EXPECT_EQ(difference.maxAbs, 0);
     // Otherwise (a driver that rounds differently) the lines move by at most a pixel here and there.
     EXPECT_GE(difference.psnrDb, 40.0);
+}
+
+// The billboards test alpha against one threshold at every mip level, so each cell's coverage (the
+// fraction of its texels that pass) must hold level to level, or far plants thin out or swell and
+// their edges crawl as the level changes. Plain box-filtered levels (glGenerateMipmap's, built
+// here from the same level 0) lose a plant's thin branches level by level and fail the bound.
+TEST_F(PlantAtlasTest, AlphaCoverageHoldsAcrossMipLevels) {
+    PlantAtlas atlas(*shaders_, PlantInterpretation::Cpu);
+    const float threshold = float(OASIS_PLANT_ALPHA_THRESHOLD);
+    // The most a level's coverage may differ from level 0's, relatively. One scale per cell and
+    // level cannot split texels of equal alpha, and level 0 is drawn opaque or empty, so level 1
+    // holds only the alphas 0, 1/4, 1/2, 3/4 and 1: 15 % down to cells of 32 texels (measured at
+    // most 11.6 %); 20 % at 16 and 8 texels, where one texel is 1/256 and 1/64 of a cell (measured
+    // at most 17.7 %). Plain box filtering loses all of a plant's coverage by the last level.
+    auto boundAt = [](int level) { return level <= 3 ? 0.15 : 0.20; };
+    std::vector<MipImage> stored;
+    for (int level = 0; level < PlantAtlas::kMipLevels; ++level) stored.push_back(atlas.readLevel(level));
+    const std::vector<MipImage> plain = boxFilteredMips(stored[0], PlantAtlas::kMipLevels);
+    ASSERT_EQ(plain.size(), stored.size());
+    double worstStored = 0.0, worstPlain = 0.0;
+    bool plainOutside = false;
+    for (int row = 0; row < atlas.rows(); ++row)
+        for (int column = 0; column < atlas.columns(); ++column) {
+            const double base = alphaCoverage(stored[0], column, row, atlas.cellSize(), threshold);
+            ASSERT_GT(base, 0.005) << "cell " << column << "," << row << " is nearly empty";
+            for (int level = 1; level < PlantAtlas::kMipLevels; ++level) {
+                const int size = atlas.cellSize() >> level;
+                const double kept = alphaCoverage(stored[size_t(level)], column, row, size, threshold) / base;
+                const double boxed = alphaCoverage(plain[size_t(level)], column, row, size, threshold) / base;
+                EXPECT_NEAR(kept, 1.0, boundAt(level)) << "cell " << column << "," << row << " level " << level;
+                worstStored = std::max(worstStored, std::fabs(kept - 1.0));
+                worstPlain = std::max(worstPlain, std::fabs(boxed - 1.0));
+                plainOutside = plainOutside || std::fabs(boxed - 1.0) > boundAt(level);
+            }
+        }
+    std::printf("[plants] alpha coverage at %.2f across %d mip levels, worst relative change from level 0: "
+                "stored %.3f, plain box filter %.3f\n", threshold, PlantAtlas::kMipLevels, worstStored, worstPlain);
+    EXPECT_TRUE(plainOutside) << "plain box filtering would pass too: the bound tests nothing";
 }
 
 TEST_F(PlantAtlasTest, AtlasViewShowsTheAtlas) {

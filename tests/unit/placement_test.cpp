@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <stdexcept>
+#include <string>
 
+#include "scene/lsystem.h"
 #include "scene/placement.h"
 
 namespace oasis {
@@ -83,7 +87,7 @@ TEST(Lfsr113, UnitFloatsStayBelowOne) {
 PlantPlacementSettings testSettings() {
     PlantPlacementSettings settings;
     settings.worldSeed = 42;
-    settings.variantCount = 5;
+    settings.variantCount = uint32_t(2 * plantPresets().size());  // the atlas: two rows of presets
     return settings;
 }
 
@@ -94,6 +98,54 @@ bool samePlants(const std::vector<PlantInstance>& a, const std::vector<PlantInst
             a[i].variant != b[i].variant || a[i].windPhase != b[i].windPhase)
             return false;
     return true;
+}
+
+// The placement table's row of a placed plant, from its atlas cell's preset.
+const PlantKind& kindOf(const PlantInstance& plant) {
+    const std::string& preset = plantPresets()[plant.variant % plantPresets().size()].name;
+    for (const PlantKind& kind : plantPlacementTable())
+        if (preset == kind.preset) return kind;
+    throw std::logic_error("a placed plant whose preset is not in the table: " + preset);
+}
+
+// Sizes run from shrub to tree in one table, every row a real preset, and the placed plants
+// follow it: each within its row's sizes, each row placed in its share, the whole span covered.
+TEST(Placement, PlantSizesSpanShrubToTreePerTheTable) {
+    const std::vector<PlantKind>& table = plantPlacementTable();
+    float shares = 0.0f, lowest = INFINITY, highest = 0.0f;
+    for (const PlantKind& kind : table) {
+        ASSERT_NE(findPlantPreset(kind.preset), nullptr) << kind.preset;
+        ASSERT_GT(kind.minSize, 0.0f);
+        ASSERT_LE(kind.minSize, kind.maxSize);
+        shares += kind.share;
+        lowest = std::min(lowest, kind.minSize);
+        highest = std::max(highest, kind.maxSize);
+    }
+    EXPECT_NEAR(shares, 1.0f, 1e-5f);
+    EXPECT_LE(lowest, 1.0f) << "no plant as low as a shrub or herb";
+    EXPECT_GE(highest, 8.0f) << "no plant as tall as a tree";
+
+    TerrainShape shape;
+    PlantPlacementSettings settings = testSettings();
+    std::vector<PlantInstance> plants = placePlantsInChunks(shape, settings, {-8, -8}, {16, 16});
+    ASSERT_GT(plants.size(), 4000u);
+    std::map<std::string, std::size_t> placed;
+    float smallest = INFINITY, tallest = 0.0f;
+    for (const PlantInstance& plant : plants) {
+        const PlantKind& kind = kindOf(plant);
+        ASSERT_GE(plant.size, kind.minSize) << kind.preset;
+        ASSERT_LE(plant.size, kind.maxSize) << kind.preset;
+        placed[kind.preset]++;
+        smallest = std::min(smallest, plant.size);
+        tallest = std::max(tallest, plant.size);
+    }
+    // The ground rules do not look at the kind, so each row keeps its share (binomial: 3 sigma of
+    // a share near 0.3 over 4000 plants is 0.022).
+    for (const PlantKind& kind : table)
+        EXPECT_NEAR(double(placed[kind.preset]) / double(plants.size()), kind.share, 0.03) << kind.preset;
+    EXPECT_LE(smallest, lowest + 0.1f);
+    EXPECT_GE(tallest, highest - 0.5f);
+    std::printf("[placement] %zu plants, sizes %.2f to %.2f world units\n", plants.size(), smallest, tallest);
 }
 
 TEST(Placement, ChunksAreDeterministicAndIndependent) {
@@ -147,8 +199,9 @@ TEST(Placement, EveryPlantSitsOnAllowedGroundInsideItsChunk) {
         ASSERT_LE(chunk.x, first.x + count.x);  // a plant may round onto its chunk's far edge
         ASSERT_GE(chunk.y, first.y);
         ASSERT_LE(chunk.y, first.y + count.y);
-        ASSERT_GE(plant.size, settings.minSize);
-        ASSERT_LE(plant.size, settings.maxSize);
+        const PlantKind& kind = kindOf(plant);
+        ASSERT_GE(plant.size, kind.minSize) << kind.preset;
+        ASSERT_LE(plant.size, kind.maxSize) << kind.preset;
         ASSERT_LT(plant.variant, settings.variantCount);
         ASSERT_GE(plant.windPhase, 0.0f);
         ASSERT_LT(plant.windPhase, float(2.0 * M_PI));
