@@ -3,10 +3,9 @@
 
 #include <epoxy/gl.h>
 #include <imgui.h>
-#include <imgui_impl_opengl3.h>
 
+#include "debug/imgui_gl_backend.h"
 #include "debug/imgui_gl_labels.h"
-#include "debug/imgui_gles/imgui_impl_opengl3_gles.h"
 #include "gl/objects.h"
 
 namespace oasis {
@@ -21,9 +20,6 @@ struct ContextScope {
     ImGuiContext* previous;
 };
 
-// The backend build for the current context's API: desktop GL, or OpenGL ES 3 (--api gles).
-bool esContext() { return !epoxy_is_desktop_gl(); }
-
 }  // namespace
 
 LabelOverlay::LabelOverlay() {
@@ -31,17 +27,14 @@ LabelOverlay::LabelOverlay() {
     context_ = ImGui::CreateContext();
     ImGui::SetCurrentContext(context_);
     ImGui::GetIO().IniFilename = nullptr;
-    es_ = esContext();
-    if (es_) ImGui_ImplOpenGL3Es_Init("#version 300 es");
-    else ImGui_ImplOpenGL3_Init("#version 330 core");
+    es_ = imguiGlBackendInit();
     ImGui::SetCurrentContext(previous);
 }
 
 LabelOverlay::~LabelOverlay() {
     {
         ContextScope scope(context_);
-        if (es_) ImGui_ImplOpenGL3Es_Shutdown();
-        else ImGui_ImplOpenGL3_Shutdown();
+        imguiGlBackendShutdown(es_);
     }
     ImGui::DestroyContext(context_);
 }
@@ -68,15 +61,13 @@ void LabelOverlay::drawWith(const std::function<void(ImDrawList&)>& paint, int w
     io.DisplaySize = ImVec2(float(width), float(height));
     io.DeltaTime = 1.0f / 60.0f;
     io.FontGlobalScale = scale;
-    if (es_) ImGui_ImplOpenGL3Es_NewFrame();
-    else ImGui_ImplOpenGL3_NewFrame();
+    imguiGlBackendNewFrame(es_);
     ImGui::NewFrame();
     nameImGuiObjects(*ImGui::GetForegroundDrawList(), "ImGui labels");
     paint(*ImGui::GetForegroundDrawList());
     ImGui::Render();
     gl::DebugGroup group("LabelOverlay (ImGui)");
-    if (es_) ImGui_ImplOpenGL3Es_RenderDrawData(ImGui::GetDrawData());
-    else ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    imguiGlBackendRender(es_, ImGui::GetDrawData());
 }
 
 }  // namespace oasis

@@ -502,8 +502,6 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     }
     if (options.scene.api == gl::Api::Gles) {
         if (options.scene.force.gl33) return fail("--force gl33 makes a desktop OpenGL 3.3 context: not with --api gles");
-        if (options.command == Command::Window)
-            return fail("--api gles: the window has no OpenGL ES context yet; use render, compare, probe, caps or bench");
     } else if (options.scene.force.gles30) {
         return fail("--force gles30 limits an OpenGL ES context: add --api gles");
     }

@@ -13,7 +13,6 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
-#include <imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <chrono>
@@ -29,6 +28,7 @@
 #include "context/gl_context.h"
 #include "gl/frame_capture.h"
 #include "debug/error_image.h"
+#include "debug/imgui_gl_backend.h"
 #include "debug/imgui_gl_labels.h"
 #include "debug/debug_views.h"
 #include "debug/view_controls.h"
@@ -865,7 +865,7 @@ int runWindowApp(const Options& options) {
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;
         ImGui_ImplGlfw_InitForOpenGL(window.window(), true);
-        ImGui_ImplOpenGL3_Init("#version 330 core");
+        const bool esBackend = imguiGlBackendInit();  // the panel's GL backend: desktop, or ES (--api gles)
 
         WindowState state;
         state.fallbacks = session.fallbacks();
@@ -913,7 +913,7 @@ int runWindowApp(const Options& options) {
             else *scene.camera = defaultCameraPath(scene.terrain, scene.timeSeconds);
             keepInsideDomains(scene, state);
 
-            ImGui_ImplOpenGL3_NewFrame();
+            imguiGlBackendNewFrame(esBackend);
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
             state.inspector.sectionOpen = false;
@@ -938,7 +938,7 @@ int runWindowApp(const Options& options) {
             }
             {
                 gl::DebugGroup group("UI (ImGui panel)");
-                ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+                imguiGlBackendRender(esBackend, ImGui::GetDrawData());
             }
             glfwSwapBuffers(window.window());
             glFinish();
@@ -949,7 +949,7 @@ int runWindowApp(const Options& options) {
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - loopStart).count());
         }
         state.sideB.reset();  // its GL objects go before the context
-        ImGui_ImplOpenGL3_Shutdown();
+        imguiGlBackendShutdown(esBackend);
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
         const WindowCounts& counts = state.counts;

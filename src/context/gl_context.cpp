@@ -249,6 +249,26 @@ HeadlessContext::~HeadlessContext() {
     eglTerminate(display);
 }
 
+namespace {
+
+// --api gles: an OpenGL ES 3.x window, or null. Its context comes from EGL (GLX makes ES contexts
+// only by GLX_EXT_create_context_es2_profile; the headless ES context is EGL's too), 3.2 first as
+// makeEsContext asks. Measured under Xvfb: llvmpipe gives ES 3.2 through EGL (and through GLX).
+GLFWwindow* openEsWindow(int width, int height, const std::string& title) {
+    for (int esMinor : {2, 1, 0}) {
+        glfwDefaultWindowHints();
+        glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+        glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+        glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, esMinor);
+        glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, GLFW_TRUE);
+        if (GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr)) return window;
+    }
+    return nullptr;
+}
+
+}  // namespace
+
 bool WindowContext::displayAvailable() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -258,8 +278,9 @@ bool WindowContext::displayAvailable() {
 WindowContext::WindowContext(int width, int height, const std::string& title, MaxGlVersion max) {
     capMesaVersion(max);
     if (!glfwInit()) throw std::runtime_error("cannot open a window: " + glfwLastError());
+    if (max.es) window_ = openEsWindow(width, height, title);
     for (auto [glMajor, glMinor] : kVersionsToTry) {
-        if (!allowed(max, glMajor, glMinor)) continue;
+        if (max.es || !allowed(max, glMajor, glMinor)) continue;
         glfwDefaultWindowHints();
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, glMajor);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, glMinor);
@@ -272,7 +293,8 @@ WindowContext::WindowContext(int width, int height, const std::string& title, Ma
     if (!window_) {
         std::string reason = glfwLastError();
         glfwTerminate();
-        throw std::runtime_error("cannot open an OpenGL 3.3+ core window: " + reason);
+        throw std::runtime_error(std::string(max.es ? "cannot open an OpenGL ES 3.0+ window (--api gles, EGL): "
+                                                    : "cannot open an OpenGL 3.3+ core window: ") + reason);
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(0);

@@ -91,8 +91,9 @@ std::string glString(GLenum name) {
 }  // namespace
 
 // The light list sits at OASIS_BINDING_LIGHTS and, on the ssbo-count path, its count at
-// OASIS_BINDING_LIGHT_COUNT: both read by light_volume.vert; lighting.frag reads them beside the
-// tile lists and (desktop GL) the water bounds, and fullscreen.vert in the same program those too.
+// OASIS_BINDING_LIGHT_COUNT: both read by light_volume.vert; lighting.frag declares them beside the
+// tile lists and (desktop GL) the water bounds, which fullscreen.vert in the same program reads too
+// (a block counts once per stage in the combined limit).
 const StorageNeed kLightListStorage{"the SSBO light list", OASIS_BINDING_LIGHT_COUNT + 1, 2, 4, 0, 5};
 // lsystem_interpret.comp binds its 7 buffers at 0-6.
 const StorageNeed kPlantInterpreterStorage{"the compute plant interpretation", 7, 0, 0, 7, 7};

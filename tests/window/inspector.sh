@@ -12,13 +12,19 @@
 #   - after a click on the panel the view keys still work (2: albedo, against the headless view);
 #   - M switches the views to the mirrored scene under the water: the albedo view and a water
 #     pixel's probe equal the headless `--water-scene mirrored` ones.
-#   usage: inspector.sh OASIS WORK_DIR
+#   usage: inspector.sh OASIS WORK_DIR [--api gles [--force gles30]]
+#   (with --api gles the window, its panel and every headless command run on OpenGL ES: the
+#   window's EGL context and ImGui's ES backend against the headless ES context)
 set -uo pipefail
 . "$(dirname "$0")/window_lib.sh"
-window_test_begin window.inspector "$1" "$2" "$0" "$@"
+window_test_begin "window.inspector${3:+ ${*:3}}" "$1" "$2" "$0" "$@"
 
-scene=(--size 480x270 --camera 435,4,140,30,-3 --hour 12 --ripples 0 --wind 0 --vegetation off)
+scene=(--size 480x270 --camera 435,4,140,30,-3 --hour 12 --ripples 0 --wind 0 --vegetation off "${@:3}")
 start_oasis "${scene[@]}"
+if [[ " ${*:3} " == *" --api gles "* ]]; then
+    grep -q '^oasis: window on .*OpenGL ES 3' "$OUT_LOG" || fail "--api gles: the window is not on an OpenGL ES context"
+    step "$(grep -m1 '^oasis: window on' "$OUT_LOG")"
+fi
 toggle_panel  # H: the frame alone, and the cursor never over the panel
 from=$(mark "$OUT_LOG")
 press space
