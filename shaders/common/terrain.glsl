@@ -102,7 +102,10 @@ Surface terrainSurface(vec3 relativePosition, vec3 normal, bool reflected) {
     // ground rule (scene/placement.h, minNormalY 0.76).
     float steepRock = smoothstep(-0.012, 0.012, slope - 0.33 + 0.05 * broad + 0.025 * fine);
     float rockAmount = max(steepRock, smoothstep(48.0, 62.0, aboveWater + 8.0 * broad));
-    vec4 structure = rockStructure(world, relativePosition, broad, fine, smoothstep(0.25, 0.55, slope), footprint);
+    // Only where rock shows (most of the frame is grass or sand): the same result, less work.
+    vec4 structure = vec4(1.0, 0.0, 0.0, 0.0);
+    if (rockAmount > 0.0)
+        structure = rockStructure(world, relativePosition, broad, fine, smoothstep(0.25, 0.55, slope), footprint);
     // About as bright as the grass, grey: it reads by its hue and structure, not as a white smear.
     vec3 rock = mix(vec3(0.085, 0.078, 0.07), vec3(0.145, 0.132, 0.118), 0.5 + 0.5 * fine) * structure.x;
 
