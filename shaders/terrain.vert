@@ -1,12 +1,16 @@
 // Terrain vertices: a polar grid cell (ring, segment) placed around the camera, raised to the
 // noise height. Normals come from the height's analytic gradient, exact however coarse the grid.
 // MIRRORED: the mirror image across the water plane, clipped to what lies above the water.
+// OUTPUT_SHADOW: the same vertices seen from the sun, into one shadow cascade.
 #include "common/frame_block.glsl"
 #include "common/terrain.glsl"
 
 layout(location = 0) in vec2 gridCoordinate;  // (ring fraction, segment fraction)
 out vec3 vRelativePosition;
 out vec3 vNormal;
+#if defined(OUTPUT_SHADOW)
+uniform int shadowCascade;  // the cascade ShadowPass draws (common/shadows.glsl)
+#endif
 
 void main() {
     // Ring 0 is the point under the camera (a fan of zero-area triangles closes the centre);
@@ -23,5 +27,9 @@ void main() {
     relative.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - relative.y;
 #endif
     vRelativePosition = relative;
+#if defined(OUTPUT_SHADOW)
+    gl_Position = frame.shadowMatrices[shadowCascade] * vec4(relative, 1.0);
+#else
     gl_Position = frame.viewProjection * vec4(relative, 1.0);
+#endif
 }

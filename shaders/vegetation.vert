@@ -2,6 +2,7 @@
 // the vertical to face the camera (the plants stay upright), its top bent by a wind field: gusts
 // of noise drifting with the wind plus each plant's own flutter. The base never moves.
 // MIRRORED: the mirror image across the water plane, clipped to what lies above the water.
+// OUTPUT_SHADOW: the same billboard (facing the camera, as drawn) seen from the sun.
 #include "common/frame_block.glsl"
 #include "common/detail_noise.glsl"
 #include "common/shared_constants.glsl"
@@ -15,6 +16,9 @@ out vec3 vRelativePosition;
 out vec3 vNormal;
 out vec3 vTint;
 out float vAtlasLod;
+#if defined(OUTPUT_SHADOW)
+uniform int shadowCascade;  // the cascade ShadowPass draws (common/shadows.glsl)
+#endif
 
 
 // Sideways displacement of a plant's top per unit of its height: at most 0.24 * wind strength
@@ -61,11 +65,18 @@ void main() {
     relative.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - relative.y;
 #endif
     vRelativePosition = relative;
-    gl_Position = frame.viewProjection * vec4(relative, 1.0);
+    // The camera's clip position picks the mip level below even for the sun's view, so a plant
+    // casts the shadow of the billboard the frame draws.
+    vec4 cameraClip = frame.viewProjection * vec4(relative, 1.0);
+#if defined(OUTPUT_SHADOW)
+    gl_Position = frame.shadowMatrices[shadowCascade] * vec4(relative, 1.0);
+#else
+    gl_Position = cameraClip;
+#endif
     // The mip level: atlas texels per screen pixel along the billboard's height. Computed here from
     // the projected size rather than from derivatives in the fragment shader, whose dFdx with the
     // alpha test's discard and the UBO light blocks crashed lavapipe (zink).
     float texelsPerUnit = frame.vegetationAtlas.z / size;
-    float pixelsPerUnit = frame.vegetationAtlas.w / max(gl_Position.w, 1e-3);
+    float pixelsPerUnit = frame.vegetationAtlas.w / max(cameraClip.w, 1e-3);
     vAtlasLod = log2(max(texelsPerUnit / pixelsPerUnit, 1e-6));
 }

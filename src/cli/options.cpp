@@ -36,6 +36,10 @@ const char* kSceneOptionsHelp =
     "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
     "  --reflection-bounds on|off  the reflection's passes clip to the rectangle of visible water the\n"
     "                            water mask records (default on; off: the whole screen, stencil-masked)\n"
+    "  --shadows on|off          the sun's cascaded shadows on terrain and plants (default on; none\n"
+    "                            are drawn while the sun is below the horizon)\n"
+    "  --shadow-quality Q        low, medium (default) or high: the cascade count and map size of one\n"
+    "                            table (docs/shadows.md; the bench times each)\n"
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
     "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
@@ -249,7 +253,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
-            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--water-level", "--ripples",
+            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--shadows", "--shadow-quality", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
             "--force",
@@ -366,6 +370,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value != "on" && value != "off")
                 return fail("--reflection-bounds expects on or off, got '" + value + "'");
             options.scene.water.reflectionBounds = value == "on";
+        } else if (flag == "--shadows") {
+            if (value != "on" && value != "off") return fail("--shadows expects on or off, got '" + value + "'");
+            options.scene.shadows.enabled = value == "on";
+        } else if (flag == "--shadow-quality") {
+            if (!findShadowQuality(value))
+                return fail("--shadow-quality expects one of " + shadowQualityNames() + ", got '" + value + "'");
+            options.scene.shadows.quality = value;
         } else if (flag == "--billboards") {
             if (value != "trimmed" && value != "whole")
                 return fail("--billboards expects trimmed or whole, got '" + value + "'");

@@ -26,6 +26,7 @@ struct SceneOptions {
     std::string depth = "standard";  // a depthConventions() name; reversed-z falls back without clip control
     WaterSettings water;
     VegetationSettings vegetation;
+    ShadowSettings shadows;  // --shadows, --shadow-quality
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
     int lights = 0;                          // point lights, 0..kMaxLights
     std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context

@@ -41,6 +41,23 @@ KnobLevel reflectionBoundsLevel(const char* label, bool bounded) {
     return {label, [bounded](SceneSettings& scene) { scene.water.reflectionBounds = bounded; }};
 }
 
+// Sun shadows: off, then every level of the shadow quality table (render/shadow_cascades.cpp).
+QualityKnob shadowKnob() {
+    QualityKnob knob{"shadows", "sun shadows off, or the shadow quality table's cascades x map size:", {}, 0};
+    knob.levels.push_back({"off", [](SceneSettings& scene) { scene.shadows.enabled = false; }});
+    for (const ShadowQuality& quality : shadowQualities()) {
+        std::string name = quality.name;
+        knob.description += " " + name + " " + std::to_string(quality.cascades) + " x " +
+                            std::to_string(quality.mapSize) + "^2";
+        if (name == ShadowSettings{}.quality) knob.defaultLevel = int(knob.levels.size());
+        knob.levels.push_back({quality.name, [name](SceneSettings& scene) {
+                                   scene.shadows.enabled = true;
+                                   scene.shadows.quality = name;
+                               }});
+    }
+    return knob;
+}
+
 const std::vector<QualityKnob> kKnobs = {
     {"grid", "terrain grid rings x segments (38,400 triangles at medium)",
      {gridLevel("coarse", 75, 64), gridLevel("medium", 150, 128), gridLevel("fine", 300, 256)}, 1},
@@ -53,6 +70,7 @@ const std::vector<QualityKnob> kKnobs = {
      {billboardLevel("trimmed", true), billboardLevel("whole", false)}, 0},
     {"reflection-bounds", "the reflection's full-screen draws clipped to the visible water, or the whole screen",
      {reflectionBoundsLevel("on", true), reflectionBoundsLevel("off", false)}, 0},
+    shadowKnob(),
 };
 
 // Light counts: none (the default scene), 4 (where deferred starts to win on llvmpipe: the README's

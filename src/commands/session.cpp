@@ -16,6 +16,7 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.hour = options.hour;
     scene.camera = options.camera;
     scene.water = options.water;
+    scene.shadows = options.shadows;
     scene.vegetation = options.vegetation;
     scene.lights.count = options.lights;
     scene.lights.path = options.lightsPath;

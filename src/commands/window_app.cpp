@@ -577,6 +577,16 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::SliderFloat("yaw", &pose.yawDegrees, -180.0f, 360.0f)) state.freeCamera = true;
     if (ImGui::SliderFloat("pitch", &pose.pitchDegrees, -89.0f, 89.0f)) state.freeCamera = true;
 
+    if (ImGui::CollapsingHeader("shadows")) {
+        ShadowSettings& shadows = scene.shadows;
+        ImGui::Checkbox("sun shadows", &shadows.enabled);
+        for (const ShadowQuality& quality : shadowQualities()) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(quality.name, shadows.quality == quality.name)) shadows.quality = quality.name;
+        }
+        const FrameSetup& frame = renderer.lastFrame();
+        ImGui::Text("%s", !shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
+    }
     if (ImGui::CollapsingHeader("water")) {
         WaterSettings& water = scene.water;
         ImGui::Checkbox("reflections", &water.reflections);

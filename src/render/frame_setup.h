@@ -9,6 +9,7 @@
 #include "render/light_data.h"
 #include "render/light_method.h"
 #include "render/light_paths.h"
+#include "render/shadow_cascades.h"
 #include "scene/camera.h"
 #include "scene/point_lights.h"
 #include "scene/sky.h"
@@ -50,6 +51,7 @@ struct SceneSettings {
     WaterSettings water;
     VegetationSettings vegetation;
     LightSettings lights;
+    ShadowSettings shadows;
 };
 
 struct FrameSetup {
@@ -62,6 +64,11 @@ struct FrameSetup {
     bool waterBounded = false;      // the reflection's passes clip to the visible water (set by the renderer)
     bool vegetationEnabled = true;
     bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
+    // The sun's shadow maps this frame: shadows on and the sun above the horizon (at night no
+    // shadow pass runs). The cascades are also in `data` for the shaders.
+    bool shadowsActive = false;
+    const ShadowQuality* shadowQuality = nullptr;
+    ShadowCascades shadowCascades;
     FrameData data;
     std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)
     LightsPath lightsPath = LightsPath::Ubo;  // set by the renderer from the context and the settings

@@ -186,8 +186,10 @@ void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
 }
 
 PassContext Renderer::context() {
+    // Another renderer of the same context may have bound its own maps there since.
+    shadowMaps_.bind();
     return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_,
-                       waterBoundsAvailable_ ? waterBounds_.name() : 0u};
+                       waterBoundsAvailable_ ? waterBounds_.name() : 0u, &shadowMaps_};
 }
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {

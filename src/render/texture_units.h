@@ -20,9 +20,10 @@ enum TextureUnit : int {
     kUnitSource = 6,
     kUnitPlantAtlas = 7,
     kUnitProbeDepthStencil = 8,  // the probe's view of the depth-stencil target (compact's gDepth is the copy)
+    kUnitShadowMap = 9,          // the sun's cascaded shadow maps (render/shadow_maps.h), bound for the whole frame
 };
 
-inline constexpr std::array<SamplerBinding, 9> kSamplerBindings{{
+inline constexpr std::array<SamplerBinding, 10> kSamplerBindings{{
     {"gAlbedo", kUnitAlbedo},
     {"gNormal", kUnitNormal},
     {"gPosition", kUnitPosition},
@@ -32,6 +33,7 @@ inline constexpr std::array<SamplerBinding, 9> kSamplerBindings{{
     {"sourceTexture", kUnitSource},
     {"plantAtlas", kUnitPlantAtlas},
     {"probeDepthStencil", kUnitProbeDepthStencil},
+    {"shadowMap", kUnitShadowMap},
 }};
 
 inline constexpr const char* kFrameBlockName = "FrameBlock";

@@ -94,6 +94,8 @@ const std::vector<Flag>& flags() {
         {"--vegetation", Value::Choice, 0, 0, {"on", "off"}},
         {"--billboards", Value::Choice, 0, 0, {"trimmed", "whole"}},
         {"--reflection-bounds", Value::Choice, 0, 0, {"on", "off"}},
+        {"--shadows", Value::Choice, 0, 0, {"on", "off"}},
+        {"--shadow-quality", Value::Choice, 0, 0, {"low", "medium", "high"}},
         {"--vegetation-density", Value::Number, 0, 4},
         {"--wind", Value::Number, 0, 3},
         {"--no-compute", Value::None},

@@ -1,0 +1,185 @@
+// Sun shadows (passes/shadow_pass.h, common/shadows.glsl) against an independent CPU answer: for
+// each terrain pixel, march its ray towards the sun over the CPU terrain height field. Where the
+// ray stays clear above the ground the GPU must say lit (no acne); where ground blocks it farther
+// than the stated bound the GPU must say shadowed (no peter-panning beyond it). With the sun low
+// (long grazing shadows), near the horizon, 1e5 units out; night runs no shadow pass; the eye
+// at the water plane; forward and deferred agree with shadows on (agreement_test.cpp too).
+#include "gpu_test.h"
+
+#include "scene/sky.h"
+
+namespace oasis::gputest {
+namespace {
+
+// The peter-panning bound: an occluder farther than this along the sun ray from the receiver (in
+// texels of the receiver's cascade) must shadow it. The receiver's offsets (common/shadows.glsl)
+// are 2.5 texels; the filter's reach and the slope-scaled caster offset make up the rest.
+constexpr double kPeterPanningTexels = 8.0;
+// How far above (clear) or below (blocked) the ground the CPU ray must pass to count, in world
+// units plus a share of the distance: the GPU terrain is a grid whose cells grow with distance.
+double marginAt(double t) { return 0.5 + 0.01 * t; }
+
+enum class Truth { Clear, Blocked, Unsure };
+
+// The ray from the surface point towards the sun over the CPU height field, to `reach` units.
+Truth marchToSun(const TerrainShape& shape, glm::dvec3 point, glm::dvec3 toSun, double blockedFrom, double reach) {
+    bool clear = true;
+    for (double t = 0.25; t < reach; t += std::max(0.25, t * 0.01)) {
+        glm::dvec3 q = point + toSun * t;
+        double above = q.y - terrainHeight(shape, glm::dvec2(q.x, q.z)).x;
+        if (t >= blockedFrom && above < -marginAt(t)) return Truth::Blocked;
+        if (t >= 5.0 && above < marginAt(t)) clear = false;
+    }
+    return clear ? Truth::Clear : Truth::Unsure;
+}
+
+struct ShadowCheck {
+    int clear = 0, acne = 0, blocked = 0, missed = 0;
+};
+
+class Shadows : public GpuTest {
+protected:
+    // Renders `scene` deferred (full layout, no plants: the CPU knows only the terrain), reads the
+    // shadow view's values and the surfaces, and compares every sun-facing terrain pixel.
+    ShadowCheck checkAgainstCpu(const std::string& name, SceneSettings scene, int width = 320, int height = 180) {
+        scene.vegetation.enabled = false;
+        Renderer renderer(*shaders_, scene);
+        renderer.configure(width, height, layoutNamed("full"));
+        renderer.setPipeline(PipelineKind::Deferred);
+        renderer.renderFrame(scene);
+        const FrameSetup& frame = renderer.lastFrame();
+        EXPECT_TRUE(frame.shadowsActive) << name;
+        renderer.renderView("shadow");
+        dumpImage("shadows-" + name, renderer.readDisplay());
+        renderer.renderView("final");
+        Image final = renderer.readDisplay();
+        dumpImage("shadows-" + name + "-final", final);
+        EXPECT_TRUE(hasContent(final)) << name;
+        std::vector<float> values = renderer.readViewValues("shadow");
+        std::vector<float> positions = renderer.readSurfacePositions();
+        glm::dvec3 camera = frame.view.pose.position;
+        glm::dvec3 toSun = glm::normalize(glm::dvec3(frame.sky.sunDirection));
+        ShadowCheck check;
+        int cascadesSeen[OASIS_SHADOW_MAX_CASCADES] = {};
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                size_t i = (size_t(y) * size_t(width) + size_t(x)) * 4;
+                if (positions[i + 3] == 0.0f) continue;  // sky
+                float lit = values[i], facing = values[i + 2];
+                int cascade = int(std::lround(values[i + 1]));
+                if (cascade < 0 || facing < 0.15f) continue;  // beyond the maps, or a face the sun barely lights
+                ++cascadesSeen[cascade];
+                glm::dvec3 point = camera + glm::dvec3(positions[i], positions[i + 1], positions[i + 2]);
+                double bound = kPeterPanningTexels * double(frame.shadowCascades.texel[cascade]);
+                Truth truth = marchToSun(scene.terrain, point, toSun, bound, 3000.0);
+                if (truth == Truth::Clear) {
+                    ++check.clear;
+                    if (lit < 0.5f) ++check.acne;
+                } else if (truth == Truth::Blocked) {
+                    ++check.blocked;
+                    if (lit > 0.5f) ++check.missed;
+                }
+            }
+        std::printf("[shadows] %s: sun elevation %.2f deg; clear %d (acne %d), blocked %d (missed %d); pixels per "
+                    "cascade %d %d %d %d\n", name.c_str(), glm::degrees(std::asin(toSun.y)), check.clear, check.acne,
+                    check.blocked, check.missed, cascadesSeen[0], cascadesSeen[1], cascadesSeen[2], cascadesSeen[3]);
+        EXPECT_GT(check.clear, 500) << name << ": too few sunlit pixels to judge acne";
+        EXPECT_LE(check.acne, check.clear / 100) << name << ": lit ground shadowed (acne)";
+        if (check.blocked > 0) EXPECT_LE(check.missed, check.blocked / 20 + 2) << name << ": shadows missing";
+        return check;
+    }
+
+    // A pose `above` the ground at (x, z) looking towards the sun's azimuth at `hour` (so the
+    // occluders between the ground in view and the sun lie in the drawn terrain wedge).
+    static SceneSettings facingTheSun(double x, double z, double above, double hour, float pitch) {
+        glm::vec3 sun = skyAtHour(hour).sunDirection;
+        float yaw = glm::degrees(std::atan2(sun.x, -sun.z));
+        SceneSettings scene = sceneAt(x, z, above, yaw, pitch);
+        scene.hour = hour;
+        return scene;
+    }
+};
+
+TEST_F(Shadows, LowSunLongShadowsMatchTheTerrain) {
+    ShadowCheck check = checkAgainstCpu("low-sun", facingTheSun(210.0, -120.0, 40.0, 7.0, -12.0f));
+    EXPECT_GT(check.blocked, 200) << "a low sun over hills casts long shadows: the test would prove nothing";
+}
+
+TEST_F(Shadows, SunAtTheHorizonGrazing) {
+    ShadowCheck check = checkAgainstCpu("horizon", facingTheSun(210.0, -120.0, 40.0, 6.15, -12.0f));
+    EXPECT_GT(check.blocked, 200) << "a grazing sun shadows most of the ground";
+}
+
+TEST_F(Shadows, FarCameraSameGuarantees) {
+    checkAgainstCpu("far", facingTheSun(1e5, 1e5, 40.0, 7.0, -12.0f));
+}
+
+TEST_F(Shadows, NightRunsNoShadowPass) {
+    SceneSettings scene;
+    scene.hour = 21.0;
+    Renderer renderer(*shaders_, scene);
+    renderer.configure(160, 90, layoutNamed("compact"));
+    for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+        renderer.setPipeline(kind);
+        std::vector<std::string> ran;
+        renderer.renderFrameObserved(scene, [&](const Pass& pass) { ran.push_back(pass.name()); });
+        EXPECT_EQ(std::count(ran.begin(), ran.end(), "ShadowPass"), 0) << pipelineName(kind);
+        std::vector<float> values = renderer.readViewValues("shadow");
+        for (size_t i = 0; i < values.size(); i += 4) {
+            ASSERT_EQ(values[i], 1.0f) << "shadowed at night";
+            ASSERT_EQ(values[i + 1], -1.0f) << "a cascade answered at night";
+        }
+    }
+    // By day the same frame runs it (so the check above can fail).
+    scene.hour = 10.0;
+    std::vector<std::string> ran;
+    renderer.renderFrameObserved(scene, [&](const Pass& pass) { ran.push_back(pass.name()); });
+    EXPECT_EQ(std::count(ran.begin(), ran.end(), "ShadowPass"), 1);
+}
+
+// Shadows off changes nothing but the shadowed pixels: the frame with shadows off is the frame of
+// the shadow view's lit fraction 1 everywhere, and on differs (the default frame has shadows).
+TEST_F(Shadows, OffIsLitEverywhereAndOnDarkens) {
+    SceneSettings scene = poseNamed("meadow").scene;
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(320, 180, layoutNamed("compact"));
+    scene.hour = 8.0;
+    Image on = renderFinal(renderer, scene, PipelineKind::Deferred);
+    std::vector<float> onValues = renderer.readViewValues("shadow");
+    scene.shadows.enabled = false;
+    Image off = renderFinal(renderer, scene, PipelineKind::Deferred);
+    std::vector<float> offValues = renderer.readViewValues("shadow");
+    int shadowed = 0;
+    for (size_t i = 0; i < onValues.size(); i += 4) {
+        ASSERT_EQ(offValues[i], 1.0f);
+        if (onValues[i] < 0.5f) ++shadowed;
+    }
+    EXPECT_GT(shadowed, 320 * 180 / 100) << "the meadow at 8:00 should have shadows (plants and hills)";
+    double darker = 0.0;
+    for (size_t i = 0; i < on.rgba.size(); i += 4) darker += double(off.rgba[i + 1]) - double(on.rgba[i + 1]);
+    EXPECT_GT(darker, 0.0) << "shadows should darken the frame";
+    dumpImage("shadows-meadow-on", on);
+    dumpImage("shadows-meadow-off", off);
+}
+
+// The eye exactly at the water plane, low sun: both pipelines draw it, agree, and the reflection's
+// surfaces are shadowed at their real positions (the mirrored scene's shadow view answers).
+TEST_F(Shadows, EyeAtTheWaterPlane) {
+    SceneSettings scene = sceneAtHeight(470.0, 0.0, 150.0, 30.0f, 2.0f);
+    scene.hour = 16.5;
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(320, 180, layoutNamed("compact"));
+    Image forward = renderFinal(renderer, scene, PipelineKind::Forward);
+    Image deferred = renderFinal(renderer, scene, PipelineKind::Deferred);
+    EXPECT_TRUE(hasContent(forward));
+    ImageDifference difference = compareImages(forward, deferred);
+    std::printf("[shadows] eye at the water plane: forward vs deferred %.2f dB\n", difference.psnrDb);
+    EXPECT_GE(difference.psnrDb, 45.0);
+    std::vector<float> values = renderer.readViewValues("shadow");
+    EXPECT_EQ(countNonFinite(values), 0);
+}
+
+}  // namespace
+}  // namespace oasis::gputest
