@@ -33,8 +33,10 @@ SunShadow sunShadow(vec3 position, vec3 normal) {
         vec3 p = position + normal * (texel * SHADOW_NORMAL_OFFSET_TEXELS);
         vec4 clip = frame.shadowMatrices[c] * vec4(p, 1.0);
         // The finest cascade that holds the point answers (not the eye distance: a reflected
-        // surface's real position can lie outside the slice its distance names).
-        if (any(greaterThan(abs(clip.xy), vec2(1.0 - margin)))) continue;
+        // surface's real position can lie outside the slice its distance names). Its depth too:
+        // with a low sun a cascade's square reaches far along the sun's rays, and a point nearer
+        // the sun than its depth range (where casters are clamped) must ask a wider cascade.
+        if (any(greaterThan(abs(clip.xy), vec2(1.0 - margin))) || abs(clip.z) >= 1.0) continue;
         vec3 coord = clip.xyz * 0.5 + 0.5;
         coord.z -= SHADOW_DEPTH_BIAS_TEXELS * texel / frame.shadowDepthRange[c];
         // 3x3 taps a texel apart of the 2x2 comparison: a smooth 4x4-texel footprint, so edges

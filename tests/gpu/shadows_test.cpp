@@ -12,23 +12,28 @@ namespace oasis::gputest {
 namespace {
 
 // The peter-panning bound: an occluder farther than this along the sun ray from the receiver (in
-// texels of the receiver's cascade) must shadow it. The receiver's offsets (common/shadows.glsl)
-// are 2.5 texels; the filter's reach and the slope-scaled caster offset make up the rest.
-constexpr double kPeterPanningTexels = 8.0;
-// How far above (clear) or below (blocked) the ground the CPU ray must pass to count, in world
-// units plus a share of the distance: the GPU terrain is a grid whose cells grow with distance.
-double marginAt(double t) { return 0.5 + 0.01 * t; }
+// texels of the receiver's cascade: 1 unit in cascade 0 of the default quality) must shadow it.
+// The receiver's offsets (common/shadows.glsl) are 2.5 texels. (At 2 texels the frames below pass
+// as well: the CPU comparison's margins, not the shadows, limit what this can resolve.)
+constexpr double kPeterPanningTexels = 4.0;
+// How far above (clear) or below (blocked) the ground the CPU ray must pass to count: half a unit,
+// plus 1% of the distance marched, plus 3% of the sample's distance from the camera, because the
+// drawn terrain (which casts and receives) is a polar grid whose rings are 6.7% of their radius
+// apart (150 rings to 4000 units): its chords cut small ridges the height field has.
+double marginAt(double t, double fromCamera) { return 0.5 + 0.01 * t + 0.03 * fromCamera; }
 
 enum class Truth { Clear, Blocked, Unsure };
 
 // The ray from the surface point towards the sun over the CPU height field, to `reach` units.
-Truth marchToSun(const TerrainShape& shape, glm::dvec3 point, glm::dvec3 toSun, double blockedFrom, double reach) {
+Truth marchToSun(const TerrainShape& shape, glm::dvec3 camera, glm::dvec3 point, glm::dvec3 toSun, double blockedFrom,
+                 double reach) {
     bool clear = true;
     for (double t = 0.25; t < reach; t += std::max(0.25, t * 0.01)) {
         glm::dvec3 q = point + toSun * t;
         double above = q.y - terrainHeight(shape, glm::dvec2(q.x, q.z)).x;
-        if (t >= blockedFrom && above < -marginAt(t)) return Truth::Blocked;
-        if (t >= 5.0 && above < marginAt(t)) clear = false;
+        double margin = marginAt(t, glm::length(glm::dvec2(q.x - camera.x, q.z - camera.z)));
+        if (t >= blockedFrom && above < -margin) return Truth::Blocked;
+        if (t >= 5.0 && above < margin) clear = false;
     }
     return clear ? Truth::Clear : Truth::Unsure;
 }
@@ -41,7 +46,10 @@ class Shadows : public GpuTest {
 protected:
     // Renders `scene` deferred (full layout, no plants: the CPU knows only the terrain), reads the
     // shadow view's values and the surfaces, and compares every sun-facing terrain pixel.
-    ShadowCheck checkAgainstCpu(const std::string& name, SceneSettings scene, int width = 320, int height = 180) {
+    // At least `minClear` sunlit and `minBlocked` shadowed pixels must be judged, so neither
+    // check can pass on a frame that has none.
+    ShadowCheck checkAgainstCpu(const std::string& name, SceneSettings scene, int minClear, int minBlocked,
+                                int width = 320, int height = 180) {
         scene.vegetation.enabled = false;
         Renderer renderer(*shaders_, scene);
         renderer.configure(width, height, layoutNamed("full"));
@@ -71,7 +79,7 @@ protected:
                 ++cascadesSeen[cascade];
                 glm::dvec3 point = camera + glm::dvec3(positions[i], positions[i + 1], positions[i + 2]);
                 double bound = kPeterPanningTexels * double(frame.shadowCascades.texel[cascade]);
-                Truth truth = marchToSun(scene.terrain, point, toSun, bound, 3000.0);
+                Truth truth = marchToSun(scene.terrain, camera, point, toSun, bound, 3000.0);
                 if (truth == Truth::Clear) {
                     ++check.clear;
                     if (lit < 0.5f) ++check.acne;
@@ -83,9 +91,10 @@ protected:
         std::printf("[shadows] %s: sun elevation %.2f deg; clear %d (acne %d), blocked %d (missed %d); pixels per "
                     "cascade %d %d %d %d\n", name.c_str(), glm::degrees(std::asin(toSun.y)), check.clear, check.acne,
                     check.blocked, check.missed, cascadesSeen[0], cascadesSeen[1], cascadesSeen[2], cascadesSeen[3]);
-        EXPECT_GT(check.clear, 500) << name << ": too few sunlit pixels to judge acne";
+        EXPECT_GE(check.clear, minClear) << name << ": too few sunlit pixels to judge acne";
+        EXPECT_GE(check.blocked, minBlocked) << name << ": too few shadowed pixels to judge the shadows";
         EXPECT_LE(check.acne, check.clear / 100) << name << ": lit ground shadowed (acne)";
-        if (check.blocked > 0) EXPECT_LE(check.missed, check.blocked / 20 + 2) << name << ": shadows missing";
+        EXPECT_LE(check.missed, check.blocked / 100 + 2) << name << ": shadows missing (peter-panning)";
         return check;
     }
 
@@ -101,17 +110,17 @@ protected:
 };
 
 TEST_F(Shadows, LowSunLongShadowsMatchTheTerrain) {
-    ShadowCheck check = checkAgainstCpu("low-sun", facingTheSun(210.0, -120.0, 40.0, 7.0, -12.0f));
-    EXPECT_GT(check.blocked, 200) << "a low sun over hills casts long shadows: the test would prove nothing";
+    checkAgainstCpu("low-sun", facingTheSun(210.0, -120.0, 40.0, 7.0, -12.0f), 1000, 500);
 }
 
 TEST_F(Shadows, SunAtTheHorizonGrazing) {
-    ShadowCheck check = checkAgainstCpu("horizon", facingTheSun(210.0, -120.0, 40.0, 6.15, -12.0f));
-    EXPECT_GT(check.blocked, 200) << "a grazing sun shadows most of the ground";
+    // Less than 2 degrees up: the hills shadow all the ground in view, so only the shadows are judged
+    // here (acne needs sunlit ground: the low-sun frame).
+    checkAgainstCpu("horizon", facingTheSun(210.0, -120.0, 40.0, 6.15, -12.0f), 0, 1000);
 }
 
 TEST_F(Shadows, FarCameraSameGuarantees) {
-    checkAgainstCpu("far", facingTheSun(1e5, 1e5, 40.0, 7.0, -12.0f));
+    checkAgainstCpu("far", facingTheSun(1e5, 1e5, 40.0, 7.0, -12.0f), 200, 500);
 }
 
 TEST_F(Shadows, NightRunsNoShadowPass) {
