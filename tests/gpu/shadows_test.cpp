@@ -172,6 +172,34 @@ TEST_F(Shadows, OffIsLitEverywhereAndOnDarkens) {
     dumpImage("shadows-meadow-off", off);
 }
 
+// The plants cast shadows (alpha-tested as drawn): with them, terrain pixels darken in the shadow
+// view; without, the same terrain pixels are lit by the same maps' terrain alone.
+TEST_F(Shadows, PlantsCastShadowsOnTheGround) {
+    SceneSettings scene = sceneAtHeight(400.0, 22.0, 175.0, 60.0f, -40.0f);
+    scene.hour = 9.0;
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(320, 180, layoutNamed("full"));
+    renderer.setPipeline(PipelineKind::Deferred);
+    renderer.renderFrame(scene);
+    std::vector<float> with = renderer.readViewValues("shadow");
+    std::vector<uint8_t> stencil = renderer.readStencil();
+    EXPECT_GT(renderer.vegetationStats().plantsDrawn, 100u);
+    SceneSettings bare = scene;
+    bare.vegetation.enabled = false;
+    renderer.renderFrame(bare);
+    std::vector<float> without = renderer.readViewValues("shadow");
+    int darkened = 0, lightened = 0;
+    for (size_t p = 0; p < stencil.size(); ++p) {
+        if (stencil[p] != kStencilTerrain) continue;
+        darkened += with[p * 4] < without[p * 4] - 0.25f;
+        lightened += with[p * 4] > without[p * 4] + 0.01f;
+    }
+    std::printf("[shadows] plants: %d terrain pixels darkened by plant shadows, %d lightened\n", darkened, lightened);
+    EXPECT_GT(darkened, 100) << "the plants cast no shadow";
+    EXPECT_EQ(lightened, 0) << "plants can only take light away";
+}
+
 // The eye exactly at the water plane, low sun: both pipelines draw it, agree, and the reflection's
 // surfaces are shadowed at their real positions (the mirrored scene's shadow view answers).
 TEST_F(Shadows, EyeAtTheWaterPlane) {
