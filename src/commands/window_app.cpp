@@ -390,9 +390,9 @@ std::string probeSummary(const PixelProbe& p) {
         std::snprintf(line, sizeof(line), "%d,%d sky; final %d %d %d; stencil %d", p.x, p.y, p.final.r, p.final.g,
                       p.final.b, p.stencil);
     else
-        std::snprintf(line, sizeof(line), "%d,%d %s; final %d %d %d; depth %.4g; n %.3f %.3f %.3f; lights %d", p.x, p.y,
-                      p.stencilMeaning.c_str(), p.final.r, p.final.g, p.final.b, p.depthEyeDistance, p.normal.x,
-                      p.normal.y, p.normal.z, p.lightsReaching);
+        std::snprintf(line, sizeof(line), "%d,%d %s; final %d %d %d; depth %.4g; n %.3f %.3f %.3f; lights %d; sun %.2f (cascade %d)",
+                      p.x, p.y, p.stencilMeaning.c_str(), p.final.r, p.final.g, p.final.b, p.depthEyeDistance, p.normal.x,
+                      p.normal.y, p.normal.z, p.lightsReaching, double(p.shadowLit), p.shadowCascade);
     return line;
 }
 
