@@ -37,7 +37,8 @@ result, controller = capture.OpenCapture(rd.ReplayOptions(), None)
 assert result.OK(), f"cannot replay the capture: {result}"
 failures = []
 
-# The pass markers, in the order the deferred pipeline runs them (compact: with DepthCopyPass).
+# The pass markers, in the order the deferred pipeline runs them (compact: with DepthCopyPass; the
+# sun is up in the captured frame, so the shadow pass runs first).
 structured = controller.GetStructuredFile()
 markers = []
 def walk(actions, path):
@@ -47,7 +48,7 @@ def walk(actions, path):
             walk(action.children, markers[-1])
 walk(controller.GetRootActions(), [])
 passes = [m[-1] for m in markers if m[:-1] == ["deferred"]]
-expected = ["ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer", "DepthCopyPass", "LightingPass",
+expected = ["ShadowPass", "ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer", "DepthCopyPass", "LightingPass",
             "WaterMaskPass", "ReflectionClearPass.gbuffer", "TerrainPass.gbuffer.mirrored",
             "VegetationPass.gbuffer.mirrored", "DepthCopyPass.mirrored", "LightingPass.mirrored",
             "WaterCompositePass", "ToneMapPass"]
