@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/pixel_readback.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -16,8 +17,7 @@ void DebugViewPass::uploadStencilCopy(const FrameTargets& targets) {
     int w = targets.width(), h = targets.height();
     stencilBytes_.resize(size_t(w) * size_t(h));
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.radianceFramebuffer());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencilBytes_.data());
+    readStencilBytes(w, h, stencilBytes_.data());  // render/pixel_readback.h: ES has no GL_STENCIL_INDEX read
     if (!stencilCopy_ || stencilCopyWidth_ != w || stencilCopyHeight_ != h) {
         stencilCopy_ = gl::createTargetTexture("stencil read-back copy", GL_R8UI, w, h);
         stencilCopyWidth_ = w;

@@ -6,6 +6,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include "debug/imgui_gl_labels.h"
+#include "debug/imgui_gles/imgui_impl_opengl3_gles.h"
 #include "gl/objects.h"
 
 namespace oasis {
@@ -20,6 +21,9 @@ struct ContextScope {
     ImGuiContext* previous;
 };
 
+// The backend build for the current context's API: desktop GL, or OpenGL ES 3 (--api gles).
+bool esContext() { return !epoxy_is_desktop_gl(); }
+
 }  // namespace
 
 LabelOverlay::LabelOverlay() {
@@ -27,14 +31,17 @@ LabelOverlay::LabelOverlay() {
     context_ = ImGui::CreateContext();
     ImGui::SetCurrentContext(context_);
     ImGui::GetIO().IniFilename = nullptr;
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    es_ = esContext();
+    if (es_) ImGui_ImplOpenGL3Es_Init("#version 300 es");
+    else ImGui_ImplOpenGL3_Init("#version 330 core");
     ImGui::SetCurrentContext(previous);
 }
 
 LabelOverlay::~LabelOverlay() {
     {
         ContextScope scope(context_);
-        ImGui_ImplOpenGL3_Shutdown();
+        if (es_) ImGui_ImplOpenGL3Es_Shutdown();
+        else ImGui_ImplOpenGL3_Shutdown();
     }
     ImGui::DestroyContext(context_);
 }
@@ -61,13 +68,15 @@ void LabelOverlay::drawWith(const std::function<void(ImDrawList&)>& paint, int w
     io.DisplaySize = ImVec2(float(width), float(height));
     io.DeltaTime = 1.0f / 60.0f;
     io.FontGlobalScale = scale;
-    ImGui_ImplOpenGL3_NewFrame();
+    if (es_) ImGui_ImplOpenGL3Es_NewFrame();
+    else ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
     nameImGuiObjects(*ImGui::GetForegroundDrawList(), "ImGui labels");
     paint(*ImGui::GetForegroundDrawList());
     ImGui::Render();
     gl::DebugGroup group("LabelOverlay (ImGui)");
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (es_) ImGui_ImplOpenGL3Es_RenderDrawData(ImGui::GetDrawData());
+    else ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
 
 }  // namespace oasis

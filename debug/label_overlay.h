@@ -29,6 +29,7 @@ public:
 
 private:
     ImGuiContext* context_ = nullptr;
+    bool es_ = false;  // built with the OpenGL ES 3 backend (an ES context: --api gles)
 };
 
 }  // namespace oasis

@@ -1,4 +1,5 @@
-// Clears with every write mask open so an earlier pass's state cannot leave stale data.
+// Clears with every write mask open so an earlier pass's state cannot leave stale data; only what a
+// later pass does not overwrite (depth-stencil always, the G-buffer, Radiance for a stopped frame).
 #include "passes/clear_pass.h"
 
 #include "common/shared_constants.glsl"
@@ -16,9 +17,14 @@ void ClearPass::execute(PassContext& context) {
         // clearedInfo() in gbuffer.glsl: the sky flag in the layout's flags channel.
         glm::vec4 skyInfo = context.targets.layout().clearedInfo();
         const FrameTargets& targets = context.targets;
-        for (int slot = 0; slot < targets.gbufferSlotCount(); ++slot) glClearBufferfv(GL_COLOR, slot, nothing);
-        glClearBufferfv(GL_COLOR, targets.gbufferSlot(Target::Info), &skyInfo[0]);
-    } else {
+        // Albedo, normal and position are read only where the sky flag is clear, but the views
+        // and the probe show them everywhere, so they are cleared too; Info once, to the sky.
+        for (int slot = 0; slot < targets.gbufferSlotCount(); ++slot)
+            glClearBufferfv(GL_COLOR, slot, slot == targets.gbufferSlot(Target::Info) ? &skyInfo[0] : nothing);
+    } else if (!context.frame.runsToEnd) {
+        // A whole forward frame needs no colour clear: every pixel of Radiance is written by a
+        // surface or, where none was drawn (depth still at the far plane), by SkyPass. A frame
+        // stopped early shows Radiance as it was, so it starts from black.
         glClearBufferfv(GL_COLOR, 0, nothing);
     }
     glClearBufferfi(GL_DEPTH_STENCIL, 0, context.targets.depth().farPlaneWindowDepth, kStencilNothing);

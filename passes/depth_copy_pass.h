@@ -17,6 +17,7 @@ public:
     }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
     std::vector<Target> writes() const override { return {Target::SceneDepth}; }
+    bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override {
         return frame.positionFromDepth && mirroredPassActive(frame, mirroring_);
     }

@@ -17,6 +17,7 @@ public:
         return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::SceneDepth};
     }
     std::vector<Target> writes() const override { return {}; }  // its own tile-list buffer, no target
+    bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return tiledLightsActive(frame, mirroring_); }
 
     // Whether a half of the deferred frame adds its lights by tiles: the tiled method, lights to add,

@@ -23,6 +23,7 @@ public:
     std::vector<Target> writes() const override {
         return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
     }
+    bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override {
         return frame.lightMethod == LightMethod::Volumes && !frame.lights.empty() &&
                mirroredPassActive(frame, mirroring_);

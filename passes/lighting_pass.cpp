@@ -7,12 +7,13 @@
 namespace oasis {
 
 void LightingPass::execute(PassContext& context) {
-    bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_);
+    bool fused = toneMapFusedInto(context.frame, SurfaceOutput::Forward, mirroring_);
+    bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_, fused);
     glDisable(GL_DEPTH_TEST);
     bindGBufferInputs(context.targets);
     beginMirroredDraw(mirroring_);
     if (mirroring_ == Mirroring::Mirrored) beginWaterBoundedDraw(context);
-    std::string program = mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : "lighting";
+    std::string program = mirroring_ == Mirroring::Mirrored ? "lighting.mirrored" : fused ? "lighting.tonemapped" : "lighting";
     if (LightTilingPass::tiledLightsActive(context.frame, mirroring_)) program += ".tiled";
     glUseProgram(context.shaders.program(context.targets.layout().program(program)));
     context.geometry.drawFullscreenTriangle();

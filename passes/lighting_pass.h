@@ -18,6 +18,7 @@ public:
     std::vector<Target> writes() const override {
         return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance};
     }
+    bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
 
 protected:

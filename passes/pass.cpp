@@ -6,9 +6,10 @@
 
 namespace oasis {
 
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring) {
+void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring, bool toneMapFused) {
     GLuint framebuffer = output == SurfaceOutput::GBuffer ? targets.gbufferFramebuffer()
                          : mirroring == Mirroring::Mirrored ? targets.reflectionFramebuffer()
+                         : toneMapFused                     ? targets.radianceFinalFramebuffer()
                                                             : targets.radianceFramebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(0, 0, targets.width(), targets.height());
@@ -29,6 +30,21 @@ void endWaterBoundedDraw(const PassContext& context) {
     for (GLenum plane : {GL_CLIP_DISTANCE1, GL_CLIP_DISTANCE2, GL_CLIP_DISTANCE3, GL_CLIP_DISTANCE4}) glDisable(plane);
 }
 
+namespace {
+bool gWaterClipByClipDistance = true;
+}
+
+void setWaterClipByClipDistance(bool on) { gWaterClipByClipDistance = on; }
+
+OnlyWhereWaterIsSeen::OnlyWhereWaterIsSeen(const PassContext& context, bool reflectionWork)
+    : conditional_(reflectionWork && context.waterSeen != 0) {
+    if (conditional_) glBeginConditionalRender(context.waterSeen, GL_QUERY_WAIT);
+}
+
+OnlyWhereWaterIsSeen::~OnlyWhereWaterIsSeen() {
+    if (conditional_) glEndConditionalRender();
+}
+
 void beginMirroredDraw(Mirroring mirroring) {
     if (mirroring != Mirroring::Mirrored) return;
     glEnable(GL_STENCIL_TEST);
@@ -36,7 +52,7 @@ void beginMirroredDraw(Mirroring mirroring) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0x00);
     glFrontFace(GL_CW);
-    glEnable(GL_CLIP_DISTANCE0);
+    if (gWaterClipByClipDistance) glEnable(GL_CLIP_DISTANCE0);
 }
 
 void endMirroredDraw(Mirroring mirroring) {
@@ -44,7 +60,11 @@ void endMirroredDraw(Mirroring mirroring) {
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     glFrontFace(GL_CCW);
-    glDisable(GL_CLIP_DISTANCE0);
+    if (gWaterClipByClipDistance) glDisable(GL_CLIP_DISTANCE0);
+}
+
+bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring) {
+    return frame.toneMapFused && output == SurfaceOutput::Forward && mirroring == Mirroring::Direct;
 }
 
 bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring) {
@@ -62,7 +82,7 @@ std::vector<Target> SurfacePass::writes() const { return surfaceOutputTargets(ou
 bool SurfacePass::active(const FrameSetup& frame) const { return mirroredPassActive(frame, mirroring_); }
 
 void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const {
-    bindSurfaceOutput(context.targets, output_, mirroring_);
+    bindSurfaceOutput(context.targets, output_, mirroring_, toneMapFusedInto(context.frame, output_, mirroring_));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(context.targets.depth().nearerFunc);
     glDepthMask(GL_TRUE);
@@ -77,6 +97,7 @@ void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const 
 
 GLuint SurfacePass::surfaceProgram(PassContext& context, const std::string& shaderBase) const {
     std::string program = variantName(shaderBase, output_, mirroring_);
+    if (toneMapFusedInto(context.frame, output_, mirroring_)) program += ".tonemapped";
     if (output_ == SurfaceOutput::Forward) program += lightsVariantSuffix(context.frame.lightsPath);
     else program = context.targets.layout().program(program);
     return context.shaders.program(program);

@@ -29,6 +29,9 @@ struct PassContext {
     GLuint waterBounds = 0;
     // The sun's cascaded shadow maps (render/shadow_maps.h): ShadowPass draws them, lighting reads them.
     ShadowMaps* shadowMaps = nullptr;
+    // An occlusion query (GL_ANY_SAMPLES_PASSED) around WaterMaskPass's draw when the frame bounds
+    // its reflection (frame.waterBounded), else 0: the reflection's passes render conditionally on it.
+    GLuint waterSeen = 0;
 };
 
 class Pass {
@@ -44,6 +47,10 @@ public:
     // counterpart, by which a forward frame's G-buffer is filled for the views. "" for passes that
     // only shade, copy or compose.
     virtual std::string sceneStep() const { return {}; }
+    // Whether the pass only draws the water's reflection: where the frame bounds its reflection,
+    // it renders conditionally on the water mask's occlusion query, so a frame with no water in
+    // view pays nothing for it (Pipeline::run).
+    virtual bool reflectionWork() const { return false; }
 
     void run(PassContext& context) {
         gl::DebugGroup group(name().c_str());
@@ -67,6 +74,7 @@ public:
     std::vector<Target> writes() const override;
     bool active(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return step_; }
+    bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
 
 protected:
     // Binds the output, depth-tests and writes depth; direct draws mark `stencilMark`, mirrored
@@ -87,15 +95,35 @@ private:
 
 // Binds the framebuffer a surface output draws into and sets the viewport to the whole frame:
 // the G-buffer, Radiance (forward, direct) or Reflection (forward, mirrored).
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring = Mirroring::Direct);
+// `toneMapFused`: a direct forward output also writes Final (its ".tonemapped" program variants).
+void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring = Mirroring::Direct,
+                       bool toneMapFused = false);
+// Whether a pass shading into `output` writes Final too this frame (the fused tone map).
+bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring);
 // Mirrored draws pass the stencil test only on water pixels, and flip the front face (a mirror
 // reverses winding) and clip what lies below the water.
 void beginMirroredDraw(Mirroring mirroring);
 void endMirroredDraw(Mirroring mirroring);
+// Whether the shaders clip the mirrored geometry with gl_ClipDistance[0] (GL_CLIP_DISTANCE0 is
+// enabled around mirrored draws) or by discard (OpenGL ES without GL_EXT_clip_cull_distance, where
+// the enum does not exist): the shader library's dialect decides, the renderer says it here.
+void setWaterClipByClipDistance(bool on);
 // The reflection's full-screen draws clip their triangle to the visible water (gl_ClipDistance
 // 1-4, written by common/water_bounds.glsl in fullscreen.vert) when the frame records it.
 void beginWaterBoundedDraw(const PassContext& context);
 void endWaterBoundedDraw(const PassContext& context);
+// Renders the scope's draws and clears only if the water mask's occlusion query saw a water
+// sample (GL_QUERY_WAIT: the query's result, not a guess), where `reflectionWork` and the frame has
+// the query; else the scope changes nothing.
+class OnlyWhereWaterIsSeen {
+public:
+    OnlyWhereWaterIsSeen(const PassContext& context, bool reflectionWork);
+    ~OnlyWhereWaterIsSeen();
+    OnlyWhereWaterIsSeen(const OnlyWhereWaterIsSeen&) = delete;
+    OnlyWhereWaterIsSeen& operator=(const OnlyWhereWaterIsSeen&) = delete;
+private:
+    bool conditional_ = false;
+};
 bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring);
 std::string variantName(const std::string& base, SurfaceOutput output, Mirroring mirroring);
 const char* surfaceOutputName(SurfaceOutput output);

@@ -14,6 +14,10 @@ void ReflectionClearPass::execute(PassContext& context) {
     }
     if (!context.frame.reflectionsActive) return;
 
+    // The Reflection target's clear above always runs (the views show it outside the water; left
+    // alone it would hold whatever the memory held: NaNs on zink); the G-buffer's clear of the
+    // water only where water is seen.
+    OnlyWhereWaterIsSeen onlyWithWater(context, true);
     bindSurfaceOutput(targets, output_, Mirroring::Mirrored);
     bool writeGBuffer = output_ == SurfaceOutput::GBuffer;
     glColorMask(writeGBuffer, writeGBuffer, writeGBuffer, writeGBuffer);

@@ -5,13 +5,15 @@
 namespace oasis {
 
 void SkyPass::execute(PassContext& context) {
-    bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_);
+    bool fused = toneMapFusedInto(context.frame, SurfaceOutput::Forward, mirroring_);
+    bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_, fused);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(context.targets.depth().nearerOrEqualFunc);
     glDepthMask(GL_FALSE);
     beginMirroredDraw(mirroring_);
     if (mirroring_ == Mirroring::Mirrored) beginWaterBoundedDraw(context);
-    glUseProgram(context.shaders.program(variantName("sky", SurfaceOutput::Forward, mirroring_)));
+    glUseProgram(context.shaders.program(variantName("sky", SurfaceOutput::Forward, mirroring_) +
+                                         (fused ? ".tonemapped" : "")));
     context.geometry.drawFullscreenTriangle();
     if (mirroring_ == Mirroring::Mirrored) endWaterBoundedDraw(context);
     endMirroredDraw(mirroring_);

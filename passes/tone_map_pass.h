@@ -1,4 +1,6 @@
-// ToneMapPass: Radiance (linear HDR) to Final (8-bit display colour); the last pass of both pipelines.
+// ToneMapPass: Radiance (linear HDR) to Final (8-bit display colour); the last pass of both pipelines
+// when it runs: only where the tone map cannot be fused into the passes that write each pixel's
+// colour last (FrameSetup::toneMapFused: --stop-before, the deferred light volumes).
 #pragma once
 #include "passes/pass.h"
 
@@ -9,6 +11,7 @@ public:
     std::string name() const override { return "ToneMapPass"; }
     std::vector<Target> reads() const override { return {Target::Radiance}; }
     std::vector<Target> writes() const override { return {Target::Final}; }
+    bool active(const FrameSetup& frame) const override { return !frame.toneMapFused; }
 
 protected:
     void execute(PassContext& context) override;

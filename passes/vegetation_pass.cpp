@@ -2,13 +2,19 @@
 // face the camera, and a mirror reverses its winding); direct draws mark kStencilVegetation.
 #include "passes/vegetation_pass.h"
 
+#include "render/texture_units.h"
+
 namespace oasis {
 
 void VegetationPass::execute(PassContext& context) {
     beginSurfaceDraw(context, kStencilVegetation);
     glDisable(GL_CULL_FACE);
     glUseProgram(surfaceProgram(context, "vegetation"));
+    // The mirrored billboards read the visible water's rectangle to drop those that miss it.
+    const bool readsWaterBounds = mirroring_ == Mirroring::Mirrored && context.waterBounds;
+    if (readsWaterBounds) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, context.waterBounds);
     context.vegetation.draw(mirroring_);
+    if (readsWaterBounds) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, 0);
     endSurfaceDraw();
 }
 

@@ -1,4 +1,5 @@
-// The water quad again, stencil-masked to the water, blended (premultiplied) onto Radiance.
+// The water quad again, stencil-masked to the water, blended (premultiplied) onto Radiance; with the
+// tone map fused, blended in the shader and tone mapped into Final (Radiance keeps what is under).
 #include "passes/water_composite_pass.h"
 
 #include "render/texture_units.h"
@@ -7,8 +8,14 @@ namespace oasis {
 
 void WaterCompositePass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.radianceFramebuffer());
+    // Fused: the same blend done in the shader over Radiance (read, not attached) into Final.
+    bool fused = context.frame.toneMapFused;
+    glBindFramebuffer(GL_FRAMEBUFFER, fused ? targets.finalDepthFramebuffer() : targets.radianceFramebuffer());
     glViewport(0, 0, targets.width(), targets.height());
+    if (fused) {
+        glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
+        glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Radiance));
+    }
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Reflection));
     glEnable(GL_STENCIL_TEST);
@@ -19,9 +26,9 @@ void WaterCompositePass::execute(PassContext& context) {
     glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
     glDepthFunc(GL_ALWAYS);  // the mirrored scene's depths are behind us now; the water's replace them
     glDepthMask(GL_TRUE);
-    glEnable(GL_BLEND);
+    if (!fused) glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glUseProgram(context.shaders.program("water.composite"));
+    glUseProgram(context.shaders.program(fused ? "water.composite.tonemapped" : "water.composite"));
     context.geometry.drawWaterQuad();
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_CLAMP);

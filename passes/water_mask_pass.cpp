@@ -28,7 +28,9 @@ void WaterMaskPass::execute(PassContext& context) {
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(empty), empty);
     }
     glUseProgram(context.shaders.program("water.mask"));
+    if (context.waterSeen) glBeginQuery(GL_ANY_SAMPLES_PASSED, context.waterSeen);
     context.geometry.drawWaterQuad();
+    if (context.waterSeen) glEndQuery(GL_ANY_SAMPLES_PASSED);
     if (context.waterBounds) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, 0);

@@ -3,12 +3,19 @@
 // clear leaves) it evaluates the sky. MIRRORED: the same for the reflection, into Reflection.
 // LIGHTS_TILED: also adds the point lights of the pixel's tile (the tiled light method; the list
 // comes from light_tiles.comp), each with the light volumes' own pointLightRadiance().
+// TONE_MAP_FUSED: also writes the display colour to Final (the separate ToneMapPass is skipped).
 #include "common/frame_block.glsl"
 #include "common/gbuffer.glsl"
 #include "common/lighting.glsl"
 #if defined(LIGHTS_TILED)
 #include "common/lights.glsl"
 #include "common/light_tiles.glsl"
+#endif
+#if defined(TONE_MAP_FUSED)
+// Nothing adds to Radiance after this pass outside the water (no light volumes), so the display
+// colour is written here and the water composite replaces it where water is seen.
+#include "common/output.glsl"
+layout(location = 1) out vec4 outFinal;
 #endif
 
 in vec2 vScreenUv;
@@ -44,7 +51,10 @@ void main() {
 #endif
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     if (gbufferSkyAt(pixel)) {
-        outColour = vec4(skySeenAlong(viewRayDirection(vScreenUv), reflected), 1.0);
+        outColour = vec4(skySeenAlong(viewRayThroughPixel(), reflected), 1.0);
+#if defined(TONE_MAP_FUSED)
+        outFinal = finalColour(outColour.rgb);
+#endif
         return;
     }
     Surface s = readGBuffer(pixel);
@@ -53,4 +63,7 @@ void main() {
     radiance += tiledPointLights(s, pixel);
 #endif
     outColour = vec4(radiance, 1.0);
+#if defined(TONE_MAP_FUSED)
+    outFinal = finalColour(radiance);
+#endif
 }

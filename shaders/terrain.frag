@@ -2,6 +2,7 @@
 #include "common/frame_block.glsl"
 #include "common/terrain.glsl"
 #include "common/emit_surface.glsl"
+#include "common/water_clip_fragment.glsl"
 
 in vec3 vRelativePosition;
 in vec3 vNormal;
@@ -13,4 +14,5 @@ void main() {
     const bool reflected = false;
 #endif
     emitSurface(terrainSurface(vRelativePosition, normalize(vNormal), reflected));
+    if (belowWater()) discard;
 }

@@ -4,6 +4,7 @@
 // OUTPUT_SHADOW: the same vertices seen from the sun, into one shadow cascade.
 #include "common/frame_block.glsl"
 #include "common/terrain.glsl"
+#include "common/water_clip_vertex.glsl"
 
 layout(location = 0) in vec2 gridCoordinate;  // (ring fraction, segment fraction)
 out vec3 vRelativePosition;
@@ -23,7 +24,7 @@ void main() {
     vec3 relative = vec3(offset.x, height.x - frame.cameraPosition.y, offset.y);
     vNormal = normalize(vec3(-height.y, 1.0, -height.z));
 #if defined(MIRRORED)
-    gl_ClipDistance[0] = height.x - frame.water.x;  // keep only what is above the water
+    clipAtWater(height.x - frame.water.x);  // keep only what is above the water
     relative.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - relative.y;
 #endif
     vRelativePosition = relative;

@@ -4,6 +4,7 @@
 #include "common/surface.glsl"
 #include "common/emit_surface.glsl"
 #include "common/shared_constants.glsl"
+#include "common/water_clip_fragment.glsl"
 
 uniform sampler2D plantAtlas;  // premultiplied: a transparent black background, mipmapped
 
@@ -24,7 +25,7 @@ void main() {
     // dissolve (the coverage preservation of alpha-tested mipmaps).
     float lod = max(vAtlasLod, 0.0);
     vec4 texel = textureLod(plantAtlas, vAtlasUv, lod);
-    bool transparent = texel.a < max(0.5 * exp2(-lod), float(OASIS_PLANT_ALPHA_MIN));
+    bool transparent = texel.a < max(0.5 * exp2(-lod), float(OASIS_PLANT_ALPHA_MIN)) || belowWater();
 #if !defined(LIGHTS_UBO)
     if (transparent) discard;
 #endif

@@ -1,8 +1,15 @@
 // The water surface over what lies under it (already in Radiance, absorbed by depth in the
 // shading): the reflection weighted by Fresnel for the rippled normal, plus the sun's glint.
 // Output is premultiplied for blending ONE, ONE_MINUS_SRC_ALPHA: result = F*reflection + glint + (1-F)*under.
+// TONE_MAP_FUSED: the last colour written on water pixels, so it does that blend itself, with the
+// value under the water read from Radiance (not attached here), rounded as Radiance would store
+// it, and writes the display colour to Final; Radiance keeps the under-water value.
 #include "common/frame_block.glsl"
 #include "common/lighting.glsl"
+#if defined(TONE_MAP_FUSED)
+#include "common/output.glsl"
+uniform sampler2D radianceTexture;
+#endif
 
 uniform sampler2D sourceTexture;  // Reflection
 in vec3 vRelativePosition;
@@ -18,5 +25,11 @@ void main() {
     vec3 halfway = normalize(frame.sunDirection.xyz + toCamera);
     float glint = frame.sunDirection.y > 0.0 ? 2.0 * pow(max(dot(normal, halfway), 0.0), 800.0) : 0.0;
     float fog = smoothstep(frame.terrainGridCounts.z, frame.terrainGridCounts.w, length(vRelativePosition));
-    outColour = vec4((fresnel * reflected + glint * frame.sunRadiance.rgb) * (1.0 - fog), fresnel * (1.0 - fog));
+    vec4 water = vec4((fresnel * reflected + glint * frame.sunRadiance.rgb) * (1.0 - fog), fresnel * (1.0 - fog));
+#if defined(TONE_MAP_FUSED)
+    vec3 under = texelFetch(radianceTexture, ivec2(gl_FragCoord.xy), 0).rgb;
+    outColour = finalColour(water.rgb + (1.0 - water.a) * under);
+#else
+    outColour = water;
+#endif
 }

@@ -1,7 +1,7 @@
 // Where a surface goes once the material has built it, chosen by the variant's #define:
 // OUTPUT_GBUFFER stores it in the G-buffer in the layout's encoding; OUTPUT_FORWARD shades it now (linear),
-// looping over the point lights of the variant's LIGHTS_* path; OUTPUT_SHADOW keeps only the depth
-// (the sun's shadow casters).
+// looping over the point lights of the variant's LIGHTS_* path; TONE_MAP_FUSED also writes Final;
+// OUTPUT_SHADOW keeps only the depth (the sun's shadow casters).
 #ifndef OASIS_EMIT_SURFACE_GLSL
 #define OASIS_EMIT_SURFACE_GLSL
 #include "common/surface.glsl"
@@ -13,9 +13,17 @@ void emitSurface(Surface s) { writeGBuffer(s); }
 #include "common/lighting.glsl"
 #include "common/lights.glsl"
 layout(location = 0) out vec4 outColour;
+#if defined(TONE_MAP_FUSED)
+#include "common/output.glsl"
+layout(location = 1) out vec4 outFinal;  // the display colour too: the last surface drawn here wins both
+#endif
 void emitSurface(Surface s) {
     // The sun and sky, then every point light (none unless the variant defines a LIGHTS_* path).
-    outColour = vec4(shadeSurface(s) + allPointLights(s), 1.0);
+    vec3 radiance = shadeSurface(s) + allPointLights(s);
+    outColour = vec4(radiance, 1.0);
+#if defined(TONE_MAP_FUSED)
+    outFinal = finalColour(radiance);
+#endif
 }
 #elif defined(OUTPUT_SHADOW)
 // A shadow caster writes depth only (passes/shadow_pass.h): nothing of the surface is kept.

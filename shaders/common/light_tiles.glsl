@@ -8,6 +8,7 @@
 #ifndef OASIS_LIGHT_TILES_GLSL
 #define OASIS_LIGHT_TILES_GLSL
 #include "common/shared_constants.glsl"
+#include "common/storage_layout.glsl"
 
 const int LIGHT_TILE_SIZE = OASIS_LIGHT_TILE_SIZE;
 const int LIGHT_TILE_SLICES = OASIS_LIGHT_TILE_SLICES;
@@ -16,11 +17,11 @@ const int LIGHT_SLICE_STRIDE = OASIS_LIGHT_TILE_MAX_LIGHTS + 1;
 const int LIGHT_TILE_STRIDE = 2 + OASIS_LIGHT_TILE_SLICES * LIGHT_SLICE_STRIDE;
 
 #if defined(LIGHT_TILES_WRITE)
-layout(std430) writeonly buffer LightTileBuffer {
+OASIS_STORAGE_LAYOUT(OASIS_BINDING_LIGHT_TILES) writeonly buffer LightTileBuffer {
     uint tileWords[];
 };
 #else
-layout(std430) readonly buffer LightTileBuffer {
+OASIS_STORAGE_LAYOUT(OASIS_BINDING_LIGHT_TILES) readonly buffer LightTileBuffer {
     uint tileWords[];
 };
 #endif

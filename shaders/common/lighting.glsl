@@ -50,4 +50,12 @@ vec3 viewRayDirection(vec2 uv) {
     return normalize(farPoint.xyz / farPoint.w);
 }
 
+// The view ray through this fragment's pixel centre, from gl_FragCoord rather than an interpolated
+// varying: the reflection's full-screen triangle is clipped to the water's rectangle where the
+// context allows (common/water_bounds.glsl), and a clipped triangle interpolates its varyings with
+// other rounding; the clouds magnify the ray's last bits near the horizon into 8-bit steps, so the
+// bounded and unbounded frames (every forced fallback) would no longer be equal bit for bit.
+// Fragment shaders only (every includer of this file is one).
+vec3 viewRayThroughPixel() { return viewRayDirection(gl_FragCoord.xy * frame.screen.zw); }
+
 #endif

@@ -13,18 +13,19 @@
 #ifndef OASIS_LIGHTS_GLSL
 #define OASIS_LIGHTS_GLSL
 #include "common/light_data.glsl"
+#include "common/storage_layout.glsl"
 #include "common/surface.glsl"
 #include "common/water.glsl"
 
 #if defined(LIGHTS_SSBO) || defined(LIGHTS_SSBO_COUNT)
-layout(std430) readonly buffer LightBuffer {
+OASIS_STORAGE_LAYOUT(OASIS_BINDING_LIGHTS) readonly buffer LightBuffer {
     PointLight lights[];
 };
 PointLight lightAt(int i) { return lights[i]; }
 #if defined(LIGHTS_SSBO)
 int lightCount() { return lights.length(); }
 #else
-layout(std430) readonly buffer LightCountBuffer {
+OASIS_STORAGE_LAYOUT(OASIS_BINDING_LIGHT_COUNT) readonly buffer LightCountBuffer {
     uvec4 lightCountValue;  // x = number of lights
 };
 int lightCount() { return int(lightCountValue.x); }

@@ -15,7 +15,17 @@
 #define OASIS_DETAIL_GROUND_BROAD 2
 #define OASIS_DETAIL_GROUND_FINE 3
 #define OASIS_DETAIL_WIND_GUSTS 4
-#define OASIS_DETAIL_LAYERS 5
+#define OASIS_DETAIL_CLOUDS_BROAD 5
+#define OASIS_DETAIL_CLOUDS_FINE 6
+#define OASIS_DETAIL_LAYERS 7
+// The cloud deck's world height (common/sky.glsl): clouds are seen from below it only.
+#define OASIS_CLOUD_ALTITUDE 1100.0
+// Storage block bindings (render/texture_units.h binds them by name on desktop GL; OpenGL ES has no
+// glShaderStorageBlockBinding, so there the blocks state them: common/storage_layout.glsl).
+#define OASIS_BINDING_WATER_BOUNDS 4
+#define OASIS_BINDING_LIGHT_TILES 5
+#define OASIS_BINDING_LIGHTS 6
+#define OASIS_BINDING_LIGHT_COUNT 7
 // The UBO light path's most uniform blocks (lights.glsl indexes them by constants before GLSL 4.00).
 #define OASIS_LIGHTS_UBO_MAX_BLOCKS 8
 // Tiled light culling (passes/light_tiling_pass.h): square screen tiles of this many pixels, one
@@ -28,6 +38,8 @@
 #define OASIS_LIGHT_TILE_MAX_LIGHTS 256
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
+// Set by the renderer when the reflection is bounded to the visible water this frame (--reflection-bounds).
+#define OASIS_WATER_BOUNDED_FLAG 2u
 // Surface flags stored in the info target, flags / 255 in this channel: b in the layouts that
 // store the surface as is, g in the compact layout's two-channel info (common/gbuffer.glsl).
 #define OASIS_INFO_FLAGS_CHANNEL 2

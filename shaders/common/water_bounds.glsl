@@ -7,10 +7,11 @@
 // every fallback draws bit for bit (they stay stencil-masked). WATER_BOUNDS is a context define (render/renderer.cpp: where
 // vertex and fragment shaders have storage blocks); without it nothing is recorded or clipped.
 // The water mask's fragment shader defines WATER_BOUNDS_RECORDER before including this (it
-// records); every other includer is fullscreen.vert (it clips).
+// records); fullscreen.vert clips with it, the mirrored billboards (vegetation.vert) cull with it.
 #ifndef OASIS_WATER_BOUNDS_GLSL
 #define OASIS_WATER_BOUNDS_GLSL
 #include "common/frame_block.glsl"
+#include "common/shared_constants.glsl"
 
 #if defined(WATER_BOUNDS)
 // Pixels (gl_FragCoord, bottom-up), inclusive: x min, y min, x max, y max; reset each frame to an
@@ -28,6 +29,20 @@ void recordWaterPixel(ivec2 pixel) {
 }
 #else
 
+// Whether a mirrored billboard (its four corners in clip space) lands wholly outside the rectangle,
+// so none of its fragments could pass the water's stencil: the vertex shader then drops the whole
+// quad (every corner computes the same answer), which changes no pixel, unlike clipping it. Only
+// when this frame bounds its reflection; never with a corner at or behind the eye.
+bool billboardMissesWater(vec4 c0, vec4 c1, vec4 c2, vec4 c3) {
+    if ((uint(frame.water.w) & OASIS_WATER_BOUNDED_FLAG) == 0u) return false;
+    if (min(min(c0.w, c1.w), min(c2.w, c3.w)) <= 1e-4) return false;
+    vec2 p0 = c0.xy / c0.w, p1 = c1.xy / c1.w, p2 = c2.xy / c2.w, p3 = c3.xy / c3.w;
+    // Window pixels, with a pixel to spare for rounding.
+    vec2 low = (min(min(p0, p1), min(p2, p3)) * 0.5 + 0.5) * frame.screen.xy - 1.0;
+    vec2 high = (max(max(p0, p1), max(p2, p3)) * 0.5 + 0.5) * frame.screen.xy + 1.0;
+    return any(lessThan(high, vec2(waterPixels.xy))) || any(greaterThan(low, vec2(waterPixels.zw) + 1.0));
+}
+
 // gl_ClipDistance[1..4] against the rectangle's edges (pixel edges, so every water pixel's centre
 // is half a pixel inside); the passes of the reflection enable them (passes/pass.cpp).
 void clipToWaterBounds(vec4 clipPosition) {
@@ -42,6 +57,7 @@ void clipToWaterBounds(vec4 clipPosition) {
 void recordWaterPixel(ivec2 pixel) {}
 #else
 void clipToWaterBounds(vec4 clipPosition) {}
+bool billboardMissesWater(vec4 c0, vec4 c1, vec4 c2, vec4 c3) { return false; }
 #endif
 
 #endif

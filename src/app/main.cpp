@@ -25,7 +25,9 @@ int runCommand(const oasis::Options& options) {
         case Command::Probe: return runProbeCommand(options);
         case Command::Window: return runWindowApp(options);
         case Command::Default:
-            return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);
+            // The window has no OpenGL ES context: --api gles runs the main job headless.
+            return WindowContext::displayAvailable() && options.scene.api != gl::Api::Gles ? runWindowApp(options)
+                                                                                           : runMainJob(options);
     }
     return 2;
 }

@@ -24,6 +24,11 @@ const std::vector<DriverSetup>& driverSetups() {
             {"bare-gl33", "llvmpipe, --force gl33,no-ssbo,no-compute,no-stencil-texturing",
              {}, {"--force", "gl33,no-ssbo,no-compute,no-stencil-texturing"}, "llvmpipe",
              "Mesa's llvmpipe (libgl1-mesa-dri)"},
+            // The OpenGL ES tiers (--api gles): llvmpipe's ES 3.2, and the same limited to ES 3.0.
+            {"gles", "llvmpipe, OpenGL ES 3.2 (--api gles)", {}, {"--api", "gles"}, "llvmpipe",
+             "Mesa's llvmpipe with OpenGL ES (libgles2 / libegl-mesa0)"},
+            {"gles30", "llvmpipe, OpenGL ES 3.2 treated as ES 3.0 (--api gles --force gles30)", {},
+             {"--api", "gles", "--force", "gles30"}, "llvmpipe", "Mesa's llvmpipe with OpenGL ES (libgles2 / libegl-mesa0)"},
         };
         // Each forced fallback alone on llvmpipe (--force NAME): bit-identical to llvmpipe by design.
         for (const char* name : {"gl33", "no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa", "no-clip-control"})

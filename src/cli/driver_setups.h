@@ -1,7 +1,7 @@
 // The driver set-ups of this machine that `oasis compare --driver` can render a frame on: each a
 // name, the environment variables that select the driver, extra oasis arguments (the forced
 // tiers) and the renderer string the context must report. GL-free: the parser checks names here.
-// An ES tier, when oasis has one, is a new row of this table.
+// The OpenGL ES tiers are rows too (gles, gles30: --api gles in the child's arguments).
 #pragma once
 #include <string>
 #include <utility>

@@ -60,8 +60,11 @@ const char* kSceneOptionsHelp =
     "                            compute shaders and SSBOs, else volumes, saying why)\n"
     "  --force LIST              switch capabilities off even where the driver has them, to reproduce\n"
     "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,\n"
-    "                            no-clip-control,gl33 (gl33: an OpenGL 3.3 core context; no-clip-control:\n"
+    "                            no-clip-control,gl33,gles30 (gl33: an OpenGL 3.3 core context; gles30:\n"
+    "                            the OpenGL ES context as ES 3.0, with --api gles; no-clip-control:\n"
     "                            reversed-z depth falls back to standard); each fallback is reported once\n"
+    "  --api API                 gl (desktop OpenGL core, the default) or gles (an OpenGL ES 3.x context:\n"
+    "                            ES 3.2 on Mesa; headless commands only, not the window)\n"
     "  --depth CONVENTION        depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
     "                            near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard;\n"
     "                            `oasis bench` times and compares both itself)\n"
@@ -256,7 +259,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--shadows", "--shadow-quality", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
-            "--force",
+            "--force", "--api",
             "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend",
             "--driver", "--reference"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
@@ -454,6 +457,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         } else if (flag == "--force") {
             std::string error;
             if (!parseForcedFallbacks(value, options.scene.force, error)) return fail("--force: " + error);
+        } else if (flag == "--api") {
+            if (!gl::parseApi(value, options.scene.api)) return fail("--api expects gl or gles, got '" + value + "'");
         } else if (flag == "--at") {
             size_t comma = value.find(',');
             if (comma == std::string::npos)
@@ -485,6 +490,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         } else {
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         }
+    }
+    if (options.scene.api == gl::Api::Gles) {
+        if (options.scene.force.gl33) return fail("--force gl33 makes a desktop OpenGL 3.3 context: not with --api gles");
+        if (options.command == Command::Window)
+            return fail("--api gles: the window has no OpenGL ES context yet; use render, compare, probe, caps or bench");
+    } else if (options.scene.force.gles30) {
+        return fail("--force gles30 limits an OpenGL ES context: add --api gles");
     }
     if (!options.stopBefore.empty()) {
         // A usage error like any other bad value: the pass lists are GL-free, so check before a context.

@@ -32,6 +32,7 @@ struct SceneOptions {
     std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context
     std::optional<LightMethod> lightMethod;  // forced deferred light method; empty = the default
     gl::ForcedFallbacks force;  // --force: capabilities switched off even where the driver has them
+    gl::Api api = gl::Api::Gl;  // --api: desktop OpenGL core or OpenGL ES 3.x (headless commands)
 };
 
 enum class Command { Default, Window, Render, Compare, Caps, Bench, Probe };

@@ -341,7 +341,8 @@ BenchPlan benchPlan(const Options& options) {
 
 int runBenchCommand(const Options& options) {
     try {
-        HeadlessContext context;
+        // --api gles: the bench on an OpenGL ES context (desktop: the newest core context, as always).
+        HeadlessContext context(options.scene.api == gl::Api::Gles ? maxGlVersionFor(options.scene) : MaxGlVersion{});
         gl::setFrameTerminators(true);  // each frame a frame for capture tools; set-up its own
         RenderSession session(options);
         gl::endFrame();

@@ -58,6 +58,7 @@ gl::FeatureReport clipControlFeature(const gl::Capabilities& caps, const Rendere
 }  // namespace
 
 MaxGlVersion maxGlVersionFor(const SceneOptions& options) {
+    if (options.api == gl::Api::Gles) return MaxGlVersion{3, 2, true};
     return options.force.gl33 ? MaxGlVersion{3, 3} : MaxGlVersion{};
 }
 
@@ -89,7 +90,7 @@ RenderSession::RenderSession(const Options& options, Shaders need)
     if (directory.empty() && need == Shaders::Required)
         throw std::runtime_error("cannot find oasis's shaders (looked in: " + searched +
                                  "); set OASIS_SHADER_DIR to the shaders/ directory");
-    GlslDialect dialect = glslDialectForCurrentContext();
+    GlslDialect dialect = caps.es ? glslDialectForEs(caps) : glslDialectForCurrentContext();
     if (caps.forced.gl33) dialect.versionLine = "#version 330 core";
     shaders = std::make_unique<ShaderLibrary>(directory, dialect);
     renderer = std::make_unique<Renderer>(*shaders, scene);
@@ -153,6 +154,9 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
                     "on it (driver: " + (caps.driverHasDsa() ? std::string("has it") : "lacks it") +
                     (caps.forced.noDsa ? "; --force no-dsa accepted, nothing changes)" : ")")});
     list.push_back(clipControlFeature(caps, *renderer));
+    bool clipDistances = caps.clipDistancesAvailable(&why);
+    list.push_back({"clip-distances", clipDistances,
+                    clipDistances ? "the reflection clipped at the water plane by " + why : why});
     bool debug = caps.debugOutputAvailable(&why);
     list.push_back({"debug-output", debug, debug ? "GL errors to stderr and a debug group per pass: " + why
                                                  : "fallback: no debug messages or groups (" + why + ")"});
@@ -170,6 +174,7 @@ std::vector<std::string> RenderSession::fallbacks() const {
     if (caps.forced.noDsa) lines.push_back("direct-state-access: --force no-dsa accepted; oasis never uses DSA");
     if (caps.forced.gl33) lines.push_back("context: OpenGL " + std::to_string(caps.major) + "." +
                                           std::to_string(caps.minor) + " core (--force gl33)");
+    if (caps.forced.gles30) lines.push_back("context: OpenGL ES 3.0 feature set (--force gles30; GLSL 300 es)");
     return lines;
 }
 

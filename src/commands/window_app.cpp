@@ -231,7 +231,14 @@ void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, Win
         choosePipeline(state, chosen.pipeline == PipelineKind::Forward ? PipelineKind::Deferred : PipelineKind::Forward);
     if (key >= GLFW_KEY_1 && key < GLFW_KEY_1 + int(views.size())) chosen.view = views[size_t(key - GLFW_KEY_1)].name;
     if (key == GLFW_KEY_0) chosen.view = kOverviewName;
-    if (key == GLFW_KEY_SPACE) state.paused = !state.paused;
+    if (key == GLFW_KEY_SPACE) {
+        state.paused = !state.paused;
+        // The clock moves the sun (without --hour) and the clouds: the time given here, with the
+        // same scene options, renders the paused frame headless.
+        if (state.paused) std::printf("oasis: paused at --time %.17g\n", scene.timeSeconds);
+        else std::printf("oasis: clock running\n");
+        std::fflush(stdout);
+    }
     if (key == GLFW_KEY_R) reloadShaders(renderer, state);
     if (key == GLFW_KEY_G) chosen.layoutIndex = (chosen.layoutIndex + 1) % gbufferLayouts().size();
     if (key == GLFW_KEY_Z) chosen.depthIndex = (chosen.depthIndex + 1) % depthConventions().size();

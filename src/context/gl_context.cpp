@@ -118,7 +118,8 @@ ContextInfo queryContextInfo() {
 }
 
 void installDebugOutput() {
-    if (epoxy_gl_version() < 43 && !epoxy_has_gl_extension("GL_KHR_debug")) {
+    bool es32 = !epoxy_is_desktop_gl() && epoxy_gl_version() >= 32;
+    if (epoxy_gl_version() < 43 && !es32 && !epoxy_has_gl_extension("GL_KHR_debug")) {
         if (gGlDebug) std::fprintf(stderr, "oasis: --gl-debug: this context has no KHR_debug: no debug output\n");
         return;
     }
@@ -146,7 +147,7 @@ std::string glDebugSummary() {
 }
 
 HeadlessContext::HeadlessContext(MaxGlVersion max) {
-    capMesaVersion(max);
+    if (!max.es) capMesaVersion(max);
     if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
         throw std::runtime_error("EGL has no EGL_MESA_platform_surfaceless (need Mesa's libegl-mesa0)");
     EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
@@ -154,6 +155,10 @@ HeadlessContext::HeadlessContext(MaxGlVersion max) {
     if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor))
         throw std::runtime_error("cannot initialise a surfaceless EGL display");
     display_ = display;
+    if (max.es) {
+        makeEsContext(display);
+        return;
+    }
     if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("EGL cannot bind the desktop OpenGL API");
     EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     EGLConfig config = nullptr;
@@ -200,6 +205,41 @@ HeadlessContext::HeadlessContext(MaxGlVersion max) {
     }
     context_ = context;
     installDebugOutput();
+}
+
+// --api gles: an OpenGL ES context, 3.2 first (Mesa gives its newest ES 3.x for any 3.x request),
+// then 3.1 and 3.0 for a driver that gives exactly what is asked for.
+void HeadlessContext::makeEsContext(void* displayHandle) {
+    auto display = static_cast<EGLDisplay>(displayHandle);
+    if (!eglBindAPI(EGL_OPENGL_ES_API)) {
+        eglTerminate(display);
+        throw std::runtime_error("EGL cannot bind the OpenGL ES API (--api gles)");
+    }
+    EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint configCount = 0;
+    eglChooseConfig(display, configAttributes, &config, 1, &configCount);
+    bool noConfig = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
+    if (configCount < 1 && !noConfig) {
+        eglTerminate(display);
+        throw std::runtime_error("EGL has no OpenGL ES 3-renderable config (--api gles)");
+    }
+    EGLConfig chosen = configCount ? config : EGL_NO_CONFIG_KHR;
+    for (int esMinor : {2, 1, 0}) {
+        EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION_KHR, 3, EGL_CONTEXT_MINOR_VERSION_KHR, esMinor,
+                               EGL_CONTEXT_FLAGS_KHR, EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR, EGL_NONE};
+        EGLContext context = eglCreateContext(display, chosen, EGL_NO_CONTEXT, attributes);
+        if (context == EGL_NO_CONTEXT) continue;
+        if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
+            eglDestroyContext(display, context);
+            continue;
+        }
+        context_ = context;
+        installDebugOutput();
+        return;
+    }
+    eglTerminate(display);
+    throw std::runtime_error("EGL could not create an OpenGL ES 3.0+ context on this driver (--api gles)");
 }
 
 HeadlessContext::~HeadlessContext() {

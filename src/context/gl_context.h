@@ -1,6 +1,7 @@
 // An OpenGL context made current on this thread: headless through EGL (no display needed) or a
 // GLFW window. Both ask for the newest core profile the driver gives, down to 3.3, or at most
-// the version asked for (--force gl33 makes a 3.3 core context on any driver).
+// the version asked for (--force gl33 makes a 3.3 core context on any driver). --api gles makes
+// the headless context an OpenGL ES 3.x one instead (EGL_OPENGL_ES_API: 3.2 down to 3.0).
 #pragma once
 #include <memory>
 #include <string>
@@ -38,9 +39,11 @@ std::string glDebugSummary();
 using GlErrorStop = void (*)(const std::string& message);
 void setGlErrorStop(GlErrorStop stop);
 
-// The newest core version a context may have: {4, 6} by default, {3, 3} with --force gl33.
+// The newest core version a context may have: {4, 6} by default, {3, 3} with --force gl33; `es`:
+// an OpenGL ES 3.x context (--api gles; the version fields are then not used: the newest ES 3.x).
 struct MaxGlVersion {
     int major = 4, minor = 6;
+    bool es = false;
 };
 
 class HeadlessContext {
@@ -52,6 +55,7 @@ public:
     HeadlessContext& operator=(const HeadlessContext&) = delete;
 
 private:
+    void makeEsContext(void* display);
     // First, so that libepoxy's first lookups (eglGetPlatformDisplayEXT on) already see it, and
     // last to go, after the context.
     NoGlxContextForEpoxy noGlx_;

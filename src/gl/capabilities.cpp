@@ -19,7 +19,14 @@ const FallbackName kFallbackNames[] = {
     {"no-dsa", &ForcedFallbacks::noDsa},
     {"no-clip-control", &ForcedFallbacks::noClipControl},
     {"gl33", &ForcedFallbacks::gl33},
+    {"gles30", &ForcedFallbacks::gles30},
 };
+
+// What an OpenGL ES 3.0 context keeps of its extensions under --force gles30: the float colour
+// targets oasis needs (ES 3.0 devices list them as extensions too) and debug output, nothing that
+// adds features the ES 3.0 tier is defined without (clip distances, clip control, ...).
+const char* const kGles30Extensions[] = {"GL_EXT_color_buffer_float", "GL_EXT_color_buffer_half_float",
+                                         "GL_KHR_debug", "GL_EXT_debug_label"};
 
 // Sets `reason` (when asked for) and returns `result`.
 bool answer(bool result, std::string* reason, const std::string& text) {
@@ -27,11 +34,44 @@ bool answer(bool result, std::string* reason, const std::string& text) {
     return result;
 }
 
-// "GL 4.3" when the core version has it, else the extension's name when listed, else "".
-std::string source(const Capabilities& caps, int major, int minor, const char* extension) {
-    if (caps.atLeast(major, minor)) return "GL " + std::to_string(major) + "." + std::to_string(minor);
+// Where a feature comes from on each API: the desktop core version and ARB extension, the ES core
+// version (0.0: none) and ES extension.
+struct FeatureSource {
+    int major, minor;
+    const char* extension;
+    int esMajor, esMinor;
+    const char* esExtension;
+};
+const FeatureSource kSsbo{4, 3, "GL_ARB_shader_storage_buffer_object", 3, 1, nullptr};
+const FeatureSource kCompute{4, 3, "GL_ARB_compute_shader", 3, 1, nullptr};
+const FeatureSource kStencilTexturing{4, 3, "GL_ARB_stencil_texturing", 3, 1, nullptr};
+const FeatureSource kDsa{4, 5, "GL_ARB_direct_state_access", 0, 0, nullptr};
+const FeatureSource kDebug{4, 3, "GL_KHR_debug", 3, 2, "GL_KHR_debug"};
+const FeatureSource kClipControl{4, 5, "GL_ARB_clip_control", 0, 0, "GL_EXT_clip_control"};
+const FeatureSource k420Pack{4, 2, "GL_ARB_shading_language_420pack", 3, 1, nullptr};
+const FeatureSource kGpuShader5{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_EXT_gpu_shader5"};
+const FeatureSource kFloatTargets{3, 0, nullptr, 3, 2, "GL_EXT_color_buffer_float"};
+const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance"};
+
+// "GL 4.3" / "ES 3.1" when the core version has it, else the extension's name when listed, else "".
+std::string source(const Capabilities& caps, const FeatureSource& feature) {
+    int major = caps.es ? feature.esMajor : feature.major, minor = caps.es ? feature.esMinor : feature.minor;
+    const char* extension = caps.es ? feature.esExtension : feature.extension;
+    if (major > 0 && caps.atLeast(major, minor))
+        return (caps.es ? "ES " : "GL ") + std::to_string(major) + "." + std::to_string(minor);
     if (extension && caps.hasExtension(extension)) return extension;
     return {};
+}
+
+// "no GL 4.3 / GL_ARB_compute_shader" or "no ES 3.1" in the context's own terms.
+std::string missing(const Capabilities& caps, const FeatureSource& feature) {
+    int major = caps.es ? feature.esMajor : feature.major, minor = caps.es ? feature.esMinor : feature.minor;
+    const char* extension = caps.es ? feature.esExtension : feature.extension;
+    std::string text = "no ";
+    if (major > 0) text += std::string(caps.es ? "ES " : "GL ") + std::to_string(major) + "." + std::to_string(minor);
+    if (extension) text += std::string(major > 0 ? " / " : "") + extension;
+    if (major == 0 && !extension) text += "such feature in OpenGL ES";
+    return text;
 }
 
 int getInt(GLenum name) {
@@ -54,7 +94,22 @@ std::string ForcedFallbacks::list() const {
     return text;
 }
 
-const char* forcedFallbackNames() { return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33"; }
+const char* forcedFallbackNames() {
+    return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33, gles30";
+}
+
+const char* apiName(Api api) { return api == Api::Gles ? "gles" : "gl"; }
+
+bool parseApi(const std::string& text, Api& api) {
+    if (text == "gl") api = Api::Gl;
+    else if (text == "gles") api = Api::Gles;
+    else return false;
+    return true;
+}
+
+std::string Capabilities::apiVersionName() const {
+    return std::string(es ? "OpenGL ES " : "OpenGL ") + std::to_string(major) + "." + std::to_string(minor);
+}
 
 bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std::string& error) {
     if (!text.empty() && text.back() == ',') { error = "empty name in '" + text + "'"; return false; }
@@ -75,33 +130,35 @@ bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std:
     return true;
 }
 
-bool Capabilities::driverHasSsbo() const { return !source(*this, 4, 3, "GL_ARB_shader_storage_buffer_object").empty(); }
-bool Capabilities::driverHasCompute() const { return !source(*this, 4, 3, "GL_ARB_compute_shader").empty(); }
-bool Capabilities::driverHasStencilTexturing() const { return !source(*this, 4, 3, "GL_ARB_stencil_texturing").empty(); }
-bool Capabilities::driverHasDsa() const { return !source(*this, 4, 5, "GL_ARB_direct_state_access").empty(); }
-bool Capabilities::driverHasDebugOutput() const { return !source(*this, 4, 3, "GL_KHR_debug").empty(); }
-bool Capabilities::driverHasClipControl() const { return !source(*this, 4, 5, "GL_ARB_clip_control").empty(); }
+bool Capabilities::driverHasSsbo() const { return !source(*this, kSsbo).empty(); }
+bool Capabilities::driverHasCompute() const { return !source(*this, kCompute).empty(); }
+bool Capabilities::driverHasStencilTexturing() const { return !source(*this, kStencilTexturing).empty(); }
+bool Capabilities::driverHasDsa() const { return !source(*this, kDsa).empty(); }
+bool Capabilities::driverHasDebugOutput() const { return !source(*this, kDebug).empty(); }
+bool Capabilities::driverHasClipControl() const { return !source(*this, kClipControl).empty(); }
+bool Capabilities::driverHasClipDistances() const { return !source(*this, kClipDistances).empty(); }
 bool Capabilities::driverHasFloatRenderTargets() const {
+    if (es) return !source(*this, kFloatTargets).empty();
     return atLeast(3, 0) || (hasExtension("GL_ARB_texture_float") && hasExtension("GL_ARB_color_buffer_float"));
 }
 
 bool Capabilities::ssboAvailable(std::string* reason) const {
     if (forced.noSsbo) return answer(false, reason, "switched off by --force no-ssbo");
-    std::string from = source(*this, 4, 3, "GL_ARB_shader_storage_buffer_object");
-    if (from.empty()) return answer(false, reason, "no GL 4.3 / GL_ARB_shader_storage_buffer_object");
+    std::string from = source(*this, kSsbo);
+    if (from.empty()) return answer(false, reason, missing(*this, kSsbo));
     return answer(true, reason, "SSBOs present (" + from + ")");
 }
 
 bool Capabilities::computeAvailable(std::string* reason) const {
     if (forced.noCompute) return answer(false, reason, "switched off by --force no-compute");
-    std::string from = source(*this, 4, 3, "GL_ARB_compute_shader");
-    if (from.empty()) return answer(false, reason, "no GL 4.3 / GL_ARB_compute_shader");
+    std::string from = source(*this, kCompute);
+    if (from.empty()) return answer(false, reason, missing(*this, kCompute));
     std::string ssboReason;
     if (!ssboAvailable(&ssboReason)) return answer(false, reason, "compute needs SSBOs: " + ssboReason);
     // Below GLSL 4.30 the interpreter's layout(binding) and `precise` need these as well.
     const std::pair<std::string, std::string> needs[] = {
-        {source(*this, 4, 2, "GL_ARB_shading_language_420pack"), "GL_ARB_shading_language_420pack"},
-        {source(*this, 4, 0, "GL_ARB_gpu_shader5"), "GL_ARB_gpu_shader5"}};
+        {source(*this, k420Pack), es ? "ES 3.1 layout(binding)" : "GL_ARB_shading_language_420pack"},
+        {source(*this, kGpuShader5), es ? "ES 3.2 / GL_EXT_gpu_shader5 (precise)" : "GL_ARB_gpu_shader5"}};
     for (const auto& [found, name] : needs)
         if (found.empty()) return answer(false, reason, "compute shaders present but no " + name + " for its GLSL");
     return answer(true, reason, "compute shaders and SSBOs present (" + from + ")");
@@ -109,25 +166,30 @@ bool Capabilities::computeAvailable(std::string* reason) const {
 
 bool Capabilities::stencilTexturingAvailable(std::string* reason) const {
     if (forced.noStencilTexturing) return answer(false, reason, "switched off by --force no-stencil-texturing");
-    std::string from = source(*this, 4, 3, "GL_ARB_stencil_texturing");
-    if (from.empty()) return answer(false, reason, "no GL 4.3 / GL_ARB_stencil_texturing");
+    std::string from = source(*this, kStencilTexturing);
+    if (from.empty()) return answer(false, reason, missing(*this, kStencilTexturing));
     return answer(true, reason, "stencil texturing present (" + from + ")");
 }
 
 bool Capabilities::dsaAvailable(std::string* reason) const {
     if (forced.noDsa) return answer(false, reason, "switched off by --force no-dsa");
-    std::string from = source(*this, 4, 5, "GL_ARB_direct_state_access");
-    if (from.empty()) return answer(false, reason, "no GL 4.5 / GL_ARB_direct_state_access");
+    std::string from = source(*this, kDsa);
+    if (from.empty()) return answer(false, reason, missing(*this, kDsa));
     return answer(true, reason, "direct state access present (" + from + ")");
 }
 
 bool Capabilities::debugOutputAvailable(std::string* reason) const {
-    std::string from = source(*this, 4, 3, "GL_KHR_debug");
-    if (from.empty()) return answer(false, reason, "no GL 4.3 / GL_KHR_debug");
+    std::string from = source(*this, kDebug);
+    if (from.empty()) return answer(false, reason, missing(*this, kDebug));
     return answer(true, reason, "debug output and groups present (" + from + ")");
 }
 
 bool Capabilities::floatRenderTargetsAvailable(std::string* reason) const {
+    if (es) {
+        std::string from = source(*this, kFloatTargets);
+        if (from.empty()) return answer(false, reason, missing(*this, kFloatTargets));
+        return answer(true, reason, "RGBA16F/RGBA32F colour-renderable (" + from + ")");
+    }
     if (!driverHasFloatRenderTargets()) return answer(false, reason, "no GL 3.0 / GL_ARB_texture_float");
     return answer(true, reason, atLeast(3, 0) ? "RGBA16F/RGBA32F colour-renderable (core since GL 3.0)"
                                               : "GL_ARB_texture_float + GL_ARB_color_buffer_float");
@@ -135,9 +197,16 @@ bool Capabilities::floatRenderTargetsAvailable(std::string* reason) const {
 
 bool Capabilities::clipControlAvailable(std::string* reason) const {
     if (forced.noClipControl) return answer(false, reason, "switched off by --force no-clip-control");
-    std::string from = source(*this, 4, 5, "GL_ARB_clip_control");
-    if (from.empty()) return answer(false, reason, "no GL 4.5 / GL_ARB_clip_control");
+    std::string from = source(*this, kClipControl);
+    if (from.empty()) return answer(false, reason, missing(*this, kClipControl));
     return answer(true, reason, "clip control present (" + from + ")");
+}
+
+bool Capabilities::clipDistancesAvailable(std::string* reason) const {
+    std::string from = source(*this, kClipDistances);
+    if (from.empty())
+        return answer(false, reason, "fallback: the reflection's water-plane clip by discard (" + missing(*this, kClipDistances) + ")");
+    return answer(true, reason, "gl_ClipDistance present (" + from + ")");
 }
 
 std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() const {
@@ -147,7 +216,14 @@ std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() con
         "GL_ARB_texture_float", "GL_ARB_color_buffer_float", "GL_ARB_uniform_buffer_object",
         "GL_ARB_explicit_attrib_location", "GL_ARB_explicit_uniform_location", "GL_ARB_texture_storage",
         "GL_ARB_timer_query", "GL_ARB_clip_control"};
+    static const char* kEsNames[] = {"GL_EXT_color_buffer_float", "GL_EXT_clip_cull_distance", "GL_EXT_clip_control",
+                                     "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_EXT_disjoint_timer_query",
+                                     "GL_NV_read_depth_stencil"};
     std::vector<std::pair<std::string, bool>> list;
+    if (es) {
+        for (const char* name : kEsNames) list.emplace_back(name, hasExtension(name));
+        return list;
+    }
     for (const char* name : kNames) list.emplace_back(name, hasExtension(name));
     return list;
 }
@@ -161,6 +237,12 @@ Capabilities measureCapabilities(const ForcedFallbacks& forced) {
     caps.glslVersion = glString(GL_SHADING_LANGUAGE_VERSION);
     caps.major = getInt(GL_MAJOR_VERSION);
     caps.minor = getInt(GL_MINOR_VERSION);
+    caps.es = !epoxy_is_desktop_gl();
+    if (forced.gles30 && caps.es && caps.atLeast(3, 1)) {  // Mesa gives ES 3.2 for any 3.x request
+        caps.version += " (treated as ES 3.0: --force gles30)";
+        caps.major = 3;
+        caps.minor = 0;
+    }
     if (forced.gl33 && caps.atLeast(3, 4)) {  // a driver that gave more than the 3.3 asked for
         caps.version += " (treated as 3.3: --force gl33)";
         caps.major = 3;
@@ -170,6 +252,12 @@ Capabilities measureCapabilities(const ForcedFallbacks& forced) {
     for (int i = 0; i < count; ++i)
         if (const GLubyte* name = glGetStringi(GL_EXTENSIONS, GLuint(i)))
             caps.extensions.insert(reinterpret_cast<const char*>(name));
+    if (forced.gles30 && caps.es) {
+        std::set<std::string> kept;
+        for (const char* name : kGles30Extensions)
+            if (caps.hasExtension(name)) kept.insert(name);
+        caps.extensions = kept;
+    }
     Limits& limits = caps.limits;
     limits.maxUniformBlockSize = getInt(GL_MAX_UNIFORM_BLOCK_SIZE);
     limits.maxDrawBuffers = getInt(GL_MAX_DRAW_BUFFERS);

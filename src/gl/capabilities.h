@@ -8,6 +8,11 @@
 
 namespace oasis::gl {
 
+// Which OpenGL the context speaks (--api): desktop OpenGL core (the default) or OpenGL ES 3.x.
+enum class Api { Gl, Gles };
+const char* apiName(Api api);  // "gl", "gles"
+bool parseApi(const std::string& text, Api& api);
+
 // Fallbacks forced even where the driver has the feature: --force no-ssbo,no-compute,...
 struct ForcedFallbacks {
     bool noSsbo = false;
@@ -16,12 +21,13 @@ struct ForcedFallbacks {
     bool noDsa = false;
     bool noClipControl = false;  // reversed-z depth falls back to standard
     bool gl33 = false;  // create the context at OpenGL 3.3 core (the context's job, before measuring)
+    bool gles30 = false;  // --api gles: treat the ES context as OpenGL ES 3.0 (core features alone)
 
-    bool any() const { return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33; }
+    bool any() const { return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33 || gles30; }
     std::string list() const;  // "no-ssbo,gl33" ("" when none)
 };
 // The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa,
-// no-clip-control, gl33".
+// no-clip-control, gl33, gles30".
 const char* forcedFallbackNames();
 // Parses a comma-separated list into `forced` (adding to what is there); false with `error` on a bad name.
 bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std::string& error);
@@ -50,6 +56,7 @@ struct FeatureReport {
 struct Capabilities {
     std::string version, vendor, renderer, glslVersion;
     int major = 0, minor = 0;
+    bool es = false;  // an OpenGL ES context: major.minor is the ES version
     Limits limits;
     std::set<std::string> extensions;  // every extension the context lists
     ForcedFallbacks forced;
@@ -67,6 +74,8 @@ struct Capabilities {
     bool driverHasDebugOutput() const;
     bool driverHasFloatRenderTargets() const;
     bool driverHasClipControl() const;
+    // gl_ClipDistance in shaders: desktop GL 3.0 on; ES only with GL_EXT_clip_cull_distance.
+    bool driverHasClipDistances() const;
 
     // The driver's answer with the forced fallbacks applied; `reason` (optional) says why.
     bool ssboAvailable(std::string* reason = nullptr) const;
@@ -76,6 +85,9 @@ struct Capabilities {
     bool debugOutputAvailable(std::string* reason = nullptr) const;
     bool floatRenderTargetsAvailable(std::string* reason = nullptr) const;
     bool clipControlAvailable(std::string* reason = nullptr) const;  // glClipControl: reversed-z depth
+    bool clipDistancesAvailable(std::string* reason = nullptr) const;  // else a varying and discard
+    // "OpenGL 4.5" / "OpenGL ES 3.2": the version as the reasons name it.
+    std::string apiVersionName() const;
 
     // The extensions oasis cares about (each with whether the context lists it), in a fixed order.
     std::vector<std::pair<std::string, bool>> relevantExtensions() const;

@@ -1,6 +1,9 @@
 // GL object wrappers, live counts and debug groups.
 #include "gl/objects.h"
 
+#include <cstring>
+#include <stdexcept>
+
 #include <algorithm>
 #include <array>
 #include <vector>
@@ -19,6 +22,7 @@ GLenum labelIdentifier(ObjectKind kind) {
         case ObjectKind::Program: return GL_PROGRAM;
         case ObjectKind::Shader: return GL_SHADER;
         case ObjectKind::Sampler: return GL_SAMPLER;
+        case ObjectKind::Query: return GL_QUERY;
         case ObjectKind::Count: break;
     }
     return GL_NONE;
@@ -75,6 +79,7 @@ void Object<Kind>::reset() {
         case ObjectKind::Program: glDeleteProgram(name_); break;
         case ObjectKind::Shader: glDeleteShader(name_); break;
         case ObjectKind::Sampler: glDeleteSamplers(1, &name_); break;
+        case ObjectKind::Query: glDeleteQueries(1, &name_); break;
         case ObjectKind::Count: break;
     }
     track(-1);
@@ -88,6 +93,7 @@ template class Object<ObjectKind::VertexArray>;
 template class Object<ObjectKind::Program>;
 template class Object<ObjectKind::Shader>;
 template class Object<ObjectKind::Sampler>;
+template class Object<ObjectKind::Query>;
 
 Buffer createBuffer(const std::string& label) {
     GLuint n = 0;
@@ -124,6 +130,15 @@ Sampler createSampler(const std::string& label) {
     glGenSamplers(1, &n);  // a sampler is an object from glGenSamplers on
     setLabel(ObjectKind::Sampler, n, label);
     return Sampler(n);
+}
+
+Query createQuery(GLenum target, const std::string& label) {
+    GLuint n = 0;
+    glGenQueries(1, &n);
+    glBeginQuery(target, n);  // a query is an object from its first glBeginQuery on
+    glEndQuery(target);
+    setLabel(ObjectKind::Query, n, label);
+    return Query(n);
 }
 
 Texture createTargetTexture(const std::string& label, GLenum internalFormat, int width, int height, int levels) {
@@ -174,6 +189,18 @@ std::string errorString(GLenum error) {
         case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
         default: return "GL error " + std::to_string(error);
     }
+}
+
+void readBufferData(GLenum target, GLsizeiptr size, void* out) {
+    if (size <= 0) return;
+    if (epoxy_is_desktop_gl()) {
+        glGetBufferSubData(target, 0, size, out);
+        return;
+    }
+    const void* mapped = glMapBufferRange(target, 0, size, GL_MAP_READ_BIT);
+    if (!mapped) throw std::runtime_error("cannot map a buffer to read it back (glMapBufferRange failed)");
+    std::memcpy(out, mapped, size_t(size));
+    glUnmapBuffer(target);
 }
 
 }  // namespace oasis::gl

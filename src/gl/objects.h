@@ -9,7 +9,7 @@
 
 namespace oasis::gl {
 
-enum class ObjectKind { Buffer, Texture, Framebuffer, VertexArray, Program, Shader, Sampler, Count };
+enum class ObjectKind { Buffer, Texture, Framebuffer, VertexArray, Program, Shader, Sampler, Query, Count };
 
 // Live objects created through these wrappers, by kind.
 int liveObjectCount(ObjectKind kind);
@@ -46,6 +46,7 @@ using VertexArray = Object<ObjectKind::VertexArray>;
 using Program = Object<ObjectKind::Program>;
 using Shader = Object<ObjectKind::Shader>;
 using Sampler = Object<ObjectKind::Sampler>;
+using Query = Object<ObjectKind::Query>;
 
 // Each is created and named at once: `label` is what capture tools list it as ("G-buffer albedo
 // (compact)", "point lights"). Labels need KHR_debug (GL 4.3); without it they are skipped.
@@ -53,6 +54,9 @@ Buffer createBuffer(const std::string& label);
 Framebuffer createFramebuffer(const std::string& label);
 VertexArray createVertexArray(const std::string& label);
 Sampler createSampler(const std::string& label);
+// A query object of `target` (GL_ANY_SAMPLES_PASSED, ...): begun once here so that it exists and
+// takes its label, and so an early glBeginConditionalRender on it reads "samples passed".
+Query createQuery(GLenum target, const std::string& label);
 
 // A texture for a render target: immutable storage, nearest filtering (of level 0), clamped.
 // `levels` > 1 leaves room for a mipmap chain that a sampler object may read.
@@ -83,5 +87,9 @@ bool hasDebugGroups();
 // --gl-debug prints with an error. Kept by DebugGroup, so it holds only oasis's own groups.
 std::string debugGroupPath();
 std::string errorString(GLenum error);
+
+// Copies `size` bytes from the start of the buffer bound to `target` into `out`: glGetBufferSubData
+// on desktop GL; OpenGL ES has none, so there through glMapBufferRange (read-only).
+void readBufferData(GLenum target, GLsizeiptr size, void* out);
 
 }  // namespace oasis::gl

@@ -23,6 +23,10 @@ const DetailNoiseLayer kDetailNoiseLayers[] = {
     {OASIS_DETAIL_GROUND_FINE, 0.25, {0.0, 0.0}},
     // Gusts drift with the wind (vegetation.vert's direction, 0.943 0.333) at 0.6 noise units a second.
     {OASIS_DETAIL_WIND_GUSTS, 0.012, {-0.943 * 0.6, -0.333 * 0.6}},
+    // Clouds on a deck at OASIS_CLOUD_ALTITUDE (common/sky.glsl): cells of about 1,800 and 450
+    // world units drifting with the wind at about 9 and 12 units a second.
+    {OASIS_DETAIL_CLOUDS_BROAD, 1.0 / 1800.0, {-0.943 * 0.005, -0.333 * 0.005}},
+    {OASIS_DETAIL_CLOUDS_FINE, 1.0 / 450.0, {-0.943 * 0.027, -0.333 * 0.027}},
 };
 static_assert(std::size(kDetailNoiseLayers) == OASIS_DETAIL_LAYERS, "one table row per detail layer");
 

@@ -69,6 +69,11 @@ struct FrameSetup {
     bool shadowsActive = false;
     const ShadowQuality* shadowQuality = nullptr;
     ShadowCascades shadowCascades;
+    // The tone map is written by the passes that write each pixel's colour last (".tonemapped"
+    // variants), ToneMapPass skipped; set by the renderer: not for --stop-before, nor with the
+    // deferred light volumes (they add to Radiance after LightingPass).
+    bool toneMapFused = false;
+    bool runsToEnd = true;  // no --stop-before (set by the renderer): what a later pass writes need not be cleared
     FrameData data;
     std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)
     LightsPath lightsPath = LightsPath::Ubo;  // set by the renderer from the context and the settings

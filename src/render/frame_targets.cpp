@@ -102,6 +102,18 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     colourWithDepthStencil(reflectionFbo_, Target::Reflection, "reflection",
                            "Reflection + depth-stencil: mirrored lighting, forward mirrored passes");
 
+    colourWithDepthStencil(finalDepthFbo_, Target::Final, "final + depth",
+                           "Final + depth-stencil: the water composite with the tone map fused");
+    radianceFinalFbo_ = gl::createFramebuffer("Radiance, Final + depth-stencil: passes with the tone map fused");
+    glBindFramebuffer(GL_FRAMEBUFFER, radianceFinalFbo_.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Radiance), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture(Target::Final), 0);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                           texture(Target::DepthStencil), 0);
+    const GLenum radianceFinalBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(2, radianceFinalBuffers);
+    checkComplete("radiance + final");
+
     finalFbo_ = gl::createFramebuffer("Final: ToneMapPass");
     glBindFramebuffer(GL_FRAMEBUFFER, finalFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Final), 0);
@@ -112,7 +124,8 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
         glBindFramebuffer(GL_FRAMEBUFFER, sceneDepthFbo_.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                texture(Target::SceneDepth), 0);
-        glDrawBuffer(GL_NONE);
+        const GLenum none = GL_NONE;
+        glDrawBuffers(1, &none);  // glDrawBuffer is desktop-only; this is the same on both APIs
         glReadBuffer(GL_NONE);
         checkComplete("scene depth");
     }

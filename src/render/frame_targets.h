@@ -37,6 +37,10 @@ public:
     GLuint radianceFramebuffer() const { return radianceFbo_.name(); }      // Radiance + depth-stencil
     GLuint reflectionFramebuffer() const { return reflectionFbo_.name(); }  // Reflection + depth-stencil
     GLuint finalFramebuffer() const { return finalFbo_.name(); }            // Final only
+    // The fused tone map's outputs: Radiance and Final (draw buffers 0 and 1) + depth-stencil for
+    // the passes that shade; Final + depth-stencil for the water composite that reads Radiance.
+    GLuint radianceFinalFramebuffer() const { return radianceFinalFbo_.name(); }
+    GLuint finalDepthFramebuffer() const { return finalDepthFbo_.name(); }
     GLuint sceneDepthFramebuffer() const { return sceneDepthFbo_.name(); }  // SceneDepth; 0 if not stored
     GLuint displayFramebuffer() const { return displayFbo_.name(); }
 
@@ -47,6 +51,7 @@ private:
     std::array<gl::Texture, size_t(Target::Count)> textures_;
     gl::Texture display_;
     gl::Framebuffer gbufferFbo_, radianceFbo_, reflectionFbo_, finalFbo_, displayFbo_, sceneDepthFbo_;
+    gl::Framebuffer radianceFinalFbo_, finalDepthFbo_;
 };
 
 }  // namespace oasis

@@ -19,6 +19,8 @@ double median(std::vector<double> values) {
 }
 
 bool hasTimerQueries() {
+    // OpenGL ES has timer queries only through GL_EXT_disjoint_timer_query (same enums and calls).
+    if (!epoxy_is_desktop_gl() && !epoxy_has_gl_extension("GL_EXT_disjoint_timer_query")) return false;
     GLint bits = 0;
     glGetQueryiv(GL_TIME_ELAPSED, GL_QUERY_COUNTER_BITS, &bits);
     return bits > 0;

@@ -34,11 +34,14 @@ std::string lightMethodNames() {
 }
 
 LightMethodChoice chooseLightMethod(bool computeAvailable, std::optional<LightMethod> forced,
-                                    const std::string& computeReason) {
+                                    const std::string& computeReason, LightsPath lightsPath) {
     LightMethod wanted = forced.value_or(kDefaultLightMethod);
     std::string how = forced ? "forced" : "default";
     if (wanted == LightMethod::Tiled && !computeAvailable)
         return {LightMethod::Volumes, "volumes (tiled was asked for but " + computeReason + ")"};
+    if (wanted == LightMethod::Tiled && lightsPath == LightsPath::Ubo)
+        return {LightMethod::Volumes,
+                "volumes (tiled was asked for, but its tile lists are a storage buffer and the lights take the ubo path)"};
     if (wanted == LightMethod::Tiled) return {LightMethod::Tiled, "tiled (" + how + "; " + computeReason + ")"};
     return {LightMethod::Volumes, "volumes (" + how + ")"};
 }

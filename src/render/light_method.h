@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "render/light_paths.h"
+
 namespace oasis {
 
 enum class LightMethod { Volumes, Tiled };
@@ -24,8 +26,11 @@ struct LightMethodChoice {
     std::string reason;  // "tiled (forced; compute shaders and SSBOs present (GL 4.3))"
 };
 // Tiled needs compute shaders and SSBOs (`computeAvailable`, `computeReason` the capability
-// report's words either way); asked for without them it falls back to volumes and says why.
+// report's words either way); asked for without them it falls back to volumes and says why. It
+// also falls back where the lights take the UBO path (`lightsPath`, forced or chosen): its tile
+// lists live in a storage buffer, and the UBO path exists for drivers whose storage buffers break,
+// so tiled there would put back exactly what the user took away.
 LightMethodChoice chooseLightMethod(bool computeAvailable, std::optional<LightMethod> forced,
-                                    const std::string& computeReason);
+                                    const std::string& computeReason, LightsPath lightsPath);
 
 }  // namespace oasis

@@ -57,6 +57,8 @@ LightsPathChoice chooseLightsPath(bool ssboAvailable, std::optional<LightsPath> 
                                          whyNoSsbo + ")"};
         return {*forced, std::string(lightsPathName(*forced)) + " (forced)"};
     }
+    // On OpenGL ES the capability's own words ("SSBOs present (ES 3.1)") say where they come from.
+    if (ssboAvailable && whyNoSsbo.find("(ES ") != std::string::npos) return {LightsPath::Ssbo, "ssbo (" + whyNoSsbo + ")"};
     if (ssboAvailable) return {LightsPath::Ssbo, "ssbo (GL 4.3 / ARB_shader_storage_buffer_object present)"};
     return {LightsPath::Ubo, "ubo (" + whyNoSsbo + ")"};
 }

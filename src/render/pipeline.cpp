@@ -73,6 +73,7 @@ bool Pipeline::run(PassContext& context, const std::string& stopBefore,
     for (const auto& pass : passes_) {
         if (pass->name() == stopBefore) break;
         if (!pass->active(context.frame)) continue;
+        OnlyWhereWaterIsSeen reflection(context, pass->reflectionWork());
         pass->run(context);
         if (afterEach) afterEach(*pass);
     }

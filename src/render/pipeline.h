@@ -1,11 +1,12 @@
 // A pipeline: an ordered list of passes over the shared frame targets.
 //   deferred: Clear(G) Terrain(G) Vegetation(G) Lighting LightVolumes WaterMask | ReflectionClear(G)
 //             Terrain(G, mirrored) Vegetation(G, mirrored) Lighting(mirrored) LightVolumes(mirrored)
-//             | WaterComposite ToneMap
+//             | WaterComposite [ToneMap]
 //   forward:  Clear(Radiance) Terrain Vegetation Sky WaterMask | ReflectionClear Terrain(mirrored)
-//             Vegetation(mirrored) Sky(mirrored) | WaterComposite ToneMap
+//             Vegetation(mirrored) Sky(mirrored) | WaterComposite [ToneMap]
 // The passes between the bars run only with reflections on and the camera above the water; the
-// light volumes only when there are point lights.
+// light volumes only when there are point lights; ToneMap only where the tone map is not fused
+// into the passes that write each pixel's colour last (FrameSetup::toneMapFused).
 #pragma once
 #include <functional>
 #include <memory>

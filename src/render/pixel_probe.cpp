@@ -66,12 +66,19 @@ StoredTexel readStoredTexel(const FrameTargets& targets, Target target, int glX,
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     StoredTexel texel{targetName(target), format.name, format.storedAs, {}};
     uint32_t words[4] = {};
-    glReadPixels(glX, glY, 1, 1, format.format, format.type, words);
+    // OpenGL ES reads colour buffers as RGBA only (RG8 as RGBA bytes, RG16 as RGBA shorts with
+    // EXT_texture_norm16) and half floats as floats: the same values, the first `channels` kept.
+    GLenum readFormat = format.format, readType = format.type;
+    if (!epoxy_is_desktop_gl() && attachment != GL_NONE) {
+        readFormat = GL_RGBA;
+        if (readType == GL_HALF_FLOAT) readType = GL_FLOAT;
+    }
+    glReadPixels(glX, glY, 1, 1, readFormat, readType, words);
     const auto* bytes = reinterpret_cast<const uint8_t*>(words);
     const auto* shorts = reinterpret_cast<const uint16_t*>(words);
     const auto* floats = reinterpret_cast<const float*>(words);
     for (int c = 0; c < format.channels; ++c) {
-        switch (format.type) {
+        switch (readType) {
             case GL_UNSIGNED_BYTE: texel.values.push_back(bytes[c]); break;
             case GL_UNSIGNED_SHORT: texel.values.push_back(shorts[c]); break;
             case GL_HALF_FLOAT: texel.values.push_back(glm::unpackHalf1x16(shorts[c])); break;

@@ -67,7 +67,7 @@ SegmentBuffer uploadSegments(const std::vector<Segment2D>& segments) {
 std::vector<Segment2D> readSegments(const SegmentBuffer& segments) {
     std::vector<Segment2D> result(segments.count);
     glBindBuffer(GL_COPY_READ_BUFFER, segments.buffer.name());
-    glGetBufferSubData(GL_COPY_READ_BUFFER, 0, GLsizeiptr(result.size() * sizeof(Segment2D)), result.data());
+    gl::readBufferData(GL_COPY_READ_BUFFER, GLsizeiptr(result.size() * sizeof(Segment2D)), result.data());
     glBindBuffer(GL_COPY_READ_BUFFER, 0);
     return result;
 }

@@ -9,12 +9,17 @@
 
 #include "gl/capabilities.h"
 #include "gl/frame_capture.h"
+#include "passes/pass.h"
+#include "render/pixel_readback.h"
 #include "render/texture_units.h"
 
 namespace oasis {
 
 Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     : shaders_(shaders), geometry_(scene.grid) {
+    const std::vector<std::string>& dialectDefines = shaders.dialect().defines;
+    setWaterClipByClipDistance(std::find(dialectDefines.begin(), dialectDefines.end(), "OASIS_NO_CLIP_DISTANCE 1") ==
+                               dialectDefines.end());
     frameUniforms_ = gl::createBuffer("frame data (ubo)");
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
@@ -40,7 +45,7 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     computeAvailable_ = caps.computeAvailable(&computeReason_);
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_);
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
     // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
     clipControlAvailable_ = caps.clipControlAvailable(&clipControlReason_);
     setDepthConvention(standardDepthConvention());
@@ -93,9 +98,13 @@ void Renderer::chooseWaterBounds() {
     const bool glsl430 = epoxy_gl_version() >= 43;
     waterBoundsAvailable_ = ssboAvailable_ && glsl430 && vertexBlocks >= 1 && fragmentBlocks >= 1 && clipDistances >= 5;
     if (waterBoundsAvailable_)
-        waterBoundsReason_ = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances)";
+        waterBoundsReason_ = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances; "
+                             "skipped where no water is seen: the water mask's occlusion query, conditional rendering)";
     else if (!ssboAvailable_)
         waterBoundsReason_ = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
+    else if (!epoxy_is_desktop_gl())
+        waterBoundsReason_ = "whole screen, stencil-masked (not on OpenGL ES yet: the bounds' storage block is "
+                             "bound by name, which ES cannot do)";
     else if (!glsl430)
         waterBoundsReason_ = "whole screen, stencil-masked (needs GL 4.3: storage blocks, their atomics and early "
                              "fragment tests in GLSL 4.30; this context is " + std::to_string(epoxy_gl_version() / 10) +
@@ -109,6 +118,7 @@ void Renderer::chooseWaterBounds() {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
         glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * sizeof(GLint), nullptr, GL_DYNAMIC_DRAW);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+        waterSeen_ = gl::createQuery(GL_ANY_SAMPLES_PASSED, "water seen (water mask's samples)");
     }
     std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(uboLights_.capacity),
                                         "LIGHTS_UBO_BLOCKS " + std::to_string(uboLights_.blocks)};
@@ -120,7 +130,7 @@ glm::ivec4 Renderer::readWaterBounds() const {
     glm::ivec4 bounds(1, 1, 0, 0);
     if (!waterBoundsAvailable_) return bounds;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(bounds), &bounds);
+    gl::readBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(bounds), &bounds);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return bounds;
 }
@@ -128,7 +138,7 @@ glm::ivec4 Renderer::readWaterBounds() const {
 void Renderer::setComputeAvailable(bool available, const std::string& reason, const std::optional<LightMethod>& forced) {
     computeAvailable_ = available;
     computeReason_ = reason;
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, forced, computeReason_);
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, forced, computeReason_, lightsChoice_.path);
 }
 
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
@@ -189,7 +199,8 @@ PassContext Renderer::context() {
     // Another renderer of the same context may have bound its own maps there since.
     shadowMaps_.bind();
     return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_,
-                       waterBoundsAvailable_ ? waterBounds_.name() : 0u, &shadowMaps_};
+                       waterBoundsAvailable_ ? waterBounds_.name() : 0u, &shadowMaps_,
+                       frame_.waterBounded ? waterSeen_.name() : 0u};
 }
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {
@@ -272,12 +283,20 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth());
     frame_.positionFromDepth = targets_->layout().positionFromDepth();
     frame_.waterBounded = waterBoundsAvailable_ && scene.water.reflectionBounds;
+    if (frame_.waterBounded)  // the shaders' copy of it: the mirrored billboards cull by the rectangle
+        frame_.data.water.w = float(unsigned(frame_.data.water.w) | OASIS_WATER_BOUNDED_FLAG);
     prepareVegetation(scene);
     lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
     frame_.lightsPath = lightsChoice_.path;
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_);
+    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
     frame_.lightMethod = lightMethodChoice_.method;
     uploadLights();
+    // The separate tone map stays for a frame stopped early (its targets shown as they were) and
+    // when the deferred light volumes add to Radiance after LightingPass (it cannot write Final).
+    bool volumesAfterLighting = active_ == PipelineKind::Deferred && frame_.lightMethod == LightMethod::Volumes &&
+                                !frame_.lights.empty();
+    frame_.toneMapFused = toneMapFusionAllowed_ && stopBefore.empty() && !volumesAfterLighting;
+    frame_.runsToEnd = stopBefore.empty();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());
@@ -295,6 +314,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         if (afterEach) afterEach(pass);
     });
     gbufferHolds_.reset();
+    radianceAwaitsWater_ = frame_.toneMapFused && waterComposite_.active(frame_);
     stoppedBefore_ = stopBefore;
     stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(Target::Albedo);
 }
@@ -304,7 +324,20 @@ void Renderer::forgetGBuffer() {
     stoppedGBufferCurrent_ = false;
 }
 
+void Renderer::ensureRadiance() {
+    if (!radianceAwaitsWater_) return;
+    radianceAwaitsWater_ = false;
+    // The separate pass's composite, blended onto Radiance; the stencil and depth are still the
+    // frame's (ensureGBuffer calls this before a view fill redraws them).
+    frame_.toneMapFused = false;
+    PassContext passContext = context();
+    FrameClipControl clipControl(targets_->depth());
+    waterComposite_.run(passContext);
+    frame_.toneMapFused = true;
+}
+
 void Renderer::ensureGBuffer() {
+    ensureRadiance();
     if (!stoppedBefore_.empty()) {
         fillStoppedFrame();
         return;
@@ -355,6 +388,9 @@ void Renderer::renderView(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view && viewName != kOverviewName)
         throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
+    // Only the views of Radiance ask for the water laid on: the final view (the window's every
+    // frame) keeps the fused frame's saving.
+    if (viewName == kOverviewName || view->source == ViewSource::Radiance) ensureRadiance();
     if (viewName == kOverviewName || (view && readsSceneSurfaces(*view))) ensureGBuffer();
     if (viewName == kOverviewName)
         debugViews_.drawOverview(passContext, stencilPath_, viewScene_.scene ? waterSceneName(*viewScene_.scene) : "as left");
@@ -366,6 +402,7 @@ std::vector<float> Renderer::readViewValues(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
                                            debugViewNames() + ")");
+    if (view->source == ViewSource::Radiance) ensureRadiance();
     if (readsSceneSurfaces(*view)) ensureGBuffer();
     PassContext passContext = context();
     return debugViews_.readValues(passContext, *view, stencilPath_);
@@ -403,7 +440,8 @@ void Renderer::showImage(const Image& image) {
     glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-std::vector<float> Renderer::readTarget(Target target) const {
+std::vector<float> Renderer::readTarget(Target target) {
+    if (target == Target::Radiance) ensureRadiance();
     if (target == Target::DepthStencil || target == Target::SceneDepth)
         throw std::invalid_argument(std::string("readTarget reads colour targets; ") + targetName(target) +
                                     " is read with readDepth()");
@@ -421,7 +459,7 @@ std::vector<float> Renderer::readTarget(Target target) const {
     }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
     glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
-    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_RGBA, GL_FLOAT, pixels.data());
+    readColourFloats(targets_->width(), targets_->height(), pixels.data());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     return pixels;
 }
@@ -440,15 +478,14 @@ std::vector<float> Renderer::readSurfacePositions() {
 std::vector<float> Renderer::readDepth() const {
     std::vector<float> depth(size_t(targets_->width()) * size_t(targets_->height()));
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
-    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    readDepthFloats(targets_->width(), targets_->height(), depth.data());
     return depth;
 }
 
 std::vector<uint8_t> Renderer::readStencil() const {
     std::vector<uint8_t> stencil(size_t(targets_->width()) * size_t(targets_->height()));
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, targets_->width(), targets_->height(), GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
+    readStencilBytes(targets_->width(), targets_->height(), stencil.data());
     return stencil;
 }
 

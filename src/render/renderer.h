@@ -10,6 +10,7 @@
 #include "debug/debug_view_pass.h"
 #include "passes/floor_pass.h"
 #include "passes/present_pass.h"
+#include "passes/water_composite_pass.h"
 #include "render/frame_setup.h"
 #include "render/float_readback.h"
 #include "render/frame_targets.h"
@@ -110,6 +111,13 @@ public:
     // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
     // that ran). viewScene() says what the views show at water pixels and why.
     void ensureGBuffer();
+    // With the tone map fused the water composite writes Final only, so Radiance holds what lies
+    // under the water there; this lays the water onto Radiance as the separate pass would have
+    // (the radiance view, the probe, readTarget). Once per frame, and only when something asks.
+    void ensureRadiance();
+    // Whether frames may fuse the tone map (default yes); off, ToneMapPass always runs (tests
+    // compare the two frames).
+    void setToneMapFusion(bool allowed) { toneMapFusionAllowed_ = allowed; }
     void setViewWaterScene(WaterScene scene) { viewWaterScene_ = scene; }
     WaterScene viewWaterScene() const { return viewWaterScene_; }
     const ViewScene& viewScene() const { return viewScene_; }
@@ -130,7 +138,7 @@ public:
     void showImage(const Image& image);
     // A colour target as RGBA floats, bottom row first (GL order); throws std::invalid_argument
     // for a target the layout does not store.
-    std::vector<float> readTarget(Target target) const;
+    std::vector<float> readTarget(Target target);
     // The G-buffer's surface positions as lighting reads them (stored, or reconstructed from the
     // depth copy DepthCopyPass last made: after a whole frame, the G-buffer's own surfaces):
     // camera-relative xyz, w 1; 0 where the SKY flag is set. RGBA floats, bottom row first.
@@ -160,6 +168,7 @@ private:
     VegetationBuffers vegetationBuffers_;
     DebugViewPass debugViews_;
     FloorPass floor_;
+    WaterCompositePass waterComposite_;  // ensureRadiance's separate composite
     PresentPass present_;
     ShadowMaps shadowMaps_;  // the sun's cascades, bound to their unit in every pass context
     FloatReadback positionsReadback_;  // readSurfacePositions' float target
@@ -169,6 +178,7 @@ private:
     bool ssboAvailable_ = false;
     std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
     gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)
+    gl::Query waterSeen_;     // did the water mask pass a sample? (the reflection renders only then)
     bool waterBoundsAvailable_ = false;
     std::string waterBoundsReason_;
     void chooseWaterBounds();  // from ssboAvailable_ and the context's limits; sets the context defines
@@ -191,6 +201,8 @@ private:
     std::string stoppedBefore_;  // the pass the last frame stopped before, "" for a whole frame
     bool stoppedGBufferCurrent_ = false;  // a stopped frame's G-buffer already holds what it reached
     std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
+    bool toneMapFusionAllowed_ = true;
+    bool radianceAwaitsWater_ = false;  // a fused frame's composite has not been laid onto Radiance
 };
 
 }  // namespace oasis

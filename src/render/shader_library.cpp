@@ -86,6 +86,8 @@ void bindLightBlocks(GLuint program) {
         if (block == GL_INVALID_INDEX) break;
         glUniformBlockBinding(program, block, GLuint(kLightBlockFirstBinding + k));
     }
+    // OpenGL ES has no glShaderStorageBlockBinding: its storage blocks say layout(binding) themselves.
+    if (!epoxy_is_desktop_gl()) return;
     if (epoxy_gl_version() < 43 && !(epoxy_has_gl_extension("GL_ARB_shader_storage_buffer_object") &&
                                      epoxy_has_gl_extension("GL_ARB_program_interface_query")))
         return;
@@ -112,9 +114,34 @@ void insertAfterVersionLine(std::string& text, const std::string& lines) {
 
 }  // namespace
 
+bool GlslDialect::es() const {
+    size_t end = versionLine.find_last_not_of(" \t\r\n");
+    return end != std::string::npos && end >= 2 && versionLine.compare(end - 1, 2, "es") == 0;
+}
+
+GlslDialect glslDialectForEs(int major, int minor, bool clipDistances) {
+    GlslDialect dialect;
+    int version = major > 3 || (major == 3 && minor >= 2) ? 320 : (major == 3 && minor == 1 ? 310 : 300);
+    dialect.versionLine = "#version " + std::to_string(version) + " es";
+    if (clipDistances) dialect.extensionLines.push_back("#extension GL_EXT_clip_cull_distance : enable");
+    else dialect.defines.push_back("OASIS_NO_CLIP_DISTANCE 1");
+    dialect.defines.push_back("OASIS_STORAGE_BINDINGS 1");  // common/storage_layout.glsl
+    // ES fragment shaders have no default float precision and lowp samplers: every stage gets highp,
+    // the precision desktop GLSL computes in, so the maths is the same.
+    dialect.precisionLines = {"precision highp float;", "precision highp int;", "precision highp sampler2D;",
+                              "precision highp usampler2D;"};
+    return dialect;
+}
+
+GlslDialect glslDialectForEs(const gl::Capabilities& caps) {
+    return glslDialectForEs(caps.major, caps.minor, caps.driverHasClipDistances());
+}
+
 std::string computeExtensionLines(const GlslDialect& dialect) {
     // What gl::Capabilities::computeAvailable checks for, enabled for a compute stage below GLSL 4.30:
-    // compute and storage blocks, layout(binding) (420pack) and `precise` (gpu_shader5).
+    // compute and storage blocks, layout(binding) (420pack) and `precise` (gpu_shader5). GLSL ES
+    // 3.20 has them all (3.10 all but `precise`, which compute needs ES 3.2 for).
+    if (dialect.es()) return {};
     int version = glslVersionNumber(dialect.versionLine);
     std::string lines;
     if (version < 430)
@@ -177,6 +204,9 @@ std::string findShaderDirectory(std::string* searched) {
 }
 
 GlslDialect glslDialectForCurrentContext() {
+    if (!epoxy_is_desktop_gl())
+        return glslDialectForEs(epoxy_gl_version() / 10, epoxy_gl_version() % 10,
+                                epoxy_has_gl_extension("GL_EXT_clip_cull_distance"));
     GlslDialect dialect;
     int version = epoxy_gl_version();  // 42 for GL 4.2; GLSL matches GL from 3.3 on
     if (version >= 33 && version < 45) dialect.versionLine = "#version " + std::to_string(version * 10) + " core";
@@ -200,8 +230,10 @@ bool ShaderLibrary::preprocess(const std::string& file, const std::vector<std::s
     out = {};
     out.text = dialect_.versionLine + "\n";
     for (const std::string& extension : dialect_.extensionLines) out.text += extension + "\n";
+    for (const std::string& define : dialect_.defines) out.text += "#define " + define + "\n";
     for (const std::string& define : defines) out.text += "#define " + define + "\n";
     for (const std::string& define : contextDefines_) out.text += "#define " + define + "\n";
+    for (const std::string& line : dialect_.precisionLines) out.text += line + "\n";
     return expandIncludes(directory_, file, out, 0, error);
 }
 
@@ -215,7 +247,7 @@ bool ShaderLibrary::compileStage(GLenum stage, const std::string& file,
     bool storageLights = std::any_of(defines.begin(), defines.end(), [](const std::string& define) {
         return define == "LIGHTS_SSBO" || define == "LIGHTS_SSBO_COUNT" || define == "LIGHTS_TILED";
     });
-    if (storageLights && glslVersionNumber(dialect_.versionLine) < 430)
+    if (storageLights && !dialect_.es() && glslVersionNumber(dialect_.versionLine) < 430)
         insertAfterVersionLine(source.text, "#extension GL_ARB_shader_storage_buffer_object : require\n");
     gl::Shader shader(glCreateShader(stage));
     gl::setLabel(shader, file);  // build() names it with its program's variant once compiled

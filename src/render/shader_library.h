@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/capabilities.h"
 #include "gl/objects.h"
 #include "render/shader_variants.h"
 
@@ -26,15 +27,27 @@ struct PreprocessedShader {
 // or without the shader tree (the commands exit 1).
 std::string findShaderDirectory(std::string* searched = nullptr);
 
-// Text for `#version`: the GLSL the context speaks (450 core by default).
+// Text for `#version`: the GLSL the context speaks (450 core by default). An OpenGL ES dialect
+// ("#version 320 es" / "300 es") adds default precisions after the defines and, where the context
+// lacks gl_ClipDistance, OASIS_NO_CLIP_DISTANCE (common/water_clip.glsl clips by discard instead).
 struct GlslDialect {
     std::string versionLine = "#version 450 core";
     std::vector<std::string> extensionLines;
+    std::vector<std::string> defines;         // the dialect's own, before the variant's
+    std::vector<std::string> precisionLines;  // ES: "precision highp float;" and the samplers'
+    bool es() const;                          // the version line ends in "es"
 };
 
 // The current context's own GLSL when it is older than 4.50 ("#version 420 core" on a GL 4.2
 // context, e.g. llvmpipe without compute shaders), so the same shaders run there; 450 otherwise.
 GlslDialect glslDialectForCurrentContext();
+
+// The OpenGL ES dialect of an ES context: "#version 320 es" on ES 3.2 (310 on 3.1, 300 on 3.0 and
+// under --force gles30), highp defaults for float, int and the samplers oasis uses, and
+// GL_EXT_clip_cull_distance where the context has it (else OASIS_NO_CLIP_DISTANCE).
+GlslDialect glslDialectForEs(const gl::Capabilities& caps);
+// The same from an ES version and whether gl_ClipDistance exists (the shader tests' ES variants).
+GlslDialect glslDialectForEs(int major, int minor, bool clipDistances);
 
 // The #extension lines a compute stage needs in this dialect (none at GLSL 4.30 and later).
 std::string computeExtensionLines(const GlslDialect& dialect);

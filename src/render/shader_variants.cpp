@@ -39,6 +39,11 @@ std::vector<ProgramVariant> buildVariants() {
         {"gbuffer.clear", "fullscreen.vert", "gbuffer_clear.frag", {"FULLSCREEN_AT_FAR_PLANE", "WATER_BOUNDED"}},
         {"water.mask", "water.vert", "water_mask.frag", {}},
         {"water.composite", "water.vert", "water_composite.frag", {}},
+        // The tone map fused into the pass that writes a pixel's colour last (README: the
+        // full-screen passes): ".tonemapped" variants also write Final; "tonemap" is the separate pass.
+        {"water.composite.tonemapped", "water.vert", "water_composite.frag", {"TONE_MAP_FUSED"}},
+        {"lighting.tonemapped", "fullscreen.vert", "lighting.frag", {"TONE_MAP_FUSED"}},
+        {"sky.forward.tonemapped", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE", "TONE_MAP_FUSED"}},
         {"tonemap", "fullscreen.vert", "tonemap.frag", {}},
         {"present", "fullscreen.vert", "debug_view.frag", {"VIEW_COLOUR"}},
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
@@ -61,6 +66,8 @@ std::vector<ProgramVariant> buildVariants() {
         {"light.tiles.mirrored", "", "", {"MIRRORED", "LIGHTS_SSBO_COUNT"}, "light_tiles.comp"},
         {"lighting.tiled", "fullscreen.vert", "lighting.frag", {"LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
         {"lighting.mirrored.tiled", "fullscreen.vert", "lighting.frag", {"MIRRORED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
+        {"lighting.tonemapped.tiled", "fullscreen.vert", "lighting.frag",
+         {"TONE_MAP_FUSED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
     };
     // Point lights, once per light path (render/light_paths.h): the forward surfaces' light loop
     // (terrain and plants) and the deferred light volumes (stencil marking, then shading), direct
@@ -71,6 +78,10 @@ std::vector<ProgramVariant> buildVariants() {
         variants.push_back({"terrain.forward.mirrored" + suffix, "terrain.vert", "terrain.frag",
                             {"OUTPUT_FORWARD", "MIRRORED", define}});
         variants.push_back({"vegetation.forward" + suffix, "vegetation.vert", "vegetation.frag", {"OUTPUT_FORWARD", define}});
+        variants.push_back({"terrain.forward.tonemapped" + suffix, "terrain.vert", "terrain.frag",
+                            {"OUTPUT_FORWARD", "TONE_MAP_FUSED", define}});
+        variants.push_back({"vegetation.forward.tonemapped" + suffix, "vegetation.vert", "vegetation.frag",
+                            {"OUTPUT_FORWARD", "TONE_MAP_FUSED", define}});
         variants.push_back({"vegetation.forward.mirrored" + suffix, "vegetation.vert", "vegetation.frag",
                             {"OUTPUT_FORWARD", "MIRRORED", define}});
         variants.push_back({"light.mark" + suffix, "light_volume.vert", "light_volume.frag", {"MARK_ONLY", define}});

@@ -3,6 +3,8 @@
 #pragma once
 #include <array>
 
+#include "common/shared_constants.glsl"
+
 namespace oasis {
 
 struct SamplerBinding {
@@ -20,10 +22,11 @@ enum TextureUnit : int {
     kUnitSource = 6,
     kUnitPlantAtlas = 7,
     kUnitProbeDepthStencil = 8,  // the probe's view of the depth-stencil target (compact's gDepth is the copy)
-    kUnitShadowMap = 9,          // the sun's cascaded shadow maps (render/shadow_maps.h), bound for the whole frame
+    kUnitRadiance = 9,           // the fused water composite's view of what lies under the water
+    kUnitShadowMap = 10,         // the sun's cascaded shadow maps (render/shadow_maps.h), bound for the whole frame
 };
 
-inline constexpr std::array<SamplerBinding, 10> kSamplerBindings{{
+inline constexpr std::array<SamplerBinding, 11> kSamplerBindings{{
     {"gAlbedo", kUnitAlbedo},
     {"gNormal", kUnitNormal},
     {"gPosition", kUnitPosition},
@@ -33,6 +36,7 @@ inline constexpr std::array<SamplerBinding, 10> kSamplerBindings{{
     {"sourceTexture", kUnitSource},
     {"plantAtlas", kUnitPlantAtlas},
     {"probeDepthStencil", kUnitProbeDepthStencil},
+    {"radianceTexture", kUnitRadiance},
     {"shadowMap", kUnitShadowMap},
 }};
 
@@ -47,15 +51,15 @@ inline constexpr int kLightCountBlockBinding = 1;
 inline constexpr const char* kLightBlockName = "LightBlock";
 inline constexpr int kLightBlockFirstBinding = 2;
 inline constexpr const char* kLightStorageName = "LightBuffer";
-inline constexpr int kLightStorageBinding = 6;
+inline constexpr int kLightStorageBinding = OASIS_BINDING_LIGHTS;
 // The tiled light method's per-tile lists (shaders/common/light_tiles.glsl), bound by its pass.
 inline constexpr const char* kLightTileStorageName = "LightTileBuffer";
-inline constexpr int kLightTileStorageBinding = 5;
+inline constexpr int kLightTileStorageBinding = OASIS_BINDING_LIGHT_TILES;
 inline constexpr const char* kLightCountStorageName = "LightCountBuffer";
-inline constexpr int kLightCountStorageBinding = 7;
+inline constexpr int kLightCountStorageBinding = OASIS_BINDING_LIGHT_COUNT;
 // The screen rectangle of the frame's visible water (shaders/common/water_bounds.glsl): its own
 // binding, as the tiled mirrored lighting reads it beside the tile lists.
 inline constexpr const char* kWaterBoundsStorageName = "WaterBoundsBuffer";
-inline constexpr int kWaterBoundsStorageBinding = 4;
+inline constexpr int kWaterBoundsStorageBinding = OASIS_BINDING_WATER_BOUNDS;
 
 }  // namespace oasis

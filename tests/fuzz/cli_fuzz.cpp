@@ -103,6 +103,7 @@ const std::vector<Flag>& flags() {
         {"--lights-path", Value::Choice, 0, 0, {"ssbo", "ssbo-count", "ubo"}},
         {"--light-method", Value::Choice, 0, 0, {"volumes", "tiled"}},
         {"--force", Value::ForceList},
+        {"--api", Value::Choice, 0, 0, {"gl", "gles"}},
         {"--depth", Value::Choice, 0, 0, {"standard", "reversed-z"}},
         {"--gbuffer", Value::Choice},
         {"--pipeline", Value::Choice, 0, 0, {"forward", "deferred"}},
@@ -133,7 +134,7 @@ const std::vector<Flag>& flags() {
     return table;
 }
 const std::vector<std::string> kForceNames = {"no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa",
-                                              "no-clip-control", "gl33"};
+                                              "no-clip-control", "gl33", "gles30"};
 // "" is the main job (no subcommand). bench runs minutes, so its cases always end in an option
 // bench refuses (--size): they fuzz its parsing, cli.bench_quick_smoke runs it.
 const std::vector<std::string> kSubcommands = {"render", "render", "render", "compare", "", "caps", "window",

@@ -239,8 +239,8 @@ protected:
 TEST_F(ShaderReload, BrokenTerrainFragKeepsPreviousProgramsUntilRestored) {
     // The default frame (camera above the lake, reflections on, the sun up) builds all four terrain
     // variants and the shadow caster; the forward ones are those of the light path the context
-    // picks (ssbo on llvmpipe).
-    breakAndRestore("terrain.frag", {"terrain.gbuffer", "terrain.forward.lights-ssbo", "terrain.gbuffer.mirrored",
+    // picks (ssbo on llvmpipe), the direct one with the tone map fused (a whole frame).
+    breakAndRestore("terrain.frag", {"terrain.gbuffer", "terrain.forward.tonemapped.lights-ssbo", "terrain.gbuffer.mirrored",
                                      "terrain.forward.mirrored.lights-ssbo", "terrain.shadow"});
 }
 
@@ -250,11 +250,13 @@ TEST_F(ShaderReload, BrokenIncludedFileIsNamedInEveryProgramThatIncludesIt) {
     // without an atlas to draw), both sky variants, both lighting variants and the water
     // composite. The G-buffer terrain and vegetation variants include lighting.glsl only inside
     // emit_surface.glsl's inactive OUTPUT_FORWARD branch, so the broken line is not compiled there. Only programs already
-    // built are reloaded (the debug views built here, "final", do not include it).
-    breakAndRestore("common/sky.glsl", {"terrain.forward.lights-ssbo", "terrain.forward.mirrored.lights-ssbo",
-                                        "vegetation.forward.lights-ssbo", "vegetation.forward.mirrored.lights-ssbo",
-                                        "sky.forward",
-                                        "sky.forward.mirrored", "lighting", "lighting.mirrored", "water.composite"});
+    // built are reloaded (the debug views built here, "final", do not include it). Whole frames
+    // fuse the tone map: the direct shading programs are the ".tonemapped" variants.
+    breakAndRestore("common/sky.glsl", {"terrain.forward.tonemapped.lights-ssbo", "terrain.forward.mirrored.lights-ssbo",
+                                        "vegetation.forward.tonemapped.lights-ssbo",
+                                        "vegetation.forward.mirrored.lights-ssbo", "sky.forward.tonemapped",
+                                        "sky.forward.mirrored", "lighting.tonemapped", "lighting.mirrored",
+                                        "water.composite.tonemapped"});
 }
 
 }  // namespace

@@ -36,6 +36,10 @@ std::string setupMismatch(const std::string& setup, const ContextInfo& info) {
     if (setup.empty()) return {};
     if (setup == "llvmpipe" || setup == "zink" || setup == "softpipe")
         return renderedBy(setup.c_str()) ? "" : setup + " is not available here: " + context;
+    if (setup == "gles") {
+        if (epoxy_is_desktop_gl()) return "gles needs an OpenGL ES context (OASIS_API=gles): " + context;
+        return {};
+    }
     if (setup == "no-ssbo-compute") {
         gl::Capabilities caps = gl::measureCapabilities();
         if (!renderedBy("llvmpipe")) return "no-ssbo-compute needs llvmpipe: " + context;
@@ -52,8 +56,16 @@ public:
         GpuState& state = gpuState();
         const char* setupVariable = std::getenv("OASIS_GPU_SETUP");
         std::string setup = setupVariable ? setupVariable : "";
+        // $OASIS_API=gles: the whole suite on an OpenGL ES 3.x context (the shader library speaks
+        // GLSL ES there: glslDialectForCurrentContext); unset or gl: desktop OpenGL core.
+        const char* apiVariable = std::getenv("OASIS_API");
+        std::string api = apiVariable ? apiVariable : "gl";
+        if (api != "gl" && api != "gles") {
+            ADD_FAILURE() << "OASIS_API must be gl or gles, not '" << api << "'";
+            return;
+        }
         try {
-            state.context = std::make_unique<HeadlessContext>();
+            state.context = std::make_unique<HeadlessContext>(api == "gles" ? MaxGlVersion{3, 2, true} : MaxGlVersion{});
         } catch (const std::exception& error) {
             state.error = error.what();
             if (!setup.empty()) {

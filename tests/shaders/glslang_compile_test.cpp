@@ -72,6 +72,85 @@ std::vector<std::string> waterBoundedVariantNames() {
 
 INSTANTIATE_TEST_SUITE_P(Shaders, WaterBoundedVariant, ::testing::ValuesIn(waterBoundedVariantNames()), testName);
 
+// The OpenGL ES dialects (--api gles): every variant as GLSL ES 3.20, and every variant the ES 3.0
+// tier can request (no compute, no storage blocks) as GLSL ES 3.00, from the same files with the
+// dialect's version line, precisions and defines. glslang 12 does not know
+// GL_EXT_clip_cull_distance, so these use the dialect without it (the water-plane clip by
+// discard); the extension's spelling is compiled by the real driver in the gpu-gles suite.
+struct EsCase {
+    std::string variant;
+    int minor;  // ES 3.minor
+};
+
+class EsVariant : public ::testing::TestWithParam<EsCase> {};
+
+TEST_P(EsVariant, CompilesAndLinksWithGlslang) {
+    std::string directory = findShaderDirectory();
+    ASSERT_FALSE(directory.empty()) << "shader directory not found";
+    ShaderLibrary library(directory, glslDialectForEs(3, GetParam().minor, false));
+    library.setContextDefines({"LIGHTS_UBO_CAPACITY 256", "LIGHTS_UBO_BLOCKS 8"});
+    const ProgramVariant* variant = findProgramVariant(GetParam().variant);
+    ASSERT_NE(variant, nullptr);
+    PreprocessedShader text;
+    std::string error;
+    ASSERT_TRUE(library.preprocess(variant->stageFiles()[0], variant->defines, text, error)) << error;
+    ASSERT_EQ(text.text.rfind(GetParam().minor == 2 ? "#version 320 es\n" : "#version 300 es\n", 0), 0u);
+    std::string log;
+    EXPECT_TRUE(compileVariant(library, *variant, log)) << variant->name << " as GLSL ES 3." << GetParam().minor << ":\n" << log;
+}
+
+bool usesStorageBlocks(const ProgramVariant& variant) {
+    const auto& d = variant.defines;
+    for (const char* define : {"LIGHTS_SSBO", "LIGHTS_SSBO_COUNT", "LIGHTS_TILED"})
+        if (std::find(d.begin(), d.end(), define) != d.end()) return true;
+    return variant.isCompute();
+}
+
+std::vector<EsCase> esCases() {
+    std::vector<EsCase> cases;
+    for (const ProgramVariant& variant : programVariants()) {
+        cases.push_back({variant.name, 2});
+        if (!usesStorageBlocks(variant)) cases.push_back({variant.name, 0});
+    }
+    return cases;
+}
+
+std::string esTestName(const ::testing::TestParamInfo<EsCase>& info) {
+    std::string name = info.param.variant + (info.param.minor == 2 ? "_es320" : "_es300");
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Shaders, EsVariant, ::testing::ValuesIn(esCases()), esTestName);
+
+// The ES header: version, dialect defines and precisions, no desktop extension lines (a compute
+// stage or a storage-block light path below GLSL 4.30 gets ARB lines on desktop, never on ES).
+TEST(EsDialect, HeaderHasVersionDefinesAndPrecisions) {
+    GlslDialect es32 = glslDialectForEs(3, 2, true);
+    EXPECT_EQ(es32.versionLine, "#version 320 es");
+    EXPECT_TRUE(es32.es());
+    ASSERT_EQ(es32.extensionLines.size(), 1u);
+    EXPECT_EQ(es32.extensionLines[0], "#extension GL_EXT_clip_cull_distance : enable");
+    EXPECT_EQ(computeExtensionLines(es32), "");
+    GlslDialect es30 = glslDialectForEs(3, 0, false);
+    EXPECT_EQ(es30.versionLine, "#version 300 es");
+    EXPECT_TRUE(es30.extensionLines.empty());
+    EXPECT_NE(std::find(es30.defines.begin(), es30.defines.end(), "OASIS_NO_CLIP_DISTANCE 1"), es30.defines.end());
+    EXPECT_FALSE(GlslDialect{}.es());
+    ShaderLibrary library(findShaderDirectory(), es30);
+    PreprocessedShader text;
+    std::string error;
+    ASSERT_TRUE(library.preprocess("terrain.vert", {"MIRRORED"}, text, error)) << error;
+    size_t precision = text.text.find("precision highp float;");
+    size_t define = text.text.find("#define MIRRORED");
+    ASSERT_NE(precision, std::string::npos);
+    EXPECT_LT(define, precision);  // #defines first, then the precisions, then the code
+    EXPECT_NE(text.text.find("precision highp usampler2D;"), std::string::npos);
+    EXPECT_NE(text.text.find("#define OASIS_NO_CLIP_DISTANCE 1"), std::string::npos);  // the clip by discard
+    EXPECT_EQ(text.text.find("GL_ARB_"), std::string::npos);
+}
+
 TEST(ShaderVariants, TableCoversEveryShaderFile) {
     // Every .vert/.frag/.comp in shaders/ is used by some variant: no shader escapes compilation.
     std::set<std::string> used;

@@ -48,6 +48,63 @@ TEST(ForcedFallbacks, CommandLineAcceptsForceOnEverySubcommandAndCapsJson) {
     EXPECT_FALSE(parseCommandLine({"caps", "--frames", "3"}).ok);
 }
 
+gl::Capabilities esContextOf(int minor, std::set<std::string> extensions = {}) {
+    gl::Capabilities caps = contextOf(3, minor, std::move(extensions));
+    caps.es = true;
+    return caps;
+}
+
+// OpenGL ES (--api gles): features by ES version and ES extension, in ES terms.
+TEST(Capabilities, EsVersionsAndExtensions) {
+    gl::Capabilities es32 = esContextOf(2, {"GL_EXT_clip_control", "GL_EXT_clip_cull_distance", "GL_KHR_debug"});
+    std::string reason;
+    EXPECT_TRUE(es32.ssboAvailable(&reason));
+    EXPECT_NE(reason.find("ES 3.1"), std::string::npos) << reason;
+    EXPECT_TRUE(es32.computeAvailable(&reason)) << reason;
+    EXPECT_TRUE(es32.stencilTexturingAvailable());
+    EXPECT_TRUE(es32.floatRenderTargetsAvailable(&reason));
+    EXPECT_NE(reason.find("ES 3.2"), std::string::npos) << reason;
+    EXPECT_TRUE(es32.clipControlAvailable(&reason));
+    EXPECT_NE(reason.find("GL_EXT_clip_control"), std::string::npos) << reason;
+    EXPECT_TRUE(es32.clipDistancesAvailable());
+    EXPECT_FALSE(es32.dsaAvailable(&reason)) << "ES has no direct state access";
+    EXPECT_EQ(es32.apiVersionName(), "OpenGL ES 3.2");
+    // ES 3.0: no storage blocks, compute or stencil texturing; float targets only by extension.
+    gl::Capabilities es30 = esContextOf(0);
+    EXPECT_FALSE(es30.ssboAvailable(&reason));
+    EXPECT_EQ(reason, "no ES 3.1");
+    EXPECT_FALSE(es30.computeAvailable());
+    EXPECT_FALSE(es30.stencilTexturingAvailable());
+    EXPECT_FALSE(es30.floatRenderTargetsAvailable(&reason));
+    EXPECT_NE(reason.find("GL_EXT_color_buffer_float"), std::string::npos) << reason;
+    EXPECT_FALSE(es30.clipDistancesAvailable(&reason));
+    EXPECT_NE(reason.find("GL_EXT_clip_cull_distance"), std::string::npos) << reason;
+    EXPECT_FALSE(es30.clipControlAvailable());
+    EXPECT_TRUE(esContextOf(0, {"GL_EXT_color_buffer_float"}).floatRenderTargetsAvailable());
+    // A desktop context is not answered by ES extensions.
+    EXPECT_FALSE(contextOf(4, 5, {"GL_EXT_clip_control"}).es);
+    EXPECT_TRUE(contextOf(3, 3).clipDistancesAvailable()) << "desktop GL 3.0 has gl_ClipDistance";
+}
+
+TEST(Capabilities, ApiOptionAndTheEsTierForcing) {
+    ParseResult r = parseCommandLine({"render", "--api", "gles", "--force", "gles30"});
+    ASSERT_TRUE(r.ok) << r.error;
+    EXPECT_EQ(r.options.scene.api, gl::Api::Gles);
+    EXPECT_TRUE(r.options.scene.force.gles30);
+    EXPECT_EQ(parseCommandLine({"render"}).options.scene.api, gl::Api::Gl);
+    EXPECT_TRUE(parseCommandLine({"caps", "--api", "gl"}).ok);
+    for (std::vector<std::string> bad : {std::vector<std::string>{"render", "--api", "vulkan"},
+                                         {"render", "--force", "gles30"},
+                                         {"render", "--api", "gles", "--force", "gl33"},
+                                         {"window", "--api", "gles"},
+                                         {"render", "--api"}}) {
+        ParseResult refused = parseCommandLine(bad);
+        EXPECT_FALSE(refused.ok) << bad.back();
+        EXPECT_FALSE(refused.error.empty());
+    }
+    EXPECT_NE(parseCommandLine({"render", "--force", "gles30"}).error.find("--api gles"), std::string::npos);
+}
+
 TEST(Capabilities, ModernContextHasEverythingUntilForcedOff) {
     gl::Capabilities caps = contextOf(4, 5);
     EXPECT_TRUE(caps.ssboAvailable() && caps.computeAvailable() && caps.stencilTexturingAvailable() &&

@@ -27,7 +27,18 @@ TEST(DriverSetups, TableSelectsDriversAndTiers) {
     EXPECT_EQ(noSsbo->arguments, (std::vector<std::string>{"--force", "no-ssbo"}));
     ASSERT_NE(findDriverSetup("llvmpipe"), nullptr);
     EXPECT_TRUE(findDriverSetup("llvmpipe")->environment.empty());
-    EXPECT_EQ(findDriverSetup("es"), nullptr);  // no ES tier yet
+    // The OpenGL ES tiers: llvmpipe's own environment, --api gles (and --force gles30) for the child.
+    ASSERT_NE(findDriverSetup("gles"), nullptr);
+    EXPECT_TRUE(findDriverSetup("gles")->environment.empty());
+    EXPECT_EQ(findDriverSetup("gles")->arguments, (std::vector<std::string>{"--api", "gles"}));
+    ASSERT_NE(findDriverSetup("gles30"), nullptr);
+    EXPECT_EQ(findDriverSetup("gles30")->arguments, (std::vector<std::string>{"--api", "gles", "--force", "gles30"}));
+    // The child's arguments parse as a render command line.
+    for (const char* name : {"gles", "gles30"}) {
+        std::vector<std::string> args = {"render"};
+        for (const std::string& argument : findDriverSetup(name)->arguments) args.push_back(argument);
+        EXPECT_TRUE(parseCommandLine(args).ok) << name << ": " << parseCommandLine(args).error;
+    }
     // Every named set-up is in the list the errors print, once.
     for (const DriverSetup& setup : driverSetups()) {
         std::string names = ", " + driverSetupNames() + ",";

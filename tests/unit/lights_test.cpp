@@ -11,6 +11,7 @@
 #include "cli/options.h"
 #include "render/frame_setup.h"
 #include "render/light_data.h"
+#include "render/light_method.h"
 #include "render/light_paths.h"
 #include "render/shader_library.h"
 #include "render/shader_variants.h"
@@ -50,6 +51,21 @@ TEST(LightPaths, ChosenFromCapabilitiesOrForcedWithAFallback) {
     LightsPathChoice refused = chooseLightsPath(false, LightsPath::Ssbo);
     EXPECT_EQ(refused.path, LightsPath::Ubo);
     EXPECT_NE(refused.reason.find("ssbo was asked for"), std::string::npos) << refused.reason;
+}
+
+TEST(LightMethod, TiledOnlyWithComputeAndStorageLightsElseVolumesSayingWhy) {
+    LightMethodChoice tiled = chooseLightMethod(true, LightMethod::Tiled, "present", LightsPath::SsboCount);
+    EXPECT_EQ(tiled.method, LightMethod::Tiled);
+    EXPECT_EQ(chooseLightMethod(true, LightMethod::Tiled, "present", LightsPath::Ssbo).method, LightMethod::Tiled);
+    LightMethodChoice noCompute = chooseLightMethod(false, LightMethod::Tiled, "no GL 4.3", LightsPath::Ssbo);
+    EXPECT_EQ(noCompute.method, LightMethod::Volumes);
+    EXPECT_NE(noCompute.reason.find("no GL 4.3"), std::string::npos) << noCompute.reason;
+    // The UBO path stands for a driver whose storage buffers break: tiled must not bring them back.
+    LightMethodChoice ubo = chooseLightMethod(true, LightMethod::Tiled, "present", LightsPath::Ubo);
+    EXPECT_EQ(ubo.method, LightMethod::Volumes);
+    EXPECT_NE(ubo.reason.find("ubo path"), std::string::npos) << ubo.reason;
+    EXPECT_EQ(chooseLightMethod(true, std::nullopt, "present", LightsPath::Ubo).method, LightMethod::Volumes);
+    EXPECT_EQ(chooseLightMethod(true, std::nullopt, "present", LightsPath::Ssbo).method, kDefaultLightMethod);
 }
 
 TEST(LightPaths, UboLayoutFromTheBlockSizeLimit) {

@@ -264,7 +264,9 @@ TEST(ProgramVariantTable, NamesUniqueAndEveryFileExists) {
 TEST(ProgramVariantTable, EveryProgramThePassesRequestExists) {
     // Fixed names used by passes/*.cpp, and the names built by variantName() for the geometry passes.
     for (const char* name : {"floor.write", "floor.read", "gbuffer.clear", "tonemap", "lighting",
-                             "lighting.mirrored", "present", "water.mask", "water.composite", "probe.height"})
+                             "lighting.mirrored", "present", "water.mask", "water.composite", "probe.height",
+                             "lighting.tonemapped", "lighting.tonemapped.tiled", "sky.forward.tonemapped",
+                             "water.composite.tonemapped"})
         EXPECT_NE(findProgramVariant(name), nullptr) << name;
     // Surfaces: G-buffer variants, and forward ones per light path (SurfacePass::surfaceProgram).
     for (const char* surface : {"terrain", "vegetation"})
@@ -274,6 +276,10 @@ TEST(ProgramVariantTable, EveryProgramThePassesRequestExists) {
             for (LightsPath path : {LightsPath::Ssbo, LightsPath::SsboCount, LightsPath::Ubo}) {
                 std::string forward = variantName(surface, SurfaceOutput::Forward, mirroring) + lightsVariantSuffix(path);
                 EXPECT_NE(findProgramVariant(forward), nullptr) << forward;
+                // The fused tone map's variant (direct only: the mirrored scene goes to Reflection).
+                std::string fused = variantName(surface, SurfaceOutput::Forward, mirroring) + ".tonemapped" +
+                                    lightsVariantSuffix(path);
+                EXPECT_EQ(findProgramVariant(fused) != nullptr, mirroring == Mirroring::Direct) << fused;
             }
         }
     for (Mirroring mirroring : {Mirroring::Direct, Mirroring::Mirrored})

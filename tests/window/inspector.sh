@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The inspector in the real window under Xvfb, driven by real X events (xdotool), against the
 # headless commands on the same still frame (no ripples, wind, plants or lights; a fixed camera
-# and hour, so the frame does not change as the window's clock runs):
+# and hour; the clock paused with Space, which prints the time: the clouds drift with it, and the
+# headless commands take that --time):
 #   - the window's frame (panel hidden) equals `oasis render` of that frame, view final and view
 #     normal (key 3), within 40 dB: the same renderer, through a window;
 #   - hovering a pixel and pressing P prints the probe there, and it is `oasis probe --at X,Y`'s
@@ -19,6 +20,12 @@ window_test_begin window.inspector "$1" "$2" "$0" "$@"
 scene=(--size 480x270 --camera 435,4,140,30,-3 --hour 12 --ripples 0 --wind 0 --vegetation off)
 start_oasis "${scene[@]}"
 toggle_panel  # H: the frame alone, and the cursor never over the panel
+from=$(mark "$OUT_LOG")
+press space
+wait_for "$OUT_LOG" "$from" '^oasis: paused at --time ' 30
+paused_at=$(tail -n "+$((from + 1))" "$OUT_LOG" | grep -m1 '^oasis: paused at --time ' | sed 's/^oasis: paused at --time //')
+step "Space: the clock paused at --time $paused_at"
+scene+=(--time "$paused_at")  # from here on, the headless commands render the paused frame
 
 # The window's framebuffer is 480x270 at the window's top-left (no title bar under twm here).
 compare_with_headless() {  # VIEW KEY

@@ -1,0 +1,164 @@
+// The tone map fused into the passes that write each pixel's colour last (FrameSetup::toneMapFused):
+// the fused frame is the separate ToneMapPass's frame, Radiance is still there for whoever asks,
+// ToneMapPass runs only where it cannot be fused, and one full screen of fragments is not shaded.
+#include "gpu_test.h"
+
+#include <algorithm>
+
+namespace oasis::gputest {
+namespace {
+
+constexpr int kWidth = 160, kHeight = 90;
+
+// The passes a frame ran, the fragment-shader invocations of each (empty without the statistics
+// query; a query spans each pass, ended and restarted after every pass that ran) and their sum.
+struct FrameRun {
+    std::vector<std::string> passes;
+    std::vector<long long> passFragments;
+    long long fragments = -1;
+};
+
+FrameRun observe(Renderer& renderer, const SceneSettings& scene) {
+    bool counted = epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query");
+    GLuint query = 0;
+    FrameRun run;
+    if (counted) {
+        glGenQueries(1, &query);
+        glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
+        run.fragments = 0;
+    }
+    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+        run.passes.push_back(pass.name());
+        if (!counted) return;
+        glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+        GLuint64 count = 0;
+        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
+        run.passFragments.push_back((long long)count);
+        run.fragments += (long long)count;
+        glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
+    });
+    if (counted) {
+        glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+        glDeleteQueries(1, &query);
+    }
+    return run;
+}
+
+bool ran(const FrameRun& run, const std::string& pass) {
+    return std::find(run.passes.begin(), run.passes.end(), pass) != run.passes.end();
+}
+
+class ToneMapFusion : public GpuTest {};
+
+// Every pose of the suite (water, under water, plants, night), both pipelines, a layout that
+// stores positions and compact: the displayed frame and Radiance equal the separate pass's.
+TEST_F(ToneMapFusion, FusedFrameEqualsTheSeparatePassAndRadianceStaysWhole) {
+    for (const std::string layout : {"standard", "compact"}) {
+        Renderer renderer(*shaders_, defaultPose().scene);
+        renderer.configure(kWidth, kHeight, layoutNamed(layout));
+        auto atlas = attachPlantAtlas(*shaders_, renderer);
+        for (const NamedPose& pose : allPoses())
+            for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+                SCOPED_TRACE(pose.name + ", " + pipelineName(kind) + ", " + layout);
+                renderer.setPipeline(kind);
+                renderer.setToneMapFusion(false);
+                renderer.renderFrame(pose.scene);
+                const std::vector<float> separateRadiance = renderer.readTarget(Target::Radiance);
+                renderer.renderView("final");
+                const Image separate = renderer.readDisplay();
+
+                renderer.setToneMapFusion(true);
+                renderer.renderFrame(pose.scene);
+                EXPECT_TRUE(renderer.lastFrame().toneMapFused);
+                renderer.renderView("final");
+                const Image fused = renderer.readDisplay();
+                EXPECT_TRUE(hasContent(fused));
+                ImageDifference difference = compareImages(separate, fused);
+                // The fused passes round to half floats as Radiance stores them (common/output.glsl
+                // storedAsHalf); the fixed-function blend and the shader's may still round the
+                // water's last bit apart: at most one step of 255, measured 0 on llvmpipe.
+                EXPECT_LE(difference.maxAbs, 1) << difference.psnrDb << " dB";
+                if (difference.maxAbs > 0)
+                    std::printf("[tone map fusion] %s %s %s: max abs %d, %.2f dB\n", pose.name.c_str(),
+                                pipelineName(kind), layout.c_str(), difference.maxAbs, difference.psnrDb);
+                // Radiance as the separate pass leaves it, the water laid on when it is asked for.
+                const std::vector<float> fusedRadiance = renderer.readTarget(Target::Radiance);
+                size_t differing = 0;
+                for (size_t i = 0; i < fusedRadiance.size(); ++i)
+                    if (fusedRadiance[i] != separateRadiance[i]) ++differing;
+                EXPECT_EQ(differing, 0u);
+            }
+    }
+}
+
+// With point lights: forward shades them in the fused surface passes, the tiled method in the
+// fused lighting pass; the stencil volumes add after lighting, so that frame keeps ToneMapPass.
+TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
+    NamedPose pose = defaultPose();
+    pose.scene.lights.count = 16;
+    Renderer renderer(*shaders_, pose.scene);
+    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    struct Case {
+        PipelineKind kind;
+        LightMethod method;
+        bool fused;
+    };
+    std::vector<Case> cases = {{PipelineKind::Forward, LightMethod::Volumes, true},
+                               {PipelineKind::Deferred, LightMethod::Volumes, false}};
+    if (renderer.computeAvailable()) cases.push_back({PipelineKind::Deferred, LightMethod::Tiled, true});
+    for (const Case& c : cases) {
+        SCOPED_TRACE(std::string(pipelineName(c.kind)) + ", " + lightMethodName(c.method));
+        SceneSettings scene = pose.scene;
+        scene.lights.method = c.method;
+        renderer.setPipeline(c.kind);
+        renderer.setToneMapFusion(false);
+        FrameRun separateRun = observe(renderer, scene);
+        renderer.renderView("final");
+        const Image separate = renderer.readDisplay();
+        EXPECT_TRUE(ran(separateRun, "ToneMapPass"));
+
+        renderer.setToneMapFusion(true);
+        FrameRun fusedRun = observe(renderer, scene);
+        renderer.renderView("final");
+        EXPECT_EQ(renderer.lastFrame().toneMapFused, c.fused);
+        EXPECT_EQ(ran(fusedRun, "ToneMapPass"), !c.fused);
+        EXPECT_LE(compareImages(separate, renderer.readDisplay()).maxAbs, 1);
+    }
+}
+
+// The pass list: the fused frame runs every pass of the separate one except ToneMapPass, in the
+// same order, and each of them shades the fragments it shaded before (the fused variants write a
+// second output, they draw nothing more): the frame shades ToneMapPass's full screen fewer.
+TEST_F(ToneMapFusion, FusedFrameRunsNoToneMapPassAndShadesAFullScreenFewer) {
+    for (const NamedPose& pose : {defaultPose(), waterPoses()[0]}) {
+        Renderer renderer(*shaders_, pose.scene);
+        renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+        auto atlas = attachPlantAtlas(*shaders_, renderer);
+        for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+            SCOPED_TRACE(pose.name + ", " + pipelineName(kind));
+            renderer.setPipeline(kind);
+            renderer.setToneMapFusion(false);
+            FrameRun separate = observe(renderer, pose.scene);
+            renderer.setToneMapFusion(true);
+            FrameRun fused = observe(renderer, pose.scene);
+            std::vector<std::string> expected = separate.passes;
+            ASSERT_FALSE(expected.empty());
+            EXPECT_EQ(expected.back(), "ToneMapPass");
+            expected.pop_back();
+            EXPECT_EQ(fused.passes, expected);
+            if (fused.fragments < 0) continue;
+            const long long toneMap = separate.passFragments.back();
+            std::printf("[tone map fusion] %s %s: %lld fragments shaded fused, %lld separate (ToneMapPass %lld)\n",
+                        pose.name.c_str(), pipelineName(kind), fused.fragments, separate.fragments, toneMap);
+            // zink's counter does not count shaded fragments (ReflectionBounds says the same).
+            if (toneMap < (long long)kWidth * kHeight) continue;
+            std::vector<long long> others(separate.passFragments.begin(), separate.passFragments.end() - 1);
+            EXPECT_EQ(fused.passFragments, others);
+            EXPECT_EQ(separate.fragments - fused.fragments, toneMap);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace oasis::gputest
