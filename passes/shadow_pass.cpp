@@ -30,7 +30,7 @@ void ShadowPass::execute(PassContext& context) {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);  // the sun sees the terrain's and the billboards' either side
-    glEnable(GL_DEPTH_CLAMP);
+    if (maps.depthClamp()) glEnable(GL_DEPTH_CLAMP);  // else common/shadow_caster.glsl flattens the casters
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(kSlopeFactor, kUnits);
     glViewport(0, 0, maps.mapSize(), maps.mapSize());
@@ -56,7 +56,7 @@ void ShadowPass::execute(PassContext& context) {
     }
 
     glDisable(GL_POLYGON_OFFSET_FILL);
-    glDisable(GL_DEPTH_CLAMP);
+    if (maps.depthClamp()) glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_DEPTH_TEST);
     if (reversed) glClipControl(context.targets.depth().clipOrigin, context.targets.depth().clipDepthMode);
     maps.bind();

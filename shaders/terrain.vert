@@ -10,7 +10,7 @@ layout(location = 0) in vec2 gridCoordinate;  // (ring fraction, segment fractio
 out vec3 vRelativePosition;
 out vec3 vNormal;
 #if defined(OUTPUT_SHADOW)
-uniform int shadowCascade;  // the cascade ShadowPass draws (common/shadows.glsl)
+#include "common/shadow_caster.glsl"
 #endif
 
 void main() {
@@ -29,7 +29,7 @@ void main() {
 #endif
     vRelativePosition = relative;
 #if defined(OUTPUT_SHADOW)
-    gl_Position = frame.shadowMatrices[shadowCascade] * vec4(relative, 1.0);
+    gl_Position = shadowCasterPosition(relative);
 #else
     gl_Position = frame.viewProjection * vec4(relative, 1.0);
 #endif

@@ -22,7 +22,7 @@ out vec3 vNormal;
 out vec3 vTint;
 out float vAtlasLod;
 #if defined(OUTPUT_SHADOW)
-uniform int shadowCascade;  // the cascade ShadowPass draws (common/shadows.glsl)
+#include "common/shadow_caster.glsl"
 #endif
 
 
@@ -87,7 +87,7 @@ void main() {
     // casts the shadow of the billboard the frame draws.
     vec4 cameraClip = frame.viewProjection * vec4(relative, 1.0);
 #if defined(OUTPUT_SHADOW)
-    gl_Position = frame.shadowMatrices[shadowCascade] * vec4(relative, 1.0);
+    gl_Position = shadowCasterPosition(relative);
 #else
     gl_Position = cameraClip;
 #endif

@@ -34,7 +34,8 @@ void ShadowMaps::ensure(int mapSize, int layers) {
         framebuffers_.push_back(gl::createFramebuffer("shadow cascade " + std::to_string(layer)));
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_.back().name());
         glFramebufferTextureLayer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, name, 0, layer);
-        glDrawBuffer(GL_NONE);
+        const GLenum none = GL_NONE;
+        glDrawBuffers(1, &none);  // glDrawBuffer is desktop-only; this is the same on both APIs
         glReadBuffer(GL_NONE);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

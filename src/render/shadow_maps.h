@@ -1,6 +1,6 @@
 // The sun's cascaded shadow maps on the GPU: one 32-bit float depth texture array (a layer per
 // cascade) with depth comparison on, read by common/shadows.glsl as a sampler2DArrayShadow (GL
-// 3.3 core), and a depth-only framebuffer per layer for ShadowPass to draw into.
+// 3.3 core and OpenGL ES 3.0 have both), and a depth-only framebuffer per layer for ShadowPass to draw into.
 #pragma once
 #include <vector>
 
@@ -20,11 +20,16 @@ public:
     GLuint texture() const { return texture_.name(); }
     // Binds the array to its texture unit (render/texture_units.h's kUnitShadowMap).
     void bind() const;
+    // Whether ShadowPass draws with GL_DEPTH_CLAMP: false where the shaders' dialect flattens the
+    // casters instead (OASIS_NO_DEPTH_CLAMP, common/shadow_caster.glsl); set by the renderer.
+    bool depthClamp() const { return depthClamp_; }
+    void setDepthClamp(bool on) { depthClamp_ = on; }
 
 private:
     gl::Texture texture_;
     std::vector<gl::Framebuffer> framebuffers_;
     int size_ = 0, layers_ = 0;
+    bool depthClamp_ = true;
 };
 
 }  // namespace oasis
