@@ -3,6 +3,9 @@
 // depth offset (the receiver's offsets in common/shadows.glsl do the rest against acne).
 #include "passes/shadow_pass.h"
 
+#include <cmath>
+#include <utility>
+
 #include "render/shadow_maps.h"
 
 namespace oasis {
@@ -12,6 +15,20 @@ namespace {
 // steep slope; the factor keeps its own texels from shadowing it.
 constexpr float kSlopeFactor = 2.0f;
 constexpr float kUnits = 2.0f;
+
+// The grid's strips whose ground lies between the horizontal distances `reach` (x nearest, y
+// farthest) from the camera: ring i >= 1 at firstRadius * ratio^(i - 1), ring 0 the centre
+// (common terrain.vert). A strip's straight edges come nearer than its inner ring by at most
+// 1 - cos(half a segment), under 0.1% for 128 segments over a full circle: 1% of slack covers it.
+std::pair<int, int> stripsWithin(glm::vec2 reach, const TerrainWedge& wedge, const TerrainGridDensity& grid) {
+    auto ringRadius = [&](int ring) {
+        return ring == 0 ? 0.0f : grid.firstRingRadius * std::pow(wedge.ringRatio, float(ring - 1));
+    };
+    int first = 0, end = grid.rings;
+    while (first < grid.rings && ringRadius(first + 1) < reach.x * 0.99f) ++first;
+    while (end > first && ringRadius(end - 1) * 0.99f > reach.y) --end;
+    return {first, end};
+}
 
 }  // namespace
 
@@ -47,7 +64,10 @@ void ShadowPass::execute(PassContext& context) {
         glClearBufferfv(GL_DEPTH, 0, &farthest);
         glUseProgram(terrain);
         glUniform1i(terrainCascade, c);
-        context.geometry.drawTerrain();
+        // Only the rings that can cast into this cascade's box (most of a low cascade's are not).
+        auto [firstStrip, endStrip] = stripsWithin(cascades.casterReach[size_t(c)], frame.wedge,
+                                                   context.geometry.density());
+        context.geometry.drawTerrainStrips(firstStrip, endStrip);
         if (plants) {
             glUseProgram(vegetation);
             glUniform1i(vegetationCascade, c);

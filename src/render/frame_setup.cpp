@@ -89,7 +89,7 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     setup.shadowsActive = scene.shadows.enabled && setup.sky.sunDirection.y > 0.0f;
     if (setup.shadowsActive) {
         setup.shadowCascades = fitShadowCascades(setup.view, setup.sky.sunDirection, *setup.shadowQuality,
-                                                 scene.viewDistance);
+                                                 scene.viewDistance, terrainHeightBounds(scene.terrain));
         const ShadowCascades& cascades = setup.shadowCascades;
         for (int c = 0; c < OASIS_SHADOW_MAX_CASCADES; ++c) d.shadowMatrices[c] = cascades.matrices[size_t(c)];
         d.shadow = glm::vec4(1.0f, float(cascades.count), cascades.fadeStart, cascades.fadeEnd);

@@ -17,6 +17,59 @@ constexpr double kNearest = 1.0;
 // Shadows fade out over the last part of the distance, ending at it.
 constexpr double kFadeShare = 0.15;
 
+// Whether the origin lies in the triangle abc (either winding, edges included).
+bool originInTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
+    auto side = [](glm::dvec2 p, glm::dvec2 q) { return p.x * q.y - p.y * q.x; };
+    double ab = side(a, b), bc = side(b, c), ca = side(c, a);
+    return (ab >= 0.0 && bc >= 0.0 && ca >= 0.0) || (ab <= 0.0 && bc <= 0.0 && ca <= 0.0);
+}
+
+double originToSegment(glm::dvec2 a, glm::dvec2 b) {
+    glm::dvec2 d = b - a;
+    double length2 = glm::dot(d, d);
+    double t = length2 > 0.0 ? std::clamp(-glm::dot(a, d) / length2, 0.0, 1.0) : 0.0;
+    return glm::length(a + d * t);
+}
+
+// The horizontal distances from the camera (the origin) of the box's square (light-space x, y
+// within +-radius, depth from its back at -radius towards the sun) between camera-relative heights
+// low and high. `toLight` maps camera-relative points to light space; its light z points to the
+// sun. The swept box lies within the hull of its square's corners at the lowest and highest depth
+// any corner needs, so the distances are those of the hull of 8 points: the farthest corner, and
+// 0 or the nearest hull edge.
+glm::vec2 casterReach(const glm::dmat4& toLight, double radius, double low, double high) {
+    glm::dmat4 fromLight = glm::inverse(toLight);
+    glm::dvec3 step = glm::dvec3(fromLight[2]);  // camera-relative change per unit of light depth
+    double nearDepth = -radius, farDepth = -radius;
+    bool first = true;
+    for (int corner = 0; corner < 4; ++corner) {
+        glm::dvec4 at = fromLight * glm::dvec4(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius, 0.0, 1.0);
+        if (step.y <= 1e-9) return {0.0f, 1e30f};  // the sun at the horizon: no bound along its rays
+        double lowDepth = (low - at.y) / step.y, highDepth = (high - at.y) / step.y;
+        nearDepth = first ? lowDepth : std::min(nearDepth, lowDepth);
+        farDepth = first ? highDepth : std::max(farDepth, highDepth);
+        first = false;
+    }
+    nearDepth = std::max(nearDepth, -radius);
+    farDepth = std::max(farDepth, nearDepth);
+    std::array<glm::dvec2, 8> points;
+    double farthest = 0.0;
+    for (int i = 0; i < 8; ++i) {
+        glm::dvec4 p = fromLight * glm::dvec4(i & 1 ? radius : -radius, i & 2 ? radius : -radius,
+                                              i & 4 ? farDepth : nearDepth, 1.0);
+        points[size_t(i)] = glm::dvec2(p.x, p.z);
+        farthest = std::max(farthest, glm::length(points[size_t(i)]));
+    }
+    double nearest = 1e30;
+    for (size_t i = 0; i < 8; ++i)
+        for (size_t j = i + 1; j < 8; ++j) {
+            nearest = std::min(nearest, originToSegment(points[i], points[j]));
+            for (size_t k = j + 1; k < 8; ++k)
+                if (originInTriangle(points[i], points[j], points[k])) nearest = 0.0;
+        }
+    return {float(nearest), float(farthest)};
+}
+
 }  // namespace
 
 const std::vector<ShadowQuality>& shadowQualities() {
@@ -45,7 +98,7 @@ std::string shadowQualityNames() {
 }
 
 ShadowCascades fitShadowCascades(const CameraView& view, const glm::vec3& toSun, const ShadowQuality& quality,
-                                 float distance) {
+                                 float distance, glm::vec2 casterHeights) {
     ShadowCascades cascades;
     cascades.count = std::clamp(quality.cascades, 1, OASIS_SHADOW_MAX_CASCADES);
     const double far = std::max(double(distance), 2.0 * kNearest);
@@ -93,6 +146,10 @@ ShadowCascades fitShadowCascades(const CameraView& view, const glm::vec3& toSun,
         cascades.sliceEnd[c] = float(end);
         cascades.texel[c] = float(texel);
         cascades.depthRange[c] = float(2.0 * radius);
+        glm::dmat4 toLight = glm::dmat4(glm::dmat3(rotation));
+        toLight[3] = glm::dvec4(offset, 1.0);
+        cascades.casterReach[size_t(c)] = casterReach(toLight, radius, double(casterHeights.x) - camera.y,
+                                                      double(casterHeights.y) - camera.y);
         start = end;
     }
     cascades.fadeEnd = float(far);

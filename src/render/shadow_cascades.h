@@ -36,13 +36,20 @@ struct ShadowCascades {
     glm::vec4 texel{0.0f};        // world units per texel
     glm::vec4 depthRange{0.0f};   // world units across each cascade's depth
     float fadeStart = 0.0f, fadeEnd = 0.0f;  // eye distances over which shadows fade out
+    // Per cascade, the horizontal distances from the camera (x nearest, y farthest) between which
+    // a caster within the casters' heights can shadow anything in the cascade's box: the box's
+    // square swept towards the sun up to the highest caster (ShadowPass draws only those rings of
+    // the terrain grid).
+    std::array<glm::vec2, OASIS_SHADOW_MAX_CASCADES> casterReach{};
 };
 
 // Fits `quality.cascades` cascades to the view out to `distance`: each slice's bounding sphere
 // (its size depends only on the slice, so turning the camera does not resize the map) seen from
 // the sun, its centre snapped to whole texels in world coordinates (so moving the camera moves
 // no shadow edge by part of a texel). `toSun` unit; the caller decides whether the sun is up.
+// `casterHeights`: the lowest and highest world height of any caster (the reach; the default
+// reaches everywhere).
 ShadowCascades fitShadowCascades(const CameraView& view, const glm::vec3& toSun, const ShadowQuality& quality,
-                                 float distance);
+                                 float distance, glm::vec2 casterHeights = glm::vec2(-1e6f, 1e6f));
 
 }  // namespace oasis

@@ -117,3 +117,39 @@ TEST(ShadowCascades, NoneAtNightOrWhenOff) {
 
 }  // namespace
 }  // namespace oasis
+
+namespace oasis {
+namespace {
+
+// ShadowPass draws only the terrain rings within each cascade's caster reach: every point of the
+// box's square swept towards the sun, at a height between the casters' bounds, must lie within
+// it (else a caster would be dropped and the image change), and with a high sun cascade 0's reach
+// must end well inside the view distance (else nothing is culled).
+TEST(ShadowCascades, CasterReachHoldsEveryCasterThatCanShadowTheBox) {
+    const glm::vec2 heights(-20.0f, 150.0f);
+    const glm::vec3 highSun = glm::normalize(glm::vec3(0.3f, 0.8f, -0.4f));
+    for (glm::vec3 sun : {kLowSun, highSun}) {
+        CameraView view = viewAt({1000, 60, -300}, 40.0f, -10.0f);
+        ShadowCascades c = fitShadowCascades(view, sun, *findShadowQuality("medium"), 4000.0f, heights);
+        for (int k = 0; k < c.count; ++k) {
+            glm::mat4 fromClip = glm::inverse(c.matrices[size_t(k)]);
+            int inside = 0;
+            for (float a = -1.0f; a <= 1.0f; a += 0.125f)
+                for (float b = -1.0f; b <= 1.0f; b += 0.125f)
+                    for (float z = 1.0f; z >= -40.0f; z -= 0.0625f) {  // from the back towards the sun, past the front
+                        glm::vec4 p = fromClip * glm::vec4(a, b, z, 1.0f);
+                        float worldY = p.y / p.w + 60.0f;
+                        if (worldY < heights.x || worldY > heights.y) continue;
+                        float distance = glm::length(glm::vec2(p.x, p.z) / p.w);
+                        ++inside;
+                        EXPECT_GE(distance, c.casterReach[size_t(k)].x * 0.999f - 0.01f) << "cascade " << k;
+                        EXPECT_LE(distance, c.casterReach[size_t(k)].y * 1.001f + 0.01f) << "cascade " << k;
+                    }
+            EXPECT_GT(inside, 0) << "cascade " << k;
+        }
+        if (sun == highSun) EXPECT_LT(c.casterReach[0].y, 1000.0f) << "cascade 0 reaches the whole view";
+    }
+}
+
+}  // namespace
+}  // namespace oasis
