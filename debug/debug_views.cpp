@@ -40,6 +40,10 @@ const std::vector<DebugView> kViews = {
     {"light-volumes", ViewSource::Position, "VIEW_LIGHT_VOLUMES",
      "how many point lights reach each surface: dark grey 0, blue 1, green 2, yellow 4, red 8, white 16+; black sky",
      {"lights reaching", "lights in the list"}, LegendScale::LightHeat},
+    {"shadow", ViewSource::Position, "VIEW_SHADOW",
+     "the sun's shadow: a hue per cascade (red, green, blue, yellow from the nearest), dark where shadowed; grey where "
+     "no cascade reaches, black sky; all grey with shadows off or the sun down",
+     {"lit fraction", "cascade (-1 none)", "sun facing (n.l)"}, LegendScale::None},
 };
 
 

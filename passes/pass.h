@@ -15,6 +15,8 @@
 
 namespace oasis {
 
+class ShadowMaps;
+
 // What every pass may use while it executes.
 struct PassContext {
     const FrameTargets& targets;
@@ -25,6 +27,8 @@ struct PassContext {
     // The rectangle of visible water (common/water_bounds.glsl): 0 where the context cannot record
     // it; recorded by WaterMaskPass, the reflection's passes clip to it when frame.waterBounded.
     GLuint waterBounds = 0;
+    // The sun's cascaded shadow maps (render/shadow_maps.h): ShadowPass draws them, lighting reads them.
+    ShadowMaps* shadowMaps = nullptr;
     // An occlusion query (GL_ANY_SAMPLES_PASSED) around WaterMaskPass's draw when the frame bounds
     // its reflection (frame.waterBounded), else 0: the reflection's passes render conditionally on it.
     GLuint waterSeen = 0;

@@ -161,6 +161,33 @@ vec4 viewValue() {  // the lights reaching the surface, the lights in the list
     return vec4(float(touching), float(lightCount()), 0.0, 0.0);
 }
 
+#elif defined(VIEW_SHADOW)
+// The sun's shadow as lighting reads it (common/shadows.glsl, at the surface's real position):
+// which cascade answered and how lit the point is.
+#include "common/shadows.glsl"
+SunShadow shadowAt(ivec2 pixel, out float facing) {
+    Surface s = readGBuffer(pixel);
+    vec3 n = normalize(s.normal);
+    facing = dot(n, frame.sunDirection.xyz);
+    return sunShadow(litPosition(s), n);
+}
+vec3 viewColour() {
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec3(0.0);
+    float facing;
+    SunShadow shadow = shadowAt(pixel, facing);
+    const vec3 hues[4] = vec3[4](vec3(1.0, 0.3, 0.25), vec3(0.3, 1.0, 0.3), vec3(0.3, 0.45, 1.0), vec3(1.0, 0.9, 0.2));
+    vec3 hue = shadow.cascade < 0 ? vec3(0.6) : hues[shadow.cascade];
+    return hue * (0.15 + 0.85 * shadow.lit);
+}
+vec4 viewValue() {  // lit fraction, cascade (-1 none), n.l
+    ivec2 pixel = gbufferPixelAt(vScreenUv);
+    if (gbufferSkyAt(pixel)) return vec4(1.0, -1.0, 0.0, 0.0);
+    float facing;
+    SunShadow shadow = shadowAt(pixel, facing);
+    return vec4(shadow.lit, float(shadow.cascade), facing, 0.0);
+}
+
 #else
 #error "define one VIEW_* remapping"
 #endif

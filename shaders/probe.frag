@@ -5,6 +5,7 @@
 #include "common/gbuffer.glsl"
 #define LIGHTS_UBO
 #include "common/lights.glsl"
+#include "common/shadows.glsl"
 
 uniform ivec2 probePixel;              // GL's pixel coordinates, bottom row 0
 uniform sampler2D probeDepthStencil;   // the depth-stencil target itself, in depth mode
@@ -30,6 +31,12 @@ void main() {
             for (int i = 0; i < lightCount(); ++i)
                 if (lightTouches(position, lightAt(i))) ++touching;
         outValue = vec4(float(touching), float(lightCount()), litPosition(s).y, 0.0);
+    }
+    else if (slot == 7) {
+        // The sun's shadow at the surface's real position, as shadeSurface reads it.
+        vec3 n = normalize(s.normal);
+        SunShadow shadow = sky ? SunShadow(1.0, -1) : sunShadow(litPosition(s), n);
+        outValue = vec4(shadow.lit, float(shadow.cascade), sky ? 0.0 : dot(n, frame.sunDirection.xyz), 0.0);
     }
 #if defined(GBUFFER_COMPACT)
     // The depth the position was reconstructed from (the depth-stencil target's, as lighting reads it).

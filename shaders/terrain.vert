@@ -1,6 +1,7 @@
 // Terrain vertices: a polar grid cell (ring, segment) placed around the camera, raised to the
 // noise height. Normals come from the height's analytic gradient, exact however coarse the grid.
 // MIRRORED: the mirror image across the water plane, clipped to what lies above the water.
+// OUTPUT_SHADOW: the same vertices seen from the sun, into one shadow cascade.
 #include "common/frame_block.glsl"
 #include "common/terrain.glsl"
 #include "common/water_clip_vertex.glsl"
@@ -8,6 +9,9 @@
 layout(location = 0) in vec2 gridCoordinate;  // (ring fraction, segment fraction)
 out vec3 vRelativePosition;
 out vec3 vNormal;
+#if defined(OUTPUT_SHADOW)
+#include "common/shadow_caster.glsl"
+#endif
 
 void main() {
     // Ring 0 is the point under the camera (a fan of zero-area triangles closes the centre);
@@ -24,5 +28,9 @@ void main() {
     relative.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - relative.y;
 #endif
     vRelativePosition = relative;
+#if defined(OUTPUT_SHADOW)
+    gl_Position = shadowCasterPosition(relative);
+#else
     gl_Position = frame.viewProjection * vec4(relative, 1.0);
+#endif
 }

@@ -3,6 +3,7 @@
 // of noise drifting with the wind plus each plant's own flutter. The base never moves.
 // MIRRORED: the mirror image across the water plane, clipped to what lies above the water; a
 // billboard whose image lands wholly outside the visible water is dropped (common/water_bounds.glsl).
+// OUTPUT_SHADOW: the same billboard (facing the camera, as drawn) seen from the sun.
 #include "common/frame_block.glsl"
 #include "common/detail_noise.glsl"
 #include "common/shared_constants.glsl"
@@ -20,6 +21,9 @@ out vec3 vRelativePosition;
 out vec3 vNormal;
 out vec3 vTint;
 out float vAtlasLod;
+#if defined(OUTPUT_SHADOW)
+#include "common/shadow_caster.glsl"
+#endif
 
 
 // Sideways displacement of a plant's top per unit of its height: at most 0.24 * wind strength
@@ -79,7 +83,14 @@ void main() {
     relative = mirroredPoint(relative);
 #endif
     vRelativePosition = relative;
-    gl_Position = frame.viewProjection * vec4(relative, 1.0);
+    // The camera's clip position picks the mip level below even for the sun's view, so a plant
+    // casts the shadow of the billboard the frame draws.
+    vec4 cameraClip = frame.viewProjection * vec4(relative, 1.0);
+#if defined(OUTPUT_SHADOW)
+    gl_Position = shadowCasterPosition(relative);
+#else
+    gl_Position = cameraClip;
+#endif
 #if defined(MIRRORED)
     vec4 corners[4];
     for (int i = 0; i < 4; ++i) {

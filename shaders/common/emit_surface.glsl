@@ -1,6 +1,7 @@
 // Where a surface goes once the material has built it, chosen by the variant's #define:
 // OUTPUT_GBUFFER stores it in the G-buffer in the layout's encoding; OUTPUT_FORWARD shades it now (linear),
-// looping over the point lights of the variant's LIGHTS_* path; TONE_MAP_FUSED also writes Final.
+// looping over the point lights of the variant's LIGHTS_* path; TONE_MAP_FUSED also writes Final;
+// OUTPUT_SHADOW keeps only the depth (the sun's shadow casters).
 #ifndef OASIS_EMIT_SURFACE_GLSL
 #define OASIS_EMIT_SURFACE_GLSL
 #include "common/surface.glsl"
@@ -24,8 +25,11 @@ void emitSurface(Surface s) {
     outFinal = finalColour(radiance);
 #endif
 }
+#elif defined(OUTPUT_SHADOW)
+// A shadow caster writes depth only (passes/shadow_pass.h): nothing of the surface is kept.
+void emitSurface(Surface s) {}
 #else
-#error "define OUTPUT_GBUFFER or OUTPUT_FORWARD"
+#error "define OUTPUT_GBUFFER, OUTPUT_FORWARD or OUTPUT_SHADOW"
 #endif
 
 #endif

@@ -34,6 +34,12 @@ struct FrameData {
     vec4 terrainNoiseOrigins[OASIS_NOISE_MAX_OCTAVES];
     vec4 detailNoiseOrigins[OASIS_DETAIL_LAYERS];  // the same for each detail layer (shared_constants.glsl)
     vec4 detailNoiseScales[2];   // noise units per world unit of layer i: [i / 4][i % 4]
+    // Sun shadows (common/shadows.glsl, src/render/shadow_cascades.h): per cascade, camera-relative
+    // world -> the cascade's clip space (xy -1..1 across its map, z -1..1 across its depth range).
+    mat4 shadowMatrices[OASIS_SHADOW_MAX_CASCADES];
+    vec4 shadow;                 // x 1 when the maps were drawn this frame, y cascade count, z fade start, w fade end (eye distance)
+    vec4 shadowTexel;            // per cascade: world units per map texel
+    vec4 shadowDepthRange;       // per cascade: world units across its depth range (clip z -1..1)
 };
 
 #endif

@@ -1,8 +1,10 @@
 // The lighting both pipelines use: the sun (Lambert diffuse, normalised Blinn-Phong specular
-// from the surface's power and intensity), hemisphere ambient from sky and ground, then what lies
-// between the surface and the eye: water (absorption) and air (fog). Output is linear radiance.
+// from the surface's power and intensity) through its shadow maps (common/shadows.glsl),
+// hemisphere ambient from sky and ground, then what lies between the surface and the eye: water
+// (absorption) and air (fog). Output is linear radiance.
 #ifndef OASIS_LIGHTING_GLSL
 #define OASIS_LIGHTING_GLSL
+#include "common/shadows.glsl"
 #include "common/sky.glsl"
 #include "common/surface.glsl"
 #include "common/water.glsl"
@@ -17,6 +19,8 @@ vec3 shadeSurface(Surface s) {
     vec3 n = normalize(s.normal);
     vec3 toCamera = normalize(-eyeToSurface);
     vec3 toSun = frame.sunDirection.xyz;
+    // The sun as it reaches the surface's real position (the same call in both pipelines).
+    vec3 sun = frame.sunRadiance.rgb * sunShadow(litPosition(s), n).lit;
     float diffuse = max(dot(n, toSun), 0.0);
     vec3 halfway = normalize(toSun + toCamera);
     float normalisation = (s.specularPower + 8.0) / 25.13274;  // (p + 8) / (8 pi)
@@ -24,7 +28,7 @@ vec3 shadeSurface(Surface s) {
         ? s.specularIntensity * normalisation * pow(max(dot(n, halfway), 0.0), s.specularPower) : 0.0;
     vec3 skyAmbient = mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, 0.5);
     vec3 ambient = mix(frame.groundAmbient.rgb, skyAmbient, 0.5 + 0.5 * n.y);
-    vec3 lit = s.albedo * (ambient + frame.sunRadiance.rgb * diffuse) + frame.sunRadiance.rgb * specular;
+    vec3 lit = s.albedo * (ambient + sun * diffuse) + sun * specular;
     // Reflections show only what is above the water, so only direct views cross it.
     if (!reflected) {
         vec3 eye = frame.cameraPosition.xyz;

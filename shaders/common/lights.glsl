@@ -83,14 +83,6 @@ int lightCount() { return 0; }
 PointLight lightAt(int i) { return PointLight(vec4(0.0), vec4(0.0)); }
 #endif
 
-// Where a surface really is, camera-relative: a reflected surface's stored position is its
-// mirror image across the water plane.
-vec3 litPosition(Surface s) {
-    vec3 p = s.relativePosition;
-    if ((s.flags & SURFACE_REFLECTED) != 0u) p.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - p.y;
-    return p;
-}
-
 // Whether a light's sphere reaches the surface (the light-volumes debug view counts these).
 bool lightTouches(vec3 position, PointLight light) {
     return distance(light.positionRadius.xyz, position) < light.positionRadius.w;

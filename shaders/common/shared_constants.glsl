@@ -55,5 +55,8 @@
 #define OASIS_PLANT_ALPHA_THRESHOLD 0.5
 // The most atlas cells (plant variants) the billboards' uniform array of drawn bounds holds.
 #define OASIS_PLANT_MAX_CELLS 16
+// Sun shadows (common/shadows.glsl): the most cascades FrameData holds matrices for; how many a
+// frame uses and their map size are one table in src/render/shadow_cascades.cpp.
+#define OASIS_SHADOW_MAX_CASCADES 4
 
 #endif

@@ -4,6 +4,7 @@
 #ifndef OASIS_SURFACE_GLSL
 #define OASIS_SURFACE_GLSL
 
+#include "common/frame_block.glsl"
 #include "common/shared_constants.glsl"
 const uint SURFACE_SKY = OASIS_SURFACE_SKY;              // nothing drawn: lighting evaluates the sky instead
 const uint SURFACE_REFLECTED = OASIS_SURFACE_REFLECTED;  // seen in the water: the mirrored scene
@@ -17,6 +18,14 @@ struct Surface {
     float specularIntensity;// multiple of 1/255
     uint flags;
 };
+
+// Where a surface really is, camera-relative: a reflected surface's stored position is its
+// mirror image across the water plane.
+vec3 litPosition(Surface s) {
+    vec3 p = s.relativePosition;
+    if ((s.flags & SURFACE_REFLECTED) != 0u) p.y = 2.0 * (frame.water.x - frame.cameraPosition.y) - p.y;
+    return p;
+}
 
 float quantiseUnit(float x) { return round(clamp(x, 0.0, 1.0) * 255.0) / 255.0; }
 

@@ -36,6 +36,10 @@ const char* kSceneOptionsHelp =
     "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
     "  --reflection-bounds on|off  the reflection's passes clip to the rectangle of visible water the\n"
     "                            water mask records (default on; off: the whole screen, stencil-masked)\n"
+    "  --shadows on|off          the sun's cascaded shadows on terrain and plants (default on; none\n"
+    "                            are drawn while the sun is below the horizon)\n"
+    "  --shadow-quality Q        low, medium (default) or high: the cascade count and map size of one\n"
+    "                            table (docs/shadows.md; the bench times each)\n"
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
     "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
@@ -60,9 +64,11 @@ const char* kSceneOptionsHelp =
     "                            compute shaders and SSBOs, else volumes, saying why)\n"
     "  --force LIST              switch capabilities off even where the driver has them, to reproduce\n"
     "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,\n"
-    "                            no-clip-control,gl33,gles30 (gl33: an OpenGL 3.3 core context; gles30:\n"
-    "                            the OpenGL ES context as ES 3.0, with --api gles; no-clip-control:\n"
-    "                            reversed-z depth falls back to standard); each fallback is reported once\n"
+    "                            no-clip-control,gl33,gles30,no-depth-clamp (gl33: an OpenGL 3.3 core\n"
+    "                            context; gles30: the OpenGL ES context as ES 3.0, with --api gles;\n"
+    "                            no-clip-control: reversed-z depth falls back to standard;\n"
+    "                            no-depth-clamp: shadow casters flattened in the shader, as on ES 3.0);\n"
+    "                            each fallback is reported once\n"
     "  --api API                 gl (desktop OpenGL core, the default) or gles (an OpenGL ES 3.x context:\n"
     "                            ES 3.2 on Mesa; headless commands only, not the window)\n"
     "  --depth CONVENTION        depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
@@ -258,7 +264,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
-            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--tone-map", "--depth-read", "--water-level", "--ripples",
+            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--tone-map", "--depth-read", "--shadows", "--shadow-quality", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
             "--force", "--api",
@@ -389,6 +395,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (value != "in-place" && value != "copy")
                 return fail("--depth-read expects in-place or copy, got '" + value + "'");
             options.scene.work.depthReadInPlace = value == "in-place";
+        } else if (flag == "--shadows") {
+            if (value != "on" && value != "off") return fail("--shadows expects on or off, got '" + value + "'");
+            options.scene.shadows.enabled = value == "on";
+        } else if (flag == "--shadow-quality") {
+            if (!findShadowQuality(value))
+                return fail("--shadow-quality expects one of " + shadowQualityNames() + ", got '" + value + "'");
+            options.scene.shadows.quality = value;
         } else if (flag == "--billboards") {
             if (value != "trimmed" && value != "whole")
                 return fail("--billboards expects trimmed or whole, got '" + value + "'");

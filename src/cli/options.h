@@ -27,6 +27,7 @@ struct SceneOptions {
     WaterSettings water;
     VegetationSettings vegetation;
     FrameWorkSettings work;  // --tone-map, --depth-read
+    ShadowSettings shadows;  // --shadows, --shadow-quality
     bool noCompute = false;  // interpret the plants on the CPU even where compute shaders exist
     int lights = 0;                          // point lights, 0..kMaxLights
     std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context

@@ -49,6 +49,23 @@ KnobLevel depthReadLevel(const char* label, bool inPlace) {
     return {label, [inPlace](SceneSettings& scene) { scene.work.depthReadInPlace = inPlace; }};
 }
 
+// Sun shadows: off, then every level of the shadow quality table (render/shadow_cascades.cpp).
+QualityKnob shadowKnob() {
+    QualityKnob knob{"shadows", "sun shadows off, or the shadow quality table's cascades x map size:", {}, 0};
+    knob.levels.push_back({"off", [](SceneSettings& scene) { scene.shadows.enabled = false; }});
+    for (const ShadowQuality& quality : shadowQualities()) {
+        std::string name = quality.name;
+        knob.description += " " + name + " " + std::to_string(quality.cascades) + " x " +
+                            std::to_string(quality.mapSize) + "^2";
+        if (name == ShadowSettings{}.quality) knob.defaultLevel = int(knob.levels.size());
+        knob.levels.push_back({quality.name, [name](SceneSettings& scene) {
+                                   scene.shadows.enabled = true;
+                                   scene.shadows.quality = name;
+                               }});
+    }
+    return knob;
+}
+
 const std::vector<QualityKnob> kKnobs = {
     {"grid", "terrain grid rings x segments (38,400 triangles at medium)",
      {gridLevel("coarse", 75, 64), gridLevel("medium", 150, 128), gridLevel("fine", 300, 256)}, 1},
@@ -65,6 +82,7 @@ const std::vector<QualityKnob> kKnobs = {
      {toneMapLevel("fused", true), toneMapLevel("separate", false)}, 0},
     {"depth-read", "compact's lighting samples the depth-stencil target, or a copy made every frame",
      {depthReadLevel("in-place", true), depthReadLevel("copy", false)}, 0},
+    shadowKnob(),
 };
 
 // Light counts: none (the default scene), 4 (where deferred starts to win on llvmpipe: the README's

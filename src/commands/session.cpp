@@ -16,6 +16,7 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     scene.hour = options.hour;
     scene.camera = options.camera;
     scene.water = options.water;
+    scene.shadows = options.shadows;
     scene.vegetation = options.vegetation;
     scene.work = options.work;
     scene.lights.count = options.lights;
@@ -92,6 +93,9 @@ RenderSession::RenderSession(const Options& options, Shaders need)
                                  "); set OASIS_SHADER_DIR to the shaders/ directory");
     GlslDialect dialect = caps.es ? glslDialectForEs(caps) : glslDialectForCurrentContext();
     if (caps.forced.gl33) dialect.versionLine = "#version 330 core";
+    const std::string noDepthClamp = "OASIS_NO_DEPTH_CLAMP 1";  // the ES dialect may have it already
+    if (!caps.depthClampAvailable() && std::find(dialect.defines.begin(), dialect.defines.end(), noDepthClamp) == dialect.defines.end())
+        dialect.defines.push_back(noDepthClamp);
     shaders = std::make_unique<ShaderLibrary>(directory, dialect);
     renderer = std::make_unique<Renderer>(*shaders, scene);
     std::string whyNoSsbo;
@@ -165,6 +169,8 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     bool clipDistances = caps.clipDistancesAvailable(&why);
     list.push_back({"clip-distances", clipDistances,
                     clipDistances ? "the reflection clipped at the water plane by " + why : why});
+    bool depthClamp = caps.depthClampAvailable(&why);
+    list.push_back({"depth-clamp", depthClamp, depthClamp ? "shadow casters nearer the sun than a cascade kept by " + why : why});
     bool debug = caps.debugOutputAvailable(&why);
     list.push_back({"debug-output", debug, debug ? "GL errors to stderr and a debug group per pass: " + why
                                                  : "fallback: no debug messages or groups (" + why + ")"});

@@ -397,9 +397,9 @@ std::string probeSummary(const PixelProbe& p) {
         std::snprintf(line, sizeof(line), "%d,%d sky; final %d %d %d; stencil %d", p.x, p.y, p.final.r, p.final.g,
                       p.final.b, p.stencil);
     else
-        std::snprintf(line, sizeof(line), "%d,%d %s; final %d %d %d; depth %.4g; n %.3f %.3f %.3f; lights %d", p.x, p.y,
-                      p.stencilMeaning.c_str(), p.final.r, p.final.g, p.final.b, p.depthEyeDistance, p.normal.x,
-                      p.normal.y, p.normal.z, p.lightsReaching);
+        std::snprintf(line, sizeof(line), "%d,%d %s; final %d %d %d; depth %.4g; n %.3f %.3f %.3f; lights %d; sun %.2f (cascade %d)",
+                      p.x, p.y, p.stencilMeaning.c_str(), p.final.r, p.final.g, p.final.b, p.depthEyeDistance, p.normal.x,
+                      p.normal.y, p.normal.z, p.lightsReaching, double(p.shadowLit), p.shadowCascade);
     return line;
 }
 
@@ -584,6 +584,16 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::SliderFloat("yaw", &pose.yawDegrees, -180.0f, 360.0f)) state.freeCamera = true;
     if (ImGui::SliderFloat("pitch", &pose.pitchDegrees, -89.0f, 89.0f)) state.freeCamera = true;
 
+    if (ImGui::CollapsingHeader("shadows")) {
+        ShadowSettings& shadows = scene.shadows;
+        ImGui::Checkbox("sun shadows", &shadows.enabled);
+        for (const ShadowQuality& quality : shadowQualities()) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(quality.name, shadows.quality == quality.name)) shadows.quality = quality.name;
+        }
+        const FrameSetup& frame = renderer.lastFrame();
+        ImGui::Text("%s", !shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
+    }
     if (ImGui::CollapsingHeader("water")) {
         WaterSettings& water = scene.water;
         ImGui::Checkbox("reflections", &water.reflections);

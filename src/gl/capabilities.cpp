@@ -23,6 +23,7 @@ const FallbackName kFallbackNames[] = {
     {"no-clip-control", &ForcedFallbacks::noClipControl},
     {"gl33", &ForcedFallbacks::gl33},
     {"gles30", &ForcedFallbacks::gles30},
+    {"no-depth-clamp", &ForcedFallbacks::noDepthClamp},
 };
 
 // What an OpenGL ES 3.0 context keeps of its extensions under --force gles30: the float colour
@@ -55,6 +56,7 @@ const FeatureSource k420Pack{4, 2, "GL_ARB_shading_language_420pack", 3, 1, null
 const FeatureSource kGpuShader5{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_EXT_gpu_shader5"};
 const FeatureSource kFloatTargets{3, 0, nullptr, 3, 2, "GL_EXT_color_buffer_float"};
 const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance"};
+const FeatureSource kDepthClamp{3, 2, "GL_ARB_depth_clamp", 0, 0, "GL_EXT_depth_clamp"};
 
 // "GL 4.3" / "ES 3.1" when the core version has it, else the extension's name when listed, else "".
 std::string source(const Capabilities& caps, const FeatureSource& feature) {
@@ -120,7 +122,7 @@ std::string ForcedFallbacks::list() const {
 }
 
 const char* forcedFallbackNames() {
-    return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33, gles30";
+    return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33, gles30, no-depth-clamp";
 }
 
 const char* apiName(Api api) { return api == Api::Gles ? "gles" : "gl"; }
@@ -162,6 +164,7 @@ bool Capabilities::driverHasDsa() const { return !source(*this, kDsa).empty(); }
 bool Capabilities::driverHasDebugOutput() const { return !source(*this, kDebug).empty(); }
 bool Capabilities::driverHasClipControl() const { return !source(*this, kClipControl).empty(); }
 bool Capabilities::driverHasClipDistances() const { return !source(*this, kClipDistances).empty(); }
+bool Capabilities::driverHasDepthClamp() const { return !source(*this, kDepthClamp).empty(); }
 bool Capabilities::driverHasFloatRenderTargets() const {
     if (es) return !source(*this, kFloatTargets).empty();
     return atLeast(3, 0) || (hasExtension("GL_ARB_texture_float") && hasExtension("GL_ARB_color_buffer_float"));
@@ -239,6 +242,15 @@ bool Capabilities::clipDistancesAvailable(std::string* reason) const {
     return answer(true, reason, "gl_ClipDistance present (" + from + ")");
 }
 
+bool Capabilities::depthClampAvailable(std::string* reason) const {
+    std::string from = source(*this, kDepthClamp);
+    const char* fallback = "fallback: the shadow casters nearer the sun than a cascade's box are flattened onto its "
+                           "front in the vertex shader (";
+    if (forced.noDepthClamp) return answer(false, reason, fallback + std::string("switched off by --force no-depth-clamp)"));
+    if (from.empty()) return answer(false, reason, fallback + missing(*this, kDepthClamp) + ")");
+    return answer(true, reason, "GL_DEPTH_CLAMP present (" + from + ")");
+}
+
 std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() const {
     static const char* kNames[] = {
         "GL_ARB_shader_storage_buffer_object", "GL_ARB_compute_shader", "GL_ARB_stencil_texturing",
@@ -247,7 +259,7 @@ std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() con
         "GL_ARB_explicit_attrib_location", "GL_ARB_explicit_uniform_location", "GL_ARB_texture_storage",
         "GL_ARB_timer_query", "GL_ARB_clip_control"};
     static const char* kEsNames[] = {"GL_EXT_color_buffer_float", "GL_EXT_clip_cull_distance", "GL_EXT_clip_control",
-                                     "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_EXT_disjoint_timer_query",
+                                     "GL_EXT_depth_clamp", "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_EXT_disjoint_timer_query",
                                      "GL_NV_read_depth_stencil"};
     std::vector<std::pair<std::string, bool>> list;
     if (es) {

@@ -22,12 +22,15 @@ struct ForcedFallbacks {
     bool noClipControl = false;  // reversed-z depth falls back to standard
     bool gl33 = false;  // create the context at OpenGL 3.3 core (the context's job, before measuring)
     bool gles30 = false;  // --api gles: treat the ES context as OpenGL ES 3.0 (core features alone)
+    bool noDepthClamp = false;  // the shadow casters flattened in the shader, as on ES 3.0
 
-    bool any() const { return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33 || gles30; }
+    bool any() const {
+        return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33 || gles30 || noDepthClamp;
+    }
     std::string list() const;  // "no-ssbo,gl33" ("" when none)
 };
 // The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa,
-// no-clip-control, gl33, gles30".
+// no-clip-control, gl33, gles30, no-depth-clamp".
 const char* forcedFallbackNames();
 // Parses a comma-separated list into `forced` (adding to what is there); false with `error` on a bad name.
 bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std::string& error);
@@ -101,6 +104,8 @@ struct Capabilities {
     bool driverHasClipControl() const;
     // gl_ClipDistance in shaders: desktop GL 3.0 on; ES only with GL_EXT_clip_cull_distance.
     bool driverHasClipDistances() const;
+    // GL_DEPTH_CLAMP: desktop GL 3.2 on; ES only with GL_EXT_depth_clamp.
+    bool driverHasDepthClamp() const;
 
     // The driver's answer with the forced fallbacks applied; `reason` (optional) says why.
     bool ssboAvailable(std::string* reason = nullptr) const;
@@ -111,6 +116,7 @@ struct Capabilities {
     bool floatRenderTargetsAvailable(std::string* reason = nullptr) const;
     bool clipControlAvailable(std::string* reason = nullptr) const;  // glClipControl: reversed-z depth
     bool clipDistancesAvailable(std::string* reason = nullptr) const;  // else a varying and discard
+    bool depthClampAvailable(std::string* reason = nullptr) const;  // else shadow casters pancaked in the shader
     // "OpenGL 4.5" / "OpenGL ES 3.2": the version as the reasons name it.
     std::string apiVersionName() const;
 

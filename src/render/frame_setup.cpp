@@ -85,6 +85,25 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
         d.detailNoiseScales[layer.index / 4][layer.index % 4] = float(layer.scale);
     }
 
+    // Sun shadows: cascades out to the view distance while the sun is above the horizon.
+    setup.shadowQuality = findShadowQuality(scene.shadows.quality);
+    if (!setup.shadowQuality) setup.shadowQuality = &defaultShadowQuality();
+    setup.shadowsActive = scene.shadows.enabled && setup.sky.sunDirection.y > 0.0f;
+    if (setup.shadowsActive) {
+        setup.shadowCascades = fitShadowCascades(setup.view, setup.sky.sunDirection, *setup.shadowQuality,
+                                                 scene.viewDistance, terrainHeightBounds(scene.terrain));
+        const ShadowCascades& cascades = setup.shadowCascades;
+        for (int c = 0; c < OASIS_SHADOW_MAX_CASCADES; ++c) d.shadowMatrices[c] = cascades.matrices[size_t(c)];
+        d.shadow = glm::vec4(1.0f, float(cascades.count), cascades.fadeStart, cascades.fadeEnd);
+        d.shadowTexel = cascades.texel;
+        d.shadowDepthRange = cascades.depthRange;
+    } else {
+        for (glm::mat4& matrix : d.shadowMatrices) matrix = glm::mat4(1.0f);
+        d.shadow = glm::vec4(0.0f);
+        d.shadowTexel = glm::vec4(0.0f);
+        d.shadowDepthRange = glm::vec4(1.0f);
+    }
+
     std::vector<WorldPointLight> world = scene.lights.list
         ? *scene.lights.list
         : scenePointLights(scene.lights.count, scene.timeSeconds, scene.terrain, scene.water.level);

@@ -9,6 +9,7 @@
 #include "render/light_data.h"
 #include "render/light_method.h"
 #include "render/light_paths.h"
+#include "render/shadow_cascades.h"
 #include "scene/camera.h"
 #include "scene/point_lights.h"
 #include "scene/sky.h"
@@ -58,6 +59,7 @@ struct SceneSettings {
     VegetationSettings vegetation;
     LightSettings lights;
     FrameWorkSettings work;
+    ShadowSettings shadows;
 };
 
 struct FrameSetup {
@@ -73,6 +75,11 @@ struct FrameSetup {
     // Such a layout's direct lighting samples the depth-stencil target itself, drawn without it
     // attached; false: it reads DepthCopyPass's copy, made every frame (set from the scene's work).
     bool depthReadInPlace = true;
+    // The sun's shadow maps this frame: shadows on and the sun above the horizon (at night no
+    // shadow pass runs). The cascades are also in `data` for the shaders.
+    bool shadowsActive = false;
+    const ShadowQuality* shadowQuality = nullptr;
+    ShadowCascades shadowCascades;
     // The tone map is written by the passes that write each pixel's colour last (".tonemapped"
     // variants), ToneMapPass skipped; set by the renderer: not for --stop-before, nor with the
     // deferred light volumes (they add to Radiance after LightingPass).

@@ -9,6 +9,7 @@
 #include "passes/light_volume_pass.h"
 #include "passes/lighting_pass.h"
 #include "passes/reflection_clear_pass.h"
+#include "passes/shadow_pass.h"
 #include "passes/sky_pass.h"
 #include "passes/terrain_pass.h"
 #include "passes/tone_map_pass.h"
@@ -28,6 +29,8 @@ bool parsePipelineKind(const std::string& text, PipelineKind& out) {
 
 Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
     auto add = [this](auto pass) { passes_.push_back(std::move(pass)); };
+    // The sun's shadow maps first: every shading pass after it reads them (both pipelines alike).
+    add(std::make_unique<ShadowPass>());
     if (kind == PipelineKind::Deferred) {
         add(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
         add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));

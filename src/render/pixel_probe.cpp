@@ -148,6 +148,7 @@ std::array<glm::vec4, kProbeSlots> decodeOnGpu(Renderer& renderer, int glX, int 
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     bindGBufferInputs(targets);
+    renderer.shadowMaps().bind();
     glActiveTexture(GL_TEXTURE0 + kUnitProbeDepthStencil);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::DepthStencil));
     glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
@@ -202,6 +203,9 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     if (targets.layout().positionFromDepth()) probe.sceneDepth = slot[6].x;
     probe.lightsReaching = int(std::lround(slot[5].x));
     probe.lightsInList = int(std::lround(slot[5].y));
+    probe.shadowLit = slot[7].x;
+    probe.shadowCascade = int(std::lround(slot[7].y));
+    probe.sunFacing = slot[7].z;
     // The surface's own world position: a reflection is stored as its mirror image.
     glm::dvec3 camera = renderer.lastFrame().view.pose.position;
     glm::dvec3 relative = glm::dvec3(probe.relativePosition);
@@ -293,6 +297,12 @@ std::string probeText(const PixelProbe& p) {
         add("  info           specular power %g, intensity %.6g, flags %u (%s)\n", double(p.specularPower),
             double(p.specularIntensity), p.flags, p.flagNames.empty() ? "none" : joined(p.flagNames, ", ", false).c_str());
         add("  lights         %d of %d point lights reach the surface\n", p.lightsReaching, p.lightsInList);
+        if (p.shadowCascade >= 0)
+            add("  shadow         lit fraction %.4g from sun cascade %d (n.l %.4g)\n", double(p.shadowLit),
+                p.shadowCascade, double(p.sunFacing));
+        else
+            add("  shadow         lit fraction %.4g, no cascade (shadows off, sun down or beyond the maps; n.l %.4g)\n",
+                double(p.shadowLit), double(p.sunFacing));
     }
     add("  depth          %.9g (%s), eye distance along the view axis %.6g\n", p.depth, p.depthCleared ? "cleared: nothing drawn" : "drawn",
         p.depthEyeDistance);
@@ -340,6 +350,8 @@ std::string probeJson(const PixelProbe& p) {
             std::to_string(p.final.b) + ", " + std::to_string(p.final.a) + "]";
     json += ", \"lights_reaching\": " + std::to_string(p.lightsReaching) + ", \"lights_in_list\": " +
             std::to_string(p.lightsInList);
+    json += ", \"shadow\": {\"lit_fraction\": " + numbers({p.shadowLit}, "%.6g") +
+            ", \"cascade\": " + std::to_string(p.shadowCascade) + ", \"sun_facing\": " + numbers({p.sunFacing}, "%.6g") + "}";
     json += ", \"water_scene\": " + (p.waterScene.empty() ? std::string("null") : quoted(p.waterScene));
     json += ", \"encoding_error\": " +
             (p.hasEncodingError ? "{\"normal_degrees\": " + numbers({p.normalErrorDegrees}, "%.6g") +

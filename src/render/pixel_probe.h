@@ -47,6 +47,10 @@ struct PixelProbe {
     glm::vec4 radiance{0.0f}, reflection{0.0f};  // linear HDR, as stored (RGBA16F)
     glm::ivec4 final{0};                         // the displayed 8-bit colour
     int lightsReaching = 0, lightsInList = 0;    // point lights whose sphere holds the surface
+    // The sun's shadow as lighting reads it (common/shadows.glsl): 0 shadowed .. 1 lit, the cascade
+    // that answered (-1: none, shadows off, the sun down or the sky), and n.l towards the sun.
+    float shadowLit = 1.0f, sunFacing = 0.0f;
+    int shadowCascade = -1;
     std::string waterScene;  // on water pixels: which scene the G-buffer holds there and why; else ""
 
     // The layout's encoding error here against `full` (not for full itself; NaN: no common surface).

@@ -20,6 +20,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     const std::vector<std::string>& dialectDefines = shaders.dialect().defines;
     setWaterClipByClipDistance(std::find(dialectDefines.begin(), dialectDefines.end(), "OASIS_NO_CLIP_DISTANCE 1") ==
                                dialectDefines.end());
+    shadowMaps_.setDepthClamp(std::find(dialectDefines.begin(), dialectDefines.end(), "OASIS_NO_DEPTH_CLAMP 1") ==
+                              dialectDefines.end());
     frameUniforms_ = gl::createBuffer("frame data (ubo)");
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
@@ -196,8 +198,11 @@ void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
 }
 
 PassContext Renderer::context() {
+    // Another renderer of the same context may have bound its own maps there since.
+    shadowMaps_.bind();
     return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_,
-                       waterBoundsAvailable_ ? waterBounds_.name() : 0u, frame_.waterBounded ? waterSeen_.name() : 0u};
+                       waterBoundsAvailable_ ? waterBounds_.name() : 0u, &shadowMaps_,
+                       frame_.waterBounded ? waterSeen_.name() : 0u};
 }
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {

@@ -19,6 +19,7 @@
 #include "render/plant_atlas.h"
 #include "render/scene_geometry.h"
 #include "render/shader_library.h"
+#include "render/shadow_maps.h"
 #include "render/vegetation_buffers.h"
 #include "render/view_fill.h"
 #include "scene/vegetation.h"
@@ -126,6 +127,7 @@ public:
     const FrameSetup& lastFrame() const { return frame_; }
     ShaderLibrary& shaders() { return shaders_; }
     const SceneGeometry& geometry() const { return geometry_; }
+    const ShadowMaps& shadowMaps() const { return shadowMaps_; }
 
     Image readDisplay() const;
     // Puts an image of the frame's size (top row first) into Display, e.g. a view's values mapped
@@ -166,6 +168,7 @@ private:
     FloorPass floor_;
     WaterCompositePass waterComposite_;  // ensureRadiance's separate composite
     PresentPass present_;
+    ShadowMaps shadowMaps_;  // the sun's cascades, bound to their unit in every pass context
     FloatReadback positionsReadback_;  // readSurfacePositions' float target
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path

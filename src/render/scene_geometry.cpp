@@ -1,6 +1,8 @@
 // Uploads the terrain grid; draws it and full-screen triangles.
 #include "render/scene_geometry.h"
 
+#include <algorithm>
+
 #include "scene/point_lights.h"
 
 namespace oasis {
@@ -38,6 +40,17 @@ SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(densi
 void SceneGeometry::drawTerrain() const {
     glBindVertexArray(terrainVao_.name());
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+}
+
+void SceneGeometry::drawTerrainStrips(int first, int end) const {
+    const int perStrip = density_.segments * 6;  // two triangles per segment (buildTerrainGrid)
+    first = std::max(first, 0);
+    end = std::min(end, density_.rings);
+    if (end <= first) return;
+    glBindVertexArray(terrainVao_.name());
+    glDrawElements(GL_TRIANGLES, (end - first) * perStrip, GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(size_t(first) * size_t(perStrip) * sizeof(uint32_t)));
     glBindVertexArray(0);
 }
 

@@ -12,6 +12,9 @@ public:
 
     const TerrainGridDensity& density() const { return density_; }
     void drawTerrain() const;
+    // The grid's strips [first, end) only, strip i lying between rings i and i + 1 (the indices
+    // go ring by ring, so a run of strips is one run of indices).
+    void drawTerrainStrips(int first, int end) const;
     void drawFullscreenTriangle() const;
     void drawWaterQuad() const;  // four vertices generated in water.vert
     int terrainTriangles() const { return indexCount_ / 3; }

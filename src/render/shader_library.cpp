@@ -119,22 +119,23 @@ bool GlslDialect::es() const {
     return end != std::string::npos && end >= 2 && versionLine.compare(end - 1, 2, "es") == 0;
 }
 
-GlslDialect glslDialectForEs(int major, int minor, bool clipDistances) {
+GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp) {
     GlslDialect dialect;
     int version = major > 3 || (major == 3 && minor >= 2) ? 320 : (major == 3 && minor == 1 ? 310 : 300);
     dialect.versionLine = "#version " + std::to_string(version) + " es";
     if (clipDistances) dialect.extensionLines.push_back("#extension GL_EXT_clip_cull_distance : enable");
     else dialect.defines.push_back("OASIS_NO_CLIP_DISTANCE 1");
+    if (!depthClamp) dialect.defines.push_back("OASIS_NO_DEPTH_CLAMP 1");  // passes/shadow_pass.cpp
     dialect.defines.push_back("OASIS_STORAGE_BINDINGS 1");  // common/storage_layout.glsl
     // ES fragment shaders have no default float precision and lowp samplers: every stage gets highp,
     // the precision desktop GLSL computes in, so the maths is the same.
     dialect.precisionLines = {"precision highp float;", "precision highp int;", "precision highp sampler2D;",
-                              "precision highp usampler2D;"};
+                              "precision highp usampler2D;", "precision highp sampler2DArrayShadow;"};
     return dialect;
 }
 
 GlslDialect glslDialectForEs(const gl::Capabilities& caps) {
-    return glslDialectForEs(caps.major, caps.minor, caps.driverHasClipDistances());
+    return glslDialectForEs(caps.major, caps.minor, caps.driverHasClipDistances(), caps.driverHasDepthClamp());
 }
 
 std::string computeExtensionLines(const GlslDialect& dialect) {
@@ -206,7 +207,8 @@ std::string findShaderDirectory(std::string* searched) {
 GlslDialect glslDialectForCurrentContext() {
     if (!epoxy_is_desktop_gl())
         return glslDialectForEs(epoxy_gl_version() / 10, epoxy_gl_version() % 10,
-                                epoxy_has_gl_extension("GL_EXT_clip_cull_distance"));
+                                epoxy_has_gl_extension("GL_EXT_clip_cull_distance"),
+                                epoxy_has_gl_extension("GL_EXT_depth_clamp"));
     GlslDialect dialect;
     int version = epoxy_gl_version();  // 42 for GL 4.2; GLSL matches GL from 3.3 on
     if (version >= 33 && version < 45) dialect.versionLine = "#version " + std::to_string(version * 10) + " core";

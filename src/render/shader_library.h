@@ -44,10 +44,12 @@ GlslDialect glslDialectForCurrentContext();
 
 // The OpenGL ES dialect of an ES context: "#version 320 es" on ES 3.2 (310 on 3.1, 300 on 3.0 and
 // under --force gles30), highp defaults for float, int and the samplers oasis uses, and
-// GL_EXT_clip_cull_distance where the context has it (else OASIS_NO_CLIP_DISTANCE).
+// GL_EXT_clip_cull_distance where the context has it (else OASIS_NO_CLIP_DISTANCE), and
+// OASIS_NO_DEPTH_CLAMP where it lacks GL_EXT_depth_clamp (the shadow casters' fallback).
 GlslDialect glslDialectForEs(const gl::Capabilities& caps);
-// The same from an ES version and whether gl_ClipDistance exists (the shader tests' ES variants).
-GlslDialect glslDialectForEs(int major, int minor, bool clipDistances);
+// The same from an ES version and whether gl_ClipDistance and GL_DEPTH_CLAMP exist (the shader
+// tests' ES variants).
+GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp);
 
 // The #extension lines a compute stage needs in this dialect (none at GLSL 4.30 and later).
 std::string computeExtensionLines(const GlslDialect& dialect);

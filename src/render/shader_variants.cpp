@@ -29,6 +29,9 @@ std::vector<ProgramVariant> buildVariants() {
         {"terrain.gbuffer.mirrored", "terrain.vert", "terrain.frag", {"OUTPUT_GBUFFER", "MIRRORED"}},
         {"vegetation.gbuffer", "vegetation.vert", "vegetation.frag", {"OUTPUT_GBUFFER"}},
         {"vegetation.gbuffer.mirrored", "vegetation.vert", "vegetation.frag", {"OUTPUT_GBUFFER", "MIRRORED"}},
+        // The sun's shadow casters (passes/shadow_pass.h): depth only, plants alpha-tested as drawn.
+        {"terrain.shadow", "terrain.vert", "terrain.frag", {"OUTPUT_SHADOW"}},
+        {"vegetation.shadow", "vegetation.vert", "vegetation.frag", {"OUTPUT_SHADOW"}},
         {"sky.forward", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE"}},
         {"sky.forward.mirrored", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE", "MIRRORED"}},
         {"lighting", "fullscreen.vert", "lighting.frag", {}},

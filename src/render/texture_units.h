@@ -23,9 +23,10 @@ enum TextureUnit : int {
     kUnitPlantAtlas = 7,
     kUnitProbeDepthStencil = 8,  // the probe's view of the depth-stencil target (compact's gDepth is the copy)
     kUnitRadiance = 9,           // the fused water composite's view of what lies under the water
+    kUnitShadowMap = 10,         // the sun's cascaded shadow maps (render/shadow_maps.h), bound for the whole frame
 };
 
-inline constexpr std::array<SamplerBinding, 10> kSamplerBindings{{
+inline constexpr std::array<SamplerBinding, 11> kSamplerBindings{{
     {"gAlbedo", kUnitAlbedo},
     {"gNormal", kUnitNormal},
     {"gPosition", kUnitPosition},
@@ -36,6 +37,7 @@ inline constexpr std::array<SamplerBinding, 10> kSamplerBindings{{
     {"plantAtlas", kUnitPlantAtlas},
     {"probeDepthStencil", kUnitProbeDepthStencil},
     {"radianceTexture", kUnitRadiance},
+    {"shadowMap", kUnitShadowMap},
 }};
 
 inline constexpr const char* kFrameBlockName = "FrameBlock";

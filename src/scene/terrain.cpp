@@ -34,6 +34,17 @@ glm::vec3 terrainHeightFromCamera(const TerrainShape& shape, const NoiseOrigins&
     return heightFromNoise(shape, fractalNoiseFrom(origins, relativeXZ * shape.frequency, shape.octaves));
 }
 
+glm::vec2 terrainHeightBounds(const TerrainShape& shape) {
+    // h = amplitude * (n + k n^2) + base over |n| <= 2: highest at n = 2, lowest at the parabola's
+    // vertex n = -1 / (2k) when that lies inside (it does for k >= 0.25), else at n = -2.
+    const float k = kValleyFlattening, n = 2.0f;
+    auto height = [&](float noise) { return shape.amplitude * (noise + k * noise * noise) + shape.baseHeight; };
+    float vertex = k > 0.0f ? -1.0f / (2.0f * k) : -n;
+    float lowest = std::min(height(-n), height(std::max(vertex, -n)));
+    float highest = std::max(height(n), height(-n));
+    return {lowest - 1.0f, highest + 1.0f};
+}
+
 glm::vec3 terrainNormal(const TerrainShape& shape, glm::dvec2 worldXZ) {
     glm::vec3 h = terrainHeight(shape, worldXZ);
     return glm::normalize(glm::vec3(-h.y, 1.0f, -h.z));

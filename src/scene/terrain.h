@@ -29,6 +29,10 @@ NoiseOrigins terrainNoiseOrigins(const TerrainShape& shape, glm::dvec2 worldXZ);
 // terrainHeight by float rounding that grows with the offset (not with the camera's distance
 // from the world's origin): measured 1.5e-3 at 4000 units, below 1e-4 within 500.
 glm::vec3 terrainHeightFromCamera(const TerrainShape& shape, const NoiseOrigins& origins, glm::vec2 relativeXZ);
+// The lowest and highest height anywhere (x low, y high): the fractal noise stays within +-2 (its
+// octaves' amplitudes 1, 1/2, ... sum below 2, each octave within +-1), widened by a unit for the
+// GPU's float rounding. The shadow pass culls the terrain's casters with it.
+glm::vec2 terrainHeightBounds(const TerrainShape& shape);
 
 // How finely the grid follows the screen: the grid's density knob.
 struct TerrainGridDensity {

@@ -38,7 +38,8 @@ assert result.OK(), f"cannot replay the capture: {result}"
 failures = []
 
 # The pass markers, in the order the deferred pipeline runs them (compact, no lights: the direct
-# lighting reads depth in place, only the reflection's lighting takes a copy).
+# lighting reads depth in place, only the reflection's lighting takes a copy; the sun is up in the
+# captured frame, so the shadow pass runs first).
 structured = controller.GetStructuredFile()
 markers = []
 def walk(actions, path):
@@ -48,7 +49,7 @@ def walk(actions, path):
             walk(action.children, markers[-1])
 walk(controller.GetRootActions(), [])
 passes = [m[-1] for m in markers if m[:-1] == ["deferred"]]
-expected = ["ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer", "LightingPass",
+expected = ["ShadowPass", "ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer", "LightingPass",
             "WaterMaskPass", "ReflectionClearPass.gbuffer", "TerrainPass.gbuffer.mirrored",
             "VegetationPass.gbuffer.mirrored", "DepthCopyPass.mirrored", "LightingPass.mirrored",
             "WaterCompositePass"]  # the tone map fused: no ToneMapPass in a whole frame

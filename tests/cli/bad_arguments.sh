@@ -85,6 +85,9 @@ scene_cases() {
 --reflection-bounds|maybe
 --tone-map|maybe
 --depth-read|inplace
+--shadows|maybe
+--shadows|ON
+--shadow-quality|ultra
 --vegetation-density|4.5
 --vegetation-density|-1
 --wind|3.5
@@ -101,7 +104,7 @@ EOF
 }
 
 # Options that take a value (each is tried with its value missing).
-value_flags="--size --time --hour --camera --gbuffer --depth --reflections --water-level --ripples --absorption
+value_flags="--size --time --hour --camera --gbuffer --depth --reflections --shadows --shadow-quality --water-level --ripples --absorption
   --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
   --stop-before --out-dir --frames --driver --reference --driver-timeout"
 

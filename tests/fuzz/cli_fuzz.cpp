@@ -96,6 +96,8 @@ const std::vector<Flag>& flags() {
         {"--reflection-bounds", Value::Choice, 0, 0, {"on", "off"}},
         {"--tone-map", Value::Choice, 0, 0, {"fused", "separate"}},
         {"--depth-read", Value::Choice, 0, 0, {"in-place", "copy"}},
+        {"--shadows", Value::Choice, 0, 0, {"on", "off"}},
+        {"--shadow-quality", Value::Choice, 0, 0, {"low", "medium", "high"}},
         {"--vegetation-density", Value::Number, 0, 4},
         {"--wind", Value::Number, 0, 3},
         {"--no-compute", Value::None},
@@ -136,7 +138,7 @@ const std::vector<Flag>& flags() {
     return table;
 }
 const std::vector<std::string> kForceNames = {"no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa",
-                                              "no-clip-control", "gl33", "gles30"};
+                                              "no-clip-control", "gl33", "gles30", "no-depth-clamp"};
 // "" is the main job (no subcommand). bench runs minutes, so its cases always end in an option
 // bench refuses (--size): they fuzz its parsing, cli.bench_quick_smoke runs it.
 const std::vector<std::string> kSubcommands = {"render", "render", "render", "compare", "", "caps", "window",

@@ -237,11 +237,11 @@ protected:
 };
 
 TEST_F(ShaderReload, BrokenTerrainFragKeepsPreviousProgramsUntilRestored) {
-    // The default frame (camera above the lake, reflections on) builds all four terrain variants;
-    // the forward ones are those of the light path the context picks (ssbo on llvmpipe), the direct
-    // one with the tone map fused (a whole frame).
+    // The default frame (camera above the lake, reflections on, the sun up) builds all four terrain
+    // variants and the shadow caster; the forward ones are those of the light path the context
+    // picks (ssbo on llvmpipe), the direct one with the tone map fused (a whole frame).
     breakAndRestore("terrain.frag", {"terrain.gbuffer", "terrain.forward.tonemapped.lights-ssbo", "terrain.gbuffer.mirrored",
-                                     "terrain.forward.mirrored.lights-ssbo"});
+                                     "terrain.forward.mirrored.lights-ssbo", "terrain.shadow"});
 }
 
 TEST_F(ShaderReload, BrokenIncludedFileIsNamedInEveryProgramThatIncludesIt) {

@@ -336,6 +336,23 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         float grey = 0.05f + 0.1f * std::clamp(normalAt(x, y).y, 0.0f, 1.0f);
         return std::make_pair(to8bit(glm::vec3(grey)), 1);
     };
+    // The sun's shadow: a hue per cascade (grey for none) darkened by the lit fraction, from the
+    // view's own numbers, which must be in range and whose n.l is the G-buffer normal's.
+    const std::vector<float> shadowValues = renderer.readViewValues("shadow");
+    const glm::vec3 toSun(frame.sunDirection);
+    int shadowValuesWrong = 0;
+    expected["shadow"] = [&](int x, int y) {
+        if (flagsAt(x, y) & kSurfaceSky) return std::make_pair(glm::ivec3(0), 0);
+        glm::vec4 v = texel(shadowValues, kWidth, x, y);
+        int cascade = int(std::lround(v.y));
+        glm::vec3 n = glm::normalize(normalAt(x, y));
+        if (v.x < 0.0f || v.x > 1.0f || cascade < -1 || cascade >= OASIS_SHADOW_MAX_CASCADES ||
+            std::fabs(v.z - glm::dot(n, toSun)) > 0.02f)
+            ++shadowValuesWrong;
+        const glm::vec3 hues[4] = {{1.0f, 0.3f, 0.25f}, {0.3f, 1.0f, 0.3f}, {0.3f, 0.45f, 1.0f}, {1.0f, 0.9f, 0.2f}};
+        glm::vec3 hue = cascade < 0 || cascade > 3 ? glm::vec3(0.6f) : hues[cascade];
+        return std::make_pair(to8bit(hue * (0.15f + 0.85f * v.x)), 1);
+    };
     expected["reflection"] = [&](int x, int y) {
         // Tone-mapped like Final (shaders/common/output.glsl); black outside the water.
         glm::vec3 r(texel(reflection, kWidth, x, y));
@@ -382,6 +399,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
             EXPECT_GT(cleared, 0);
         }
     }
+
+    EXPECT_EQ(shadowValuesWrong, 0) << "shadow view values out of range, or n.l not the G-buffer normal's";
 
     // The exposure control: +2 stops shows Radiance four times as bright (before the clip at 1).
     renderer.setViewExposure(2.0f);

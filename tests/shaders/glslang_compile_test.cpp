@@ -76,7 +76,7 @@ INSTANTIATE_TEST_SUITE_P(Shaders, WaterBoundedVariant, ::testing::ValuesIn(water
 // tier can request (no compute, no storage blocks) as GLSL ES 3.00, from the same files with the
 // dialect's version line, precisions and defines. glslang 12 does not know
 // GL_EXT_clip_cull_distance, so these use the dialect without it (the water-plane clip by
-// discard); the extension's spelling is compiled by the real driver in the gpu-gles suite.
+// discard) and without GL_EXT_depth_clamp (the shadow casters flattened); the extension's spelling is compiled by the real driver in the gpu-gles suite.
 struct EsCase {
     std::string variant;
     int minor;  // ES 3.minor
@@ -87,7 +87,7 @@ class EsVariant : public ::testing::TestWithParam<EsCase> {};
 TEST_P(EsVariant, CompilesAndLinksWithGlslang) {
     std::string directory = findShaderDirectory();
     ASSERT_FALSE(directory.empty()) << "shader directory not found";
-    ShaderLibrary library(directory, glslDialectForEs(3, GetParam().minor, false));
+    ShaderLibrary library(directory, glslDialectForEs(3, GetParam().minor, false, false));
     library.setContextDefines({"LIGHTS_UBO_CAPACITY 256", "LIGHTS_UBO_BLOCKS 8"});
     const ProgramVariant* variant = findProgramVariant(GetParam().variant);
     ASSERT_NE(variant, nullptr);
@@ -127,16 +127,18 @@ INSTANTIATE_TEST_SUITE_P(Shaders, EsVariant, ::testing::ValuesIn(esCases()), esT
 // The ES header: version, dialect defines and precisions, no desktop extension lines (a compute
 // stage or a storage-block light path below GLSL 4.30 gets ARB lines on desktop, never on ES).
 TEST(EsDialect, HeaderHasVersionDefinesAndPrecisions) {
-    GlslDialect es32 = glslDialectForEs(3, 2, true);
+    GlslDialect es32 = glslDialectForEs(3, 2, true, true);
     EXPECT_EQ(es32.versionLine, "#version 320 es");
     EXPECT_TRUE(es32.es());
     ASSERT_EQ(es32.extensionLines.size(), 1u);
     EXPECT_EQ(es32.extensionLines[0], "#extension GL_EXT_clip_cull_distance : enable");
     EXPECT_EQ(computeExtensionLines(es32), "");
-    GlslDialect es30 = glslDialectForEs(3, 0, false);
+    EXPECT_EQ(std::find(es32.defines.begin(), es32.defines.end(), "OASIS_NO_DEPTH_CLAMP 1"), es32.defines.end());
+    GlslDialect es30 = glslDialectForEs(3, 0, false, false);
     EXPECT_EQ(es30.versionLine, "#version 300 es");
     EXPECT_TRUE(es30.extensionLines.empty());
     EXPECT_NE(std::find(es30.defines.begin(), es30.defines.end(), "OASIS_NO_CLIP_DISTANCE 1"), es30.defines.end());
+    EXPECT_NE(std::find(es30.defines.begin(), es30.defines.end(), "OASIS_NO_DEPTH_CLAMP 1"), es30.defines.end());
     EXPECT_FALSE(GlslDialect{}.es());
     ShaderLibrary library(findShaderDirectory(), es30);
     PreprocessedShader text;

@@ -57,6 +57,8 @@ TEST(BenchKnobs, DefaultLevelsAreTheDefaultSceneAndTheHighestAreLast) {
     EXPECT_EQ(applied.vegetation.enabled, defaults.vegetation.enabled);
     EXPECT_EQ(applied.vegetation.density, defaults.vegetation.density);
     EXPECT_EQ(applied.water.reflections, defaults.water.reflections);
+    EXPECT_EQ(applied.shadows.enabled, defaults.shadows.enabled);
+    EXPECT_EQ(applied.shadows.quality, defaults.shadows.quality);
     SceneSettings highest = applyKnobs(SceneSettings{}, knobs, highestLevels(knobs));
     EXPECT_GE(highest.grid.rings * highest.grid.segments, defaults.grid.rings * defaults.grid.segments);
     EXPECT_GE(highest.terrain.octaves, defaults.terrain.octaves);

@@ -213,9 +213,11 @@ TEST(DebugViewTable, NamesListEndsWithOverview) {
 
 TEST(DebugViewTable, ReadsGBufferExactlyForTheColourTargetsAndTheViewsMaskedOrCountedByThem) {
     for (const DebugView& view : debugViews()) {
-        // light-volumes counts the lights at the G-buffer's positions; vegetation masks by its flags.
+        // light-volumes counts the lights at the G-buffer's positions, shadow reads the sun's maps
+        // there; vegetation masks by its flags.
         bool gbuffer = view.name == "albedo" || view.name == "normal" || view.name == "position" ||
-                       view.name == "info" || view.name == "vegetation" || view.name == "light-volumes";
+                       view.name == "info" || view.name == "vegetation" || view.name == "light-volumes" ||
+                       view.name == "shadow";
         EXPECT_EQ(readsGBuffer(view), gbuffer) << view.name;
     }
 }
