@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders the README's scene pictures into docs/ (1280x720 PNGs, no legend strip) with the built
-# oasis: the default frame in both pipelines; day, dusk and night; sun shadows off and on; water at
+# oasis: the default frame in both pipelines and its debug overview; day, dusk and night; sun shadows off and on; water at
 # sunset with its stencil and reflection views; the meadow with its vegetation view; lights at night
 # with their light-volumes view. Open them after a run: a black or flat picture is a bug.
 # usage: docs/pictures.sh [path/to/oasis]
@@ -22,6 +22,7 @@ cp "$scratch/forward.png" docs/default-forward.png
 cp "$scratch/deferred.png" docs/default-deferred.png
 echo "docs/default-forward.png, docs/default-deferred.png: oasis compare"
 
+picture overview.png --view overview
 picture scene-day.png --hour 10
 picture scene-dusk.png --hour 18.2
 picture scene-night.png --hour 21.5 --lights 64

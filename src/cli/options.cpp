@@ -38,7 +38,7 @@ const char* kSceneOptionsHelp =
     "                            water mask records (default on; off: the whole screen, stencil-masked)\n"
     "  --shadows on|off          the sun's cascaded shadows on terrain and plants (default on; none\n"
     "                            are drawn while the sun is below the horizon)\n"
-    "  --shadow-quality Q        low, medium (default) or high: the cascade count and map size of one\n"
+    "  --shadow-quality Q        low (default), medium or high: the cascade count and map size of one\n"
     "                            table (docs/shadows.md; the bench times each)\n"
     "  --water-level Y           world height of the water plane (default 0)\n"
     "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"

@@ -26,7 +26,7 @@ std::string shadowQualityNames();  // "low, medium, high"
 // The scene's shadow options (--shadows, --shadow-quality, the panel).
 struct ShadowSettings {
     bool enabled = true;
-    std::string quality = "medium";  // a shadowQualities() name
+    std::string quality = "low";  // a shadowQualities() name
 };
 
 struct ShadowCascades {

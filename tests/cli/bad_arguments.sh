@@ -104,7 +104,7 @@ EOF
 }
 
 # Options that take a value (each is tried with its value missing).
-value_flags="--size --time --hour --camera --gbuffer --depth --reflections --shadows --shadow-quality --water-level --ripples --absorption
+value_flags="--size --time --hour --camera --gbuffer --depth --reflections --reflection-bounds --tone-map --depth-read --shadows --shadow-quality --water-level --ripples --absorption
   --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
   --stop-before --out-dir --frames --driver --reference --driver-timeout"
 
