@@ -45,6 +45,18 @@ OnlyWhereWaterIsSeen::~OnlyWhereWaterIsSeen() {
     if (conditional_) glEndConditionalRender();
 }
 
+ReflectionContext::ReflectionContext(const PassContext& frame)
+    : reduced_(frame.reflectionTargets != nullptr),
+      context_{reduced_ ? *frame.reflectionTargets : frame.targets, frame.shaders, frame.geometry, frame.frame,
+               frame.vegetation, frame.waterBounds, frame.shadowMaps, frame.waterSeen,
+               frame.reflectionTargets, frame.reflectionFrameBlock, frame.frameBlock} {
+    if (reduced_) glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame.reflectionFrameBlock);
+}
+
+ReflectionContext::~ReflectionContext() {
+    if (reduced_) glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, context_.frameBlock);
+}
+
 void beginMirroredDraw(Mirroring mirroring) {
     if (mirroring != Mirroring::Mirrored) return;
     glEnable(GL_STENCIL_TEST);

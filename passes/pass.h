@@ -32,6 +32,29 @@ struct PassContext {
     // An occlusion query (GL_ANY_SAMPLES_PASSED) around WaterMaskPass's draw when the frame bounds
     // its reflection (frame.waterBounded), else 0: the reflection's passes render conditionally on it.
     GLuint waterSeen = 0;
+    // The reflection drawn at a reduced resolution (frame.reflectionDivisor > 1): its own smaller
+    // targets, and a frame block like the frame's but for their size (screen, targetScale); the
+    // frame's block is bound back after. Null and 0 at full resolution, and outside the frame
+    // (views, fills and probes use the frame's targets).
+    const FrameTargets* reflectionTargets = nullptr;
+    GLuint reflectionFrameBlock = 0;
+    GLuint frameBlock = 0;
+};
+
+// The context the reflection's passes draw with, for the scope's lifetime: at a reduced
+// resolution its targets and frame block (bound here, the frame's bound back at the end);
+// otherwise the frame's context as it is.
+class ReflectionContext {
+public:
+    explicit ReflectionContext(const PassContext& frame);
+    ~ReflectionContext();
+    ReflectionContext(const ReflectionContext&) = delete;
+    ReflectionContext& operator=(const ReflectionContext&) = delete;
+    PassContext& get() { return context_; }
+    bool reduced() const { return reduced_; }
+private:
+    bool reduced_;
+    PassContext context_;
 };
 
 class Pass {

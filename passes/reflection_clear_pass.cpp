@@ -1,8 +1,37 @@
 // A stencil-masked full-screen draw at the far plane with depth test ALWAYS: only the water
-// pixels are touched, never the whole buffer.
+// pixels are touched, never the whole buffer. At a reduced resolution the reflection's own
+// targets first get their water mask: the water plane, drawn without a depth test.
 #include "passes/reflection_clear_pass.h"
 
 namespace oasis {
+namespace {
+
+// The reduced reflection's depth-stencil cleared and its water marked wherever the plane lies,
+// seen or hidden: the frame's depth is not at this size to test against, and the bilinear
+// upsample's taps beside a shore then land on mirrored scene too, not on the clear colour.
+// Its Reflection is cleared as well, so taps just outside the water read zero, never stale memory.
+void markReducedWater(PassContext& reflection) {
+    const FrameTargets& targets = reflection.targets;
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.reflectionFramebuffer());
+    glViewport(0, 0, targets.width(), targets.height());
+    const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, nothing);
+    glDepthMask(GL_TRUE);
+    glStencilMask(0xFF);
+    glClearBufferfi(GL_DEPTH_STENCIL, 0, targets.depth().farPlaneWindowDepth, kStencilNothing);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    glEnable(GL_DEPTH_CLAMP);  // as the frame's mask: the plane not clipped by the near plane
+    glUseProgram(reflection.shaders.program("water.mask.plane"));
+    reflection.geometry.drawWaterQuad();
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+}  // namespace
 
 void ReflectionClearPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
@@ -18,17 +47,20 @@ void ReflectionClearPass::execute(PassContext& context) {
     // alone it would hold whatever the memory held: NaNs on zink); the G-buffer's clear of the
     // water only where water is seen.
     OnlyWhereWaterIsSeen onlyWithWater(context, true);
-    bindSurfaceOutput(targets, output_, Mirroring::Mirrored);
+    ReflectionContext reflection(context);
+    PassContext& mirrored = reflection.get();
+    if (reflection.reduced()) markReducedWater(mirrored);
+    bindSurfaceOutput(mirrored.targets, output_, Mirroring::Mirrored);
     bool writeGBuffer = output_ == SurfaceOutput::GBuffer;
     glColorMask(writeGBuffer, writeGBuffer, writeGBuffer, writeGBuffer);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     beginMirroredDraw(Mirroring::Mirrored);
-    beginWaterBoundedDraw(context);
-    glUseProgram(context.shaders.program(targets.layout().program("gbuffer.clear")));
-    context.geometry.drawFullscreenTriangle();
-    endWaterBoundedDraw(context);
+    beginWaterBoundedDraw(mirrored);
+    glUseProgram(mirrored.shaders.program(mirrored.targets.layout().program("gbuffer.clear")));
+    mirrored.geometry.drawFullscreenTriangle();
+    endWaterBoundedDraw(mirrored);
     endMirroredDraw(Mirroring::Mirrored);
     glDisable(GL_DEPTH_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

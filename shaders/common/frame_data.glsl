@@ -26,6 +26,10 @@ struct FrameData {
     vec4 vegetation;             // x wind strength, y flutter phase (rad), zw unused
     vec4 vegetationAtlas;        // x atlas columns, y atlas rows, z texels per cell side, w pixels per world unit at unit eye distance
     vec4 screen;                 // x width, y height (pixels), z 1 / width, w 1 / height
+    // The target drawn into against the frame: xy its pixels per frame pixel (1, or 1/2 and 1/4
+    // while the reflection is drawn at a reduced resolution), z pixels the reflection's rectangle
+    // of visible water is widened by (0, or 1 for the bilinear upsample's taps), w unused.
+    vec4 targetScale;
     // Each atlas cell's drawn bounds (u0, v0, u1, v1) in the cell, v up (PlantAtlas::drawnBounds),
     // or the whole cell (0, 0, 1, 1): the plant billboards are trimmed to them.
     vec4 plantDrawnBounds[OASIS_PLANT_MAX_CELLS];

@@ -29,6 +29,15 @@ void recordWaterPixel(ivec2 pixel) {
 }
 #else
 
+// The rectangle's pixel edges (x0, y0, x1, y1) in the target drawn into: the frame's own, or the
+// reflection's at a reduced resolution, there widened by frame.targetScale.z pixels so that the
+// upsample's bilinear taps beside every water pixel were drawn too. At full resolution the scale
+// is 1 and the widening 0, exactly: the same edges as the frame's pixels.
+vec4 waterRectangleInTarget() {
+    vec4 edges = vec4(vec2(waterPixels.xy), vec2(waterPixels.zw) + 1.0) * frame.targetScale.xyxy;
+    return vec4(floor(edges.xy), ceil(edges.zw)) + vec4(-frame.targetScale.zz, frame.targetScale.zz);
+}
+
 // Whether a mirrored billboard (its four corners in clip space) lands wholly outside the rectangle,
 // so none of its fragments could pass the water's stencil: the vertex shader then drops the whole
 // quad (every corner computes the same answer), which changes no pixel, unlike clipping it. Only
@@ -40,13 +49,14 @@ bool billboardMissesWater(vec4 c0, vec4 c1, vec4 c2, vec4 c3) {
     // Window pixels, with a pixel to spare for rounding.
     vec2 low = (min(min(p0, p1), min(p2, p3)) * 0.5 + 0.5) * frame.screen.xy - 1.0;
     vec2 high = (max(max(p0, p1), max(p2, p3)) * 0.5 + 0.5) * frame.screen.xy + 1.0;
-    return any(lessThan(high, vec2(waterPixels.xy))) || any(greaterThan(low, vec2(waterPixels.zw) + 1.0));
+    vec4 water = waterRectangleInTarget();
+    return any(lessThan(high, water.xy)) || any(greaterThan(low, water.zw));
 }
 
 // gl_ClipDistance[1..4] against the rectangle's edges (pixel edges, so every water pixel's centre
 // is half a pixel inside); the passes of the reflection enable them (passes/pass.cpp).
 void clipToWaterBounds(vec4 clipPosition) {
-    vec4 edges = vec4(vec2(waterPixels.xy), vec2(waterPixels.zw) + 1.0) * frame.screen.zwzw * 2.0 - 1.0;
+    vec4 edges = waterRectangleInTarget() * frame.screen.zwzw * 2.0 - 1.0;
     gl_ClipDistance[1] = clipPosition.x - edges.x * clipPosition.w;
     gl_ClipDistance[2] = clipPosition.y - edges.y * clipPosition.w;
     gl_ClipDistance[3] = edges.z * clipPosition.w - clipPosition.x;

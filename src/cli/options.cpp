@@ -15,6 +15,30 @@
 namespace oasis {
 namespace {
 
+// The scene's two-way switches, parsed alike: the flag, the value that turns the field on, the
+// one that turns it off, and the field ("--shadows expects on or off, got 'x'").
+struct SceneSwitch {
+    const char* flag;
+    const char* on;
+    const char* off;
+    bool& (*field)(SceneOptions&);
+};
+const SceneSwitch kSceneSwitches[] = {
+    {"--reflections", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflections; }},
+    {"--reflection-bounds", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflectionBounds; }},
+    {"--vegetation", "on", "off", [](SceneOptions& s) -> bool& { return s.vegetation.enabled; }},
+    {"--billboards", "trimmed", "whole", [](SceneOptions& s) -> bool& { return s.vegetation.trimmedBillboards; }},
+    {"--tone-map", "fused", "separate", [](SceneOptions& s) -> bool& { return s.work.fuseToneMap; }},
+    {"--depth-read", "in-place", "copy", [](SceneOptions& s) -> bool& { return s.work.depthReadInPlace; }},
+    {"--shadows", "on", "off", [](SceneOptions& s) -> bool& { return s.shadows.enabled; }},
+};
+
+const SceneSwitch* findSceneSwitch(const std::string& flag) {
+    for (const SceneSwitch& sceneSwitch : kSceneSwitches)
+        if (flag == sceneSwitch.flag) return &sceneSwitch;
+    return nullptr;
+}
+
 // A number of `name`'s domain (cli/input_domains.h), as the parser's error when it is not one.
 bool readNumber(const std::string& name, const std::string& text, double& value, std::string& error) {
     return parseInDomain(text, inputDomain(name), value, error);
@@ -36,6 +60,8 @@ const char* kSceneOptionsHelp =
     "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
     "  --reflection-bounds on|off  the reflection's passes clip to the rectangle of visible water the\n"
     "                            water mask records (default on; off: the whole screen, stencil-masked)\n"
+    "  --reflection-resolution R  full (default), half or quarter: the mirrored scene drawn at that\n"
+    "                            fraction of the frame's width and height, upsampled bilinearly at the water\n"
     "  --shadows on|off          the sun's cascaded shadows on terrain and plants (default on; none\n"
     "                            are drawn while the sun is below the horizon)\n"
     "  --shadow-quality Q        low (default), medium or high: the cascade count and map size of one\n"
@@ -264,7 +290,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
-            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--tone-map", "--depth-read", "--shadows", "--shadow-quality", "--water-level", "--ripples",
+            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--reflection-resolution", "--tone-map", "--depth-read", "--shadows", "--shadow-quality", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
             "--force", "--api",
@@ -335,7 +361,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (flag == "--water-scene" && options.command != Command::Render && options.command != Command::Probe &&
             options.command != Command::Window && options.command != Command::Default)
             return fail("option --water-scene belongs to `oasis render`, `oasis probe` and the window");
-        if (flag == "--driver") {
+        if (const SceneSwitch* sceneSwitch = findSceneSwitch(flag)) {
+            if (value != sceneSwitch->on && value != sceneSwitch->off)
+                return fail(flag + " expects " + sceneSwitch->on + " or " + sceneSwitch->off + ", got '" + value + "'");
+            sceneSwitch->field(options.scene) = value == sceneSwitch->on;
+        } else if (flag == "--driver") {
             if (!findDriverSetup(value))
                 return fail("--driver: unknown set-up '" + value + "' (one of: " + driverSetupNames() + ")");
             if (options.drivers.size() == 2)
@@ -367,10 +397,6 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!parseCameraPose(value, pose, &error, &note)) return fail(error);
             if (!note.empty()) result.notes.push_back(note);
             options.scene.camera = pose;
-        } else if (flag == "--reflections") {
-            if (value != "on" && value != "off")
-                return fail("--reflections expects on or off, got '" + value + "'");
-            options.scene.water.reflections = value == "on";
         } else if (flag == "--water-level" || flag == "--ripples" || flag == "--absorption") {
             double number = 0.0;
             std::string error;
@@ -379,33 +405,16 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                            : flag == "--ripples"   ? options.scene.water.rippleStrength
                                                    : options.scene.water.absorption;
             field = float(number);
-        } else if (flag == "--vegetation") {
-            if (value != "on" && value != "off")
-                return fail("--vegetation expects on or off, got '" + value + "'");
-            options.scene.vegetation.enabled = value == "on";
-        } else if (flag == "--reflection-bounds") {
-            if (value != "on" && value != "off")
-                return fail("--reflection-bounds expects on or off, got '" + value + "'");
-            options.scene.water.reflectionBounds = value == "on";
-        } else if (flag == "--tone-map") {
-            if (value != "fused" && value != "separate")
-                return fail("--tone-map expects fused or separate, got '" + value + "'");
-            options.scene.work.fuseToneMap = value == "fused";
-        } else if (flag == "--depth-read") {
-            if (value != "in-place" && value != "copy")
-                return fail("--depth-read expects in-place or copy, got '" + value + "'");
-            options.scene.work.depthReadInPlace = value == "in-place";
-        } else if (flag == "--shadows") {
-            if (value != "on" && value != "off") return fail("--shadows expects on or off, got '" + value + "'");
-            options.scene.shadows.enabled = value == "on";
+        } else if (flag == "--reflection-resolution") {
+            const ReflectionResolution* resolution = findReflectionResolution(value);
+            if (!resolution)
+                return fail("--reflection-resolution expects one of " + std::string(kReflectionResolutionNames) +
+                            ", got '" + value + "'");
+            options.scene.water.reflectionDivisor = resolution->divisor;
         } else if (flag == "--shadow-quality") {
             if (!findShadowQuality(value))
                 return fail("--shadow-quality expects one of " + shadowQualityNames() + ", got '" + value + "'");
             options.scene.shadows.quality = value;
-        } else if (flag == "--billboards") {
-            if (value != "trimmed" && value != "whole")
-                return fail("--billboards expects trimmed or whole, got '" + value + "'");
-            options.scene.vegetation.trimmedBillboards = value == "trimmed";
         } else if (flag == "--vegetation-density" || flag == "--wind") {
             double number = 0.0;
             bool density = flag == "--vegetation-density";

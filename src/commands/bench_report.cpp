@@ -31,6 +31,19 @@ KnobLevel reflectionLevel(const char* label, bool on) {
     return {label, [on](SceneSettings& scene) { scene.water.reflections = on; }};
 }
 
+// The reflection's resolution, from the cheapest to the reference's (the last level): the table
+// of render/frame_setup.h, full first there.
+QualityKnob reflectionResolutionKnob() {
+    QualityKnob knob{"reflection-resolution", "the mirrored scene drawn at this fraction of the frame's width and "
+                     "height, upsampled bilinearly", {}, 0};
+    for (auto it = std::rbegin(kReflectionResolutions); it != std::rend(kReflectionResolutions); ++it) {
+        int divisor = it->divisor;
+        if (divisor == WaterSettings{}.reflectionDivisor) knob.defaultLevel = int(knob.levels.size());
+        knob.levels.push_back({it->name, [divisor](SceneSettings& scene) { scene.water.reflectionDivisor = divisor; }});
+    }
+    return knob;
+}
+
 // Work the frame saves without changing its picture: the saving is the time of the default level
 // against the reference's (the work done in full), at the same error.
 KnobLevel billboardLevel(const char* label, bool trimmed) {
@@ -74,6 +87,7 @@ const std::vector<QualityKnob> kKnobs = {
     {"vegetation", "plant density (off, or times the default candidates per chunk)",
      {vegetationLevel("off", false, 1.0f), vegetationLevel("0.5", true, 0.5f), vegetationLevel("1", true, 1.0f)}, 2},
     {"reflections", "the mirrored scene in the water", {reflectionLevel("off", false), reflectionLevel("on", true)}, 1},
+    reflectionResolutionKnob(),
     {"billboards", "plant billboards trimmed to their atlas cell's drawn bounds, or whole cells",
      {billboardLevel("trimmed", true), billboardLevel("whole", false)}, 0},
     {"reflection-bounds", "the reflection's full-screen draws clipped to the visible water, or the whole screen",

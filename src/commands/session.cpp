@@ -213,9 +213,14 @@ std::string describeVegetation(const Renderer& renderer) {
 }
 
 std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene) {
+    std::string resolution;
+    if (const FrameTargets* reduced = renderer.reflectionTargets(); reduced && renderer.lastFrame().reflectionDivisor > 1)
+        resolution = "; drawn at " + std::string(reflectionResolutionName(renderer.lastFrame().reflectionDivisor)) +
+                     " resolution (" + std::to_string(reduced->width()) + "x" + std::to_string(reduced->height()) +
+                     "), upsampled bilinearly at the water";
     if (renderer.waterBoundsAvailable() && !scene.water.reflectionBounds)
-        return "reflection passes: whole screen, stencil-masked (--reflection-bounds off)";
-    return "reflection passes: " + renderer.waterBoundsReason();
+        return "reflection passes: whole screen, stencil-masked (--reflection-bounds off)" + resolution;
+    return "reflection passes: " + renderer.waterBoundsReason() + resolution;
 }
 
 std::string describeLights(const Renderer& renderer) {

@@ -598,6 +598,12 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         WaterSettings& water = scene.water;
         ImGui::Checkbox("reflections", &water.reflections);
         ImGui::Checkbox("reflection bounded to the visible water", &water.reflectionBounds);
+        ImGui::TextUnformatted("reflection resolution");
+        for (const ReflectionResolution& resolution : kReflectionResolutions) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(resolution.name, water.reflectionDivisor == resolution.divisor))
+                water.reflectionDivisor = resolution.divisor;
+        }
         ImGui::SliderFloat("level", &water.level, -20.0f, 30.0f);
         ImGui::ColorEdit3("tint", &water.tint.x);
         ImGui::SliderFloat("absorption", &water.absorption, 0.0f, 0.5f);

@@ -34,6 +34,18 @@ static_assert(std::size(kDetailNoiseLayers) == OASIS_DETAIL_LAYERS, "one table r
 
 }  // namespace
 
+const ReflectionResolution* findReflectionResolution(const std::string& name) {
+    for (const ReflectionResolution& resolution : kReflectionResolutions)
+        if (name == resolution.name) return &resolution;
+    return nullptr;
+}
+
+const char* reflectionResolutionName(int divisor) {
+    for (const ReflectionResolution& resolution : kReflectionResolutions)
+        if (divisor == resolution.divisor) return resolution.name;
+    return kReflectionResolutions[0].name;
+}
+
 FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const DepthConvention& depth) {
     FrameSetup setup;
     setup.view.pose = scene.camera ? *scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
@@ -45,6 +57,9 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     setup.wedge = computeTerrainWedge(setup.view, scene.grid, scene.viewDistance);
     setup.cameraAboveWater = setup.view.pose.position.y >= double(scene.water.level);
     setup.reflectionsActive = scene.water.reflections && setup.cameraAboveWater;
+    // Only the table's divisors: anything else (a scene built in code) draws at full resolution.
+    for (const ReflectionResolution& resolution : kReflectionResolutions)
+        if (resolution.divisor == scene.water.reflectionDivisor) setup.reflectionDivisor = resolution.divisor;
     setup.vegetationEnabled = scene.vegetation.enabled;
 
     FrameData& d = setup.data;
@@ -74,6 +89,7 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     d.vegetation = glm::vec4(wind, float(std::fmod(scene.timeSeconds * 2.3, kTwoPi)), 0.0f, 0.0f);
     d.vegetationAtlas = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the renderer fills in its atlas
     d.screen = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+    d.targetScale = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the frame's own targets (the renderer's reflection block differs)
     for (glm::vec4& cell : d.plantDrawnBounds) cell = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);  // whole cells
     // Noise origins around the camera, in double: see shaders/common/noise.glsl.
     glm::dvec2 cameraXZ(setup.view.pose.position.x, setup.view.pose.position.z);

@@ -2,6 +2,7 @@
 // sky state, the terrain wedge and the FrameData uploaded to the GPU. No GL here.
 #pragma once
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "render/depth_convention.h"
@@ -27,7 +28,20 @@ struct WaterSettings {
     float fresnelF0 = 0.02f;                           // reflectance looking straight down (water: ~0.02)
     bool reflections = true;                           // the mirrored scene; off: the sky alone is reflected
     bool reflectionBounds = true;                      // the reflection's passes clip to the visible water
+    int reflectionDivisor = 1;                         // the reflection drawn at 1/divisor of the frame's size
 };
+
+// The reflection's resolutions (--reflection-resolution, the bench knob, the panel): the mirrored
+// passes draw into targets of 1/divisor of the frame's width and height (rounded up), and
+// ReflectionUpsamplePass reads them bilinearly into the frame's Reflection target.
+struct ReflectionResolution {
+    const char* name;
+    int divisor;
+};
+inline constexpr ReflectionResolution kReflectionResolutions[] = {{"full", 1}, {"half", 2}, {"quarter", 4}};
+inline constexpr const char* kReflectionResolutionNames = "full, half, quarter";
+const ReflectionResolution* findReflectionResolution(const std::string& name);
+const char* reflectionResolutionName(int divisor);  // "full" for a divisor not in the table
 
 // The point lights: how many (scene/point_lights.h places and animates them) and, when forced
 // (--lights-path, the panel), how shaders read them; otherwise the context's capabilities decide.
@@ -70,6 +84,7 @@ struct FrameSetup {
     bool cameraAboveWater = true;   // at the level counts as above: the plane is seen edge-on
     bool reflectionsActive = true;  // reflections on and the camera above the water
     bool waterBounded = false;      // the reflection's passes clip to the visible water (set by the renderer)
+    int reflectionDivisor = 1;      // the reflection's targets are 1/divisor of the frame's size (1: the frame's own)
     bool vegetationEnabled = true;
     bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
     // Such a layout's direct lighting samples the depth-stencil target itself, drawn without it

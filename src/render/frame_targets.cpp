@@ -45,8 +45,10 @@ int bytesPerPixelOfAllTargets(const GBufferLayout& layout, const DepthConvention
 
 }  // namespace
 
-FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height)
+FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height,
+                           const std::string& purpose)
     : layout_(layout), depth_(depth), width_(width), height_(height) {
+    const std::string prefix = purpose.empty() ? "" : purpose + ": ";
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     if (width < 1 || height < 1 || width > maxSize || height > maxSize)
@@ -64,14 +66,14 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     while (glGetError() != GL_NO_ERROR) {}
     for (int t = 0; t < int(Target::Count); ++t)
         if (layout.stores(Target(t)))
-            textures_[t] = gl::createTargetTexture(targetLabel(layout, depth, Target(t)),
+            textures_[t] = gl::createTargetTexture(prefix + targetLabel(layout, depth, Target(t)),
                                                    targetFormat(layout, depth, Target(t)).internalFormat, width, height);
-    display_ = gl::createTargetTexture("Display", GL_RGBA8, width, height);
+    display_ = gl::createTargetTexture(prefix + "Display", GL_RGBA8, width, height);
     if (GLenum error = glGetError(); error != GL_NO_ERROR)
         throw std::runtime_error("allocating " + std::to_string(width) + "x" + std::to_string(height) +
                                  " render targets failed: " + gl::errorString(error));
 
-    gbufferFbo_ = gl::createFramebuffer("G-buffer (" + layout.name + "): geometry passes");
+    gbufferFbo_ = gl::createFramebuffer(prefix + "G-buffer (" + layout.name + "): geometry passes");
     glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo_.name());
     // The stored colour targets on consecutive attachments, no gaps (gbuffer.glsl's output
     // locations follow): zink leaves every column past 1024 unrendered at 1280x720 when a draw
@@ -90,7 +92,7 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     checkComplete("G-buffer");
 
     auto colourWithDepthStencil = [&](gl::Framebuffer& fbo, Target colour, const char* what, const char* label) {
-        fbo = gl::createFramebuffer(label);
+        fbo = gl::createFramebuffer(prefix + label);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(colour), 0);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
@@ -105,7 +107,7 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     colourWithDepthStencil(finalDepthFbo_, Target::Final, "final + depth",
                            "Final + depth-stencil: the water composite with the tone map fused");
     auto radianceFinal = [&](gl::Framebuffer& fbo, bool withDepthStencil, const char* what, const char* label) {
-        fbo = gl::createFramebuffer(label);
+        fbo = gl::createFramebuffer(prefix + label);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Radiance), 0);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture(Target::Final), 0);
@@ -119,18 +121,18 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     radianceFinal(radianceFinalFbo_, true, "radiance + final", "Radiance, Final + depth-stencil: passes with the tone map fused");
     radianceFinal(radianceFinalOnlyFbo_, false, "radiance + final, no depth",
                   "Radiance, Final: deferred lighting with the tone map fused (samples depth)");
-    radianceOnlyFbo_ = gl::createFramebuffer("Radiance: deferred lighting (samples depth)");
+    radianceOnlyFbo_ = gl::createFramebuffer(prefix + "Radiance: deferred lighting (samples depth)");
     glBindFramebuffer(GL_FRAMEBUFFER, radianceOnlyFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Radiance), 0);
     checkComplete("radiance, no depth");
 
-    finalFbo_ = gl::createFramebuffer("Final: ToneMapPass");
+    finalFbo_ = gl::createFramebuffer(prefix + "Final: ToneMapPass");
     glBindFramebuffer(GL_FRAMEBUFFER, finalFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Final), 0);
     checkComplete("final");
 
     if (layout.stores(Target::SceneDepth)) {
-        sceneDepthFbo_ = gl::createFramebuffer("SceneDepth copy: DepthCopyPass");
+        sceneDepthFbo_ = gl::createFramebuffer(prefix + "SceneDepth copy: DepthCopyPass");
         glBindFramebuffer(GL_FRAMEBUFFER, sceneDepthFbo_.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                texture(Target::SceneDepth), 0);
@@ -140,7 +142,7 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
         checkComplete("scene depth");
     }
 
-    displayFbo_ = gl::createFramebuffer("Display: debug views");
+    displayFbo_ = gl::createFramebuffer(prefix + "Display: debug views");
     glBindFramebuffer(GL_FRAMEBUFFER, displayFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display_.name(), 0);
     checkComplete("display");

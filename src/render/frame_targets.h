@@ -4,6 +4,7 @@
 // Display holds what a debug view shows (or the overview), ready to present or save.
 #pragma once
 #include <array>
+#include <string>
 
 #include "gl/objects.h"
 #include "render/depth_convention.h"
@@ -19,7 +20,9 @@ inline constexpr Target kGBufferColourTargets[] = {Target::Albedo, Target::Norma
 class FrameTargets {
 public:
     // Throws std::runtime_error when the size is impossible or the framebuffer is incomplete.
-    FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height);
+    // `purpose` prefixes the labels capture tools list (the reduced reflection's: "reflection at 1/2").
+    FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height,
+                 const std::string& purpose = "");
 
     int width() const { return width_; }
     int height() const { return height_; }

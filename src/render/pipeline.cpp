@@ -9,6 +9,7 @@
 #include "passes/light_volume_pass.h"
 #include "passes/lighting_pass.h"
 #include "passes/reflection_clear_pass.h"
+#include "passes/reflection_upsample_pass.h"
 #include "passes/shadow_pass.h"
 #include "passes/sky_pass.h"
 #include "passes/terrain_pass.h"
@@ -62,6 +63,8 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         add(std::make_unique<VegetationPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
         add(std::make_unique<SkyPass>(Mirroring::Mirrored));
     }
+    // A reflection drawn at a reduced resolution is brought to the frame's here (else inactive).
+    add(std::make_unique<ReflectionUpsamplePass>());
     add(std::make_unique<WaterCompositePass>());
     add(std::make_unique<ToneMapPass>());
 }
@@ -73,8 +76,13 @@ bool Pipeline::run(PassContext& context, const std::string& stopBefore,
     for (const auto& pass : passes_) {
         if (pass->name() == stopBefore) break;
         if (!pass->active(context.frame)) continue;
-        OnlyWhereWaterIsSeen reflection(context, pass->reflectionWork());
-        pass->run(context);
+        OnlyWhereWaterIsSeen onlyWithWater(context, pass->reflectionWork());
+        if (pass->reflectionWork()) {
+            ReflectionContext reflection(context);  // the reflection's targets, maybe reduced
+            pass->run(reflection.get());
+        } else {
+            pass->run(context);
+        }
         if (afterEach) afterEach(*pass);
     }
     return true;

@@ -310,6 +310,12 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         glClearBufferfv(GL_COLOR, 0, black);
     }
     PassContext passContext = context();
+    if (frame_.reflectionsActive && frame_.reflectionDivisor > 1) {
+        prepareReducedReflection();
+        passContext.reflectionTargets = reflectionTargets_.get();
+        passContext.reflectionFrameBlock = reflectionUniforms_.name();
+        passContext.frameBlock = frameUniforms_.name();
+    }
     stepsRan_.clear();
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
@@ -320,6 +326,40 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     radianceAwaitsWater_ = frame_.toneMapFused && waterComposite_.active(frame_);
     stoppedBefore_ = stopBefore;
     stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(Target::Albedo);
+}
+
+void Renderer::prepareReducedReflection() {
+    const int divisor = frame_.reflectionDivisor;
+    const int width = (targets_->width() + divisor - 1) / divisor, height = (targets_->height() + divisor - 1) / divisor;
+    if (!reflectionTargets_ || reflectionTargets_->width() != width || reflectionTargets_->height() != height ||
+        reflectionTargets_->layout().name != targets_->layout().name ||
+        reflectionTargets_->depth().name != targets_->depth().name) {
+        reflectionTargets_ = std::make_unique<FrameTargets>(targets_->layout(), targets_->depth(), width, height,
+                                                            "reflection at 1/" + std::to_string(divisor));
+        // ReflectionUpsamplePass reads it bilinearly, clamped at its edges.
+        glBindTexture(GL_TEXTURE_2D, reflectionTargets_->texture(Target::Reflection));
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    // The frame's data for the smaller targets: their pixels (rays through pixel centres, the
+    // billboards' mip levels) and how the frame's water rectangle maps onto them (widened by a
+    // pixel for the upsample's taps).
+    FrameData data = frame_.data;
+    const float scaleX = float(width) / float(targets_->width()), scaleY = float(height) / float(targets_->height());
+    data.screen = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
+    data.vegetationAtlas.w *= scaleY;
+    data.targetScale = glm::vec4(scaleX, scaleY, 1.0f, 0.0f);
+    if (!reflectionUniforms_.name()) {
+        reflectionUniforms_ = gl::createBuffer("frame data (ubo), reduced reflection");
+        glBindBuffer(GL_UNIFORM_BUFFER, reflectionUniforms_.name());
+        glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
+    }
+    glBindBuffer(GL_UNIFORM_BUFFER, reflectionUniforms_.name());
+    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &data);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 
 void Renderer::forgetGBuffer() {

@@ -124,6 +124,8 @@ public:
     void present(int windowWidth, int windowHeight);
 
     const FrameTargets& targets() const { return *targets_; }
+    // The reflection's own targets when a frame drew it at a reduced resolution; null before.
+    const FrameTargets* reflectionTargets() const { return reflectionTargets_.get(); }
     const FrameSetup& lastFrame() const { return frame_; }
     ShaderLibrary& shaders() { return shaders_; }
     const SceneGeometry& geometry() const { return geometry_; }
@@ -147,6 +149,9 @@ public:
 private:
     PassContext context();
     void prepareVegetation(const SceneSettings& scene);
+    // The reduced reflection's targets (kept while the frame's size, layout and depth stay) and
+    // its frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.
+    void prepareReducedReflection();
     void uploadLights();
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
@@ -157,6 +162,8 @@ private:
     ShaderLibrary& shaders_;
     SceneGeometry geometry_;
     std::unique_ptr<FrameTargets> targets_;
+    std::unique_ptr<FrameTargets> reflectionTargets_;  // the reflection at a reduced resolution, once asked for
+    gl::Buffer reflectionUniforms_;                     // frame data for those targets' size
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
     StencilViewPath stencilPath_ = StencilViewPath::Texturing;

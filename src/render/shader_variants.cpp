@@ -38,6 +38,8 @@ std::vector<ProgramVariant> buildVariants() {
         {"lighting.mirrored", "fullscreen.vert", "lighting.frag", {"MIRRORED"}},
         {"gbuffer.clear", "fullscreen.vert", "gbuffer_clear.frag", {"FULLSCREEN_AT_FAR_PLANE", "WATER_BOUNDED"}},
         {"water.mask", "water.vert", "water_mask.frag", {}},
+        {"water.mask.plane", "water.vert", "water_mask.frag", {"WATER_PLANE_ONLY"}},
+        {"reflection.upsample", "fullscreen.vert", "reflection_upsample.frag", {"WATER_BOUNDED"}},
         {"water.composite", "water.vert", "water_composite.frag", {}},
         // The tone map fused into the pass that writes a pixel's colour last (README: the
         // full-screen passes): ".tonemapped" variants also write Final; "tonemap" is the separate pass.

@@ -83,6 +83,9 @@ scene_cases() {
 --vegetation|maybe
 --billboards|half
 --reflection-bounds|maybe
+--reflection-resolution|eighth
+--reflection-resolution|Half
+--reflection-resolution|0.5
 --tone-map|maybe
 --depth-read|inplace
 --shadows|maybe
@@ -104,7 +107,7 @@ EOF
 }
 
 # Options that take a value (each is tried with its value missing).
-value_flags="--size --time --hour --camera --gbuffer --depth --reflections --reflection-bounds --tone-map --depth-read --shadows --shadow-quality --water-level --ripples --absorption
+value_flags="--size --time --hour --camera --gbuffer --depth --reflections --reflection-bounds --reflection-resolution --tone-map --depth-read --shadows --shadow-quality --water-level --ripples --absorption
   --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
   --stop-before --out-dir --frames --driver --reference --driver-timeout"
 

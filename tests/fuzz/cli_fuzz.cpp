@@ -94,6 +94,7 @@ const std::vector<Flag>& flags() {
         {"--vegetation", Value::Choice, 0, 0, {"on", "off"}},
         {"--billboards", Value::Choice, 0, 0, {"trimmed", "whole"}},
         {"--reflection-bounds", Value::Choice, 0, 0, {"on", "off"}},
+        {"--reflection-resolution", Value::Choice, 0, 0, {"full", "half", "quarter"}},
         {"--tone-map", Value::Choice, 0, 0, {"fused", "separate"}},
         {"--depth-read", Value::Choice, 0, 0, {"in-place", "copy"}},
         {"--shadows", Value::Choice, 0, 0, {"on", "off"}},

@@ -419,6 +419,20 @@ TEST(ParseCommandLine, ErrorsListTheChoices) {
     for (const DebugView& view : debugViews()) EXPECT_NE(r.error.find(view.name), std::string::npos);
 }
 
+// Every row of the reflection resolution table by name; anything else is refused, listing them.
+TEST(ParseCommandLine, ReflectionResolution) {
+    EXPECT_EQ(parse({}).options.scene.water.reflectionDivisor, 1);
+    for (const ReflectionResolution& resolution : kReflectionResolutions) {
+        ParseResult r = parse({"--reflection-resolution", resolution.name});
+        ASSERT_TRUE(r.ok) << r.error;
+        EXPECT_EQ(r.options.scene.water.reflectionDivisor, resolution.divisor);
+    }
+    ParseResult r = parse({"--reflection-resolution", "eighth"});
+    ASSERT_FALSE(r.ok);
+    for (const ReflectionResolution& resolution : kReflectionResolutions)
+        EXPECT_NE(r.error.find(resolution.name), std::string::npos) << r.error;
+}
+
 // An unknown option given last is reported as "needs a value", which suggests it exists; the
 // unknown-option check only runs after a value has been consumed.
 TEST(ParseCommandLine, UnknownOptionLastIsReportedAsUnknown) {
