@@ -60,6 +60,9 @@ const char* kSceneOptionsHelp =
     "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
     "  --reflection-bounds on|off  the reflection's passes clip to the rectangle of visible water the\n"
     "                            water mask records (default on; off: the whole screen, stencil-masked)\n"
+    "  --reflection-plant-cull M  auto (default), on or off: the reflection's plants whose mirror image\n"
+    "                            can land only on dry land culled on the CPU (full reflection resolution;\n"
+    "                            the same picture); auto: while the camera stands still\n"
     "  --reflection-resolution R  full (default), half or quarter: the mirrored scene drawn at that\n"
     "                            fraction of the frame's width and height, upsampled bilinearly at the water\n"
     "  --shadows on|off          the sun's cascaded shadows on terrain and plants (default on; none\n"
@@ -290,7 +293,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
         static const std::vector<std::string> kValueOptions = {
-            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--reflection-resolution", "--tone-map", "--depth-read", "--shadows", "--shadow-quality", "--water-level", "--ripples",
+            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--reflection-resolution", "--reflection-plant-cull", "--tone-map", "--depth-read", "--shadows", "--shadow-quality", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
             "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
             "--force", "--api",
@@ -411,6 +414,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                 return fail("--reflection-resolution expects one of " + std::string(kReflectionResolutionNames) +
                             ", got '" + value + "'");
             options.scene.water.reflectionDivisor = resolution->divisor;
+        } else if (flag == "--reflection-plant-cull") {
+            const MirroredPlantCullMode* mode = findMirroredPlantCull(value);
+            if (!mode) return fail("--reflection-plant-cull expects auto, on or off, got '" + value + "'");
+            options.scene.work.mirroredPlantCull = mode->mode;
         } else if (flag == "--shadow-quality") {
             if (!findShadowQuality(value))
                 return fail("--shadow-quality expects one of " + shadowQualityNames() + ", got '" + value + "'");

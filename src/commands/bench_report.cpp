@@ -62,6 +62,10 @@ KnobLevel depthReadLevel(const char* label, bool inPlace) {
     return {label, [inPlace](SceneSettings& scene) { scene.work.depthReadInPlace = inPlace; }};
 }
 
+KnobLevel plantCullLevel(const char* label, MirroredPlantCull cull) {
+    return {label, [cull](SceneSettings& scene) { scene.work.mirroredPlantCull = cull; }};
+}
+
 // Sun shadows: off, then every level of the shadow quality table (render/shadow_cascades.cpp).
 QualityKnob shadowKnob() {
     QualityKnob knob{"shadows", "sun shadows off, or the shadow quality table's cascades x map size:", {}, 0};
@@ -96,6 +100,9 @@ const std::vector<QualityKnob> kKnobs = {
      {toneMapLevel("fused", true), toneMapLevel("separate", false)}, 0},
     {"depth-read", "compact's lighting samples the depth-stencil target, or a copy made every frame",
      {depthReadLevel("in-place", true), depthReadLevel("copy", false)}, 0},
+    {"reflection-plant-cull", "the reflection's plants whose image lands only on dry land culled on the CPU "
+     "(auto: while the camera stands still, as it does over a configuration's timed frames)",
+     {plantCullLevel("auto", MirroredPlantCull::Auto), plantCullLevel("off", MirroredPlantCull::Off)}, 0},
     shadowKnob(),
 };
 

@@ -206,10 +206,14 @@ std::string describeVegetation(const Renderer& renderer) {
     char text[256];
     std::snprintf(text, sizeof(text),
                   "vegetation: %zu plants placed in %zu chunks around the camera; drawn %zu (%zu chunks in view, "
-                  "thinned with distance) and %zu in the reflection (%zu chunks)",
+                  "thinned with distance) and %zu in the reflection (%zu chunks",
                   stats.plantsPlaced, stats.chunksInRange, stats.plantsDrawn, stats.chunksVisible,
                   stats.plantsDrawnMirrored, stats.chunksMirrored);
-    return text;
+    std::string described = text;
+    if (renderer.lastFrame().mirroredPlantsCulled)
+        described += "; culled on the CPU, their image on dry land: " + std::to_string(stats.chunksMirroredOnLand) +
+                     " more chunks and " + std::to_string(stats.plantsMirroredOnLand) + " plants in these";
+    return described + ")";
 }
 
 std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene) {

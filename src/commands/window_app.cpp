@@ -627,6 +627,12 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         // Savings that keep the picture: switch one off to see what it saves (the pass times).
         ImGui::Checkbox("tone map fused into the last colour passes", &scene.work.fuseToneMap);
         ImGui::Checkbox("compact: lighting reads depth in place", &scene.work.depthReadInPlace);
+        ImGui::TextUnformatted("reflected plants culled on dry land:");
+        for (const MirroredPlantCullMode& mode : kMirroredPlantCullModes) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(mode.name, scene.work.mirroredPlantCull == mode.mode))
+                scene.work.mirroredPlantCull = mode.mode;
+        }
     }
     ImGui::Separator();
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),

@@ -40,6 +40,12 @@ const ReflectionResolution* findReflectionResolution(const std::string& name) {
     return nullptr;
 }
 
+const MirroredPlantCullMode* findMirroredPlantCull(const std::string& name) {
+    for (const MirroredPlantCullMode& mode : kMirroredPlantCullModes)
+        if (name == mode.name) return &mode;
+    return nullptr;
+}
+
 const char* reflectionResolutionName(int divisor) {
     for (const ReflectionResolution& resolution : kReflectionResolutions)
         if (divisor == resolution.divisor) return resolution.name;

@@ -224,8 +224,22 @@ void Renderer::prepareVegetation(const SceneSettings& scene) {
         const glm::dvec3& camera = frame_.view.pose.position;
         vegetationField_.update(scene.terrain, scene.water.level, scene.vegetation,
                                 uint32_t(plantAtlas_->variantCount()), camera);
+        // At a reduced reflection resolution the reflection's stencil marks the whole plane and the
+        // upsample's taps reach past the water's edge, so images on land may show: no cull there.
+        // Auto: only when the grid (and so every height the bound computes) is the last frame's.
+        TerrainGridPlacement grid{scene.terrain, scene.grid, frame_.wedge, scene.viewDistance,
+                                  glm::dvec2(camera.x, camera.z)};
+        bool still = lastGrid_ && *lastGrid_ == grid;
+        lastGrid_ = grid;
+        MirroredPlantCull cull = scene.work.mirroredPlantCull;
+        frame_.mirroredPlantsCulled = frame_.reflectionsActive && frame_.reflectionDivisor == 1 &&
+                                      (cull == MirroredPlantCull::On || (cull == MirroredPlantCull::Auto && still));
+        if (frame_.mirroredPlantsCulled)
+            visibleWater_.prepare(scene.terrain, scene.grid, frame_.wedge, scene.viewDistance, frame_.view,
+                                  scene.water.level);
         vegetationField_.buildDrawList(scene.vegetation, camera, frame_.data.viewProjection, frame_.view.depthMapping,
-                                       frame_.reflectionsActive, scene.water.level, vegetationList_);
+                                       frame_.reflectionsActive, scene.water.level, vegetationList_,
+                                       frame_.mirroredPlantsCulled ? &visibleWater_ : nullptr);
     } else {
         vegetationField_.clearStats();
     }

@@ -169,6 +169,8 @@ private:
     StencilViewPath stencilPath_ = StencilViewPath::Texturing;
     const PlantAtlas* plantAtlas_ = nullptr;
     VegetationField vegetationField_;
+    VisibleWaterBound visibleWater_;  // the dry land the reflection's plant chunks are culled against
+    std::optional<TerrainGridPlacement> lastGrid_;  // the last frame's grid: is the camera standing still?
     VegetationDrawList vegetationList_;
     VegetationBuffers vegetationBuffers_;
     DebugViewPass debugViews_;

@@ -9,12 +9,21 @@ namespace oasis {
 namespace {
 
 // How far a billboard's top can sway sideways, per unit of its height and of wind strength
-// (shaders/vegetation.vert bends the top by at most 0.3 of the height at strength 1).
+// (shaders/vegetation.vert bends the top by at most 0.24 of the height at strength 1).
 constexpr double kSwayPerHeight = 0.3;
 // The billboard reaches below its base by the atlas cell's margin under the root.
 constexpr double kBelowRootPerHeight = 0.05;
+// Its cell is square and faces the camera: half its height to either side of the base.
+constexpr double kHalfWidthPerHeight = 0.5;
 
 }  // namespace
+
+ChunkBounds plantReach(const PlantInstance& plant) {
+    double size = plant.size;
+    double side = (kHalfWidthPerHeight + kSwayPerHeight * double(VegetationSettings::kMaxWindStrength)) * size;
+    glm::dvec3 base(plant.base);
+    return {base - glm::dvec3(side, kBelowRootPerHeight * size, side), base + glm::dvec3(side, size, side)};
+}
 
 bool boxMeetsFrustum(const glm::mat4& viewProjection, DepthMapping mapping, glm::vec3 low, glm::vec3 high) {
     for (const glm::vec4& plane : frustumPlanes(viewProjection, mapping)) {
@@ -69,16 +78,13 @@ bool VegetationField::inRange(glm::ivec2 chunk, const glm::dvec3& camera, float 
 VegetationField::ChunkMap::iterator VegetationField::placeChunk(const TerrainShape& shape, glm::ivec2 chunk) {
     Chunk placed;
     placed.plants = placePlantsInChunk(shape, placement_, chunk);
-    double size = placement_.chunkSize;
-    double lowY = INFINITY, highY = -INFINITY, tallest = 0.0;
+    placed.bounds.low = glm::dvec3(INFINITY);
+    placed.bounds.high = glm::dvec3(-INFINITY);
     for (const PlantInstance& plant : placed.plants) {
-        lowY = std::min(lowY, double(plant.base.y) - kBelowRootPerHeight * plant.size);
-        highY = std::max(highY, double(plant.base.y) + plant.size);
-        tallest = std::max(tallest, double(plant.size));
+        ChunkBounds reach = plantReach(plant);
+        placed.bounds.low = glm::min(placed.bounds.low, reach.low);
+        placed.bounds.high = glm::max(placed.bounds.high, reach.high);
     }
-    double sway = kSwayPerHeight * tallest * double(VegetationSettings::kMaxWindStrength);
-    placed.bounds.low = {chunk.x * size - sway, lowY, chunk.y * size - sway};
-    placed.bounds.high = {(chunk.x + 1) * size + sway, highY, (chunk.y + 1) * size + sway};
     return chunks_.insert_or_assign({chunk.x, chunk.y}, std::move(placed)).first;
 }
 
@@ -122,15 +128,15 @@ void VegetationField::update(const TerrainShape& shape, float waterLevel, const 
 
 void VegetationField::buildDrawList(const VegetationSettings& settings, const glm::dvec3& camera,
                                     const glm::mat4& viewProjection, DepthMapping mapping, bool withReflection,
-                                    float waterLevel,
-                                    VegetationDrawList& list) {
+                                    float waterLevel, VegetationDrawList& list, VisibleWaterBound* visibleWater) {
     list.instances.clear();
     list.directCount = list.mirroredCount = 0;
-    stats_.chunksVisible = stats_.chunksMirrored = 0;
-    stats_.plantsDrawn = stats_.plantsDrawnMirrored = 0;
+    stats_.chunksVisible = stats_.chunksMirrored = stats_.chunksMirroredOnLand = 0;
+    stats_.plantsDrawn = stats_.plantsDrawnMirrored = stats_.plantsMirroredOnLand = 0;
     auto relative = [&](const glm::dvec3& p) { return glm::vec3(p - camera); };
-    // Appends the chunk's plants that survive thinning; returns how many.
-    auto appendThinned = [&](const Chunk& chunk) {
+    // Appends the chunk's plants that survive thinning (and, for the mirror images, whose image
+    // may land on visible water); returns how many.
+    auto appendThinned = [&](const Chunk& chunk, bool mirrored) {
         size_t count = chunk.plants.size(), appended = 0;
         for (size_t i = 0; i < count; ++i) {
             const PlantInstance& plant = chunk.plants[i];
@@ -141,6 +147,13 @@ void VegetationField::buildDrawList(const VegetationSettings& settings, const gl
             // evenly, and a plant appears or vanishes alone as the camera moves.
             float rank = (float(i) + 0.5f) / float(count);
             if (rank >= drawnFraction(settings, distance)) continue;
+            if (mirrored && visibleWater) {
+                ChunkBounds reach = plantReach(plant);
+                if (!visibleWater->mirrorImageMayShow(reach.low, reach.high)) {
+                    stats_.plantsMirroredOnLand++;
+                    continue;
+                }
+            }
             list.instances.push_back({glm::vec4(offset, plant.size), glm::vec4(plant.tint, plant.windPhase),
                                       float(plant.variant)});
             ++appended;
@@ -151,7 +164,7 @@ void VegetationField::buildDrawList(const VegetationSettings& settings, const gl
         if (chunk.plants.empty() || !inRange({key.first, key.second}, camera, settings.drawDistance)) continue;
         if (!boxMeetsFrustum(viewProjection, mapping, relative(chunk.bounds.low), relative(chunk.bounds.high))) continue;
         stats_.chunksVisible++;
-        list.directCount += appendThinned(chunk);
+        list.directCount += appendThinned(chunk, false);
     }
     if (withReflection) {
         double mirror = 2.0 * double(waterLevel);
@@ -161,8 +174,12 @@ void VegetationField::buildDrawList(const VegetationSettings& settings, const gl
             glm::dvec3 low(chunk.bounds.low.x, mirror - chunk.bounds.high.y, chunk.bounds.low.z);
             glm::dvec3 high(chunk.bounds.high.x, mirror - chunk.bounds.low.y, chunk.bounds.high.z);
             if (!boxMeetsFrustum(viewProjection, mapping, relative(low), relative(high))) continue;
+            if (visibleWater && !visibleWater->mirrorImageMayShow(chunk.bounds.low, chunk.bounds.high)) {
+                stats_.chunksMirroredOnLand++;
+                continue;
+            }
             stats_.chunksMirrored++;
-            list.mirroredCount += appendThinned(chunk);
+            list.mirroredCount += appendThinned(chunk, true);
         }
     }
     stats_.plantsDrawn = list.directCount;

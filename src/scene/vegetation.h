@@ -13,6 +13,7 @@
 #include "scene/camera.h"
 #include "scene/placement.h"
 #include "scene/terrain.h"
+#include "scene/visible_water.h"
 
 namespace oasis {
 
@@ -53,15 +54,20 @@ struct VegetationStats {
     size_t chunksInRange = 0;   // chunks within the draw distance (their plants are placed)
     size_t plantsPlaced = 0;    // plants in those chunks
     size_t chunksVisible = 0;   // chunks whose bounds meet the view
-    size_t chunksMirrored = 0;  // chunks whose mirrored bounds meet the view
+    size_t chunksMirrored = 0;  // chunks whose mirrored bounds meet the view (and may land on water)
+    size_t chunksMirroredOnLand = 0;  // mirrored bounds in view, culled: their image lands only on dry land
     size_t plantsDrawn = 0;
     size_t plantsDrawnMirrored = 0;
+    size_t plantsMirroredOnLand = 0;  // in the mirrored chunks drawn, culled alone: their image lands on dry land
 };
 
 // The world-space box a chunk's billboards can reach (wind sway included).
 struct ChunkBounds {
     glm::dvec3 low{0.0}, high{0.0};
 };
+// The box one plant's billboard can reach: facing any way, bent by any wind up to kMaxWindStrength.
+// A chunk's bounds are its plants' reaches together.
+ChunkBounds plantReach(const PlantInstance& plant);
 
 // Whether a box, given relative to the camera, meets the frustum of a camera-relative
 // view-projection matrix built with `mapping` (conservative: a box that only meets the planes'
@@ -93,10 +99,11 @@ public:
     void update(const TerrainShape& shape, float waterLevel, const VegetationSettings& settings,
                 uint32_t variantCount, const glm::dvec3& camera);
     // Fills `list` for a camera-relative view-projection: chunks that meet the view, thinned with
-    // distance; with `withReflection` also the chunks whose mirror image in the water meets it.
+    // distance; with `withReflection` also the chunks whose mirror image in the water meets it and,
+    // given `visibleWater` (prepared for this frame), may land on water that can be seen.
     void buildDrawList(const VegetationSettings& settings, const glm::dvec3& camera,
                        const glm::mat4& viewProjection, DepthMapping mapping, bool withReflection, float waterLevel,
-                       VegetationDrawList& list);
+                       VegetationDrawList& list, VisibleWaterBound* visibleWater = nullptr);
 
     const VegetationStats& stats() const { return stats_; }
     // For a frame that draws no plants (vegetation off, no atlas): nothing placed or drawn.

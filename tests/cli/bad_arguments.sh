@@ -86,6 +86,9 @@ scene_cases() {
 --reflection-resolution|eighth
 --reflection-resolution|Half
 --reflection-resolution|0.5
+--reflection-plant-cull|maybe
+--reflection-plant-cull|On
+--reflection-plant-cull|still
 --tone-map|maybe
 --depth-read|inplace
 --shadows|maybe
@@ -107,7 +110,7 @@ EOF
 }
 
 # Options that take a value (each is tried with its value missing).
-value_flags="--size --time --hour --camera --gbuffer --depth --reflections --reflection-bounds --reflection-resolution --tone-map --depth-read --shadows --shadow-quality --water-level --ripples --absorption
+value_flags="--size --time --hour --camera --gbuffer --depth --reflections --reflection-bounds --reflection-resolution --reflection-plant-cull --tone-map --depth-read --shadows --shadow-quality --water-level --ripples --absorption
   --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
   --stop-before --out-dir --frames --driver --reference --driver-timeout"
 

@@ -97,6 +97,7 @@ const std::vector<Flag>& flags() {
         {"--reflection-resolution", Value::Choice, 0, 0, {"full", "half", "quarter"}},
         {"--tone-map", Value::Choice, 0, 0, {"fused", "separate"}},
         {"--depth-read", Value::Choice, 0, 0, {"in-place", "copy"}},
+        {"--reflection-plant-cull", Value::Choice, 0, 0, {"auto", "on", "off"}},
         {"--shadows", Value::Choice, 0, 0, {"on", "off"}},
         {"--shadow-quality", Value::Choice, 0, 0, {"low", "medium", "high"}},
         {"--vegetation-density", Value::Number, 0, 4},

@@ -420,17 +420,31 @@ TEST(ParseCommandLine, ErrorsListTheChoices) {
 }
 
 // Every row of the reflection resolution table by name; anything else is refused, listing them.
-TEST(ParseCommandLine, ReflectionResolution) {
-    EXPECT_EQ(parse({}).options.scene.water.reflectionDivisor, 1);
-    for (const ReflectionResolution& resolution : kReflectionResolutions) {
-        ParseResult r = parse({"--reflection-resolution", resolution.name});
+// A choice option: every row of its table parses to that row's value, the default is the scene's,
+// and a name outside the table is refused with a message naming every row.
+template <typename Row, size_t N, typename Value, typename Field>
+void expectEveryChoiceParses(const char* flag, const Row (&table)[N], Value Row::*value, Field field,
+                             Value defaultValue, const char* outside) {
+    EXPECT_EQ(field(parse({}).options.scene), defaultValue);
+    for (const Row& row : table) {
+        ParseResult r = parse({flag, row.name});
         ASSERT_TRUE(r.ok) << r.error;
-        EXPECT_EQ(r.options.scene.water.reflectionDivisor, resolution.divisor);
+        EXPECT_EQ(field(r.options.scene), row.*value);
     }
-    ParseResult r = parse({"--reflection-resolution", "eighth"});
+    ParseResult r = parse({flag, outside});
     ASSERT_FALSE(r.ok);
-    for (const ReflectionResolution& resolution : kReflectionResolutions)
-        EXPECT_NE(r.error.find(resolution.name), std::string::npos) << r.error;
+    for (const Row& row : table) EXPECT_NE(r.error.find(row.name), std::string::npos) << r.error;
+}
+
+TEST(ParseCommandLine, ReflectionResolution) {
+    expectEveryChoiceParses("--reflection-resolution", kReflectionResolutions, &ReflectionResolution::divisor,
+                            [](const SceneOptions& s) { return s.water.reflectionDivisor; }, 1, "eighth");
+}
+
+TEST(ParseCommandLine, ReflectionPlantCull) {
+    expectEveryChoiceParses("--reflection-plant-cull", kMirroredPlantCullModes, &MirroredPlantCullMode::mode,
+                            [](const SceneOptions& s) { return s.work.mirroredPlantCull; }, MirroredPlantCull::Auto,
+                            "still");
 }
 
 // An unknown option given last is reported as "needs a value", which suggests it exists; the
