@@ -3,6 +3,8 @@
 // targets first get their water mask: the water plane, drawn without a depth test.
 #include "passes/reflection_clear_pass.h"
 
+#include "passes/water_mask_pass.h"
+
 namespace oasis {
 namespace {
 
@@ -19,16 +21,7 @@ void markReducedWater(PassContext& reflection) {
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glClearBufferfi(GL_DEPTH_STENCIL, 0, targets.depth().farPlaneWindowDepth, kStencilNothing);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    glEnable(GL_DEPTH_CLAMP);  // as the frame's mask: the plane not clipped by the near plane
-    glUseProgram(reflection.shaders.program("water.mask.plane"));
-    reflection.geometry.drawWaterQuad();
-    glDisable(GL_DEPTH_CLAMP);
-    glDisable(GL_STENCIL_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    markWaterStencil(reflection, "water.mask.plane");  // no depth test: every point of the plane
 }
 
 }  // namespace

@@ -7,19 +7,27 @@
 
 namespace oasis {
 
-void WaterMaskPass::execute(PassContext& context) {
-    // Any framebuffer with the shared depth-stencil will do; Radiance's needs no draw buffers set.
-    glBindFramebuffer(GL_FRAMEBUFFER, context.targets.radianceFramebuffer());
-    glViewport(0, 0, context.targets.width(), context.targets.height());
+void markWaterStencil(PassContext& context, const char* program) {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
-    glDepthFunc(context.targets.depth().nearerFunc);
-    glDepthMask(depth_ == WaterDepth::Written ? GL_TRUE : GL_FALSE);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glStencilMask(0xFF);
+    glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
+    glUseProgram(context.shaders.program(program));
+    context.geometry.drawWaterQuad();
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_STENCIL_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void WaterMaskPass::execute(PassContext& context) {
+    // Any framebuffer with the shared depth-stencil will do; Radiance's needs no draw buffers set.
+    glBindFramebuffer(GL_FRAMEBUFFER, context.targets.radianceFramebuffer());
+    glViewport(0, 0, context.targets.width(), context.targets.height());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(context.targets.depth().nearerFunc);
+    glDepthMask(depth_ == WaterDepth::Written ? GL_TRUE : GL_FALSE);
     if (context.waterBounds) {
         // An empty box (min > max) that the water's fragments widen (common/water_bounds.glsl).
         const GLint empty[4] = {std::numeric_limits<GLint>::max(), std::numeric_limits<GLint>::max(),
@@ -27,19 +35,15 @@ void WaterMaskPass::execute(PassContext& context) {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, context.waterBounds);
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(empty), empty);
     }
-    glUseProgram(context.shaders.program("water.mask"));
     if (context.waterSeen) glBeginQuery(GL_ANY_SAMPLES_PASSED, context.waterSeen);
-    context.geometry.drawWaterQuad();
+    markWaterStencil(context, "water.mask");
     if (context.waterSeen) glEndQuery(GL_ANY_SAMPLES_PASSED);
     if (context.waterBounds) {
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, 0);
     }
-    glDisable(GL_STENCIL_TEST);
     glDepthMask(GL_TRUE);
-    glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_DEPTH_TEST);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 }  // namespace oasis

@@ -10,6 +10,11 @@ namespace oasis {
 
 enum class WaterDepth { Written, Kept };
 
+// The water quad drawn with `program` into the bound framebuffer's stencil, marking kStencilWater
+// wherever a fragment survives the depth state the caller set; no colour, the plane not clipped by
+// the near plane (depth clamp). Shared by this pass and the reduced reflection's own mask.
+void markWaterStencil(PassContext& context, const char* program);
+
 class WaterMaskPass : public Pass {
 public:
     explicit WaterMaskPass(WaterDepth depth = WaterDepth::Written) : depth_(depth) {}
