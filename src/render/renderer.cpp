@@ -329,6 +329,8 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         passContext.reflectionTargets = reflectionTargets_.get();
         passContext.reflectionFrameBlock = reflectionUniforms_.name();
         passContext.frameBlock = frameUniforms_.name();
+    } else if (frame_.reflectionDivisor == 1) {
+        reflectionTargets_.reset();  // back at full resolution: the reduced set's memory goes back too
     }
     stepsRan_.clear();
     FrameClipControl clipControl(targets_->depth());

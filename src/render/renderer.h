@@ -162,7 +162,7 @@ private:
     ShaderLibrary& shaders_;
     SceneGeometry geometry_;
     std::unique_ptr<FrameTargets> targets_;
-    std::unique_ptr<FrameTargets> reflectionTargets_;  // the reflection at a reduced resolution, once asked for
+    std::unique_ptr<FrameTargets> reflectionTargets_;  // the reflection at a reduced resolution, while asked for
     gl::Buffer reflectionUniforms_;                     // frame data for those targets' size
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;

@@ -174,7 +174,8 @@ TEST_F(ReflectionResolution, PipelinesAgreeAtEveryResolution) {
 }
 
 // Sizes that do not divide: the reduced targets round up (161x91 and 81x46 for 321x181), the
-// frame has no non-finite value in its reflection, and the error stays within bounds.
+// frame has no non-finite value in its reflection, and the error stays within bounds; back at
+// full resolution the reduced targets are released.
 TEST_F(ReflectionResolution, OddSizesRoundTheTargetsUp) {
     constexpr int width = 321, height = 181;
     Renderer renderer(*shaders_, defaultPose().scene);
@@ -190,6 +191,10 @@ TEST_F(ReflectionResolution, OddSizesRoundTheTargetsUp) {
         EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Reflection)), 0);
         EXPECT_GE(compareImages(full, reduced).psnrDb, 27.0);
     }
+    // Back at full resolution the reduced set is released (and the frame is the full one again).
+    const Image again = renderFinal(renderer, defaultPose().scene, PipelineKind::Deferred);
+    EXPECT_EQ(renderer.reflectionTargets(), nullptr);
+    EXPECT_EQ(compareImages(full, again).maxAbs, 0);
 }
 
 }  // namespace
