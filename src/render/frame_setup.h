@@ -69,8 +69,8 @@ struct FrameWorkSettings {
     bool depthReadInPlace = true;  // --depth-read in-place: compact's lighting samples the depth target
     // --reflection-plant-cull: the reflection's plants whose mirror image can land only on dry land
     // culled on the CPU (scene/visible_water.h), at full reflection resolution only (where the
-    // water's stencil is the frame's own). The bound's terrain heights cost the CPU 2-3.5 ms when
-    // the camera has moved and 0.3-0.7 ms when it has not, against 0.7-1 ms of llvmpipe's time
+    // water's stencil is the frame's own). The bound's terrain heights cost the CPU 2.3-3.5 ms when
+    // the camera has moved and 0.5-0.9 ms when it has not, against 0.7-1 ms of llvmpipe's time
     // saved: Auto culls only while the camera stands still (docs/limits.md).
     MirroredPlantCull mirroredPlantCull = MirroredPlantCull::Auto;
 };
