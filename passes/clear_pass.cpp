@@ -21,6 +21,13 @@ void ClearPass::execute(PassContext& context) {
         // and the probe show them everywhere, so they are cleared too; Info once, to the sky.
         for (int slot = 0; slot < targets.gbufferSlotCount(); ++slot)
             glClearBufferfv(GL_COLOR, slot, slot == targets.gbufferSlot(Target::Info) ? &skyInfo[0] : nothing);
+        if (!context.frame.runsToEnd) {
+            // LightingPass leaves the sky's pixels to SkyPass: a frame stopped between them shows
+            // Radiance from black there, not an earlier frame's.
+            glBindFramebuffer(GL_FRAMEBUFFER, targets.radianceOnlyFramebuffer(false));
+            glClearBufferfv(GL_COLOR, 0, nothing);
+            bindSurfaceOutput(context.targets, output_);
+        }
     } else if (!context.frame.runsToEnd) {
         // A whole forward frame needs no colour clear: every pixel of Radiance is written by a
         // surface or, where none was drawn (depth still at the far plane), by SkyPass. A frame

@@ -1,6 +1,7 @@
-// LightingPass: the deferred pipeline's shading. Reads the four G-buffer targets and writes
-// Radiance; mirrored, it lights the mirrored G-buffer into Reflection inside the water only. With
-// the tiled light method it adds the point lights too (the list from LightTilingPass).
+// LightingPass: the deferred pipeline's shading of the surfaces. Reads the four G-buffer targets and
+// writes Radiance; mirrored, it lights the mirrored G-buffer into Reflection inside the water only.
+// The sky is SkyPass's, after it, as in forward. With the tiled light method it adds the point
+// lights too (the list from LightTilingPass).
 #pragma once
 #include "passes/pass.h"
 
@@ -13,7 +14,7 @@ public:
         return mirroring_ == Mirroring::Mirrored ? "LightingPass.mirrored" : "LightingPass";
     }
     std::vector<Target> reads() const override {
-        return {Target::Albedo, Target::Normal, Target::Position, Target::Info};
+        return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
     }
     std::vector<Target> writes() const override {
         // Final too where the tone map is fused into the direct lighting.
@@ -22,6 +23,9 @@ public:
     }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
+    // Whether the depth test keeps the pass to the surfaces (else every pixel is shaded, the sky's
+    // black): unless it samples the very target it would test and the context forbids that.
+    bool testsSurfaces(const FrameSetup& frame) const;
 
 protected:
     void execute(PassContext& context) override;

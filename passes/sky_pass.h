@@ -1,6 +1,6 @@
-// SkyPass (forward only): fills every pixel nothing else covered with the procedural sky.
-// Mirrored: the mirrored sky inside the water. The deferred pipeline evaluates the same sky in
-// its lighting pass, where the G-buffer clear left the sky flag.
+// SkyPass: fills every pixel nothing else covered with the procedural sky, in both pipelines
+// (deferred: after LightingPass, which shades only the surfaces). Mirrored: the mirrored sky
+// inside the water.
 #pragma once
 #include "passes/pass.h"
 
@@ -8,8 +8,14 @@ namespace oasis {
 
 class SkyPass : public Pass {
 public:
-    explicit SkyPass(Mirroring mirroring = Mirroring::Direct) : mirroring_(mirroring) {}
-    std::string name() const override { return variantName("SkyPass", SurfaceOutput::Forward, mirroring_); }
+    // `pipelineSurfaces`: how the pipeline's surfaces are drawn (forward shaded, or the G-buffer);
+    // it only names the pass, SkyPass.forward or SkyPass.deferred: the sky is drawn alike in both.
+    explicit SkyPass(SurfaceOutput pipelineSurfaces, Mirroring mirroring = Mirroring::Direct)
+        : pipelineSurfaces_(pipelineSurfaces), mirroring_(mirroring) {}
+    std::string name() const override {
+        return std::string("SkyPass.") + (pipelineSurfaces_ == SurfaceOutput::Forward ? "forward" : "deferred") +
+               (mirroring_ == Mirroring::Mirrored ? ".mirrored" : "");
+    }
     std::vector<Target> reads() const override { return {Target::DepthStencil}; }
     std::vector<Target> writes() const override {
         // Final too where the tone map is fused into the direct sky.
@@ -23,6 +29,7 @@ protected:
     void execute(PassContext& context) override;
 
 private:
+    SurfaceOutput pipelineSurfaces_;
     Mirroring mirroring_;
 };
 

@@ -1,6 +1,8 @@
 // Deferred lighting: reads one pixel's surface from the G-buffer and shades it with the same
-// function the forward pipeline calls while drawing; where nothing was drawn (the SKY flag the
-// clear leaves) it evaluates the sky. MIRRORED: the same for the reflection, into Reflection.
+// function the forward pipeline calls while drawing. The sky is SkyPass's, as in forward: the
+// triangle lies at the far plane and is depth-tested to the surfaces where the context allows
+// (LightingPass::testsSurfaces); where it is not, sky pixels (the SKY flag the clear leaves) are
+// written black for SkyPass to draw over. MIRRORED: the same for the reflection, into Reflection.
 // LIGHTS_TILED: also adds the point lights of the pixel's tile (the tiled light method; the list
 // comes from light_tiles.comp), each with the light volumes' own pointLightRadiance().
 // TONE_MAP_FUSED: also writes the display colour to Final (the separate ToneMapPass is skipped).
@@ -44,16 +46,11 @@ vec3 tiledPointLights(Surface s, ivec2 pixel) {
 #endif
 
 void main() {
-#if defined(MIRRORED)
-    const bool reflected = true;
-#else
-    const bool reflected = false;
-#endif
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     if (gbufferSkyAt(pixel)) {
-        outColour = vec4(skySeenAlong(viewRayThroughPixel(), reflected), 1.0);
+        outColour = vec4(0.0, 0.0, 0.0, 1.0);
 #if defined(TONE_MAP_FUSED)
-        outFinal = finalColour(outColour.rgb);
+        outFinal = vec4(0.0, 0.0, 0.0, 1.0);
 #endif
         return;
     }

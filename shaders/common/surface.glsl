@@ -6,7 +6,7 @@
 
 #include "common/frame_block.glsl"
 #include "common/shared_constants.glsl"
-const uint SURFACE_SKY = OASIS_SURFACE_SKY;              // nothing drawn: lighting evaluates the sky instead
+const uint SURFACE_SKY = OASIS_SURFACE_SKY;              // nothing drawn: SkyPass draws the sky there
 const uint SURFACE_REFLECTED = OASIS_SURFACE_REFLECTED;  // seen in the water: the mirrored scene
 const uint SURFACE_PLANT = OASIS_SURFACE_PLANT;          // a plant billboard
 

@@ -31,7 +31,8 @@ const std::vector<DriverSetup>& driverSetups() {
              {"--api", "gles", "--force", "gles30"}, "llvmpipe", "Mesa's llvmpipe with OpenGL ES (libgles2 / libegl-mesa0)"},
         };
         // Each forced fallback alone on llvmpipe (--force NAME): bit-identical to llvmpipe by design.
-        for (const char* name : {"gl33", "no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa", "no-clip-control"})
+        for (const char* name : {"gl33", "no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa", "no-clip-control",
+                                 "no-read-only-depth"})
             table.push_back({name, std::string("llvmpipe, --force ") + name, {}, {"--force", name}, "llvmpipe",
                              "Mesa's llvmpipe (libgl1-mesa-dri)"});
         return table;

@@ -76,6 +76,7 @@ std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     std::string computeReason;
     second->setComputeAvailable(caps.computeAvailable(&computeReason), computeReason, scene.lights.method);
     second->setClipControlAvailable(caps.clipControlAvailable(&clipControlReason), clipControlReason);
+    second->setReadOnlyDepthAvailable(renderer->readOnlyDepthAvailable(), renderer->readOnlyDepthReason());
     second->setDepthConvention(renderer->depthConvention());
     second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
     second->setStencilViewPath(renderer->stencilViewPath());
@@ -106,6 +107,9 @@ RenderSession::RenderSession(const Options& options, Shaders need)
     std::string clipControlReason;
     bool clipControl = caps.clipControlAvailable(&clipControlReason);
     renderer->setClipControlAvailable(clipControl, clipControlReason);
+    std::string readOnlyDepthReason;
+    bool readOnlyDepth = caps.readOnlyDepthAvailable(&readOnlyDepthReason);
+    renderer->setReadOnlyDepthAvailable(readOnlyDepth, readOnlyDepthReason);
     renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
     renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
@@ -162,10 +166,16 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     list.push_back({"depth-read-in-place", layout.positionFromDepth(),
                     layout.positionFromDepth()
                         ? "the " + layout.name + " layout rebuilds position from depth: the direct lighting, tiling, "
-                          "views and probe sample the depth-stencil target itself (lighting draws without it "
-                          "attached); DepthCopyPass copies it only for passes that test against it while reading "
-                          "it (light volumes, the reflection's lighting: a feedback loop otherwise)"
+                          "views and probe sample the depth-stencil target itself (the lighting tests against it "
+                          "read-only where read-only-depth says so); DepthCopyPass copies it only for passes that "
+                          "write stencil or may not read what they test (light volumes, the reflection's lighting)"
                         : "not used: the " + layout.name + " layout stores position, no pass reads depth"});
+    bool readOnlyDepth = renderer->readOnlyDepthAvailable();
+    list.push_back({"read-only-depth", readOnlyDepth,
+                    readOnlyDepth ? "the deferred lighting shades only the surfaces (a far-plane triangle depth-tested "
+                                    "against the depth-stencil target it samples, writes off; SkyPass draws the sky): " +
+                                        renderer->readOnlyDepthReason()
+                                  : renderer->readOnlyDepthReason()});
     bool clipDistances = caps.clipDistancesAvailable(&why);
     list.push_back({"clip-distances", clipDistances,
                     clipDistances ? "the reflection clipped at the water plane by " + why : why});

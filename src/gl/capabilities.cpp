@@ -24,6 +24,7 @@ const FallbackName kFallbackNames[] = {
     {"gl33", &ForcedFallbacks::gl33},
     {"gles30", &ForcedFallbacks::gles30},
     {"no-depth-clamp", &ForcedFallbacks::noDepthClamp},
+    {"no-read-only-depth", &ForcedFallbacks::noReadOnlyDepth},
 };
 
 // What an OpenGL ES 3.0 context keeps of its extensions under --force gles30: the float colour
@@ -57,6 +58,9 @@ const FeatureSource kGpuShader5{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_EXT_gpu_sh
 const FeatureSource kFloatTargets{3, 0, nullptr, 3, 2, "GL_EXT_color_buffer_float"};
 const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance"};
 const FeatureSource kDepthClamp{3, 2, "GL_ARB_depth_clamp", 0, 0, "GL_EXT_depth_clamp"};
+// GL 4.5's feedback-loop rule (from ARB_texture_barrier): reads are undefined only of texels the
+// draws write. ES is not assumed to allow it.
+const FeatureSource kReadOnlyDepth{4, 5, "GL_ARB_texture_barrier", 0, 0, nullptr};  // desktop only
 
 // "GL 4.3" / "ES 3.1" when the core version has it, else the extension's name when listed, else "".
 std::string source(const Capabilities& caps, const FeatureSource& feature) {
@@ -122,7 +126,8 @@ std::string ForcedFallbacks::list() const {
 }
 
 const char* forcedFallbackNames() {
-    return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33, gles30, no-depth-clamp";
+    return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33, gles30, no-depth-clamp, "
+           "no-read-only-depth";
 }
 
 const char* apiName(Api api) { return api == Api::Gles ? "gles" : "gl"; }
@@ -251,13 +256,23 @@ bool Capabilities::depthClampAvailable(std::string* reason) const {
     return answer(true, reason, "GL_DEPTH_CLAMP present (" + from + ")");
 }
 
+bool Capabilities::readOnlyDepthAvailable(std::string* reason) const {
+    const char* fallback = "fallback: the compact lighting that samples depth in place shades every pixel, the sky "
+                           "drawn over its sky pixels (";
+    if (forced.noReadOnlyDepth) return answer(false, reason, fallback + std::string("switched off by --force no-read-only-depth)"));
+    if (es) return answer(false, reason, fallback + std::string("not relied on under OpenGL ES)"));
+    std::string from = source(*this, kReadOnlyDepth);
+    if (from.empty()) return answer(false, reason, fallback + missing(*this, kReadOnlyDepth) + ")");
+    return answer(true, reason, "feedback-loop rule of " + from + ": reading a texture the draw only tests against is defined");
+}
+
 std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() const {
     static const char* kNames[] = {
         "GL_ARB_shader_storage_buffer_object", "GL_ARB_compute_shader", "GL_ARB_stencil_texturing",
         "GL_ARB_direct_state_access", "GL_KHR_debug", "GL_ARB_shading_language_420pack", "GL_ARB_gpu_shader5",
         "GL_ARB_texture_float", "GL_ARB_color_buffer_float", "GL_ARB_uniform_buffer_object",
         "GL_ARB_explicit_attrib_location", "GL_ARB_explicit_uniform_location", "GL_ARB_texture_storage",
-        "GL_ARB_timer_query", "GL_ARB_clip_control"};
+        "GL_ARB_timer_query", "GL_ARB_clip_control", "GL_ARB_texture_barrier"};
     static const char* kEsNames[] = {"GL_EXT_color_buffer_float", "GL_EXT_clip_cull_distance", "GL_EXT_clip_control",
                                      "GL_EXT_depth_clamp", "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_EXT_disjoint_timer_query",
                                      "GL_NV_read_depth_stencil"};

@@ -23,14 +23,16 @@ struct ForcedFallbacks {
     bool gl33 = false;  // create the context at OpenGL 3.3 core (the context's job, before measuring)
     bool gles30 = false;  // --api gles: treat the ES context as OpenGL ES 3.0 (core features alone)
     bool noDepthClamp = false;  // the shadow casters flattened in the shader, as on ES 3.0
+    bool noReadOnlyDepth = false;  // the lighting shades every pixel instead of testing a depth it samples
 
     bool any() const {
-        return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33 || gles30 || noDepthClamp;
+        return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33 || gles30 || noDepthClamp ||
+               noReadOnlyDepth;
     }
     std::string list() const;  // "no-ssbo,gl33" ("" when none)
 };
 // The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa,
-// no-clip-control, gl33, gles30, no-depth-clamp".
+// no-clip-control, gl33, gles30, no-depth-clamp, no-read-only-depth".
 const char* forcedFallbackNames();
 // Parses a comma-separated list into `forced` (adding to what is there); false with `error` on a bad name.
 bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std::string& error);
@@ -117,6 +119,10 @@ struct Capabilities {
     bool clipControlAvailable(std::string* reason = nullptr) const;  // glClipControl: reversed-z depth
     bool clipDistancesAvailable(std::string* reason = nullptr) const;  // else a varying and discard
     bool depthClampAvailable(std::string* reason = nullptr) const;  // else shadow casters pancaked in the shader
+    // Depth-testing against the depth-stencil texture a draw also samples, with depth and stencil
+    // writes off: GL 4.5's feedback-loop rule (or ARB_texture_barrier's) makes only texels a draw
+    // writes undefined to read. Else the compact lighting that samples depth in place shades every pixel.
+    bool readOnlyDepthAvailable(std::string* reason = nullptr) const;
     // "OpenGL 4.5" / "OpenGL ES 3.2": the version as the reasons name it.
     std::string apiVersionName() const;
 

@@ -11,10 +11,10 @@ constexpr TargetFormat kDepth32FStencil8{GL_DEPTH32F_STENCIL8, 8};
 
 const std::vector<DepthConvention> kConventions = {
     {"standard", "24-bit fixed-point depth, near 0 far 1, NDC z -1..1 (OpenGL's default)", DepthMapping::Standard,
-     kDepth24Stencil8, GL_LESS, GL_LEQUAL, GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE, -1.0f, 1.0f, 1.0f},
+     kDepth24Stencil8, GL_LESS, GL_LEQUAL, GL_GREATER, GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE, -1.0f, 1.0f, 1.0f},
     // A float's exponent spends its precision near 0, where 1/distance is small: the far field.
     {"reversed-z", "32-bit float depth, near 1 far 0 (glClipControl ZERO_TO_ONE, near and far swapped)",
-     DepthMapping::Reversed, kDepth32FStencil8, GL_GREATER, GL_GEQUAL, GL_LOWER_LEFT, GL_ZERO_TO_ONE, 1.0f, 0.0f,
+     DepthMapping::Reversed, kDepth32FStencil8, GL_GREATER, GL_GEQUAL, GL_LESS, GL_LOWER_LEFT, GL_ZERO_TO_ONE, 1.0f, 0.0f,
      0.0f},
 };
 

@@ -20,6 +20,7 @@ struct DepthConvention {
     TargetFormat depthStencil;       // the shared depth-stencil target; bytes as drivers allocate them
     GLenum nearerFunc;               // passes when the fragment is in front of what is stored
     GLenum nearerOrEqualFunc;        // also passes at the same depth: draws at the far plane over the clear
+    GLenum fartherFunc;              // passes behind what is stored: a far-plane draw over surfaces only
     GLenum clipOrigin, clipDepthMode;  // glClipControl for the frame
     float nearPlaneNdcZ;             // NDC z of the near plane
     float farPlaneNdcZ;              // NDC z of the far plane: full-screen draws there (the sky)

@@ -107,6 +107,9 @@ struct FrameSetup {
     // Such a layout's direct lighting samples the depth-stencil target itself, drawn without it
     // attached; false: it reads DepthCopyPass's copy, made every frame (set from the scene's work).
     bool depthReadInPlace = true;
+    // The context may depth-test against the target a draw samples (writes off): such a layout's
+    // in-place lighting then shades only the surfaces too (set by the renderer from the capabilities).
+    bool readOnlyDepth = false;
     // The sun's shadow maps this frame: shadows on and the sun above the horizon (at night no
     // shadow pass runs). The cascades are also in `data` for the shaders.
     bool shadowsActive = false;

@@ -41,6 +41,7 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         // stencil volumes after it; each pass is active only with its method.
         add(std::make_unique<LightTilingPass>());
         add(std::make_unique<LightingPass>());
+        add(std::make_unique<SkyPass>(SurfaceOutput::GBuffer));
         // Before the water mask: the depth under the water is still the terrain's, which the
         // volumes test against (the G-buffer there holds that terrain).
         add(std::make_unique<LightVolumePass>());
@@ -51,17 +52,18 @@ Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
         add(std::make_unique<DepthCopyPass>(Mirroring::Mirrored));
         add(std::make_unique<LightTilingPass>(Mirroring::Mirrored));
         add(std::make_unique<LightingPass>(Mirroring::Mirrored));
+        add(std::make_unique<SkyPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
         add(std::make_unique<LightVolumePass>(Mirroring::Mirrored));
     } else {
         add(std::make_unique<ClearPass>(SurfaceOutput::Forward));
         add(std::make_unique<TerrainPass>(SurfaceOutput::Forward));
         add(std::make_unique<VegetationPass>(SurfaceOutput::Forward));
-        add(std::make_unique<SkyPass>());
+        add(std::make_unique<SkyPass>(SurfaceOutput::Forward));
         add(std::make_unique<WaterMaskPass>());
         add(std::make_unique<ReflectionClearPass>(SurfaceOutput::Forward));
         add(std::make_unique<TerrainPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
         add(std::make_unique<VegetationPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
-        add(std::make_unique<SkyPass>(Mirroring::Mirrored));
+        add(std::make_unique<SkyPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
     }
     // A reflection drawn at a reduced resolution is brought to the frame's here (else inactive).
     add(std::make_unique<ReflectionUpsamplePass>());

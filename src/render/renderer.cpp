@@ -50,7 +50,13 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
     // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
     clipControlAvailable_ = caps.clipControlAvailable(&clipControlReason_);
+    readOnlyDepthAvailable_ = caps.readOnlyDepthAvailable(&readOnlyDepthReason_);
     setDepthConvention(standardDepthConvention());
+}
+
+void Renderer::setReadOnlyDepthAvailable(bool available, const std::string& reason) {
+    readOnlyDepthAvailable_ = available;
+    readOnlyDepthReason_ = reason;
 }
 
 void Renderer::setClipControlAvailable(bool available, const std::string& reason) {
@@ -314,6 +320,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     frame_.toneMapFused = scene.work.fuseToneMap && stopBefore.empty() && !volumesAfterLighting;
     frame_.runsToEnd = stopBefore.empty();
     frame_.depthReadInPlace = scene.work.depthReadInPlace;
+    frame_.readOnlyDepth = readOnlyDepthAvailable_;
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());

@@ -79,6 +79,11 @@ public:
     LightMethod lightMethod() const { return lightMethodChoice_.method; }
     const std::string& lightMethodReason() const { return lightMethodChoice_.reason; }
     bool computeAvailable() const { return computeAvailable_; }
+    // Whether the compact lighting that samples depth in place may test against that target too
+    // (Capabilities::readOnlyDepthAvailable; the session's report replaces the context's answer).
+    bool readOnlyDepthAvailable() const { return readOnlyDepthAvailable_; }
+    const std::string& readOnlyDepthReason() const { return readOnlyDepthReason_; }
+    void setReadOnlyDepthAvailable(bool available, const std::string& reason);
     // The session's capability report decides (it honours --force no-compute, no-ssbo, gl33).
     void setComputeAvailable(bool available, const std::string& reason,
                              const std::optional<LightMethod>& forced = std::nullopt);
@@ -200,6 +205,8 @@ private:
     const DepthConvention* depthInUse_ = &standardDepthConvention();
     bool clipControlAvailable_ = false;
     std::string clipControlReason_;
+    bool readOnlyDepthAvailable_ = false;
+    std::string readOnlyDepthReason_;
     std::string depthReason_;
     ViewFill viewFill_;
     WaterScene viewWaterScene_ = WaterScene::Direct;

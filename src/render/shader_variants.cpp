@@ -34,8 +34,8 @@ std::vector<ProgramVariant> buildVariants() {
         {"vegetation.shadow", "vegetation.vert", "vegetation.frag", {"OUTPUT_SHADOW"}},
         {"sky.forward", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE"}},
         {"sky.forward.mirrored", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE", "MIRRORED"}},
-        {"lighting", "fullscreen.vert", "lighting.frag", {}},
-        {"lighting.mirrored", "fullscreen.vert", "lighting.frag", {"MIRRORED"}},
+        {"lighting", "fullscreen.vert", "lighting.frag", {"FULLSCREEN_AT_FAR_PLANE"}},
+        {"lighting.mirrored", "fullscreen.vert", "lighting.frag", {"FULLSCREEN_AT_FAR_PLANE", "MIRRORED"}},
         {"gbuffer.clear", "fullscreen.vert", "gbuffer_clear.frag", {"FULLSCREEN_AT_FAR_PLANE", "WATER_BOUNDED"}},
         {"water.mask", "water.vert", "water_mask.frag", {}},
         {"water.mask.plane", "water.vert", "water_mask.frag", {"WATER_PLANE_ONLY"}},
@@ -44,7 +44,7 @@ std::vector<ProgramVariant> buildVariants() {
         // The tone map fused into the pass that writes a pixel's colour last (README: the
         // full-screen passes): ".tonemapped" variants also write Final; "tonemap" is the separate pass.
         {"water.composite.tonemapped", "water.vert", "water_composite.frag", {"TONE_MAP_FUSED"}},
-        {"lighting.tonemapped", "fullscreen.vert", "lighting.frag", {"TONE_MAP_FUSED"}},
+        {"lighting.tonemapped", "fullscreen.vert", "lighting.frag", {"FULLSCREEN_AT_FAR_PLANE", "TONE_MAP_FUSED"}},
         {"sky.forward.tonemapped", "fullscreen.vert", "sky.frag", {"FULLSCREEN_AT_FAR_PLANE", "TONE_MAP_FUSED"}},
         {"tonemap", "fullscreen.vert", "tonemap.frag", {}},
         {"present", "fullscreen.vert", "debug_view.frag", {"VIEW_COLOUR"}},
@@ -66,10 +66,11 @@ std::vector<ProgramVariant> buildVariants() {
         // block, which every driver compiles; the UBO block array cannot take a per-pixel index).
         {"light.tiles", "", "", {"LIGHTS_SSBO_COUNT"}, "light_tiles.comp"},
         {"light.tiles.mirrored", "", "", {"MIRRORED", "LIGHTS_SSBO_COUNT"}, "light_tiles.comp"},
-        {"lighting.tiled", "fullscreen.vert", "lighting.frag", {"LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
-        {"lighting.mirrored.tiled", "fullscreen.vert", "lighting.frag", {"MIRRORED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
+        {"lighting.tiled", "fullscreen.vert", "lighting.frag", {"FULLSCREEN_AT_FAR_PLANE", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
+        {"lighting.mirrored.tiled", "fullscreen.vert", "lighting.frag",
+         {"FULLSCREEN_AT_FAR_PLANE", "MIRRORED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
         {"lighting.tonemapped.tiled", "fullscreen.vert", "lighting.frag",
-         {"TONE_MAP_FUSED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
+         {"FULLSCREEN_AT_FAR_PLANE", "TONE_MAP_FUSED", "LIGHTS_TILED", "LIGHTS_SSBO_COUNT"}},
     };
     // Point lights, once per light path (render/light_paths.h): the forward surfaces' light loop
     // (terrain and plants) and the deferred light volumes (stencil marking, then shading), direct

@@ -50,9 +50,9 @@ def walk(actions, path):
 walk(controller.GetRootActions(), [])
 passes = [m[-1] for m in markers if m[:-1] == ["deferred"]]
 expected = ["ShadowPass", "ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer", "LightingPass",
-            "WaterMaskPass", "ReflectionClearPass.gbuffer", "TerrainPass.gbuffer.mirrored",
+            "SkyPass.deferred", "WaterMaskPass", "ReflectionClearPass.gbuffer", "TerrainPass.gbuffer.mirrored",
             "VegetationPass.gbuffer.mirrored", "DepthCopyPass.mirrored", "LightingPass.mirrored",
-            "WaterCompositePass"]  # the tone map fused: no ToneMapPass in a whole frame
+            "SkyPass.deferred.mirrored", "WaterCompositePass"]  # the tone map fused: no ToneMapPass in a whole frame
 print("deferred passes:", " > ".join(passes))
 if passes != expected:
     failures.append(f"pass markers {passes}, expected {expected}")

@@ -140,7 +140,8 @@ const std::vector<Flag>& flags() {
     return table;
 }
 const std::vector<std::string> kForceNames = {"no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa",
-                                              "no-clip-control", "gl33", "gles30", "no-depth-clamp"};
+                                              "no-clip-control", "gl33", "gles30", "no-depth-clamp",
+                                              "no-read-only-depth"};
 // "" is the main job (no subcommand). bench runs minutes, so its cases always end in an option
 // bench refuses (--size): they fuzz its parsing, cli.bench_quick_smoke runs it.
 const std::vector<std::string> kSubcommands = {"render", "render", "render", "compare", "", "caps", "window",

@@ -144,7 +144,8 @@ TEST_F(Resources, DestroyedRendererReleasesItsObjects) {
     EXPECT_EQ(probeNames(), probeBefore);
 }
 
-// A pipeline switch whose programs were never built and do not build now (sky.frag broken on disk)
+// A pipeline switch whose programs were never built and do not build now (terrain.frag broken on
+// disk in its forward variants only: the deferred pipeline draws the sky with sky.frag too)
 // throws ShaderBuildError naming file:line, leaves no GL object behind, and the pipeline that drew
 // before draws the same image after; once the file is mended the switch works (what the window's
 // undo of a failed switch relies on).
@@ -153,14 +154,14 @@ TEST_F(Resources, FailedProgramBuildIsRecoverable) {
     const fs::path copy = fs::temp_directory_path() / ("oasis-resources-shaders-" + std::to_string(::getpid()));
     fs::remove_all(copy);
     fs::copy(shaderDir_, copy, fs::copy_options::recursive);
-    const fs::path sky = copy / "sky.frag";
+    const fs::path terrain = copy / "terrain.frag";
     std::string original;
     {
-        std::ifstream in(sky);
+        std::ifstream in(terrain);
         original.assign(std::istreambuf_iterator<char>(in), {});
     }
-    const int brokenLine = int(std::count(original.begin(), original.end(), '\n')) + 1;
-    std::ofstream(sky, std::ios::app) << "this is not GLSL;\n";
+    const int brokenLine = int(std::count(original.begin(), original.end(), '\n')) + 2;
+    std::ofstream(terrain, std::ios::app) << "#if defined(OUTPUT_FORWARD)\nthis is not GLSL;\n#endif\n";
 
     ShaderLibrary library(copy.string(), glslDialectForCurrentContext());
     NamedPose pose = defaultPose();
@@ -174,13 +175,13 @@ TEST_F(Resources, FailedProgramBuildIsRecoverable) {
     renderer.setPipeline(PipelineKind::Forward);
     try {
         renderer.renderFrame(pose.scene);
-        ADD_FAILURE() << "a forward frame with a broken sky.frag did not throw";
+        ADD_FAILURE() << "a forward frame with a broken terrain.frag did not throw";
     } catch (const ShaderBuildError& error) {
-        EXPECT_NE(std::string(error.what()).find("sky.frag:" + std::to_string(brokenLine)), std::string::npos)
+        EXPECT_NE(std::string(error.what()).find("terrain.frag:" + std::to_string(brokenLine)), std::string::npos)
             << error.what();
     }
     glFinish();
-    // The forward programs that built before sky.frag's failed stay in the library; nothing else is new.
+    // The forward programs that built before terrain.frag's failed stay in the library; nothing else is new.
     LiveCounts expected = countsBefore;
     const int built = int(library.programCount() - programsBefore);
     expected.byKind[size_t(gl::ObjectKind::Program)] += built;
@@ -189,7 +190,7 @@ TEST_F(Resources, FailedProgramBuildIsRecoverable) {
     const Image after = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
     EXPECT_EQ(compareImages(before, after).maxAbs, 0) << "the deferred frame changed after the failed switch";
 
-    std::ofstream(sky, std::ios::trunc) << original;
+    std::ofstream(terrain, std::ios::trunc) << original;
     EXPECT_TRUE(hasContent(renderFinal(renderer, pose.scene, PipelineKind::Forward)));
     std::error_code ignored;
     fs::remove_all(copy, ignored);
