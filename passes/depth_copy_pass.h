@@ -1,10 +1,10 @@
 // DepthCopyPass: in layouts that reconstruct position from depth (compact), copies the G-buffer's
 // depth into the SceneDepth target (a full-screen draw) for the passes that read depth while they
-// test against the depth-stencil target: the light volumes (depth and stencil tests) and the
-// reflection's lighting (the stencil keeps it inside the water). Sampling the attached texture
-// there would be a feedback loop: undefined in GL, and visibly wrong on zink at 1280x720. Every
-// other reader (the direct lighting, tiling, views, probe) samples the target itself
-// (DepthRead::FromTarget), so the direct copy runs only in frames with light volumes. Mirrored,
+// test against the depth-stencil target: the light volumes (depth and stencil tests, stencil
+// written) and the reflection's lighting (the stencil keeps it inside the water; sampling the
+// attached texture there was visibly wrong on zink at 1280x720). Every other reader (the direct
+// lighting, tested read-only where the context allows it, tiling, views, probe) samples the target
+// itself (DepthRead::FromTarget), so the direct copy runs only in frames with light volumes. Mirrored,
 // it copies the mirrored scene's depth inside the water's rectangle, the only pixels read there.
 #pragma once
 #include "passes/light_volume_pass.h"

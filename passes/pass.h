@@ -151,10 +151,10 @@ bool mirroredPassActive(const FrameSetup& frame, Mirroring mirroring);
 std::string variantName(const std::string& base, SurfaceOutput output, Mirroring mirroring);
 const char* surfaceOutputName(SurfaceOutput output);
 // Where a layout that rebuilds position from depth (compact) reads that depth: the depth-stencil
-// target itself, for every reader that draws without it attached (the direct lighting, views, the
-// probe, compute); or DepthCopyPass's copy, for passes that stencil- or depth-test against the
-// target while they read it (the light volumes, the mirrored lighting), where sampling the
-// attached texture would be a feedback loop.
+// target itself, for the readers that draw without it attached (views, the probe, compute) or
+// test it read-only where the context allows that (the direct lighting: read-only depth); or
+// DepthCopyPass's copy, for passes that write stencil while they read depth (the light volumes)
+// and the mirrored lighting.
 enum class DepthRead { FromTarget, FromCopy };
 // Binds the four G-buffer colour targets to their texture units for a pass that reads them, and
 // the depth the position is rebuilt from where the layout does that.
