@@ -21,6 +21,27 @@ struct SunShadow {
     int cascade;  // the cascade that answered, -1 where none holds the point (or shadows are off)
 };
 
+// The 3x3 taps a texel apart of the 2x2 comparison, a smooth 4x4-texel footprint (edges neither
+// alias nor shimmer; the cascades are snapped to whole texels as well), taken as 2x2 taps. Along
+// an axis, with f the point's fraction between texel centres, the three taps weigh the four texels
+// (1 - f, 1, 1, f) / 3: the first pair (weight 2 - f) is one tap placed 1 / (2 - f) of the way
+// between them, the second (1 + f) one placed f / (1 + f) of the way; the weights are a product
+// of the two axes', so four taps give what nine did (up to the filter's own rounding). On
+// llvmpipe a tap costs about 0.8 ms over a 1280x720 frame.
+float tentFilteredShadow(vec3 coord, int cascade, vec2 mapSize) {
+    vec2 texel = coord.xy * mapSize - 0.5;
+    vec2 base = floor(texel);
+    vec2 f = texel - base;
+    vec2 weightLow = 2.0 - f, weightHigh = 1.0 + f;
+    vec2 low = (base - 0.5 + 1.0 / weightLow) / mapSize;   // between texels base - 1 and base
+    vec2 high = (base + 1.5 + f / weightHigh) / mapSize;   // between texels base + 1 and base + 2
+    float sum = weightLow.x * weightLow.y * texture(shadowMap, vec4(low.x, low.y, float(cascade), coord.z)) +
+                weightHigh.x * weightLow.y * texture(shadowMap, vec4(high.x, low.y, float(cascade), coord.z)) +
+                weightLow.x * weightHigh.y * texture(shadowMap, vec4(low.x, high.y, float(cascade), coord.z)) +
+                weightHigh.x * weightHigh.y * texture(shadowMap, vec4(high.x, high.y, float(cascade), coord.z));
+    return sum / 9.0;
+}
+
 SunShadow sunShadow(vec3 position, vec3 normal) {
     SunShadow result = SunShadow(1.0, -1);
     if (frame.shadow.x == 0.0) return result;
@@ -39,13 +60,7 @@ SunShadow sunShadow(vec3 position, vec3 normal) {
         if (any(greaterThan(abs(clip.xy), vec2(1.0 - margin))) || abs(clip.z) >= 1.0) continue;
         vec3 coord = clip.xyz * 0.5 + 0.5;
         coord.z -= SHADOW_DEPTH_BIAS_TEXELS * texel / frame.shadowDepthRange[c];
-        // 3x3 taps a texel apart of the 2x2 comparison: a smooth 4x4-texel footprint, so edges
-        // neither alias nor shimmer (the cascades are snapped to whole texels as well).
-        float sum = 0.0;
-        for (int y = -1; y <= 1; ++y)
-            for (int x = -1; x <= 1; ++x)
-                sum += texture(shadowMap, vec4(coord.xy + vec2(float(x), float(y)) / mapSize, float(c), coord.z));
-        result.lit = sum / 9.0;
+        result.lit = tentFilteredShadow(coord, c, mapSize);
         result.cascade = c;
         break;
     }
