@@ -1,5 +1,9 @@
 // Terrain fragments: build the material's surface and emit it (G-buffer or shaded, by variant).
+// OUTPUT_HEIGHTS rasterises nothing (its vertices are captured): an empty stage, as linking asks.
 #include "common/frame_block.glsl"
+#if defined(OUTPUT_HEIGHTS)
+void main() {}
+#else
 #include "common/terrain.glsl"
 #include "common/emit_surface.glsl"
 #include "common/water_clip_fragment.glsl"
@@ -16,3 +20,4 @@ void main() {
     emitSurface(terrainSurface(vRelativePosition, normalize(vNormal), reflected));
     if (belowWater()) discard;
 }
+#endif

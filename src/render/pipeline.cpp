@@ -12,6 +12,7 @@
 #include "passes/reflection_upsample_pass.h"
 #include "passes/shadow_pass.h"
 #include "passes/sky_pass.h"
+#include "passes/terrain_heights_pass.h"
 #include "passes/terrain_pass.h"
 #include "passes/tone_map_pass.h"
 #include "passes/vegetation_pass.h"
@@ -30,7 +31,9 @@ bool parsePipelineKind(const std::string& text, PipelineKind& out) {
 
 Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
     auto add = [this](auto pass) { passes_.push_back(std::move(pass)); };
-    // The sun's shadow maps first: every shading pass after it reads them (both pipelines alike).
+    // The terrain's heights for every pass that draws it, then the sun's shadow maps: every
+    // shading pass after it reads them (both pipelines alike).
+    add(std::make_unique<TerrainHeightsPass>());
     add(std::make_unique<ShadowPass>());
     if (kind == PipelineKind::Deferred) {
         add(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));

@@ -1,4 +1,4 @@
-// Uploads the terrain grid; draws it and full-screen triangles.
+// Uploads the terrain grid; computes its heights once a frame; draws it and full-screen triangles.
 #include "render/scene_geometry.h"
 
 #include <algorithm>
@@ -10,15 +10,35 @@ namespace oasis {
 SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(density) {
     GridMesh mesh = buildTerrainGrid(density);
     indexCount_ = int(mesh.indices.size());
-    terrainVao_ = gl::createVertexArray("terrain grid");
+    gridVertexCount_ = int(mesh.vertices.size());
+    // The grid's coordinates, read only where the heights are computed.
+    terrainGridVao_ = gl::createVertexArray("terrain grid coordinates (heights pass)");
     terrainVertices_ = gl::createBuffer("terrain grid vertices");
-    terrainIndices_ = gl::createBuffer("terrain grid indices");
-    glBindVertexArray(terrainVao_.name());
+    glBindVertexArray(terrainGridVao_.name());
     glBindBuffer(GL_ARRAY_BUFFER, terrainVertices_.name());
     glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(glm::vec2)), mesh.vertices.data(),
                  GL_STATIC_DRAW);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+    // The heights the terrain is drawn with: the grid vertices in the same order, written by the
+    // transform feedback (offset xz, then height and its gradient), read as attributes 1 and 2.
+    terrainHeights_ = gl::createBuffer("terrain grid heights (this frame's)");
+    glBindBuffer(GL_ARRAY_BUFFER, terrainHeights_.name());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(size_t(gridVertexCount_) * kHeightsStride), nullptr, GL_DYNAMIC_COPY);
+    // A draw needs a complete framebuffer even when it rasterises nothing, and a headless context
+    // has none bound by default: a 1x1 one of its own.
+    heightsTargetTexture_ = gl::createTargetTexture("terrain heights pass: 1x1 target (nothing drawn)", GL_R8, 1, 1);
+    heightsTarget_ = gl::createFramebuffer("terrain heights pass: 1x1 target (nothing drawn)");
+    glBindFramebuffer(GL_FRAMEBUFFER, heightsTarget_.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, heightsTargetTexture_.name(), 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    terrainVao_ = gl::createVertexArray("terrain grid");
+    terrainIndices_ = gl::createBuffer("terrain grid indices");
+    glBindVertexArray(terrainVao_.name());
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, kHeightsStride, nullptr);
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kHeightsStride, reinterpret_cast<const void*>(2 * sizeof(float)));
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, terrainIndices_.name());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(uint32_t)), mesh.indices.data(),
                  GL_STATIC_DRAW);
@@ -35,6 +55,22 @@ SceneGeometry::SceneGeometry(const TerrainGridDensity& density) : density_(densi
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
     glBindVertexArray(0);
+}
+
+void SceneGeometry::computeTerrainHeights() const {
+    GLint previousTarget = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousTarget);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, heightsTarget_.name());
+    glEnable(GL_RASTERIZER_DISCARD);
+    glBindVertexArray(terrainGridVao_.name());
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, terrainHeights_.name());
+    glBeginTransformFeedback(GL_POINTS);
+    glDrawArrays(GL_POINTS, 0, gridVertexCount_);
+    glEndTransformFeedback();
+    glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+    glBindVertexArray(0);
+    glDisable(GL_RASTERIZER_DISCARD);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(previousTarget));
 }
 
 void SceneGeometry::drawTerrain() const {

@@ -1,5 +1,6 @@
-// GPU-side scene data built once and shared by both pipelines: the terrain grid's buffers and
-// an empty vertex array for full-screen triangles. Switching pipelines never rebuilds it.
+// GPU-side scene data built once and shared by both pipelines: the terrain grid's buffers (its
+// heights rewritten each frame) and an empty vertex array for full-screen triangles. Switching
+// pipelines never rebuilds it.
 #pragma once
 #include "gl/objects.h"
 #include "scene/terrain.h"
@@ -11,6 +12,11 @@ public:
     explicit SceneGeometry(const TerrainGridDensity& density);
 
     const TerrainGridDensity& density() const { return density_; }
+    // Writes every grid vertex's place and height for this frame's camera into the buffer the
+    // terrain draws read, by transform feedback of the bound program (terrain.heights; nothing is
+    // rasterised). TerrainHeightsPass calls it before any terrain is drawn in a frame.
+    void computeTerrainHeights() const;
+    int gridVertexCount() const { return gridVertexCount_; }
     void drawTerrain() const;
     // The grid's strips [first, end) only, strip i lying between rings i and i + 1 (the indices
     // go ring by ring, so a run of strips is one run of indices).
@@ -24,9 +30,14 @@ public:
 
 private:
     TerrainGridDensity density_;
-    gl::VertexArray terrainVao_, emptyVao_;
-    gl::Buffer terrainVertices_, terrainIndices_;
+    // terrain.vert's heightsOffset (vec2) and heightsHeight (vec3), interleaved.
+    static constexpr GLsizei kHeightsStride = 5 * sizeof(float);
+    gl::VertexArray terrainVao_, terrainGridVao_, emptyVao_;
+    gl::Buffer terrainVertices_, terrainHeights_, terrainIndices_;
+    gl::Texture heightsTargetTexture_;
+    gl::Framebuffer heightsTarget_;
     int indexCount_ = 0;
+    int gridVertexCount_ = 0;
     gl::VertexArray lightVolumeVao_;
     gl::Buffer lightVolumeVertices_;
     int lightVolumeVertexCount_ = 0;

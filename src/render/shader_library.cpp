@@ -283,6 +283,11 @@ bool ShaderLibrary::build(const ProgramVariant& variant, gl::Program& out, std::
     gl::Program program(glCreateProgram());
     gl::setLabel(program, variant.name);  // the variant table's name: "lighting.compact", "terrain.forward"
     for (const gl::Shader& shader : shaders) glAttachShader(program.name(), shader.name());
+    if (!variant.feedbackVaryings.empty()) {
+        std::vector<const char*> varyings;
+        for (const std::string& varying : variant.feedbackVaryings) varyings.push_back(varying.c_str());
+        glTransformFeedbackVaryings(program.name(), GLsizei(varyings.size()), varyings.data(), GL_INTERLEAVED_ATTRIBS);
+    }
     glLinkProgram(program.name());
     GLint ok = GL_FALSE;
     glGetProgramiv(program.name(), GL_LINK_STATUS, &ok);

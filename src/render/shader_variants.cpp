@@ -25,6 +25,9 @@ bool touchesGBuffer(const ProgramVariant& variant) {
 
 std::vector<ProgramVariant> buildVariants() {
     std::vector<ProgramVariant> variants = {
+        // Each grid vertex's place and height, once a frame, for every terrain draw after it
+        // (passes/terrain_heights_pass.h): captured by transform feedback, nothing rasterised.
+        {"terrain.heights", "terrain.vert", "terrain.frag", {"OUTPUT_HEIGHTS"}, "", {"heightsOffset", "heightsHeight"}},
         {"terrain.gbuffer", "terrain.vert", "terrain.frag", {"OUTPUT_GBUFFER"}},
         {"terrain.gbuffer.mirrored", "terrain.vert", "terrain.frag", {"OUTPUT_GBUFFER", "MIRRORED"}},
         {"vegetation.gbuffer", "vegetation.vert", "vegetation.frag", {"OUTPUT_GBUFFER"}},

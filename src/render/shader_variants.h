@@ -13,6 +13,9 @@ struct ProgramVariant {
     std::string fragmentFile;
     std::vector<std::string> defines;  // each "NAME" or "NAME VALUE"
     std::string computeFile{};         // non-empty: a compute program (needs GL 4.3 or the ARB extensions)
+    // The vertex stage's outputs a transform feedback captures, interleaved in this order (set
+    // before linking; empty for programs that draw).
+    std::vector<std::string> feedbackVaryings{};
     bool isCompute() const { return !computeFile.empty(); }
     // The files the program is built from: {compute} or {vertex, fragment}.
     std::vector<std::string> stageFiles() const {

@@ -3,6 +3,7 @@
 
 #include "passes/clear_pass.h"
 #include "passes/reflection_clear_pass.h"
+#include "passes/terrain_heights_pass.h"
 #include "passes/terrain_pass.h"
 #include "passes/vegetation_pass.h"
 #include "passes/water_mask_pass.h"
@@ -19,6 +20,7 @@ std::optional<WaterScene> parseWaterScene(const std::string& text) {
 
 ViewFill::ViewFill() {
     auto directScene = [](std::vector<std::unique_ptr<Pass>>& list) {
+        list.push_back(std::make_unique<TerrainHeightsPass>());  // the fill may run before any frame has
         list.push_back(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
         list.push_back(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
         list.push_back(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));

@@ -49,7 +49,7 @@ def walk(actions, path):
             walk(action.children, markers[-1])
 walk(controller.GetRootActions(), [])
 passes = [m[-1] for m in markers if m[:-1] == ["deferred"]]
-expected = ["ShadowPass", "ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer", "LightingPass",
+expected = ["TerrainHeightsPass", "ShadowPass", "ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer", "LightingPass",
             "SkyPass.deferred", "WaterMaskPass", "ReflectionClearPass.gbuffer", "TerrainPass.gbuffer.mirrored",
             "VegetationPass.gbuffer.mirrored", "DepthCopyPass.mirrored", "LightingPass.mirrored",
             "SkyPass.deferred.mirrored", "WaterCompositePass"]  # the tone map fused: no ToneMapPass in a whole frame

@@ -238,10 +238,10 @@ protected:
 
 TEST_F(ShaderReload, BrokenTerrainFragKeepsPreviousProgramsUntilRestored) {
     // The default frame (camera above the lake, reflections on, the sun up) builds all four terrain
-    // variants and the shadow caster; the forward ones are those of the light path the context
+    // variants, the shadow caster and the heights pass; the forward ones are those of the light path the context
     // picks (ssbo on llvmpipe), the direct one with the tone map fused (a whole frame).
     breakAndRestore("terrain.frag", {"terrain.gbuffer", "terrain.forward.tonemapped.lights-ssbo", "terrain.gbuffer.mirrored",
-                                     "terrain.forward.mirrored.lights-ssbo", "terrain.shadow"});
+                                     "terrain.forward.mirrored.lights-ssbo", "terrain.shadow", "terrain.heights"});
 }
 
 TEST_F(ShaderReload, BrokenIncludedFileIsNamedInEveryProgramThatIncludesIt) {

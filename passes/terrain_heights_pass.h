@@ -1,0 +1,20 @@
+// TerrainHeightsPass: places this frame's terrain grid around the camera and raises it to the
+// noise height, once, for every terrain draw after it (the shadow cascades, the G-buffer or the
+// forward draw, the reflection). The noise was most of those draws' vertex work: each evaluated
+// it again for the same vertices. First in both pipelines and in the views' fills.
+#pragma once
+#include "passes/pass.h"
+
+namespace oasis {
+
+class TerrainHeightsPass : public Pass {
+public:
+    std::string name() const override { return "TerrainHeightsPass"; }
+    std::vector<Target> reads() const override { return {}; }
+    std::vector<Target> writes() const override { return {}; }  // the grid's heights buffer, no frame target
+
+protected:
+    void execute(PassContext& context) override;
+};
+
+}  // namespace oasis
