@@ -3,12 +3,9 @@
 // a 1x1 frame renders in both pipelines without NaN, and a shader reload with a broken file keeps
 // the previous programs (same image) and names the file; restoring it reloads cleanly.
 #include "gpu_test.h"
-
-#include <unistd.h>
+#include "shader_dir_copy.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "debug/debug_views.h"
 #include "render/frame_targets.h"
@@ -150,31 +147,6 @@ TEST_F(BadInput, UnknownViewAndPassNamesThrowInvalidArgument) {
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     EXPECT_TRUE(hasContent(renderFinal(renderer, pose.scene, PipelineKind::Deferred)));
 }
-
-std::string readText(const fs::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-void writeText(const fs::path& path, const std::string& text) {
-    std::ofstream out(path, std::ios::trunc);
-    out << text;
-}
-
-// A copy of the real shader directory in a fresh temporary directory, removed afterwards.
-struct ShaderDirCopy {
-    fs::path root;
-    explicit ShaderDirCopy(const std::string& source) {
-        root = fs::temp_directory_path() / ("oasis-gpu-shaders-" + std::to_string(::getpid()));
-        fs::remove_all(root);
-        fs::copy(source, root, fs::copy_options::recursive);
-    }
-    ~ShaderDirCopy() {
-        std::error_code ignored;
-        fs::remove_all(root, ignored);
-    }
-};
 
 class ShaderReload : public GpuTest {
 protected:

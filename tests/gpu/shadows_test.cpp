@@ -5,6 +5,7 @@
 // (long grazing shadows), near the horizon, 1e5 units out; night runs no shadow pass; the eye
 // at the water plane; forward and deferred agree with shadows on (agreement_test.cpp too).
 #include "gpu_test.h"
+#include "shader_dir_copy.h"
 
 #include "scene/sky.h"
 
@@ -111,6 +112,60 @@ protected:
 
 TEST_F(Shadows, LowSunLongShadowsMatchTheTerrain) {
     checkAgainstCpu("low-sun", facingTheSun(210.0, -120.0, 40.0, 7.0, -12.0f), 1000, 500);
+}
+
+// The lookup's four taps (tentFilteredShadow in common/shadows.glsl) against the 3x3 taps of the
+// 2x2 comparison they stand for: the shadow view's sunlit fraction of a frame with long shadows
+// (many pixels in a penumbra), drawn with the shaders as they are and with the nine-tap loop put
+// back in a copy of shadows.glsl. The weights are the same; only the filter's own rounding may
+// differ. Four taps at whole-texel offsets (the placement dropped) miss by up to 0.22 here.
+TEST_F(Shadows, FourTapsGiveTheNineTheyReplace) {
+    const int width = 320, height = 180;
+    SceneSettings scene = facingTheSun(210.0, -120.0, 40.0, 7.0, -12.0f);
+    auto shadowValues = [&](ShaderLibrary& library) {
+        Renderer renderer(library, scene);
+        renderer.configure(width, height, layoutNamed("full"));
+        renderer.setPipeline(PipelineKind::Deferred);
+        renderer.renderFrame(scene);
+        renderer.renderView("shadow");
+        return renderer.readViewValues("shadow");
+    };
+    std::vector<float> four = shadowValues(*shaders_);
+
+    ShaderDirCopy copy(shaderDir_);
+    const auto file = copy.root / "common" / "shadows.glsl";
+    std::string text = readText(file);
+    const std::string call = "result.lit = tentFilteredShadow(coord, c, mapSize);";
+    ASSERT_NE(text.find(call), std::string::npos) << "shadows.glsl no longer calls tentFilteredShadow so";
+    text.replace(text.find(call), call.size(),
+                 "float sum = 0.0;\n"
+                 "        for (int y = -1; y <= 1; ++y)\n"
+                 "            for (int x = -1; x <= 1; ++x)\n"
+                 "                sum += texture(shadowMap, vec4(coord.xy + vec2(float(x), float(y)) / mapSize, "
+                 "float(c), coord.z));\n"
+                 "        result.lit = sum / 9.0;");
+    writeText(file, text);
+    ShaderLibrary nineTaps(copy.root.string(), glslDialectForCurrentContext());
+    std::vector<float> nine = shadowValues(nineTaps);
+
+    ASSERT_EQ(four.size(), nine.size());
+    int penumbra = 0, compared = 0;
+    double worst = 0.0, sum = 0.0;
+    for (size_t i = 0; i < four.size(); i += 4) {
+        if (int(std::lround(nine[i + 1])) < 0) continue;  // beyond the maps (or sky): no lookup
+        ++compared;
+        if (nine[i] > 0.02f && nine[i] < 0.98f) ++penumbra;
+        double difference = std::fabs(double(four[i]) - double(nine[i]));
+        worst = std::max(worst, difference);
+        sum += difference;
+        EXPECT_EQ(four[i + 1], nine[i + 1]) << "the cascade differs at pixel " << i / 4;
+    }
+    std::printf("[shadows] four taps vs nine: %d pixels looked up, %d in a penumbra; worst %.2e, mean %.2e\n",
+                compared, penumbra, worst, sum / std::max(compared, 1));
+    EXPECT_GE(compared, width * height / 3);
+    EXPECT_GE(penumbra, 300) << "too few penumbra pixels: the filters' difference would not show";
+    EXPECT_LE(worst, 2.0 / 255.0);
+    EXPECT_LE(sum / std::max(compared, 1), 1e-4);
 }
 
 TEST_F(Shadows, SunAtTheHorizonGrazing) {
