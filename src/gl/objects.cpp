@@ -127,8 +127,17 @@ VertexArray createVertexArray(const std::string& label) {
 
 Sampler createSampler(const std::string& label) {
     GLuint n = 0;
-    glGenSamplers(1, &n);  // a sampler is an object from glGenSamplers on
-    setLabel(ObjectKind::Sampler, n, label);
+    glGenSamplers(1, &n);
+    // Mesa makes the object at glGenSamplers; NVIDIA's driver only at the first bind (its
+    // glObjectLabel refused the unbound name with GL_INVALID_VALUE): bound once, like the rest.
+    if (hasObjectLabels()) {
+        bindOnce(GL_SAMPLER_BINDING, n, [](GLuint s) {
+            GLint unit = GL_TEXTURE0;
+            glGetIntegerv(GL_ACTIVE_TEXTURE, &unit);
+            glBindSampler(GLuint(unit - GL_TEXTURE0), s);
+        });
+        setLabel(ObjectKind::Sampler, n, label);
+    }
     return Sampler(n);
 }
 

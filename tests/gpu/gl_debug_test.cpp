@@ -50,7 +50,7 @@ TEST_F(ObjectLabels, DeferredFrameTargetsAreNamedByRoleAndLayout) {
     EXPECT_EQ(gl::objectLabel(gl::ObjectKind::Texture, targets.texture(Target::Reflection)), "Reflection");
     EXPECT_EQ(gl::objectLabel(gl::ObjectKind::Program, renderer.shaders().program("lighting.compact")),
               "lighting.compact");
-    // Every live buffer, texture, framebuffer, vertex array and program has a label (this test's
+    // Every live buffer, texture, framebuffer, vertex array, program and sampler has a label (this test's
     // renderer and shader library are the only makers of objects left: earlier tests' are deleted).
     int unnamed = 0, named = 0;
     const std::pair<gl::ObjectKind, GLboolean (*)(GLuint)> kinds[] = {
@@ -58,7 +58,8 @@ TEST_F(ObjectLabels, DeferredFrameTargetsAreNamedByRoleAndLayout) {
         {gl::ObjectKind::Buffer, [](GLuint n) { return glIsBuffer(n); }},
         {gl::ObjectKind::Framebuffer, [](GLuint n) { return glIsFramebuffer(n); }},
         {gl::ObjectKind::VertexArray, [](GLuint n) { return glIsVertexArray(n); }},
-        {gl::ObjectKind::Program, [](GLuint n) { return glIsProgram(n); }}};
+        {gl::ObjectKind::Program, [](GLuint n) { return glIsProgram(n); }},
+        {gl::ObjectKind::Sampler, [](GLuint n) { return glIsSampler(n); }}};
     for (GLuint name = 1; name < 4096; ++name)
         for (const auto& [kind, alive] : kinds)
             if (alive(name)) {
