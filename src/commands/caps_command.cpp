@@ -59,9 +59,10 @@ void printText(const RenderSession& session) {
     const gl::Capabilities& caps = session.caps;
     // GL_VERSION names the API itself on ES ("OpenGL ES 3.2 Mesa ..."), not on desktop ("4.5 (Core ...").
     std::printf("oasis caps: %s%s\n", caps.es ? "" : "OpenGL ", caps.version.c_str());
-    std::printf("  vendor    %s\n  renderer  %s\n  GLSL      %s\n  forced    %s\n", caps.vendor.c_str(),
+    std::printf("  vendor    %s\n  renderer  %s\n  GLSL      %s\n  forced    %s\n  display   %s\n", caps.vendor.c_str(),
                 caps.renderer.c_str(), caps.glslVersion.c_str(),
-                caps.forced.any() ? caps.forced.list().c_str() : "nothing (--force LIST to switch features off)");
+                caps.forced.any() ? caps.forced.list().c_str() : "nothing (--force LIST to switch features off)",
+                headlessDisplayDescription().c_str());
     std::printf("limits (0: the context has no such query):\n");
     for (const auto& [name, value] : limitRows(caps.limits)) std::printf("  %-36s %s\n", name.c_str(), value.c_str());
     std::printf("extensions that matter (%s has some in core):\n", caps.apiVersionName().c_str());
@@ -78,7 +79,8 @@ void printJson(const RenderSession& session) {
                        ", \"renderer\": " + jsonString(caps.renderer) + ", \"glsl_version\": " +
                        jsonString(caps.glslVersion) + ", \"major\": " + std::to_string(caps.major) +
                        ", \"minor\": " + std::to_string(caps.minor) + ", \"forced\": " + jsonString(caps.forced.list()) +
-                       ", \"api\": " + jsonString(caps.es ? "gles" : "gl");
+                       ", \"api\": " + jsonString(caps.es ? "gles" : "gl") +
+                       ", \"display\": " + jsonString(headlessDisplayDescription());
     json += ", \"limits\": {";
     bool first = true;
     for (const auto& [name, value] : limitRows(caps.limits)) {

@@ -1,4 +1,4 @@
-// EGL surfaceless and GLFW contexts, context facts and debug output.
+// EGL headless (surfaceless, or an EGL device) and GLFW contexts, context facts and debug output.
 #include "context/gl_context.h"
 
 #include <epoxy/egl.h>
@@ -10,6 +10,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -146,14 +147,75 @@ std::string glDebugSummary() {
            std::to_string(gCounts.otherWarnings) + " other warnings (printed above)";
 }
 
+namespace {
+
+std::string gHeadlessDisplay = "none yet";
+
+EGLDisplay initialised(EGLDisplay display) {
+    EGLint major = 0, minor = 0;
+    if (display == EGL_NO_DISPLAY) return EGL_NO_DISPLAY;
+    if (eglInitialize(display, &major, &minor)) return display;
+    return EGL_NO_DISPLAY;
+}
+
+// EGL_EXT_platform_device's first hardware device, else its first (Mesa lists a software one).
+EGLDisplay openDeviceDisplay(std::string& chosen) {
+    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device") ||
+        !epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration"))
+        return EGL_NO_DISPLAY;
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (!eglQueryDevicesEXT(16, devices, &count) || count < 1) return EGL_NO_DISPLAY;
+    int pick = 0;
+    for (int i = count - 1; i >= 0; --i) {
+        const char* extensions = eglQueryDeviceStringEXT(devices[i], EGL_EXTENSIONS);
+        if (!extensions || !std::strstr(extensions, "EGL_MESA_device_software")) pick = i;
+    }
+    const char* extensions = eglQueryDeviceStringEXT(devices[pick], EGL_EXTENSIONS);
+    bool software = extensions && std::strstr(extensions, "EGL_MESA_device_software");
+    chosen = "EGL device " + std::to_string(pick + 1) + " of " + std::to_string(count) +
+             (software ? " (software)" : "") + " (EGL_EXT_platform_device)";
+    return initialised(eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[pick], nullptr));
+}
+
+// The headless display: Mesa's surfaceless platform, else an EGL device (NVIDIA's driver has no
+// surfaceless platform; its headless contexts come from EGL_EXT_platform_device).
+// OASIS_EGL_PLATFORM=device skips surfaceless, so that path is tested on Mesa too.
+EGLDisplay openHeadlessDisplay() {
+    const char* asked = std::getenv("OASIS_EGL_PLATFORM");
+    std::string platform = asked ? asked : "";
+    if (!platform.empty() && platform != "surfaceless" && platform != "device")
+        throw std::runtime_error("OASIS_EGL_PLATFORM must be surfaceless or device, not '" + platform + "'");
+    bool hasSurfaceless = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless");
+    if (platform != "device" && hasSurfaceless) {
+        EGLDisplay display =
+            initialised(eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr));
+        if (display != EGL_NO_DISPLAY) {
+            gHeadlessDisplay = "surfaceless (EGL_MESA_platform_surfaceless)";
+            return display;
+        }
+    }
+    std::string chosen;
+    if (platform != "surfaceless") {
+        if (EGLDisplay display = openDeviceDisplay(chosen); display != EGL_NO_DISPLAY) {
+            gHeadlessDisplay = chosen + (platform == "device" ? ", as OASIS_EGL_PLATFORM asked"
+                                                              : hasSurfaceless ? ", the surfaceless display failed"
+                                                                               : ", EGL has no surfaceless platform");
+            return display;
+        }
+    }
+    throw std::runtime_error("cannot initialise a surfaceless EGL display" + std::string(
+        hasSurfaceless ? "" : " (EGL has no EGL_MESA_platform_surfaceless: need Mesa's libegl-mesa0)") +
+        (platform == "surfaceless" ? "" : ", nor an EGL device (EGL_EXT_platform_device)"));
+}
+
+}  // namespace
+
+std::string headlessDisplayDescription() { return gHeadlessDisplay; }
+
 HeadlessContext::HeadlessContext(MaxGlVersion max) {
     if (!max.es) capMesaVersion(max);
-    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless"))
-        throw std::runtime_error("EGL has no EGL_MESA_platform_surfaceless (need Mesa's libegl-mesa0)");
-    EGLDisplay display = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-    EGLint major = 0, minor = 0;
-    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor))
-        throw std::runtime_error("cannot initialise a surfaceless EGL display");
+    EGLDisplay display = openHeadlessDisplay();
     display_ = display;
     if (max.es) {
         makeEsContext(display);

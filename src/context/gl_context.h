@@ -46,6 +46,10 @@ struct MaxGlVersion {
     bool es = false;
 };
 
+// Which EGL display the last HeadlessContext opened, and why: "surfaceless (...)" on Mesa, or
+// "EGL device 1 of 2 (EGL_EXT_platform_device), EGL has no surfaceless platform" (NVIDIA).
+std::string headlessDisplayDescription();
+
 class HeadlessContext {
 public:
     // Throws std::runtime_error naming what is missing when no context can be made.
