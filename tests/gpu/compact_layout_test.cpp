@@ -41,7 +41,11 @@ TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
     const float nearPlane = renderer.lastFrame().data.depthRange.x, farPlane = renderer.lastFrame().data.depthRange.y;
 
     int surfaces = 0, mirrored = 0, flagsDiffer = 0, materialDiffers = 0, albedoOff = 0, normalOff = 0, positionOff = 0;
-    double worstAngle = 0.0, worstSteps = 0.0, worstFraction = 0.0;
+    double worstAngle = 0.0, worstSteps = 0.0, worstFraction = 0.0, worstAlbedo = 0.0;
+    // Round to nearest into the 8-bit target: llvmpipe's conversion, within half a level. A GPU's
+    // full and compact variants compile separately and may convert its own way (H100: 2,370-4,493
+    // pixels past half a level): one level there, which still catches a wrong channel or encoding.
+    const float albedoTolerance = (cpuRasteriser() ? 0.5f : 1.0f) / 255.0f + 1e-6f;
     std::string firstPositionOff;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
@@ -57,7 +61,9 @@ TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
                 std::fabs(infoFull.g - albedoCompact.a) > 1e-6f)
                 ++materialDiffers;
             glm::vec3 albedoError = glm::abs(glm::vec3(albedoFull) - glm::vec3(albedoCompact));
-            if (std::max({albedoError.x, albedoError.y, albedoError.z}) > 0.5f / 255.0f + 1e-6f) ++albedoOff;
+            float albedoWorstChannel = std::max({albedoError.x, albedoError.y, albedoError.z});
+            worstAlbedo = std::max(worstAlbedo, double(albedoWorstChannel));
+            if (albedoWorstChannel > albedoTolerance) ++albedoOff;
 
             glm::dvec3 n(full.storedNormal(texel(reference.normal, kWidth, x, y)));
             glm::dvec3 m(compact.storedNormal(texel(packed.normal, kWidth, x, y)));
@@ -75,12 +81,12 @@ TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
                                    std::to_string(error) + " at distance " + std::to_string(distance);
         }
     std::printf("[compact] %s: %d surface pixels (%d mirrored), worst normal %.2e rad, worst position %.2f depth "
-                "steps (%.0f%% of the tolerance)\n",
-                pose.name.c_str(), surfaces, mirrored, worstAngle, worstSteps, 100.0 * worstFraction);
+                "steps (%.0f%% of the tolerance), worst albedo %.2f levels\n",
+                pose.name.c_str(), surfaces, mirrored, worstAngle, worstSteps, 100.0 * worstFraction, worstAlbedo * 255.0);
     EXPECT_GT(surfaces, kWidth * kHeight / 10);
     EXPECT_EQ(flagsDiffer, 0) << "surface flags differ from the full layout's";
     EXPECT_EQ(materialDiffers, 0) << "specular power or intensity differ";
-    EXPECT_EQ(albedoOff, 0) << "albedo beyond 8-bit rounding";
+    EXPECT_EQ(albedoOff, 0) << "albedo beyond 8-bit rounding (worst " << worstAlbedo * 255.0 << " levels)";
     EXPECT_EQ(normalOff, 0) << "normals more than 1e-4 rad off (worst " << worstAngle << ")";
     EXPECT_EQ(positionOff, 0) << "reconstructed positions beyond the depth tolerance; first " << firstPositionOff;
     if (pose.name == "lakeMirror") EXPECT_GT(mirrored, kWidth * kHeight / 20) << "the lake's mirrored scene";
@@ -113,7 +119,9 @@ TEST_F(GpuTest, CompactWithReversedDepthReconstructsToFloatPrecision) {
     double median = relative[relative.size() / 2], worst = relative.back();
     std::printf("[compact] reversed-z: %zu surface pixels, relative position error median %.1e, worst %.1e\n",
                 relative.size(), median, worst);
-    EXPECT_LT(median, 1e-6);
+    // A GPU interpolates window depth with less than float precision (H100: median 5.3e-6, worst
+    // 1.5e-5): 2e-5 there, still 40x finer than the standard convention's far band.
+    EXPECT_LT(median, cpuRasteriser() ? 1e-6 : 2e-5);
     EXPECT_LT(worst, 1e-4);
 }
 

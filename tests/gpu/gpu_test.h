@@ -65,6 +65,17 @@ protected:
     std::unique_ptr<ShaderLibrary> shaders_;
 };
 
+// Whether the context rasterises on the CPU through Mesa's gallivm (llvmpipe, softpipe, zink
+// over lavapipe): there float arithmetic is IEEE single precision without contraction, texture
+// weights are exact and conversions round to nearest, so tests bound rounding at its least. A
+// GPU is allowed its hardware's precision (fused multiply-adds, 8-bit filter weights, its depth
+// interpolation): those tests take a second, looser bound, measured on an NVIDIA H100 and named
+// where it is used.
+inline bool cpuRasteriser() {
+    const std::string& renderer = gpuState().info.renderer;
+    return renderer.find("llvmpipe") != std::string::npos || renderer.find("softpipe") != std::string::npos;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Poses. Ground heights come from the CPU terrain so cameras sit a known height above it.
 

@@ -165,7 +165,9 @@ TEST_F(Shadows, FourTapsGiveTheNineTheyReplace) {
     EXPECT_GE(compared, width * height / 3);
     EXPECT_GE(penumbra, 300) << "too few penumbra pixels: the filters' difference would not show";
     EXPECT_LE(worst, 2.0 / 255.0);
-    EXPECT_LE(sum / std::max(compared, 1), 1e-4);
+    // A GPU places each bilinear tap with 8-bit sub-texel weights, so the placed taps stand for the
+    // nine only to about 1/512 each (H100: worst 3.0e-3, mean 1.75e-4; llvmpipe: 2.2e-5, 1.4e-6).
+    EXPECT_LE(sum / std::max(compared, 1), cpuRasteriser() ? 1e-4 : 5e-4);
 }
 
 TEST_F(Shadows, SunAtTheHorizonGrazing) {

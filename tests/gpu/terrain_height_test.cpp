@@ -39,14 +39,17 @@ struct Errors {
     double worstHeight = 0.0, worstGradient = 0.0;
     int badHeights = 0, badGradients = 0;
     std::string firstBad;
+    double worstGradientAbs = 0.0;
+    double gradientRelative = 1e-3, gradientAbsolute = 1e-6;
     void note(glm::dvec2 at, glm::vec3 cpu, glm::vec3 gpu, double heightTolerance, bool checkGradient) {
         double heightError = std::fabs(double(gpu.x) - cpu.x);
         double gradientError = glm::length(glm::dvec2(gpu.y - cpu.y, gpu.z - cpu.z));
         double gradientScale = glm::length(glm::dvec2(cpu.y, cpu.z));
         worstHeight = std::max(worstHeight, heightError);
         worstGradient = std::max(worstGradient, gradientError / (gradientScale + 1e-3));
+        worstGradientAbs = std::max(worstGradientAbs, gradientError);
         bool heightOk = heightError <= heightTolerance;
-        bool gradientOk = !checkGradient || gradientError <= 1e-3 * gradientScale + 1e-6;
+        bool gradientOk = !checkGradient || gradientError <= gradientRelative * gradientScale + gradientAbsolute;
         badHeights += heightOk ? 0 : 1;
         badGradients += gradientOk ? 0 : 1;
         if ((!heightOk || !gradientOk) && firstBad.empty()) {
@@ -85,7 +88,18 @@ protected:
         std::vector<glm::vec3> gpu = gpuHeights(shape, camera, points);
         ASSERT_EQ(gpu.size(), points.size());
         NoiseOrigins origins = terrainNoiseOrigins(shape, cameraXZ);
+        // A GPU's own sin, cos and fused multiply-adds round differently from the twin's float
+        // order (H100: heights 5.5e-4 to 1.03e-3 off the twin, while within 8.4e-5 of the exact
+        // heights near the camera; gradients 3.2e-4 off at most): the twin's bound there is 2e-3,
+        // gradients 1e-2 relative plus 6e-4; still far inside the 0.1 units that VisibleWaterBound
+        // keeps dry land above water.
+        const bool exactArithmetic = cpuRasteriser();
+        const double twinHeightTolerance = exactArithmetic ? 1e-4 : 2e-3;
         Errors twin, exactNear, exactFar;
+        if (!exactArithmetic) {
+            twin.gradientRelative = 1e-2;
+            twin.gradientAbsolute = 6e-4;
+        }
         double minHeight = 1e9, maxHeight = -1e9;
         for (size_t i = 0; i < points.size(); ++i) {
             glm::dvec2 offset = points[i] - cameraXZ;
@@ -93,18 +107,18 @@ protected:
             glm::vec3 exact = terrainHeight(shape, points[i]);
             minHeight = std::min(minHeight, double(exact.x));
             maxHeight = std::max(maxHeight, double(exact.x));
-            twin.note(points[i], mirrored, gpu[i], 1e-4, true);
+            twin.note(points[i], mirrored, gpu[i], twinHeightTolerance, true);
             double distance = glm::length(offset);
             if (distance < 500.0) exactNear.note(points[i], exact, gpu[i], 1e-4, false);
             else exactFar.note(points[i], exact, gpu[i], 1e-4 + 1e-6 * distance, false);
         }
         std::printf("[terrain] %s, camera (%.0f, %.0f): heights %.1f..%.1f; vs twin worst %.3g (gradient %.3g rel); "
-                    "vs exact worst %.3g within 500 units, %.3g beyond\n",
-                    label, cameraXZ.x, cameraXZ.y, minHeight, maxHeight, twin.worstHeight, twin.worstGradient,
+                    "worst gradient %.3g abs; vs exact worst %.3g within 500 units, %.3g beyond\n",
+                    label, cameraXZ.x, cameraXZ.y, minHeight, maxHeight, twin.worstHeight, twin.worstGradient, twin.worstGradientAbs,
                     exactNear.worstHeight, exactFar.worstHeight);
         EXPECT_GT(maxHeight - minHeight, 20.0) << "the samples do not span the terrain's relief";
-        EXPECT_EQ(twin.badHeights, 0) << label << ": heights off the GPU twin by more than 1e-4; first " << twin.firstBad;
-        EXPECT_EQ(twin.badGradients, 0) << label << ": gradients off by more than 1e-3 relative; first " << twin.firstBad;
+        EXPECT_EQ(twin.badHeights, 0) << label << ": heights off the GPU twin by more than " << twinHeightTolerance << "; first " << twin.firstBad;
+        EXPECT_EQ(twin.badGradients, 0) << label << ": gradients off by more than " << twin.gradientRelative << " relative; first " << twin.firstBad;
         EXPECT_GT(exactNear.worstHeight + exactFar.worstHeight, 0.0) << "no samples compared";
         EXPECT_EQ(exactNear.badHeights, 0) << label << ": near heights off the exact ones by more than 1e-4; first "
                                            << exactNear.firstBad;

@@ -156,8 +156,19 @@ TEST_F(ToneMapFusion, FusedFrameRunsNoToneMapPassAndShadesAFullScreenFewer) {
             // zink's counter does not count shaded fragments (ReflectionBounds says the same).
             if (toneMap < (long long)kWidth * kHeight) continue;
             std::vector<long long> others(separate.passFragments.begin(), separate.passFragments.end() - 1);
-            EXPECT_EQ(fused.passFragments, others);
-            EXPECT_EQ(separate.fragments - fused.fragments, toneMap);
+            if (cpuRasteriser()) {
+                EXPECT_EQ(fused.passFragments, others);
+                EXPECT_EQ(separate.fragments - fused.fragments, toneMap);
+                continue;
+            }
+            // A GPU's count is not exact: its early depth culling depends on state the frame
+            // does not set (H100, lakeMirror: a pass's count moved by 35 to 748 between two draws of
+            // the same frame, 2.3% at most). Within 5% a pass, and the frame a full screen fewer
+            // within 2% of its fragments.
+            ASSERT_EQ(fused.passFragments.size(), others.size());
+            for (size_t i = 0; i < others.size(); ++i)
+                EXPECT_LE(std::llabs(fused.passFragments[i] - others[i]), others[i] / 20 + 64) << "pass " << i;
+            EXPECT_LE(std::llabs(separate.fragments - fused.fragments - toneMap), separate.fragments / 50);
         }
     }
 }

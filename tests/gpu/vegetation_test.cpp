@@ -238,7 +238,9 @@ TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
         // Measured: 84-89 dB, 6-12 edge pixels at 320x180 (a trimmed corner's atlas coordinates
         // interpolate a little differently from the whole cell's; the mip level is the billboard's
         // own, the same at every corner).
-        EXPECT_GE(difference.psnrDb, 60.0) << pipelineName(kind);
+        // A GPU interpolates the two quads' coordinates with its own precision, and an alpha test
+        // at a cut edge flips whole pixels (H100: 29-55 pixels, 47.8 dB): 40 dB there.
+        EXPECT_GE(difference.psnrDb, cpuRasteriser() ? 60.0 : 40.0) << pipelineName(kind);
         EXPECT_LE(differing, long(kWidth * kHeight / 200)) << pipelineName(kind) << ": more than 0.5% of pixels";
         if (trimmedCount < 0) {
             std::printf("[vegetation] no pipeline statistics query here: fragment counts not checked\n");

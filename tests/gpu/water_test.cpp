@@ -303,8 +303,9 @@ TEST_F(Water, CompositeIsTheSchlickFresnelBlend) {
             const double f0 = f.waterTint.w, fogStart = f.terrainGridCounts.z, fogEnd = f.terrainGridCounts.w;
             const glm::dvec3 sun(f.sunDirection), sunRadiance(f.sunRadiance);
             // llvmpipe converts the blended float to half by truncation (about half the values are
-            // off by more than 1/2 ulp, none by more than 1.003 ulps): allowed 1.25 ulps.
-            constexpr double kUlpTolerance = 1.25;
+            // off by more than 1/2 ulp, none by more than 1.003 ulps): allowed 1.25 ulps. A GPU's
+            // pow() and fused multiply-adds add their own rounding (H100: worst 2.86 ulps): 4 there.
+            const double kUlpTolerance = cpuRasteriser() ? 1.25 : 4.0;
             int checked = 0, glinting = 0, wrong = 0, halfUlps = 0, overOne = 0;
             double worstUlps = 0.0, maxFog = 0.0, minF = 1.0, maxF = 0.0;
             std::string first;
