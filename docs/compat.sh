@@ -79,6 +79,6 @@ for setup in "${setups[@]}"; do
     "$(field minor "$caps")" "$(field glsl_version "$caps")" "$(field renderer "$caps")" "$light" "$plants" \
     "$stencil" "$summary" "$(field forward_ms "$cmp")" "$(field deferred_ms "$cmp")" "$psnr"
 done
-echo "| NVIDIA (EGL headless) | no GPU was lent to this task: not measured | | | | | | | | |"
+echo "| NVIDIA H100 (EGL headless) | not on this machine: measured on a lent one, see [the NVIDIA section](#nvidia-h100-a-lent-machine) | | | | | | | | |"
 echo
 echo "ms: median of $frames frames (softpipe: 1) at 640x360, wall time around glFinish, $(nproc) cores, load average at the end $(cut -d' ' -f1-3 /proc/loadavg); tests: the set-up's ctest label (or tests); PSNR vs llvmpipe: the default frame at 320x180, deferred, over 8-bit RGB (\`oasis compare --driver llvmpipe --driver SET-UP\`)"
