@@ -178,14 +178,16 @@ EGLDisplay openDeviceDisplay(std::string& chosen) {
     return initialised(eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[pick], nullptr));
 }
 
-// The headless display: Mesa's surfaceless platform, else an EGL device (NVIDIA's driver has no
-// surfaceless platform; its headless contexts come from EGL_EXT_platform_device).
+// The headless display: the surfaceless platform (Mesa's; NVIDIA's 580 driver has it too), else an
+// EGL device, for a driver whose headless contexts come only from EGL_EXT_platform_device.
 // OASIS_EGL_PLATFORM=device skips surfaceless, so that path is tested on Mesa too.
 EGLDisplay openHeadlessDisplay() {
     const char* asked = std::getenv("OASIS_EGL_PLATFORM");
     std::string platform = asked ? asked : "";
-    if (!platform.empty() && platform != "surfaceless" && platform != "device")
-        throw std::runtime_error("OASIS_EGL_PLATFORM must be surfaceless or device, not '" + platform + "'");
+    if (!platform.empty() && platform != "surfaceless" && platform != "device") {
+        std::string shown = platform.size() > 40 ? platform.substr(0, 40) + "..." : platform;
+        throw std::runtime_error("OASIS_EGL_PLATFORM must be surfaceless or device, not '" + shown + "'");
+    }
     bool hasSurfaceless = epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless");
     if (platform != "device" && hasSurfaceless) {
         EGLDisplay display =

@@ -47,7 +47,7 @@ struct MaxGlVersion {
 };
 
 // Which EGL display the last HeadlessContext opened, and why: "surfaceless (...)" on Mesa, or
-// "EGL device 1 of 2 (EGL_EXT_platform_device), EGL has no surfaceless platform" (NVIDIA).
+// "EGL device 1 of 2 (EGL_EXT_platform_device), EGL has no surfaceless platform" elsewhere.
 std::string headlessDisplayDescription();
 
 class HeadlessContext {
