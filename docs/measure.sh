@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Produces docs/measurements.md's timing tables: median ms per frame of each pipeline (wall time around
-# glFinish) beside the floor measured in the same run, for each size, layout and reflection setting,
-# then the cost of vegetation at several densities.
+# glFinish) beside the floor timed in turn with them (compare's rounds: a forward frame, a deferred
+# frame, the floor; each ratio is the median of the rounds' own), for each size, layout and
+# reflection setting, then the cost of vegetation at several densities.
 # usage: docs/measure.sh [path/to/oasis] [frames]   (run on an idle machine; prints markdown)
 set -euo pipefail
 oasis=${1:-build/oasis}
@@ -18,9 +19,10 @@ for size in 1280x720 640x360; do
              --frames "$frames" --json --out-dir "$out")
       awk -v size="$size" -v layout="$layout" -v bpp="$(field bytes_per_pixel "$json")" -v refl="$reflections" \
           -v f="$(field forward_ms "$json")" -v d="$(field deferred_ms "$json")" \
-          -v floor="$(field floor_ms "$json")" -v psnr="$(field psnr_db "$json")" 'BEGIN {
+          -v floor="$(field floor_ms "$json")" -v psnr="$(field psnr_db "$json")" \
+          -v fr="$(field forward_floor_ratio "$json")" -v dr="$(field deferred_floor_ratio "$json")" 'BEGIN {
         printf "| %s | %s (%s B/px) | %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.1f dB |\n",
-               size, layout, bpp, refl, f, d, floor, f / floor, d / floor, psnr }'
+               size, layout, bpp, refl, f, d, floor, fr, dr, psnr }'
     done
   done
 done
@@ -38,5 +40,5 @@ for vegetation in "off" "on 0.5" "on 1" "on 2" "on 4"; do
     printf "| %s | %d | %d (+ %d) | %.1f | %.1f | %.1f | %.1f dB |\n", label, placed, drawn, mirrored, f, d, floor, psnr }'
 done
 echo
-echo "renderer: $(field renderer "$json"); medians of $frames frames; $(nproc) cores"
+echo "renderer: $(field renderer "$json"); medians of $frames rounds; $(nproc) cores"
 rm -rf "$out"

@@ -130,16 +130,19 @@ BenchResult measureError(Renderer& renderer, const SceneSettings& base, const Be
 }
 
 // Times the configurations of one knob setting together: at each fixed frame, after two warm-up
-// frames each, their timed frames interleave (one frame of each in turn), so load that changes
-// during the run reaches all of them alike; then each one's per-pass frames.
+// frames each, their timed frames interleave (one frame of each in turn, then the floor on
+// `floorRenderer`), so load that changes during the run reaches all of them and their floor alike:
+// each configuration's ratio is the median of its frames' own ratios to the floor of their round.
+// Then each one's per-pass frames.
 struct Timed {
     Renderer* renderer;
     BenchResult* result;
 };
-void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base, const std::vector<BenchFrame>& frames,
-                     const BenchPlan& plan) {
+void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, const SceneSettings& base,
+                     const std::vector<BenchFrame>& frames, const BenchPlan& plan) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
-    std::vector<std::vector<double>> samples(group.size());
+    std::vector<std::vector<double>> samples(group.size()), floorRatios(group.size());
+    std::vector<double> floorSamples;
     std::vector<std::vector<std::string>> passOrder(group.size());
     std::vector<std::map<std::string, std::vector<double>>> passSamples(group.size());
     for (const BenchFrame& frame : frames) {
@@ -150,8 +153,9 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
             t.renderer->setPipeline(t.result->config.pipeline);
             for (int warm = 0; warm < 2; ++warm) t.renderer->renderFrame(scenes.back());
         }
+        floorRenderer.renderFloor();
         glFinish();
-        for (int i = 0; i < plan.timedFrames; ++i)
+        for (int i = 0; i < plan.timedFrames; ++i) {
             for (size_t c = 0; c < group.size(); ++c) {
                 group[c].renderer->setPipeline(group[c].result->config.pipeline);
                 if (plan.captureFirstTimedFrame && !gCaptured) {
@@ -165,6 +169,12 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
                 glFinish();
                 samples[c].push_back(elapsedMs(start));
             }
+            Clock::time_point start = Clock::now();
+            floorRenderer.renderFloor();
+            glFinish();
+            floorSamples.push_back(elapsedMs(start));
+            for (size_t c = 0; c < group.size(); ++c) floorRatios[c].push_back(samples[c].back() / floorSamples.back());
+        }
         for (size_t c = 0; c < group.size(); ++c) {
             group[c].renderer->setPipeline(group[c].result->config.pipeline);
             std::vector<PassTimes> timed;
@@ -185,6 +195,8 @@ void timeInterleaved(const std::vector<Timed>& group, const SceneSettings& base,
     for (size_t c = 0; c < group.size(); ++c) {
         BenchResult& result = *group[c].result;
         result.msMedian = median(samples[c]);
+        result.floorMs = median(floorSamples);
+        result.pairedFloorRatio = median(floorRatios[c]);
         result.msMin = *std::min_element(samples[c].begin(), samples[c].end());
         result.msMax = *std::max_element(samples[c].begin(), samples[c].end());
         for (const std::string& name : passOrder[c]) result.passesMs.emplace_back(name, median(passSamples[c][name]));
@@ -250,7 +262,9 @@ std::string benchJson(const std::vector<BenchResult>& results, const std::vector
             "], \"error\": \"against the reference at the same frame, size and light count, pooled over the frames: PSNR and RMSE "
             "from the mean squared error of 8-bit RGB, max_abs the worst, ssim the mean over frames (luminance, "
             "11x11 Gaussian windows)\", \"floor\": \"full-screen G-buffer write + read with the default layout (" +
-            defaultGBufferLayout().name + "), per size; floor_ratio = ms_median / floor_ms\", \"default_layout\": " +
+            defaultGBufferLayout().name + "), per size (floors: alone, every layout); a config's floor_ms is the median of "
+            "the floors timed in turn with its frames, its floor_ratio the median of each frame's ms over its round's "
+            "floor\", \"default_layout\": " +
             jsonString(defaultGBufferLayout().name) + ", \"knobs\": [";
     for (size_t k = 0; k < knobs.size(); ++k) {
         json += std::string(k ? ", " : "") + "{\"name\": " + jsonString(knobs[k].name) +
@@ -451,14 +465,13 @@ int runBenchCommand(const Options& options) {
                                                           referenceLayoutImages.empty() ? nullptr : &referenceLayoutImages,
                                                           images);
                         if (isReferenceLayout) referenceLayoutImages = std::move(images);
-                        result.floorMs = defaultFloor;
                         results.push_back(result);
                         groupRenderers.push_back(&own);
                     }
                     std::vector<Timed> group;
                     for (size_t i = groupStart; i < results.size(); ++i)
                         group.push_back({groupRenderers[i - groupStart], &results[i]});
-                    timeInterleaved(group, session.scene, frames, plan);
+                    timeInterleaved(group, renderer, session.scene, frames, plan);
                     for (size_t i = groupStart; i < results.size(); ++i) {
                         const BenchResult& result = results[i];
                         std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", i + 1,
@@ -483,7 +496,7 @@ int runBenchCommand(const Options& options) {
         std::fprintf(tableOut,
                      "ms: wall time around glFinish, %d timed frames per fixed frame (times:", plan.timedFrames);
         for (const BenchFrame& frame : frames) std::fprintf(tableOut, " %.0f s", frame.time);
-        std::fprintf(tableOut, "); xfloor: against the %s layout's floor; error pooled over the frames against "
+        std::fprintf(tableOut, "); xfloor: each timed frame over the %s layout's floor timed in its round, median; error pooled over the frames against "
                                "deferred/%s with every knob at its highest and the same lights; own dB: PSNR against "
                                "deferred/%s with the same knobs and lights; pareto: per size and light count "
                                "(\"in pipeline\": only among its pipeline's configurations)\n",

@@ -91,7 +91,8 @@ struct BenchResult {
     BenchConfig config;
     std::string variation, knobSettings;
     double msMedian = 0.0, msMin = 0.0, msMax = 0.0;
-    double floorMs = 0.0;   // the floor this size's ratios are taken against
+    double floorMs = 0.0;   // the floor (default layout, this size), median of the rounds timed with it
+    double pairedFloorRatio = 0.0;  // median of its frames' ratios to their round's floor (0: not timed so)
     double psnrDb = 0.0, rmse = 0.0, ssim = 0.0;
     int maxAbs = 0;
     // Against the reference layout's deferred frame with the same knobs (the pipeline and layout's
@@ -105,7 +106,10 @@ struct BenchResult {
     bool pareto = false;            // on the frontier of every configuration of its size and light count
     bool paretoInPipeline = false;  // on the frontier of its size, light count and pipeline
 
-    double floorRatio() const { return floorMs > 0.0 ? msMedian / floorMs : 0.0; }
+    double floorRatio() const {
+        if (pairedFloorRatio > 0.0) return pairedFloorRatio;
+        return floorMs > 0.0 ? msMedian / floorMs : 0.0;
+    }
 };
 
 // Marks `pareto` and `paretoInPipeline` (cost: median ms; error: RMSE, which orders like PSNR).

@@ -25,7 +25,7 @@ namespace {
 
 struct Comparison {
     ImageDifference difference;
-    double forwardMs = 0.0, deferredMs = 0.0, floorMs = 0.0;
+    PipelineTimes times;  // both pipelines and the floor, timed in turn
     Image forward, deferred;
     using PassTimes = std::vector<std::pair<std::string, double>>;
     PassTimes forwardPasses, deferredPasses;  // only with --passes
@@ -57,11 +57,7 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
     result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
     result.difference = compareImages(result.forward, result.deferred);
-    renderer.setPipeline(PipelineKind::Forward);
-    result.forwardMs = medianFrameMs(renderer, session.scene, timingFrames);
-    renderer.setPipeline(PipelineKind::Deferred);
-    result.deferredMs = medianFrameMs(renderer, session.scene, timingFrames);
-    result.floorMs = medianFloorMs(renderer, timingFrames);
+    result.times = timePipelinesInTurn(renderer, session.scene, timingFrames);
     if (passTimes) {
         result.clock = session.timingClock();
         renderer.setPipeline(PipelineKind::Forward);
@@ -112,11 +108,14 @@ void printSummary(const Options& options, const RenderSession& session, const Co
                 queryContextInfo().summary().c_str());
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
-    std::printf("  forward  %8.2f ms/frame  (%.2fx floor)\n", c.forwardMs, c.forwardMs / c.floorMs);
-    std::printf("  deferred %8.2f ms/frame  (%.2fx floor)\n", c.deferredMs, c.deferredMs / c.floorMs);
-    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, same run)\n", c.floorMs);
-    std::printf("  medians of %d frames, wall time around glFinish; terrain %d triangles\n", options.timingFrames,
-                session.renderer->geometry().terrainTriangles());
+    const PipelineTimes& t = c.times;
+    std::printf("  forward  %8.2f ms/frame  (%.2fx floor)\n", t.forwardMs, t.forwardRatio);
+    std::printf("  deferred %8.2f ms/frame  (%.2fx floor; rounds %.2fx to %.2fx)\n", t.deferredMs, t.deferredRatio,
+                t.deferredRatioLowest, t.deferredRatioHighest);
+    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, timed in turn with the frames)\n", t.floorMs);
+    std::printf("  medians of %d rounds (a forward frame, a deferred frame, the floor), wall time around glFinish; "
+                "ratios are each round's own; terrain %d triangles\n",
+                t.rounds, session.renderer->geometry().terrainTriangles());
     std::printf("  %s\n", describePlantAtlas(session).c_str());
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
@@ -156,14 +155,17 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 session.renderer->lastFrame().vegetationEnabled ? "true" : "false", session.scene.vegetation.density,
                 plants.plantsPlaced, plants.plantsDrawn, plants.plantsDrawnMirrored);
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
-                "\"floor_ms\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"floor_ms\": %.4f, \"forward_floor_ratio\": %.4f, \"deferred_floor_ratio\": %.4f, "
+                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
                 "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
                 "\"light_method\": \"%s\", \"light_method_reason\": \"%s\", "
-                "\"frame_clock\": \"wall-glfinish\"%s%s%s}\n",
-                c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.forwardMs, c.deferredMs, c.floorMs,
+                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s}\n",
+                c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.times.forwardMs, c.times.deferredMs,
+                c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
+                c.times.deferredRatioHighest,
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
                 session.renderer->depthConventionReason().c_str(), options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <map>
 #include <cstdio>
 #include <stdexcept>
@@ -247,6 +248,12 @@ std::string describeLights(const Renderer& renderer) {
 }
 
 namespace {
+double medianOf(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 template <typename Work>
 double medianMs(int frames, Work work) {
     using Clock = std::chrono::steady_clock;
@@ -259,9 +266,7 @@ double medianMs(int frames, Work work) {
         glFinish();
         samples.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     }
-    std::sort(samples.begin(), samples.end());
-    size_t n = samples.size();
-    return n % 2 ? samples[n / 2] : 0.5 * (samples[n / 2 - 1] + samples[n / 2]);
+    return medianOf(samples);
 }
 }  // namespace
 
@@ -285,6 +290,53 @@ std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, con
 
 double medianFloorMs(Renderer& renderer, int frames) {
     return medianMs(frames, [&] { renderer.renderFloor(); });
+}
+
+PipelineTimes timePipelinesInTurn(Renderer& renderer, const SceneSettings& scene, int rounds) {
+    using Clock = std::chrono::steady_clock;
+    const PipelineKind active = renderer.pipeline();
+    auto frameOf = [&](PipelineKind kind) {
+        return [&renderer, &scene, kind] {
+            renderer.setPipeline(kind);
+            renderer.renderFrame(scene);
+        };
+    };
+    const std::function<void()> work[3] = {frameOf(PipelineKind::Forward), frameOf(PipelineKind::Deferred),
+                                            [&renderer] { renderer.renderFloor(); }};
+    for (const auto& each : work)
+        for (int warm = 0; warm < 2; ++warm) each();
+    glFinish();
+    std::vector<double> ms[3];
+    for (int round = 0; round < rounds; ++round)
+        for (int i = 0; i < 3; ++i) {
+            auto start = Clock::now();
+            work[i]();
+            glFinish();
+            ms[i].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        }
+    renderer.setPipeline(active);
+    return summariseRounds(ms[0], ms[1], ms[2]);
+}
+
+PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::vector<double>& deferredMs,
+                              const std::vector<double>& floorMs) {
+    if (forwardMs.empty() || forwardMs.size() != deferredMs.size() || forwardMs.size() != floorMs.size())
+        throw std::invalid_argument("summariseRounds: the three need one sample per round, at least one round");
+    std::vector<double> forwardRatios, deferredRatios;
+    for (size_t round = 0; round < floorMs.size(); ++round) {
+        forwardRatios.push_back(forwardMs[round] / floorMs[round]);
+        deferredRatios.push_back(deferredMs[round] / floorMs[round]);
+    }
+    PipelineTimes times;
+    times.rounds = int(floorMs.size());
+    times.forwardMs = medianOf(forwardMs);
+    times.deferredMs = medianOf(deferredMs);
+    times.floorMs = medianOf(floorMs);
+    times.forwardRatio = medianOf(forwardRatios);
+    times.deferredRatio = medianOf(deferredRatios);
+    times.deferredRatioLowest = *std::min_element(deferredRatios.begin(), deferredRatios.end());
+    times.deferredRatioHighest = *std::max_element(deferredRatios.begin(), deferredRatios.end());
+    return times;
 }
 
 }  // namespace oasis

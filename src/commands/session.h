@@ -76,6 +76,25 @@ std::string describeReflectionBounds(const Renderer& renderer, const SceneSettin
 // ratios to the floor compare like with like on every driver.
 double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames);
 double medianFloorMs(Renderer& renderer, int frames);
+
+// Both pipelines and the floor timed in turn: each round renders a forward frame, a deferred frame
+// and the floor, each by wall time around glFinish (after two warm-ups of each). What the machine
+// does meanwhile falls on all three of a round alike, so each round's ratio to its own floor holds
+// steady where whole blocks timed one after another drift apart (llvmpipe shares two cores with
+// everything else here: back-to-back blocks put deferred at 9.9x to 12.0x its floor in six runs).
+struct PipelineTimes {
+    int rounds = 0;
+    double forwardMs = 0.0, deferredMs = 0.0, floorMs = 0.0;  // medians over the rounds
+    // Medians of each round's own ratio to its floor, and the lowest and highest round's.
+    double forwardRatio = 0.0, deferredRatio = 0.0;
+    double deferredRatioLowest = 0.0, deferredRatioHighest = 0.0;
+};
+// Leaves the renderer on the pipeline it was on.
+PipelineTimes timePipelinesInTurn(Renderer& renderer, const SceneSettings& scene, int rounds);
+// The medians and each round's ratios from the rounds' milliseconds (index i of each is round i;
+// the three the same length, at least one round).
+PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::vector<double>& deferredMs,
+                              const std::vector<double>& floorMs);
 // Median milliseconds of each pass of the active pipeline over `frames` frames, in pass order: by
 // GPU timer queries where `clock` trusts them (no glFinish between passes), else wall time with a
 // glFinish after each pass (render/gpu_timer.h).

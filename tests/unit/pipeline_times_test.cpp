@@ -1,0 +1,59 @@
+// Covers summariseRounds (src/commands/session.h), the statistics behind `oasis compare`'s times:
+// each round's ratio to its own floor, so a machine that slows down between rounds moves the
+// milliseconds but not the ratios, and one slow floor moves only its own round's.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <vector>
+
+#include "commands/session.h"
+
+namespace oasis {
+namespace {
+
+TEST(PipelineTimes, RatiosArePairedPerRoundSoDriftBetweenRoundsCancels) {
+    // The machine runs at a different speed in every round (scale 1, 1.5, 2, 0.8, 1.2): each
+    // round is forward 12, deferred 9 and the floor 1.5 at that speed.
+    const std::vector<double> speed = {1.0, 1.5, 2.0, 0.8, 1.2};
+    std::vector<double> forward, deferred, floor;
+    for (double s : speed) {
+        forward.push_back(12.0 * s);
+        deferred.push_back(9.0 * s);
+        floor.push_back(1.5 * s);
+    }
+    PipelineTimes t = summariseRounds(forward, deferred, floor);
+    EXPECT_EQ(t.rounds, 5);
+    EXPECT_DOUBLE_EQ(t.forwardRatio, 8.0);
+    EXPECT_DOUBLE_EQ(t.deferredRatio, 6.0);
+    EXPECT_DOUBLE_EQ(t.deferredRatioLowest, 6.0);
+    EXPECT_DOUBLE_EQ(t.deferredRatioHighest, 6.0);
+    // The milliseconds are the medians of the rounds (speed 1.2).
+    EXPECT_DOUBLE_EQ(t.forwardMs, 14.4);
+    EXPECT_DOUBLE_EQ(t.deferredMs, 10.8);
+    EXPECT_DOUBLE_EQ(t.floorMs, 1.8);
+}
+
+TEST(PipelineTimes, OneSlowFloorMovesOnlyItsRoundAndTheExtremesShowIt) {
+    std::vector<double> forward = {20, 20, 20, 20, 20}, deferred = {10, 10, 10, 10, 10}, floor = {2, 2, 5, 2, 2};
+    PipelineTimes t = summariseRounds(forward, deferred, floor);
+    EXPECT_DOUBLE_EQ(t.deferredRatio, 5.0);
+    EXPECT_DOUBLE_EQ(t.forwardRatio, 10.0);
+    EXPECT_DOUBLE_EQ(t.deferredRatioLowest, 2.0);
+    EXPECT_DOUBLE_EQ(t.deferredRatioHighest, 5.0);
+    EXPECT_DOUBLE_EQ(t.floorMs, 2.0);
+}
+
+TEST(PipelineTimes, EvenRoundCountsTakeTheMeanOfTheMiddleTwo) {
+    PipelineTimes t = summariseRounds({10, 30}, {4, 12}, {1, 2});
+    EXPECT_DOUBLE_EQ(t.forwardMs, 20.0);
+    EXPECT_DOUBLE_EQ(t.deferredRatio, 5.0);  // rounds 4 and 6
+    EXPECT_DOUBLE_EQ(t.forwardRatio, 12.5);  // rounds 10 and 15
+}
+
+TEST(PipelineTimes, MismatchedOrEmptyRoundsAreRefused) {
+    EXPECT_THROW(summariseRounds({}, {}, {}), std::invalid_argument);
+    EXPECT_THROW(summariseRounds({1, 2}, {1}, {1, 2}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace oasis
