@@ -60,10 +60,10 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     result.times = timePipelinesInTurn(renderer, session.scene, timingFrames);
     if (passTimes) {
         result.clock = session.timingClock();
-        renderer.setPipeline(PipelineKind::Forward);
-        result.forwardPasses = medianPassMs(renderer, session.scene, timingFrames, result.clock);
-        renderer.setPipeline(PipelineKind::Deferred);
-        result.deferredPasses = medianPassMs(renderer, session.scene, timingFrames, result.clock);
+        std::vector<PassTimes> passes = medianPassMsInTurn(renderer, session.scene, timingFrames, result.clock,
+                                                           {PipelineKind::Forward, PipelineKind::Deferred});
+        result.forwardPasses = passes[0];
+        result.deferredPasses = passes[1];
     }
     renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
     return result;

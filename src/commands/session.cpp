@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <functional>
 #include <map>
 #include <cstdio>
@@ -274,18 +275,40 @@ double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames)
     return medianMs(frames, [&] { renderer.renderFrame(scene); });
 }
 
-std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, const SceneSettings& scene,
-                                                         int frames, const TimingClock& clock) {
-    renderer.renderFrame(scene);  // warm-up
-    std::vector<PassTimes> timed;
-    if (clock.gpuTimers) {
-        PassTimerQueries queries(frames + 1);  // room for every frame: none dropped, read at the end
-        for (int i = 0; i < frames; ++i) queries.timeFrame(renderer, scene);
-        timed = queries.drain();
-    } else {
-        for (int i = 0; i < frames; ++i) timed.push_back(renderer.renderFrameTimingPasses(scene));
+std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSettings& scene, int frames,
+                                          const TimingClock& clock, const std::vector<PipelineKind>& pipelines) {
+    const PipelineKind active = renderer.pipeline();
+    for (PipelineKind kind : pipelines) {  // a warm-up each
+        renderer.setPipeline(kind);
+        renderer.renderFrame(scene);
     }
-    return medianPassTimes(timed);
+    const size_t count = pipelines.size();
+    std::vector<std::vector<PassTimes>> timed(count);
+    if (clock.gpuTimers) {
+        // Room for every frame of each: none dropped, read at the end.
+        std::deque<PassTimerQueries> queries;  // not movable: a deque builds each in place
+        for (size_t k = 0; k < count; ++k) queries.emplace_back(frames + 1);
+        for (int i = 0; i < frames; ++i)
+            for (size_t k = 0; k < count; ++k) {
+                renderer.setPipeline(pipelines[k]);
+                queries[k].timeFrame(renderer, scene);
+            }
+        for (size_t k = 0; k < count; ++k) timed[k] = queries[k].drain();
+    } else {
+        for (int i = 0; i < frames; ++i)
+            for (size_t k = 0; k < count; ++k) {
+                renderer.setPipeline(pipelines[k]);
+                timed[k].push_back(renderer.renderFrameTimingPasses(scene));
+            }
+    }
+    renderer.setPipeline(active);
+    std::vector<PassTimes> medians;
+    for (const std::vector<PassTimes>& frameTimes : timed) medians.push_back(medianPassTimes(frameTimes));
+    return medians;
+}
+
+PassTimes medianPassMs(Renderer& renderer, const SceneSettings& scene, int frames, const TimingClock& clock) {
+    return medianPassMsInTurn(renderer, scene, frames, clock, {renderer.pipeline()}).front();
 }
 
 double medianFloorMs(Renderer& renderer, int frames) {

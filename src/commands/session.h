@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "context/gl_context.h"
 
@@ -95,10 +96,14 @@ PipelineTimes timePipelinesInTurn(Renderer& renderer, const SceneSettings& scene
 // the three the same length, at least one round).
 PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::vector<double>& deferredMs,
                               const std::vector<double>& floorMs);
-// Median milliseconds of each pass of the active pipeline over `frames` frames, in pass order: by
-// GPU timer queries where `clock` trusts them (no glFinish between passes), else wall time with a
-// glFinish after each pass (render/gpu_timer.h).
-std::vector<std::pair<std::string, double>> medianPassMs(Renderer& renderer, const SceneSettings& scene, int frames,
-                                                         const TimingClock& clock);
+// Median milliseconds of each pass of each of `pipelines` over `frames` frames of each, their
+// frames in turn (one of each per round, so drift reaches all alike), in pass order: by GPU timer
+// queries where `clock` trusts them (no glFinish between passes), else wall time with a glFinish
+// after each pass (render/gpu_timer.h). One list per pipeline, in their order; leaves the
+// renderer on the pipeline it was on.
+std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSettings& scene, int frames,
+                                          const TimingClock& clock, const std::vector<PipelineKind>& pipelines);
+// The same for the active pipeline alone.
+PassTimes medianPassMs(Renderer& renderer, const SceneSettings& scene, int frames, const TimingClock& clock);
 
 }  // namespace oasis
