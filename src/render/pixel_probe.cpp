@@ -227,6 +227,13 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     }
     probe.stencilMeaning = stencilMeaning(probe.stencil);
     probe.waterScene = waterSceneAt(probe, renderer);
+    const FrameSetup& frame = renderer.lastFrame();
+    if (frame.reflectionsActive) {
+        const int divisor = frame.reflectionDivisor;
+        probe.reflectionResolution = reflectionResolutionName(divisor);
+        probe.reflectionWidth = (targets.width() + divisor - 1) / divisor;
+        probe.reflectionHeight = (targets.height() + divisor - 1) / divisor;
+    }
     return probe;
 }
 
@@ -308,7 +315,13 @@ std::string probeText(const PixelProbe& p) {
         p.depthEyeDistance);
     add("  stencil        %d: %s\n", p.stencil, p.stencilMeaning.c_str());
     add("  radiance       %s (linear HDR)\n", vec(glm::dvec4(p.radiance)).c_str());
-    add("  reflection     %s (linear HDR)\n", vec(glm::dvec4(p.reflection)).c_str());
+    if (p.reflectionResolution.empty())
+        add("  reflection     %s (linear HDR; no mirrored scene drawn this frame)\n", vec(glm::dvec4(p.reflection)).c_str());
+    else if (p.reflectionResolution == reflectionResolutionName(1))
+        add("  reflection     %s (linear HDR; drawn at full resolution)\n", vec(glm::dvec4(p.reflection)).c_str());
+    else
+        add("  reflection     %s (linear HDR; drawn at %s resolution, %dx%d, upsampled bilinearly to this pixel)\n",
+            vec(glm::dvec4(p.reflection)).c_str(), p.reflectionResolution.c_str(), p.reflectionWidth, p.reflectionHeight);
     add("  final          %d, %d, %d, %d (8-bit, displayed)\n", p.final.r, p.final.g, p.final.b, p.final.a);
     if (!p.waterScene.empty()) add("  water          the G-buffer and depth hold %s\n", p.waterScene.c_str());
     if (p.hasEncodingError) {
@@ -346,6 +359,11 @@ std::string probeJson(const PixelProbe& p) {
             numbers({p.depthEyeDistance}, "%.6g") + ", \"cleared\": " + (p.depthCleared ? "true" : "false") + "}";
     json += ", \"stencil\": {\"value\": " + std::to_string(p.stencil) + ", \"meaning\": " + quoted(p.stencilMeaning) + "}";
     json += ", \"radiance\": [" + vec(glm::dvec4(p.radiance)) + "], \"reflection\": [" + vec(glm::dvec4(p.reflection)) + "]";
+    json += ", \"reflection_resolution\": " +
+            (p.reflectionResolution.empty() ? std::string("null")
+                                            : "{\"name\": " + quoted(p.reflectionResolution) + ", \"width\": " +
+                                                  std::to_string(p.reflectionWidth) + ", \"height\": " +
+                                                  std::to_string(p.reflectionHeight) + "}");
     json += ", \"final\": [" + std::to_string(p.final.r) + ", " + std::to_string(p.final.g) + ", " +
             std::to_string(p.final.b) + ", " + std::to_string(p.final.a) + "]";
     json += ", \"lights_reaching\": " + std::to_string(p.lightsReaching) + ", \"lights_in_list\": " +

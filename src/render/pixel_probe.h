@@ -45,6 +45,12 @@ struct PixelProbe {
     std::string stencilMeaning;
 
     glm::vec4 radiance{0.0f}, reflection{0.0f};  // linear HDR, as stored (RGBA16F)
+    // How this frame drew the reflection Reflection holds: "full", "half" or "quarter"
+    // (--reflection-resolution), the size of the targets the mirrored scene was drawn into (a reduced
+    // one is upsampled bilinearly into Reflection, so its value here blends up to four of their
+    // texels); "" where no mirrored scene was drawn (reflections off, the camera under the water).
+    std::string reflectionResolution;
+    int reflectionWidth = 0, reflectionHeight = 0;
     glm::ivec4 final{0};                         // the displayed 8-bit colour
     int lightsReaching = 0, lightsInList = 0;    // point lights whose sphere holds the surface
     // The sun's shadow as lighting reads it (common/shadows.glsl): 0 shadowed .. 1 lit, the cascade

@@ -165,6 +165,50 @@ INSTANTIATE_TEST_SUITE_P(EveryPipelineAndLayout, Probe,
                                             ::testing::Values("full", "standard", "compact")),
                          probeParamName);
 
+// The probe says how the reflection it reads was drawn: at which resolution and into targets of
+// which size (a reduced one reaches Reflection through a bilinear upsample), or that no mirrored
+// scene was drawn (reflections off; the camera under the water).
+TEST_F(GpuTest, ProbeSaysHowTheReflectionWasDrawn) {
+    struct Case {
+        int divisor;
+        bool reflections;
+        double cameraHeight;
+        const char* name;  // "" for none drawn
+        int width, height;
+    };
+    const Case cases[] = {{1, true, 4.0, "full", 160, 90},   {2, true, 4.0, "half", 80, 45},
+                          {4, true, 4.0, "quarter", 40, 23}, {2, false, 4.0, "", 0, 0},
+                          {2, true, -3.0, "", 0, 0}};
+    for (const Case& c : cases) {
+        SceneSettings scene = sceneAtHeight(435.0, c.cameraHeight, 140.0, 30.0f, -3.0f);
+        scene.water.reflections = c.reflections;
+        scene.water.reflectionDivisor = c.divisor;
+        Renderer renderer(*shaders_, scene);
+        renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+        renderer.renderFrame(scene);
+        PixelProbe probe = probePixel(renderer, kWidth / 2, kHeight - 5);
+        SCOPED_TRACE(std::string("divisor ") + std::to_string(c.divisor) + (c.reflections ? "" : ", reflections off") +
+                     ", camera at " + std::to_string(c.cameraHeight));
+        EXPECT_EQ(probe.reflectionResolution, c.name);
+        EXPECT_EQ(probe.reflectionWidth, c.width);
+        EXPECT_EQ(probe.reflectionHeight, c.height);
+        const std::string text = probeText(probe), json = probeJson(probe);
+        if (*c.name == '\0') {
+            EXPECT_NE(text.find("no mirrored scene drawn this frame"), std::string::npos) << text;
+            EXPECT_NE(json.find("\"reflection_resolution\": null"), std::string::npos) << json;
+        } else {
+            std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
+            bool reduced = c.divisor > 1;
+            EXPECT_EQ(text.find("drawn at " + std::string(c.name) + " resolution" + (reduced ? ", " + size : "")) !=
+                          std::string::npos, true) << text;
+            EXPECT_EQ(text.find("upsampled bilinearly") != std::string::npos, reduced) << text;
+            EXPECT_NE(json.find("\"reflection_resolution\": {\"name\": \"" + std::string(c.name) + "\", \"width\": " +
+                                std::to_string(c.width) + ", \"height\": " + std::to_string(c.height) + "}"),
+                      std::string::npos) << json;
+        }
+    }
+}
+
 // Outside the frame the probe refuses; the CLI turns that into exit 2 before any GL work.
 TEST_F(GpuTest, ProbeOutsideTheFrameThrows) {
     SceneSettings scene;
