@@ -271,10 +271,6 @@ double medianMs(int frames, Work work) {
 }
 }  // namespace
 
-double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames) {
-    return medianMs(frames, [&] { renderer.renderFrame(scene); });
-}
-
 std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSettings& scene, int frames,
                                           const TimingClock& clock, const std::vector<PipelineKind>& pipelines) {
     const PipelineKind active = renderer.pipeline();

@@ -72,10 +72,9 @@ std::string describeLights(const Renderer& renderer);
 // "reflection passes: bounded to the visible water (...)" or why they cover the whole screen.
 std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene);
 
-// Median wall-clock milliseconds of `frames` frames of the active pipeline, each ended by
-// glFinish, after two warm-ups. Whole frames are always timed this way (the floor too), so the
+// Median wall-clock milliseconds of `frames` floors, each ended by glFinish, after two warm-ups
+// (the bench's floors alone). Whole frames are always timed this way (the floor too), so the
 // ratios to the floor compare like with like on every driver.
-double medianFrameMs(Renderer& renderer, const SceneSettings& scene, int frames);
 double medianFloorMs(Renderer& renderer, int frames);
 
 // Both pipelines and the floor timed in turn: each round renders a forward frame, a deferred frame
