@@ -248,13 +248,14 @@ std::string describeLights(const Renderer& renderer) {
     return text;
 }
 
-namespace {
-double medianOf(std::vector<double> values) {
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
     std::sort(values.begin(), values.end());
     size_t n = values.size();
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+namespace {
 template <typename Work>
 double medianMs(int frames, Work work) {
     using Clock = std::chrono::steady_clock;
@@ -267,7 +268,7 @@ double medianMs(int frames, Work work) {
         glFinish();
         samples.push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
     }
-    return medianOf(samples);
+    return median(samples);
 }
 }  // namespace
 
@@ -348,11 +349,11 @@ PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::v
     }
     PipelineTimes times;
     times.rounds = int(floorMs.size());
-    times.forwardMs = medianOf(forwardMs);
-    times.deferredMs = medianOf(deferredMs);
-    times.floorMs = medianOf(floorMs);
-    times.forwardRatio = medianOf(forwardRatios);
-    times.deferredRatio = medianOf(deferredRatios);
+    times.forwardMs = median(forwardMs);
+    times.deferredMs = median(deferredMs);
+    times.floorMs = median(floorMs);
+    times.forwardRatio = median(forwardRatios);
+    times.deferredRatio = median(deferredRatios);
     times.deferredRatioLowest = *std::min_element(deferredRatios.begin(), deferredRatios.end());
     times.deferredRatioHighest = *std::max_element(deferredRatios.begin(), deferredRatios.end());
     return times;

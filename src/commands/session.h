@@ -72,6 +72,9 @@ std::string describeLights(const Renderer& renderer);
 // "reflection passes: bounded to the visible water (...)" or why they cover the whole screen.
 std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene);
 
+// The median of the values (the mean of the middle two for an even count; 0 for none).
+double median(std::vector<double> values);
+
 // Median wall-clock milliseconds of `frames` floors, each ended by glFinish, after two warm-ups
 // (the bench's floors alone). Whole frames are always timed this way (the floor too), so the
 // ratios to the floor compare like with like on every driver.

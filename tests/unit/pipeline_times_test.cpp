@@ -50,6 +50,12 @@ TEST(PipelineTimes, EvenRoundCountsTakeTheMeanOfTheMiddleTwo) {
     EXPECT_DOUBLE_EQ(t.forwardRatio, 12.5);  // rounds 10 and 15
 }
 
+TEST(PipelineTimes, MedianOfOddEvenAndNoValues) {
+    EXPECT_DOUBLE_EQ(median({3, 1, 2}), 2.0);
+    EXPECT_DOUBLE_EQ(median({4, 1, 3, 2}), 2.5);
+    EXPECT_DOUBLE_EQ(median({}), 0.0);
+}
+
 TEST(PipelineTimes, MismatchedOrEmptyRoundsAreRefused) {
     EXPECT_THROW(summariseRounds({}, {}, {}), std::invalid_argument);
     EXPECT_THROW(summariseRounds({1, 2}, {1}, {1, 2}), std::invalid_argument);
