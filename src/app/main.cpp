@@ -1,6 +1,11 @@
 // oasis's entry point: parse the command line, then run the window or a headless command.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -12,6 +17,7 @@
 #include "commands/window_app.h"
 #include "context/gl_context.h"
 #include "gl/frame_capture.h"
+#include "render/interruption.h"
 
 namespace {
 int runCommand(const oasis::Options& options) {
@@ -29,21 +35,32 @@ int runCommand(const oasis::Options& options) {
     }
     return 2;
 }
-}  // namespace
 
-int main(int argc, char** argv) {
-    using namespace oasis;
-    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress reaches logs even if the window is killed
-    // Past a file-size limit (ulimit -f) a write should fail with EFBIG and be reported as a file
-    // that could not be written (exit 1), not kill the process with SIGXFSZ.
-    std::signal(SIGXFSZ, SIG_IGN);
-    ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
-    if (!parsed.ok) {
-        std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());
-        return 2;
+// A closed standard output or error would hand its descriptor number to the next file oasis opens,
+// and the report would be written into that file. Each closed one gets /dev/null opened read-only
+// in its place: writes to it fail (EBADF), so a lost stdout is still reported as one.
+void keepStandardDescriptorsTaken() {
+    for (int fd : {STDOUT_FILENO, STDERR_FILENO}) {
+        if (fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+        int placeholder = open("/dev/null", O_RDONLY);
+        if (placeholder >= 0 && placeholder != fd) {
+            dup2(placeholder, fd);
+            close(placeholder);
+        }
     }
-    for (const std::string& note : parsed.notes) std::fprintf(stderr, "oasis: %s\n", note.c_str());
-    const Options& options = parsed.options;
+}
+
+// What oasis printed must have reached standard output: a full disk or a closed pipe is a failure
+// (exit 1), not a success with the output lost.
+int checkStandardOutput(int code) {
+    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+    int why = errno;
+    std::fprintf(stderr, "oasis: cannot write stdout: %s\n", std::strerror(why ? why : EIO));
+    return code == 0 ? 1 : code;
+}
+
+int runParsed(const oasis::Options& options) {
+    using namespace oasis;
     if (options.help) {
         std::fputs(usage(options.command).c_str(), stdout);
         return 0;
@@ -65,4 +82,24 @@ int main(int argc, char** argv) {
         }
     }
     return code;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace oasis;
+    keepStandardDescriptorsTaken();
+    installInterruptionCleanup();
+    std::setvbuf(stdout, nullptr, _IOLBF, 0);  // progress reaches logs even if the window is killed
+    // Past a file-size limit (ulimit -f) a write should fail with EFBIG and be reported as a file
+    // that could not be written (exit 1), not kill the process with SIGXFSZ.
+    std::signal(SIGXFSZ, SIG_IGN);
+    // A closed pipe on stdout (oasis caps | head -1) is a failed write to report, not a silent death.
+    std::signal(SIGPIPE, SIG_IGN);
+    ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+    if (!parsed.ok) {
+        std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());
+        return 2;
+    }
+    for (const std::string& note : parsed.notes) std::fprintf(stderr, "oasis: %s\n", note.c_str());
+    return checkStandardOutput(runParsed(parsed.options));
 }

@@ -26,7 +26,9 @@
 #include "commands/bench_report.h"
 #include "commands/headless_commands.h"
 #include "context/gl_context.h"
+#include "render/file_output.h"
 #include "render/image.h"
+#include "render/interruption.h"
 
 extern char** environ;
 
@@ -40,9 +42,10 @@ struct Side {
     std::string label;  // in messages, the legend and the image's file name
     const DriverSetup* setup = nullptr;
     bool reference = false;
-    std::string path;      // the PNG
+    std::string path;      // the PNG (a set-up's: in the staging directory until the set is written)
     std::string renderer;  // GL_RENDERER the child reported
     Image image;
+    std::string bytes;     // a set-up's PNG file as its child wrote it
 };
 
 struct ChildResult {
@@ -50,11 +53,6 @@ struct ChildResult {
     bool timedOut = false;  // killed at the time limit
     std::string output;  // stdout and stderr together, in the order written
 };
-
-// A signal that ends this process while a child runs in its own process group: the terminal's
-// Ctrl-C no longer reaches the child, so the wait passes it on (kills the group) before dying.
-volatile std::sig_atomic_t endingSignal = 0;
-extern "C" void noteEndingSignal(int signal) { endingSignal = signal; }
 
 std::vector<std::string> childEnvironment(const DriverSetup* setup, const std::string& runtimeDir) {
     std::vector<std::string> environment;
@@ -80,7 +78,7 @@ std::vector<std::string> childEnvironment(const DriverSetup* setup, const std::s
 bool readUntilClosed(int fd, std::string& output, std::chrono::steady_clock::time_point deadline) {
     char buffer[4096];
     for (;;) {
-        if (endingSignal) return false;
+        if (heldSignal()) return false;
         auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
         if (left.count() <= 0) return true;
         pollfd readable{fd, POLLIN, 0};
@@ -92,10 +90,28 @@ bool readUntilClosed(int fd, std::string& output, std::chrono::steady_clock::tim
     }
 }
 
+// Stops the child's process group: SIGTERM, so that oasis there removes its temporaries, and after
+// a short grace SIGKILL for whatever is still running (a hung driver). Reaps the child.
+void stopChildGroup(pid_t pid, int& status) {
+    kill(-pid, SIGTERM);
+    auto graceEnd = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+    while (std::chrono::steady_clock::now() < graceEnd) {
+        pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid || (done < 0 && errno != EINTR)) {
+            kill(-pid, SIGKILL);  // what the child started and left in its group
+            return;
+        }
+        usleep(20000);
+    }
+    kill(-pid, SIGKILL);
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+}
+
 // Runs `arguments` (argv[0] first) as /proc/self/exe with `environment` in a process group of its
-// own (so a hang is killed whole: whatever the driver started too), collecting its output; after
-// `limitSeconds` the group is killed and the result says it timed out. Throws std::runtime_error
-// when it cannot be started.
+// own (so a hang is stopped whole: whatever the driver started too), collecting its output; after
+// `limitSeconds`, or on an ending signal (held meanwhile: render/interruption.h), the group is
+// stopped (stopChildGroup) and the result says it timed out. Throws std::runtime_error when it
+// cannot be started.
 ChildResult runChild(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
                      double limitSeconds) {
     int pipeEnds[2];
@@ -113,27 +129,25 @@ ChildResult runChild(const std::vector<std::string>& arguments, const std::vecto
     for (const std::string& entry : environment) envp.push_back(const_cast<char*>(entry.c_str()));
     argv.push_back(nullptr);
     envp.push_back(nullptr);
-    const int endingSignals[] = {SIGINT, SIGTERM, SIGHUP};
-    struct sigaction noting {}, previous[3];
-    noting.sa_handler = noteEndingSignal;
-    sigemptyset(&noting.sa_mask);
-    for (int k = 0; k < 3; ++k) sigaction(endingSignals[k], &noting, &previous[k]);
     auto deadline = std::chrono::steady_clock::now() +
                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(limitSeconds));
     pid_t pid = 0;
-    int spawnError = posix_spawn(&pid, "/proc/self/exe", &actions, &attributes, argv.data(), envp.data());
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attributes);
-    close(pipeEnds[1]);
     ChildResult result;
-    if (spawnError == 0) {
-        result.timedOut = readUntilClosed(pipeEnds[0], result.output, deadline);
-        if (result.timedOut || endingSignal) kill(-pid, SIGKILL);  // the group: nothing of the render is left
-        while (waitpid(pid, &result.status, 0) < 0 && errno == EINTR) {}
+    int spawnError = 0;
+    {
+        InterruptionHeld holding;  // Ctrl-C no longer reaches the child's group: stop it, then end
+        spawnError = posix_spawn(&pid, "/proc/self/exe", &actions, &attributes, argv.data(), envp.data());
+        posix_spawn_file_actions_destroy(&actions);
+        posix_spawnattr_destroy(&attributes);
+        close(pipeEnds[1]);
+        if (spawnError == 0) {
+            result.timedOut = readUntilClosed(pipeEnds[0], result.output, deadline);
+            if (result.timedOut || heldSignal()) stopChildGroup(pid, result.status);
+            else while (waitpid(pid, &result.status, 0) < 0 && errno == EINTR) {}
+        }
+        close(pipeEnds[0]);
     }
-    close(pipeEnds[0]);
-    for (int k = 0; k < 3; ++k) sigaction(endingSignals[k], &previous[k], nullptr);
-    if (endingSignal) raise(endingSignal);  // end as the signal asked, now that the child is gone
+    endForHeldSignal();  // end as the signal asked, now that the child is gone (removing its files)
     if (spawnError != 0)
         throw std::runtime_error(std::string("cannot start /proc/self/exe: ") + std::strerror(spawnError));
     return result;
@@ -160,15 +174,39 @@ std::string reportedRenderer(const std::string& output) {
 
 std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
 
-// Renders `side` in a child. Returns 0, or the exit code after saying what went wrong.
-int renderSide(const Options& options, Side& side, const std::vector<std::string>& extraArguments,
-               const std::string& runtimeDir) {
+// The arguments of `side`'s child `oasis render` (argv[0] first), writing its frame to side.path.
+std::vector<std::string> childArguments(const Options& options, const Side& side,
+                                        const std::vector<std::string>& extraArguments) {
     std::vector<std::string> arguments = {"oasis", "render"};
     arguments.insert(arguments.end(), options.sceneArguments.begin(), options.sceneArguments.end());
     arguments.insert(arguments.end(), extraArguments.begin(), extraArguments.end());
     if (side.setup) arguments.insert(arguments.end(), side.setup->arguments.begin(), side.setup->arguments.end());
     for (const char* argument : {"--view", "final", "--legend", "off", "--out"}) arguments.push_back(argument);
     arguments.push_back(side.path);
+    return arguments;
+}
+
+// Every child's arguments parsed here first, as the child would: a set-up that would refuse them
+// (--force gl33 with the gles set-up) is a usage error before any child starts. 0 or 2.
+int checkChildArguments(const Options& options, const std::vector<Side>& sides,
+                        const std::vector<std::string>& extraArguments) {
+    for (const Side& side : sides) {
+        if (side.reference) continue;
+        std::vector<std::string> arguments = childArguments(options, side, extraArguments);
+        ParseResult parsed = parseCommandLine(std::vector<std::string>(arguments.begin() + 1, arguments.end()));
+        if (parsed.ok) continue;
+        std::fprintf(stderr, "oasis: %s: %s (nothing was rendered)\n",
+                     side.setup ? ("set-up " + side.setup->name).c_str() : "the frame here", parsed.error.c_str());
+        return 2;
+    }
+    return 0;
+}
+
+// Renders `side` in a child, into side.path in the staging directory. Returns 0, or the exit code
+// after saying what went wrong.
+int renderSide(const Options& options, Side& side, const std::vector<std::string>& extraArguments,
+               const std::string& runtimeDir) {
+    std::vector<std::string> arguments = childArguments(options, side, extraArguments);
     ChildResult child = runChild(arguments, childEnvironment(side.setup, runtimeDir), options.driverTimeoutSeconds);
     std::string name = side.setup ? "set-up " + side.setup->name : "the frame here";
     if (child.timedOut) {
@@ -208,7 +246,7 @@ int renderSide(const Options& options, Side& side, const std::vector<std::string
         return 1;
     }
     std::string error;
-    if (!readPng(side.path, side.image, error)) {
+    if (!readPng(side.path, side.image, error, &side.bytes)) {
         std::fprintf(stderr, "oasis: %s: %s\n", name.c_str(), error.c_str());
         return 1;
     }
@@ -248,34 +286,54 @@ int runDriverCompare(const Options& options) {
         if (!options.sizeGiven) extraArguments = {"--size", sizeText(reference.image.width, reference.image.height)};
         sides.push_back(std::move(reference));
     }
+    // Where each set-up's frame ends up; the file sent must not be one of them.
+    std::vector<std::string> finalPaths(sides.size());
+    for (size_t k = 0; k < sides.size(); ++k) {
+        if (sides[k].reference) continue;
+        sides[k].path = finalPaths[k] = options.outDir + "/" + sides[k].label + ".png";  // staged later
+        struct stat rendered, reference;
+        if (!options.reference.empty() && stat(finalPaths[k].c_str(), &rendered) == 0 &&
+            stat(options.reference.c_str(), &reference) == 0 && rendered.st_dev == reference.st_dev &&
+            rendered.st_ino == reference.st_ino) {
+            std::fprintf(stderr, "oasis: --reference %s is where %s's frame is written: move it, or give "
+                         "another --out-dir\n", options.reference.c_str(), sides[k].label.c_str());
+            return 2;
+        }
+    }
+    if (int code = checkChildArguments(options, sides, extraArguments)) return code;
     if (mkdir(options.outDir.c_str(), 0755) != 0 && errno != EEXIST) {
         std::fprintf(stderr, "oasis: cannot create directory %s: %s\n", options.outDir.c_str(), std::strerror(errno));
         return 1;
     }
-    // zink warns without XDG_RUNTIME_DIR; mkdtemp makes it 0700, as the runtime directory must be.
-    char runtimeTemplate[] = "/tmp/oasis-runtime-XXXXXX";
-    std::string runtimeDir = mkdtemp(runtimeTemplate) ? runtimeTemplate : "/tmp";
+    // The children's frames are staged in a private directory, which is also their runtime
+    // directory (zink warns without XDG_RUNTIME_DIR; mkdtemp makes it 0700, as one must be). The set
+    // is written to --out-dir only when every side is there, and the directory goes with whatever a
+    // driver or an interrupted child left in it, also when a signal ends oasis.
+    const char* temporaryRoot = std::getenv("TMPDIR");
+    std::string stagingTemplate = std::string(temporaryRoot && *temporaryRoot ? temporaryRoot : "/tmp") +
+                                  "/oasis-runtime-XXXXXX";
+    if (!mkdtemp(stagingTemplate.data())) {
+        std::fprintf(stderr, "oasis: cannot create a directory like %s: %s\n", stagingTemplate.c_str(),
+                     std::strerror(errno));
+        return 1;
+    }
+    std::string stagingDir = stagingTemplate;
+    RemovedOnInterrupt stagingRemoval(stagingDir, RemovedOnInterrupt::Kind::DirectoryTree);
     int code = 0;
     try {
         for (Side& side : sides) {
             if (side.reference) continue;
-            side.path = options.outDir + "/" + side.label + ".png";
-            struct stat rendered, reference;
-            if (!options.reference.empty() && stat(side.path.c_str(), &rendered) == 0 &&
-                stat(options.reference.c_str(), &reference) == 0 && rendered.st_dev == reference.st_dev &&
-                rendered.st_ino == reference.st_ino) {  // the child would overwrite the file sent
-                std::fprintf(stderr, "oasis: --reference %s is where %s's frame is written: move it, or give "
-                             "another --out-dir\n", options.reference.c_str(), side.label.c_str());
-                code = 2;
-                break;
-            }
-            if ((code = renderSide(options, side, extraArguments, runtimeDir)) != 0) break;
+            side.path = stagingDir + "/" + side.label + ".png";
+            if ((code = renderSide(options, side, extraArguments, stagingDir)) != 0) break;
         }
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: %s\n", error.what());
         code = 1;
     }
-    if (runtimeDir != "/tmp") rmdir(runtimeDir.c_str());  // empty unless a driver left files: then kept
+    removeDirectoryTree(stagingDir);
+    stagingRemoval.release();
+    for (size_t k = 0; k < sides.size(); ++k)
+        if (!sides[k].reference) sides[k].path = finalPaths[k];
     if (code != 0) return code;
 
     const Side &a = sides[0], &b = sides[1];
@@ -295,8 +353,16 @@ int runDriverCompare(const Options& options) {
         return 1;
     }
     std::string differencePath = options.outDir + "/difference.png", error;
-    if (!writePng(differencePath, heat, error)) {
-        std::fprintf(stderr, "oasis: %s\n", error.c_str());
+    std::vector<OutputFile> set;
+    for (const Side* s : {&a, &b})
+        if (!s->reference) set.push_back({s->path, s->bytes});
+    set.push_back({differencePath, {}});
+    std::vector<std::string> written;
+    if (!encodePng(heat, set.back().bytes) || !writeFilesWhole(set, written, error)) {
+        std::fprintf(stderr, "oasis: %s\n", error.empty() ? ("cannot write " + differencePath + ": PNG encoding failed").c_str()
+                                                            : error.c_str());
+        for (const std::string& path : written)
+            std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
         return 1;
     }
     bool identical = difference.maxAbs == 0;

@@ -1,16 +1,20 @@
 // Whole-or-nothing file output: stage to a temporary beside the target, check, rename.
 #include "render/file_output.h"
 
+#include "render/interruption.h"
+
 #include <fcntl.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 
 namespace oasis {
 namespace {
@@ -22,6 +26,7 @@ struct Staged {
     std::string temporary;  // the complete new file; empty while none exists
     bool inPlace = false;   // written straight into `path` (it cannot be replaced)
     int keptMode = -1;      // the replaced file's permission bits, given to its replacement
+    RemovedOnInterrupt removal;  // the temporary, removed if a signal ends oasis before the rename
 };
 
 bool fail(const std::string& path, const std::string& why, std::string& error) {
@@ -101,16 +106,20 @@ bool plan(const std::string& path, Staged& staged, std::string& error) {
     return true;
 }
 
-// Opens a new temporary beside the target; names taken by another writer are skipped.
-int openTemporary(const std::string& target, std::string& name) {
+// Opens a new temporary beside the target; names taken by another writer are skipped. The name is
+// registered for removal on a signal before the file exists, so no moment leaves it behind.
+int openTemporary(const std::string& target, std::string& name, RemovedOnInterrupt& removal) {
     static std::atomic<unsigned> counter{0};
     std::string base = baseNameOf(target).substr(0, 200);  // room for the suffix within NAME_MAX
     std::string stem = directoryOf(target) + "/." + base + ".tmp-" + std::to_string(getpid()) + "-";
     for (int attempt = 0; attempt < 100; ++attempt) {
         name = stem + std::to_string(counter++);
+        removal = RemovedOnInterrupt(name, RemovedOnInterrupt::Kind::File);
         // 0666 less the umask, as for any new file.
         int fd = open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0 || errno != EEXIST) return fd;
+        if (fd >= 0) return fd;
+        removal.release();  // not ours: another writer's file, or none was made
+        if (errno != EEXIST) return -1;
     }
     errno = EEXIST;
     return -1;
@@ -120,7 +129,7 @@ int openTemporary(const std::string& target, std::string& name) {
 // the close checked. On failure nothing is left.
 bool writeTemporary(Staged& staged, const std::string& bytes, std::string& error) {
     std::string name;
-    int fd = openTemporary(staged.target, name);
+    int fd = openTemporary(staged.target, name, staged.removal);
     if (fd < 0) return fail(staged.path, std::strerror(errno), error);
     // Best effort: a file system without Unix permissions (vfat) refuses, and the bytes matter more.
     if (staged.keptMode >= 0) (void)fchmod(fd, mode_t(staged.keptMode));
@@ -134,6 +143,7 @@ bool writeTemporary(Staged& staged, const std::string& bytes, std::string& error
     if (close(fd) != 0 && why.empty()) why = std::string("close: ") + std::strerror(errno);
     if (!why.empty()) {
         unlink(name.c_str());
+        staged.removal.release();
         return fail(staged.path, why, error);
     }
     staged.temporary = name;
@@ -141,8 +151,14 @@ bool writeTemporary(Staged& staged, const std::string& bytes, std::string& error
 }
 
 bool writeInPlace(const Staged& staged, const std::string& bytes, std::string& error) {
-    int fd = open(staged.path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    // O_NONBLOCK: a FIFO that no process reads would block the open forever; it fails with ENXIO.
+    int fd = open(staged.path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NONBLOCK, 0666);
+    if (fd < 0 && errno == ENXIO) return fail(staged.path, "it is a FIFO (named pipe) that no process reads", error);
     if (fd < 0) return fail(staged.path, std::strerror(errno), error);
+    if (fcntl(fd, F_SETFL, 0) != 0) {  // blocking writes from here on: a reader takes its time
+        close(fd);
+        return fail(staged.path, std::strerror(errno), error);
+    }
     std::string why;
     struct stat file;
     if (int err = writeAll(fd, bytes)) why = std::strerror(err);
@@ -160,6 +176,7 @@ bool stage(const std::string& path, const std::string& bytes, Staged& staged, st
 void discard(Staged& staged) {
     if (!staged.temporary.empty()) unlink(staged.temporary.c_str());
     staged.temporary.clear();
+    staged.removal.release();
 }
 
 // The rename is what makes the new file appear; syncing the directory makes the rename itself
@@ -172,6 +189,7 @@ bool commit(Staged& staged, const std::string& bytes, std::string& error) {
         return fail(staged.path, std::strerror(err), error);
     }
     staged.temporary.clear();
+    staged.removal.release();
     int directory = open(directoryOf(staged.target).c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (directory >= 0) {
         fsync(directory);
@@ -195,15 +213,21 @@ bool writeFilesWhole(const std::vector<OutputFile>& files, std::vector<std::stri
         for (size_t j = 0; j < i; ++j) discard(staged[j]);
         return false;
     }
-    for (size_t i = 0; i < files.size(); ++i) {
-        if (commit(staged[i], files[i].bytes, error)) {
-            written.push_back(files[i].path);
-            continue;
+    bool committed = true;
+    {
+        // A signal between two renames would leave part of the set: it waits until the renames end
+        // (not where a target is written in place: a stalled pipe must not make Ctrl-C wait).
+        std::optional<InterruptionHeld> holding;
+        if (std::none_of(staged.begin(), staged.end(), [](const Staged& s) { return s.inPlace; })) holding.emplace();
+        for (size_t i = 0; i < files.size() && committed; ++i) {
+            committed = commit(staged[i], files[i].bytes, error);
+            if (committed) written.push_back(files[i].path);
+            else
+                for (size_t j = i + 1; j < files.size(); ++j) discard(staged[j]);
         }
-        for (size_t j = i + 1; j < files.size(); ++j) discard(staged[j]);
-        return false;
     }
-    return true;
+    endForHeldSignal();
+    return committed;
 }
 
 }  // namespace oasis

@@ -1,17 +1,17 @@
 // Image output (PNG encoded in memory, written whole) and comparison.
 #include "render/image.h"
 
+#include "render/file_input.h"
 #include "render/file_output.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <stdexcept>
 
 namespace oasis {
@@ -48,14 +48,48 @@ bool writePng(const std::string& path, const Image& image, std::string& error) {
     return writeFileWhole(path, png, error);
 }
 
-bool readPng(const std::string& path, Image& image, std::string& error) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) { error = "cannot read " + path + ": " + std::strerror(errno); return false; }
-    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (file.bad()) { error = "cannot read " + path + ": read error"; return false; }
+namespace {
+
+// What a PNG may be before oasis decodes it: a frame of the --size domain, in a file of bounded size.
+constexpr size_t kMaxPngFileBytes = size_t(256) << 20;
+constexpr uint32_t kMaxPngSide = 32768;
+constexpr uint64_t kMaxPngDecodedBytes = uint64_t(1) << 30;
+
+uint32_t bigEndian32(const std::string& bytes, size_t at) {
+    return uint32_t(uint8_t(bytes[at])) << 24 | uint32_t(uint8_t(bytes[at + 1])) << 16 |
+           uint32_t(uint8_t(bytes[at + 2])) << 8 | uint32_t(uint8_t(bytes[at + 3]));
+}
+
+// The signature and the IHDR chunk (the first 33 bytes): what the file claims to be, checked before
+// its data is read. Empty when it is a PNG oasis will decode, else why not.
+std::string pngHeaderProblem(const std::string& header) {
     static const char kSignature[] = "\x89PNG\r\n\x1a\n";
     // stb_image reads JPEG, BMP and more too: a reference must be what oasis writes.
-    if (bytes.compare(0, 8, kSignature, 8) != 0) { error = "cannot read " + path + ": not a PNG file"; return false; }
+    if (header.size() < 8 || header.compare(0, 8, kSignature, 8) != 0) return "not a PNG file";
+    if (header.size() < 33 || bigEndian32(header, 8) != 13 || header.compare(12, 4, "IHDR") != 0)
+        return "not a readable PNG (no IHDR header where the format puts it)";
+    uint32_t width = bigEndian32(header, 16), height = bigEndian32(header, 20);
+    if (width < 1 || height < 1 || width > kMaxPngSide || height > kMaxPngSide)
+        return "its header says " + std::to_string(width) + "x" + std::to_string(height) + " pixels; oasis reads 1.." +
+               std::to_string(kMaxPngSide) + " a side";
+    if (uint64_t(width) * height * 4 > kMaxPngDecodedBytes)
+        return "its header says " + std::to_string(width) + "x" + std::to_string(height) +
+               " pixels, more than the 1 GiB of RGBA oasis decodes";
+    return {};
+}
+
+}  // namespace
+
+bool readPng(const std::string& path, Image& image, std::string& error, std::string* fileBytes) {
+    int fd = openRegularFile(path, kMaxPngFileBytes, error);
+    if (fd < 0) return false;
+    std::string bytes;
+    bool read = readUpTo(fd, 33, bytes, path, error);
+    std::string problem = read ? pngHeaderProblem(bytes) : std::string();
+    if (read && problem.empty()) read = readUpTo(fd, kMaxPngFileBytes - bytes.size(), bytes, path, error);
+    close(fd);
+    if (!read) return false;
+    if (!problem.empty()) { error = "cannot read " + path + ": " + problem; return false; }
     int width = 0, height = 0, channels = 0;
     stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &width,
                                             &height, &channels, 4);
@@ -66,6 +100,7 @@ bool readPng(const std::string& path, Image& image, std::string& error) {
     image = Image(width, height);
     std::memcpy(image.rgba.data(), pixels, image.rgba.size());
     stbi_image_free(pixels);
+    if (fileBytes) *fileBytes = std::move(bytes);
     return true;
 }
 

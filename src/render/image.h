@@ -26,9 +26,11 @@ bool encodePng(const Image& image, std::string& png);
 bool writePng(const std::string& path, const Image& image, std::string& error);
 
 // Reads a PNG file (any bit depth or channel count; converted to 8-bit RGBA, alpha 255 where it
-// has none). False with `error` saying "cannot read PATH: REASON" if it is missing, unreadable or
-// not a PNG.
-bool readPng(const std::string& path, Image& image, std::string& error);
+// has none). The file is checked before it is read (render/file_input.h: a regular file of at most
+// 256 MiB) and its signature and header before its data (1..32768 pixels a side). False with
+// `error` saying "cannot read PATH: REASON" if it is missing, unreadable, not such a file or not a
+// PNG. `fileBytes`, if given, gets the file as it was read.
+bool readPng(const std::string& path, Image& image, std::string& error, std::string* fileBytes = nullptr);
 
 // PSNR is capped at kPsnrIdentical (identical images have infinite PSNR).
 constexpr double kPsnrIdentical = 100.0;

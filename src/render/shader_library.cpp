@@ -11,19 +11,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "render/file_input.h"
 #include "render/texture_units.h"
 
 namespace oasis {
 namespace {
 
-bool readFile(const std::string& path, std::string& text) {
-    std::ifstream in(path);
-    if (!in) return false;
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
-    return true;
-}
+// A shader source larger than this is not one of oasis's (the largest is a few KiB).
+constexpr size_t kMaxShaderFileBytes = size_t(1) << 20;
 
 std::string executableDirectory() {
     char path[4096];
@@ -34,8 +29,8 @@ std::string executableDirectory() {
 }
 
 bool isShaderDirectory(const std::string& dir) {
-    std::ifstream probe(dir + "/common/frame_data.glsl");
-    return bool(probe);
+    struct stat probe;  // stat, not open: a FIFO in its place must not block the search
+    return stat((dir + "/common/frame_data.glsl").c_str(), &probe) == 0 && S_ISREG(probe.st_mode);
 }
 
 // Appends `file` to `out`, expanding #include "name" lines recursively.
@@ -43,7 +38,11 @@ bool expandIncludes(const std::string& root, const std::string& file, Preprocess
                     int depth, std::string& error) {
     if (depth > 16) { error = file + ": #include nested too deeply"; return false; }
     std::string text;
-    if (!readFile(root + "/" + file, text)) { error = "cannot read shader " + root + "/" + file; return false; }
+    std::string why;
+    if (!readRegularFile(root + "/" + file, kMaxShaderFileBytes, text, why)) {
+        error = "cannot read shader " + why.substr(std::string("cannot read ").size());  // "...: it is a directory"
+        return false;
+    }
     // An emptied file would surface only as a link error naming no file ("lacks main") or as
     // errors in the files that include it; say which file it is.
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) { error = file + ":1: the file is empty"; return false; }

@@ -6,10 +6,10 @@
 #              (exit 77 = skipped, saying why, when zink is not on this machine)
 #   reference  a frame `render` wrote, as --reference: identical (the size taken from the file)
 #   altered    a frame of another hour as --reference: PSNR under 30 dB, difference.png with its legend
-#   timeout    a child that really hangs (its --out is a FIFO no one reads: the render ends, its write
-#              blocks) is killed at --driver-timeout: exit 1 naming the set-up and the limit, its
-#              output until then shown, no process of it left; and a limit far below a render's time
-#              kills the first child at once
+#   timeout    a child that really hangs (stopped with SIGSTOP as soon as it runs: it cannot even act
+#              on the SIGTERM that comes first) is killed at --driver-timeout: exit 1 naming the
+#              set-up and the limit, no process of it and nothing it staged left; and a limit far
+#              below a render's time stops the first child at once
 # Usage: driver_compare.sh OASIS_EXECUTABLE SCRATCH_DIR CASE
 oasis=$1
 scratch=$2
@@ -76,22 +76,32 @@ altered)
     [ "$(field max_abs)" -gt 0 ] || fail "max abs 0 against a different frame"
     expect_difference_png ;;
 timeout)
-    mkdir -p "$scratch/out" && mkfifo "$scratch/out/llvmpipe.png" || fail "cannot make the FIFO"
+    mkdir -p "$scratch/out" "$scratch/tmp" || fail "cannot make the directories"
+    export TMPDIR="$scratch/tmp"  # where compare stages the children's frames
     start=$(date +%s)
-    compare --driver llvmpipe --driver no-ssbo --size 32x18 --driver-timeout 15
+    compare --driver llvmpipe --driver no-ssbo --size 32x18 --driver-timeout 15 &
+    comparing=$!
+    child=
+    for _ in $(seq 200); do
+        child=$(pgrep -f "render .*--out $scratch/tmp/.*llvmpipe.png" | head -n 1)
+        [ -n "$child" ] && break
+        sleep 0.05
+    done
+    [ -n "$child" ] || fail "the child render never appeared"
+    kill -STOP "$child"
+    wait $comparing
     code=$?
     elapsed=$(($(date +%s) - start))
     hung=$elapsed
     [ $code -eq 1 ] || fail "a hung child: exit $code, expected 1: $(cat "$scratch/stderr")"
     grep -q "^oasis: set-up llvmpipe: \`oasis render\` did not finish within --driver-timeout 15 s" "$scratch/stderr" ||
         fail "the message does not name the set-up and the limit: $(cat "$scratch/stderr")"
-    # Its stderr until the kill: it had rendered the frame (the write was what hung).
-    grep -q "^    oasis: view final values" "$scratch/stderr" || fail "the child's output until the kill is not shown: $(cat "$scratch/stderr")"
     [ $elapsed -ge 15 ] && [ $elapsed -le 45 ] || fail "killed after $elapsed s, expected the 15 s limit"
     [ -s "$scratch/out.json" ] && fail "a killed compare printed a result: $(cat "$scratch/out.json")"
     sleep 1
-    pgrep -f "$scratch/out/llvmpipe.png" > /dev/null && fail "the hung child is still running: $(pgrep -af "$scratch/out/llvmpipe.png")"
-    rm -f "$scratch/out/llvmpipe.png"
+    kill -0 "$child" 2> /dev/null && fail "the hung child is still running"
+    left=$(find "$scratch/tmp" "$scratch/out" -mindepth 1)
+    [ -z "$left" ] || fail "left behind: $left"
     start=$(date +%s)
     compare --driver gles --driver llvmpipe --size 160x90 --driver-timeout 0.1
     code=$?
@@ -102,7 +112,8 @@ timeout)
     [ $elapsed -le 5 ] || fail "a 0.1 s limit took $elapsed s"
     [ -e "$scratch/out/gles.png" ] && fail "a killed child left its frame"
     sleep 1
-    pgrep -f "$scratch/out/gles.png" > /dev/null && fail "the killed child is still running"
+    pgrep -f "$scratch/tmp/.*gles.png" > /dev/null && fail "the killed child is still running"
+    [ -z "$(ls -A "$scratch/tmp")" ] || fail "left behind: $(ls -A "$scratch/tmp")"
     echo "timeout: a hung child killed after $hung s at its 15 s limit; a 0.1 s limit killed the first child in $elapsed s" ;;
 *) fail "unknown case '$case'" ;;
 esac
