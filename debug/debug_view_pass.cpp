@@ -111,10 +111,23 @@ void DebugViewPass::drawView(PassContext& context, const DebugView& view, Stenci
     drawTile(context, view, stencilPath, 0, 0, context.targets.width(), context.targets.height());
 }
 
+namespace {
+std::pair<int, int> overviewGrid() {
+    size_t views = debugViews().size();
+    int columns = int(std::ceil(std::sqrt(double(views))));
+    return {columns, int((views + size_t(columns) - 1) / size_t(columns))};
+}
+}  // namespace
+
+std::pair<int, int> overviewMinimumSize() {
+    constexpr int kMinimumCell = 4 + 2;  // a 4-pixel tile and its one-pixel gap on each side
+    auto [columns, rows] = overviewGrid();
+    return {columns * kMinimumCell, rows * kMinimumCell};
+}
+
 std::vector<OverviewTile> overviewTiles(int width, int height) {
     const auto& views = debugViews();
-    int columns = int(std::ceil(std::sqrt(double(views.size()))));
-    int rows = int((views.size() + size_t(columns) - 1) / size_t(columns));
+    auto [columns, rows] = overviewGrid();
     int cellWidth = width / columns, cellHeight = height / rows;
     std::vector<OverviewTile> tiles;
     for (size_t i = 0; i < views.size(); ++i) {

@@ -22,6 +22,9 @@ struct OverviewTile {
     int x, y, width, height;
 };
 std::vector<OverviewTile> overviewTiles(int width, int height);
+// The smallest frame whose overview tiles are at least 4x4 pixels (smaller ones would be a single
+// colour): {width, height}.
+std::pair<int, int> overviewMinimumSize();
 // The rows at the top of a tile its label covers (ImGui's 13-pixel font at the tiles' scale, its
 // padding, 3 pixels in from the corner); 0 when tiles are too small to be labelled. The render
 // command's overlay leaves them unpainted so the names stay readable.

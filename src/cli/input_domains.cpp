@@ -109,11 +109,14 @@ bool isDecimal(const std::string& text) {
     return i == n;
 }
 
+// Decimal digits only, at most 9 of them after any leading zeros (9 digits cannot overflow an int;
+// "0000000004" is 4).
 bool isDigits(const std::string& text) {
-    if (text.empty() || text.size() > 9) return false;  // 9 digits cannot overflow an int
+    if (text.empty()) return false;
     for (char c : text)
         if (!std::isdigit(static_cast<unsigned char>(c))) return false;
-    return true;
+    size_t significant = text.find_first_not_of('0');
+    return significant == std::string::npos || text.size() - significant <= 9;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "cli/driver_setups.h"
 #include "cli/input_domains.h"
+#include "cli/option_rules.h"
 #include "debug/debug_views.h"
 #include "render/depth_convention.h"
 #include "render/encoding_error.h"
@@ -80,7 +81,10 @@ const char* kSceneOptionsHelp =
     "  --tone-map fused|separate  tone-map in the passes that write each pixel's colour last, or in a\n"
     "                            separate full-screen ToneMapPass (default fused; the same picture)\n"
     "  --depth-read in-place|copy  compact layout: the deferred lighting samples the depth-stencil target\n"
-    "                            itself, or a copy made every frame (default in-place; the same picture)\n"
+    "                            itself, or a copy made every frame (default in-place). Not bit for bit: the\n"
+    "                            copy is written through gl_FragDepth, whose rounding to 24 bits moves some\n"
+    "                            depths one step, so ~0.7% of pixels differ, nearly all by 1 level (a few by\n"
+    "                            up to 8 where a shadow test flips)\n"
     "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
     "  --gl-debug                synchronous GL debug output: stop at the first GL error, naming its\n"
     "                            debug group path; count performance warnings, printed at the end\n"
@@ -101,7 +105,7 @@ const char* kSceneOptionsHelp =
     "                            only the surfaces, as before GL 4.5);\n"
     "                            each fallback is reported once\n"
     "  --api API                 gl (desktop OpenGL core, the default) or gles (an OpenGL ES 3.x context:\n"
-    "                            ES 3.2 on Mesa; headless commands only, not the window)\n"
+    "                            ES 3.2 on Mesa; every command, the window included)\n"
     "  --depth CONVENTION        depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
     "                            near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard;\n"
     "                            `oasis bench` times and compares both itself)\n"
@@ -294,6 +298,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     }
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
+        options.givenFlags.push_back(flag);
         static const std::vector<std::string> kValueOptions = {
             "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--reflection-resolution", "--reflection-plant-cull", "--tone-map", "--depth-read", "--shadows", "--shadow-quality", "--water-level", "--ripples",
             "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
@@ -583,6 +588,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                         " is outside the " + std::to_string(options.scene.width) + "x" +
                         std::to_string(options.scene.height) + " frame (0,0 is the top-left pixel)");
     }
+    std::string idle;
+    if (!options.help && !applyOptionRules(options, result.notes, idle)) return fail(idle);
     return result;
 }
 

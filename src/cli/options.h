@@ -71,6 +71,7 @@ struct Options {
     double driverTimeoutSeconds = 300.0;
     bool driverTimeoutGiven = false;
     bool pipelineGiven = false;
+    std::vector<std::string> givenFlags;  // the options on the command line, in order (cli/option_rules.h)
     bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }
 };
 

@@ -335,8 +335,10 @@ int runCompareCommand(const Options& options) {
 
 int runMainJob(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
-        std::printf("oasis: no display, running the headless main job (stencil view: %s)\n",
-                    session.stencilPathReason.c_str());
+        // With --json, stdout carries the JSON alone (compare's keys); the rest goes to stderr.
+        std::FILE* report = options.json ? stderr : stdout;
+        std::fprintf(report, "oasis: no display, running the headless main job (stencil view: %s)\n",
+                     session.stencilPathReason.c_str());
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
         session.renderer->renderView(kOverviewName);
         Image overview = session.renderer->readDisplay();
@@ -345,8 +347,9 @@ int runMainJob(const Options& options) {
         if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
                                           {"difference.png", &heat}, {"overview.png", &overview}}, written))
             return 1;
-        printSummary(options, session, c);
-        for (const std::string& path : written) std::printf("  wrote %s\n", path.c_str());
+        if (options.json) printJson(options, session, c);
+        else printSummary(options, session, c);
+        for (const std::string& path : written) std::fprintf(report, "  wrote %s\n", path.c_str());
         return 0;
     });
 }

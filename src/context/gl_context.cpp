@@ -341,7 +341,17 @@ bool WindowContext::displayAvailable() {
 
 WindowContext::WindowContext(int width, int height, const std::string& title, MaxGlVersion max) {
     capMesaVersion(max);
-    if (!glfwInit()) throw std::runtime_error("cannot open a window: " + glfwLastError());
+    if (!glfwInit()) {
+        std::string reason = glfwLastError();
+        const char* x11 = std::getenv("DISPLAY");
+        const char* wayland = std::getenv("WAYLAND_DISPLAY");
+        // GLFW names the display variable of the platform it was built for; say what was found.
+        if (!(x11 && *x11) && wayland && *wayland)
+            reason += " (WAYLAND_DISPLAY is set to '" + std::string(wayland) + "' but DISPLAY is not: this GLFW "
+                      "build opens X11 windows, so run under XWayland with DISPLAY set, or use a headless "
+                      "command such as `oasis render`)";
+        throw std::runtime_error("cannot open a window: " + reason);
+    }
     if (max.es) window_ = openEsWindow(width, height, title);
     for (auto [glMajor, glMinor] : kVersionsToTry) {
         if (max.es || !allowed(max, glMajor, glMinor)) continue;

@@ -349,8 +349,9 @@ std::string probeJson(const PixelProbe& p) {
     json += "}, \"sky\": " + std::string(p.sky ? "true" : "false");
     json += ", \"albedo\": {\"linear\": [" + vec(glm::dvec3(p.albedo)) + "], \"srgb\": [" + vec(glm::dvec3(p.albedoSrgb)) + "]}";
     json += ", \"normal\": {\"xyz\": [" + vec(glm::dvec3(p.normal)) + "], \"length\": " + numbers({p.normalLength}, "%.6g") + "}";
-    json += ", \"position\": {\"camera_relative\": [" + vec(glm::dvec3(p.relativePosition)) + "], \"world\": [" +
-            vec(p.worldPosition, "%.9g") + "], \"eye_distance\": " + numbers({p.eyeDistance}, "%.6g") +
+    // A sky pixel holds no surface: its world position is null (the stored texel is in "stored").
+    json += ", \"position\": {\"camera_relative\": [" + vec(glm::dvec3(p.relativePosition)) + "], \"world\": " +
+            (p.sky ? std::string("null") : "[" + vec(p.worldPosition, "%.9g") + "]") + ", \"eye_distance\": " + numbers({p.eyeDistance}, "%.6g") +
             (p.sceneDepth >= 0.0 ? ", \"from_depth_copy\": " + numbers({p.sceneDepth}, "%.9g") : "") + "}";
     json += ", \"info\": {\"specular_power\": " + numbers({p.specularPower}, "%g") + ", \"specular_intensity\": " +
             numbers({p.specularIntensity}, "%.6g") + ", \"flags\": " + std::to_string(p.flags) + ", \"flag_names\": [" +
