@@ -54,8 +54,12 @@ void keepStandardDescriptorsTaken() {
 // (exit 1), not a success with the output lost.
 int checkStandardOutput(int code) {
     if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
-    int why = errno;
-    std::fprintf(stderr, "oasis: cannot write stdout: %s\n", std::strerror(why ? why : EIO));
+    // stdio keeps no reason for an earlier failed write (errno has moved on since): one more byte
+    // written straight to the descriptor fails again for the same reason (a full device, a closed
+    // pipe or descriptor), and the end of a line is all it can add where the failure has passed.
+    ssize_t written = write(STDOUT_FILENO, "\n", 1);
+    std::string why = written < 0 ? std::strerror(errno) : "a write failed (the reason has passed)";
+    std::fprintf(stderr, "oasis: cannot write stdout: %s\n", why.c_str());
     return code == 0 ? 1 : code;
 }
 
