@@ -4,7 +4,7 @@
 # frame of each pipeline at 640x360 (`oasis compare --json`, wall time around glFinish), and the
 # PSNR of its default frame against llvmpipe's at 320x180 (`oasis compare --driver llvmpipe
 # --driver SET-UP --json`, the set-up table of src/cli/driver_setups.cpp), the OpenGL ES tiers
-# (--api gles, ES 3.2, and --force gles30) included.
+# (--api gles: ES 3.2, ES 3.1 by Mesa's version override, and --force gles30) included.
 # usage: docs/compat.sh [build-dir] [frames]   (after a build; run on an idle machine; prints markdown)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,6 +28,7 @@ setups=(
   "softpipe without SSBO/compute/stencil texturing (bare 3.3);env GALLIUM_DRIVER=softpipe $nossbo%-GL_ARB_stencil_texturing;=^cli.softpipe_bare_gl33_tier\$;;1;softpipe-bare"
   "llvmpipe, --force gl33,no-ssbo,no-compute,no-stencil-texturing;env;=^cli.(caps_forced_gl33_tier|force_gl33_draws_the_unforced_image)\$;--force gl33,no-ssbo,no-compute,no-stencil-texturing;$frames;bare-gl33"
   "llvmpipe, OpenGL ES 3.2 (--api gles);env;^gpu-gles\$;--api gles;$frames;gles"
+  "llvmpipe, OpenGL ES 3.1 (MESA_GLES_VERSION_OVERRIDE=3.1, --api gles);env MESA_GLES_VERSION_OVERRIDE=3.1;^gpu-gles31\$;--api gles;$frames;gles31"
   "llvmpipe, OpenGL ES 3.0 tier (--api gles --force gles30);env;=^cli.(caps_gles30_tier|gles_frames_equal_desktop|gles_probe_equals_desktop)\$;--api gles --force gles30;$frames;gles30"
 )
 

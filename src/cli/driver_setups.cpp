@@ -24,8 +24,12 @@ const std::vector<DriverSetup>& driverSetups() {
             {"bare-gl33", "llvmpipe, --force gl33,no-ssbo,no-compute,no-stencil-texturing",
              {}, {"--force", "gl33,no-ssbo,no-compute,no-stencil-texturing"}, "llvmpipe",
              "Mesa's llvmpipe (libgl1-mesa-dri)"},
-            // The OpenGL ES tiers (--api gles): llvmpipe's ES 3.2, and the same limited to ES 3.0.
+            // The OpenGL ES tiers (--api gles): llvmpipe's ES 3.2, the same made ES 3.1 by Mesa (GLSL
+            // ES 3.10: `precise` only by EXT_/OES_gpu_shader5, both listed), and limited to ES 3.0.
             {"gles", "llvmpipe, OpenGL ES 3.2 (--api gles)", {}, {"--api", "gles"}, "llvmpipe",
+             "Mesa's llvmpipe with OpenGL ES (libgles2 / libegl-mesa0)"},
+            {"gles31", "llvmpipe, OpenGL ES 3.1 (MESA_GLES_VERSION_OVERRIDE=3.1, --api gles)",
+             {{"MESA_GLES_VERSION_OVERRIDE", "3.1"}}, {"--api", "gles"}, "llvmpipe",
              "Mesa's llvmpipe with OpenGL ES (libgles2 / libegl-mesa0)"},
             {"gles30", "llvmpipe, OpenGL ES 3.2 treated as ES 3.0 (--api gles --force gles30)", {},
              {"--api", "gles", "--force", "gles30"}, "llvmpipe", "Mesa's llvmpipe with OpenGL ES (libgles2 / libegl-mesa0)"},
@@ -55,7 +59,8 @@ std::string driverSetupNames() {
 const std::vector<std::string>& driverSelectingVariables() {
     static const std::vector<std::string> variables = {"GALLIUM_DRIVER", "LIBGL_ALWAYS_SOFTWARE",
                                                        "MESA_EXTENSION_OVERRIDE", "MESA_GL_VERSION_OVERRIDE",
-                                                       "MESA_GLSL_VERSION_OVERRIDE", "MESA_LOADER_DRIVER_OVERRIDE"};
+                                                       "MESA_GLES_VERSION_OVERRIDE", "MESA_GLSL_VERSION_OVERRIDE",
+                                                       "MESA_LOADER_DRIVER_OVERRIDE"};
     return variables;
 }
 

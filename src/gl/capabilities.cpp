@@ -55,6 +55,7 @@ const FeatureSource kDebug{4, 3, "GL_KHR_debug", 3, 2, "GL_KHR_debug"};
 const FeatureSource kClipControl{4, 5, "GL_ARB_clip_control", 0, 0, "GL_EXT_clip_control"};
 const FeatureSource k420Pack{4, 2, "GL_ARB_shading_language_420pack", 3, 1, nullptr};
 const FeatureSource kGpuShader5{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_EXT_gpu_shader5"};
+const FeatureSource kGpuShader5Oes{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_OES_gpu_shader5"};  // ES 3.1's other spelling
 const FeatureSource kFloatTargets{3, 0, nullptr, 3, 2, "GL_EXT_color_buffer_float"};
 const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance"};
 const FeatureSource kDepthClamp{3, 2, "GL_ARB_depth_clamp", 0, 0, "GL_EXT_depth_clamp"};
@@ -191,15 +192,21 @@ bool Capabilities::computeAvailable(std::string* reason) const {
     if (from.empty()) return answer(false, reason, missing(*this, kCompute));
     std::string ssboReason;
     if (!ssboAvailable(&ssboReason)) return answer(false, reason, "compute needs SSBOs: " + ssboReason);
-    // Below GLSL 4.30 the interpreter's layout(binding) and `precise` need these as well.
+    // Below GLSL 4.30 the interpreter's layout(binding) and `precise` need these as well (the
+    // shader library enables the one found: render/shader_library.cpp, computeExtensionLines).
+    std::string precise = source(*this, kGpuShader5);
+    if (precise.empty()) precise = source(*this, kGpuShader5Oes);
     const std::pair<std::string, std::string> needs[] = {
         {source(*this, k420Pack), es ? "ES 3.1 layout(binding)" : "GL_ARB_shading_language_420pack"},
-        {source(*this, kGpuShader5), es ? "ES 3.2 / GL_EXT_gpu_shader5 (precise)" : "GL_ARB_gpu_shader5"}};
+        {precise, es ? "ES 3.2 / GL_EXT_gpu_shader5 / GL_OES_gpu_shader5 (precise)" : "GL_ARB_gpu_shader5"}};
     for (const auto& [found, name] : needs)
         if (found.empty()) return answer(false, reason, "compute shaders present but no " + name + " for its GLSL");
     std::string shortfall = storageShortfall(limits, kPlantInterpreterStorage);
     if (!shortfall.empty()) return answer(false, reason, "compute shaders present (" + from + ") but " + shortfall);
-    return answer(true, reason, "compute shaders and SSBOs present (" + from + ")");
+    // `precise` by an extension (ES 3.1, desktop below 4.0) is said: the tiers differ by it.
+    bool preciseCore = precise.rfind("GL ", 0) == 0 || precise.rfind("ES ", 0) == 0;
+    return answer(true, reason, "compute shaders and SSBOs present (" + from + ")" +
+                                    (preciseCore ? "" : ", precise by " + precise));
 }
 
 bool Capabilities::stencilTexturingAvailable(std::string* reason) const {
@@ -274,8 +281,8 @@ std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() con
         "GL_ARB_explicit_attrib_location", "GL_ARB_explicit_uniform_location", "GL_ARB_texture_storage",
         "GL_ARB_timer_query", "GL_ARB_clip_control", "GL_ARB_texture_barrier"};
     static const char* kEsNames[] = {"GL_EXT_color_buffer_float", "GL_EXT_clip_cull_distance", "GL_EXT_clip_control",
-                                     "GL_EXT_depth_clamp", "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_EXT_disjoint_timer_query",
-                                     "GL_NV_read_depth_stencil"};
+                                     "GL_EXT_depth_clamp", "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_OES_gpu_shader5",
+                                     "GL_EXT_disjoint_timer_query", "GL_NV_read_depth_stencil"};
     std::vector<std::pair<std::string, bool>> list;
     if (es) {
         for (const char* name : kEsNames) list.emplace_back(name, hasExtension(name));

@@ -106,6 +106,15 @@ int glslVersionNumber(const std::string& versionLine) {
     return std::sscanf(versionLine.c_str(), "#version %d", &number) == 1 ? number : 450;
 }
 
+// The extension that gives GLSL ES 3.10 `precise` (common/turtle_transform.glsl), in the order
+// gl::Capabilities::computeAvailable accepts them; "" where the context lists neither.
+template <class Listed>
+std::string esPreciseExtension(Listed listed) {
+    for (const char* name : {"GL_EXT_gpu_shader5", "GL_OES_gpu_shader5"})
+        if (listed(name)) return name;
+    return {};
+}
+
 void insertAfterVersionLine(std::string& text, const std::string& lines) {
     size_t end = text.find('\n');
     text.insert(end == std::string::npos ? text.size() : end + 1, lines);
@@ -118,10 +127,12 @@ bool GlslDialect::es() const {
     return end != std::string::npos && end >= 2 && versionLine.compare(end - 1, 2, "es") == 0;
 }
 
-GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp) {
+GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp,
+                             const std::string& preciseExtension) {
     GlslDialect dialect;
     int version = major > 3 || (major == 3 && minor >= 2) ? 320 : (major == 3 && minor == 1 ? 310 : 300);
     dialect.versionLine = "#version " + std::to_string(version) + " es";
+    if (version == 310) dialect.preciseExtension = preciseExtension;  // 320 has `precise`, 300 no compute
     if (clipDistances) dialect.extensionLines.push_back("#extension GL_EXT_clip_cull_distance : enable");
     else dialect.defines.push_back("OASIS_NO_CLIP_DISTANCE 1");
     if (!depthClamp) dialect.defines.push_back("OASIS_NO_DEPTH_CLAMP 1");  // passes/shadow_pass.cpp
@@ -134,14 +145,17 @@ GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool dept
 }
 
 GlslDialect glslDialectForEs(const gl::Capabilities& caps) {
-    return glslDialectForEs(caps.major, caps.minor, caps.driverHasClipDistances(), caps.driverHasDepthClamp());
+    return glslDialectForEs(caps.major, caps.minor, caps.driverHasClipDistances(), caps.driverHasDepthClamp(),
+                            esPreciseExtension([&](const char* name) { return caps.hasExtension(name); }));
 }
 
 std::string computeExtensionLines(const GlslDialect& dialect) {
     // What gl::Capabilities::computeAvailable checks for, enabled for a compute stage below GLSL 4.30:
     // compute and storage blocks, layout(binding) (420pack) and `precise` (gpu_shader5). GLSL ES
-    // 3.20 has them all (3.10 all but `precise`, which compute needs ES 3.2 for).
-    if (dialect.es()) return {};
+    // 3.20 has them all, 3.10 all but `precise`: EXT_ or OES_gpu_shader5 gives it there (without
+    // either the capability takes the CPU path, so no compute stage is built).
+    if (dialect.es())
+        return dialect.preciseExtension.empty() ? "" : "#extension " + dialect.preciseExtension + " : require\n";
     int version = glslVersionNumber(dialect.versionLine);
     std::string lines;
     if (version < 430)
@@ -207,7 +221,8 @@ GlslDialect glslDialectForCurrentContext() {
     if (!epoxy_is_desktop_gl())
         return glslDialectForEs(epoxy_gl_version() / 10, epoxy_gl_version() % 10,
                                 epoxy_has_gl_extension("GL_EXT_clip_cull_distance"),
-                                epoxy_has_gl_extension("GL_EXT_depth_clamp"));
+                                epoxy_has_gl_extension("GL_EXT_depth_clamp"),
+                                esPreciseExtension([](const char* name) { return epoxy_has_gl_extension(name); }));
     GlslDialect dialect;
     int version = epoxy_gl_version();  // 42 for GL 4.2; GLSL matches GL from 3.3 on
     if (version >= 33 && version < 45) dialect.versionLine = "#version " + std::to_string(version * 10) + " core";

@@ -35,6 +35,7 @@ struct GlslDialect {
     std::vector<std::string> extensionLines;
     std::vector<std::string> defines;         // the dialect's own, before the variant's
     std::vector<std::string> precisionLines;  // ES: "precision highp float;" and the samplers'
+    std::string preciseExtension;             // ES 3.1: the gpu_shader5 extension compute stages enable
     bool es() const;                          // the version line ends in "es"
 };
 
@@ -45,11 +46,13 @@ GlslDialect glslDialectForCurrentContext();
 // The OpenGL ES dialect of an ES context: "#version 320 es" on ES 3.2 (310 on 3.1, 300 on 3.0 and
 // under --force gles30), highp defaults for float, int and the samplers oasis uses, and
 // GL_EXT_clip_cull_distance where the context has it (else OASIS_NO_CLIP_DISTANCE), and
-// OASIS_NO_DEPTH_CLAMP where it lacks GL_EXT_depth_clamp (the shadow casters' fallback).
+// OASIS_NO_DEPTH_CLAMP where it lacks GL_EXT_depth_clamp (the shadow casters' fallback). On ES 3.1
+// compute stages enable GL_EXT_gpu_shader5 (else GL_OES_gpu_shader5) where listed, for `precise`.
 GlslDialect glslDialectForEs(const gl::Capabilities& caps);
-// The same from an ES version and whether gl_ClipDistance and GL_DEPTH_CLAMP exist (the shader
-// tests' ES variants).
-GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp);
+// The same from an ES version, whether gl_ClipDistance and GL_DEPTH_CLAMP exist and which
+// gpu_shader5 extension ES 3.1 has ("" none; the shader tests' ES variants).
+GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp,
+                             const std::string& preciseExtension = {});
 
 // The #extension lines a compute stage needs in this dialect (none at GLSL 4.30 and later).
 std::string computeExtensionLines(const GlslDialect& dialect);

@@ -15,6 +15,12 @@ case $setup in
     json=$(MESA_SHADER_CACHE_DISABLE=true \
            MESA_EXTENSION_OVERRIDE="-GL_ARB_shader_storage_buffer_object -GL_ARB_compute_shader" \
            "$oasis" caps --json $args) ;;
+  # ES 3.1 by Mesa's override (--api gles in the options); without gpu_shader5 too (Mesa lists
+  # EXT_ and OES_gpu_shader5 behind one flag: removing one removes both; shader cache off).
+  gles31) driver=llvmpipe; json=$(MESA_GLES_VERSION_OVERRIDE=3.1 "$oasis" caps --json $args) ;;
+  gles31-no-gpu-shader5) driver=llvmpipe
+    json=$(MESA_GLES_VERSION_OVERRIDE=3.1 MESA_SHADER_CACHE_DISABLE=true \
+           MESA_EXTENSION_OVERRIDE="-GL_EXT_gpu_shader5 -GL_OES_gpu_shader5" "$oasis" caps --json $args) ;;
   *) echo "unknown set-up $setup"; exit 1 ;;
 esac
 if [ -z "$json" ]; then

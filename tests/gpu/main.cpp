@@ -27,7 +27,7 @@ void GLAPIENTRY captureDebugMessage(GLenum source, GLenum type, GLuint, GLenum s
 }
 
 // The driver set-up ctest asked for ($OASIS_GPU_SETUP, set with the environment that selects it):
-// "" (whatever the default driver is), llvmpipe, zink, softpipe or no-ssbo-compute. Returns why
+// "" (whatever the default driver is), llvmpipe, zink, softpipe, no-ssbo-compute, gles or gles31. Returns why
 // the context is not that set-up ("" when it is), so a missing driver skips instead of silently
 // testing another one.
 std::string setupMismatch(const std::string& setup, const ContextInfo& info) {
@@ -38,6 +38,11 @@ std::string setupMismatch(const std::string& setup, const ContextInfo& info) {
         return renderedBy(setup.c_str()) ? "" : setup + " is not available here: " + context;
     if (setup == "gles") {
         if (epoxy_is_desktop_gl()) return "gles needs an OpenGL ES context (OASIS_API=gles): " + context;
+        return {};
+    }
+    if (setup == "gles31") {  // Mesa's MESA_GLES_VERSION_OVERRIDE=3.1 on an ES context
+        if (epoxy_is_desktop_gl() || epoxy_gl_version() != 31)
+            return "gles31 needs an OpenGL ES 3.1 context (OASIS_API=gles, MESA_GLES_VERSION_OVERRIDE=3.1): " + context;
         return {};
     }
     if (setup == "no-ssbo-compute") {

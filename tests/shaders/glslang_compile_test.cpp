@@ -72,8 +72,9 @@ std::vector<std::string> waterBoundedVariantNames() {
 
 INSTANTIATE_TEST_SUITE_P(Shaders, WaterBoundedVariant, ::testing::ValuesIn(waterBoundedVariantNames()), testName);
 
-// The OpenGL ES dialects (--api gles): every variant as GLSL ES 3.20, and every variant the ES 3.0
-// tier can request (no compute, no storage blocks) as GLSL ES 3.00, from the same files with the
+// The OpenGL ES dialects (--api gles): every variant as GLSL ES 3.20 and as 3.10 (its compute
+// stages with GL_EXT_gpu_shader5 for `precise`, as on llvmpipe's ES 3.1), and every variant the ES
+// 3.0 tier can request (no compute, no storage blocks) as GLSL ES 3.00, from the same files with the
 // dialect's version line, precisions and defines. glslang 12 does not know
 // GL_EXT_clip_cull_distance, so these use the dialect without it (the water-plane clip by
 // discard) and without GL_EXT_depth_clamp (the shadow casters flattened); the extension's spelling is compiled by the real driver in the gpu-gles suite.
@@ -87,16 +88,17 @@ class EsVariant : public ::testing::TestWithParam<EsCase> {};
 TEST_P(EsVariant, CompilesAndLinksWithGlslang) {
     std::string directory = findShaderDirectory();
     ASSERT_FALSE(directory.empty()) << "shader directory not found";
-    ShaderLibrary library(directory, glslDialectForEs(3, GetParam().minor, false, false));
+    int minor = GetParam().minor;
+    ShaderLibrary library(directory, glslDialectForEs(3, minor, false, false, minor == 1 ? "GL_EXT_gpu_shader5" : ""));
     library.setContextDefines({"LIGHTS_UBO_CAPACITY 256", "LIGHTS_UBO_BLOCKS 8"});
     const ProgramVariant* variant = findProgramVariant(GetParam().variant);
     ASSERT_NE(variant, nullptr);
     PreprocessedShader text;
     std::string error;
     ASSERT_TRUE(library.preprocess(variant->stageFiles()[0], variant->defines, text, error)) << error;
-    ASSERT_EQ(text.text.rfind(GetParam().minor == 2 ? "#version 320 es\n" : "#version 300 es\n", 0), 0u);
+    ASSERT_EQ(text.text.rfind("#version 3" + std::to_string(minor) + "0 es\n", 0), 0u);
     std::string log;
-    EXPECT_TRUE(compileVariant(library, *variant, log)) << variant->name << " as GLSL ES 3." << GetParam().minor << ":\n" << log;
+    EXPECT_TRUE(compileVariant(library, *variant, log)) << variant->name << " as GLSL ES 3." << minor << ":\n" << log;
 }
 
 bool usesStorageBlocks(const ProgramVariant& variant) {
@@ -110,13 +112,14 @@ std::vector<EsCase> esCases() {
     std::vector<EsCase> cases;
     for (const ProgramVariant& variant : programVariants()) {
         cases.push_back({variant.name, 2});
+        cases.push_back({variant.name, 1});
         if (!usesStorageBlocks(variant)) cases.push_back({variant.name, 0});
     }
     return cases;
 }
 
 std::string esTestName(const ::testing::TestParamInfo<EsCase>& info) {
-    std::string name = info.param.variant + (info.param.minor == 2 ? "_es320" : "_es300");
+    std::string name = info.param.variant + "_es3" + std::to_string(info.param.minor) + "0";
     for (char& c : name)
         if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
     return name;
@@ -151,6 +154,21 @@ TEST(EsDialect, HeaderHasVersionDefinesAndPrecisions) {
     EXPECT_NE(text.text.find("precision highp usampler2D;"), std::string::npos);
     EXPECT_NE(text.text.find("#define OASIS_NO_CLIP_DISTANCE 1"), std::string::npos);  // the clip by discard
     EXPECT_EQ(text.text.find("GL_ARB_"), std::string::npos);
+    // ES 3.1: compute stages enable the gpu_shader5 extension the context has, for `precise`.
+    EXPECT_EQ(computeExtensionLines(glslDialectForEs(3, 1, true, true, "GL_OES_gpu_shader5")),
+              "#extension GL_OES_gpu_shader5 : require\n");
+    EXPECT_EQ(computeExtensionLines(glslDialectForEs(3, 2, true, true, "GL_EXT_gpu_shader5")), "") << "core in 3.20";
+}
+
+// Without EXT_/OES_gpu_shader5 GLSL ES 3.10 has no `precise`: the interpreter does not compile
+// there, which is why gl::Capabilities::computeAvailable sends such a context to the CPU path.
+TEST(EsDialect, Es31InterpreterNeedsGpuShader5) {
+    ShaderLibrary library(findShaderDirectory(), glslDialectForEs(3, 1, false, false));
+    const ProgramVariant* variant = findProgramVariant("lsystem.local");
+    ASSERT_NE(variant, nullptr);
+    std::string log;
+    EXPECT_FALSE(compileVariant(library, *variant, log));
+    EXPECT_NE(log.find("precise"), std::string::npos) << log;
 }
 
 TEST(ShaderVariants, TableCoversEveryShaderFile) {

@@ -35,6 +35,11 @@ bool compileStage(const ShaderLibrary& library, EShLanguage stage, const std::st
         log = error;
         return false;
     }
+    // A compute stage's #extension lines, after the version line as ShaderLibrary::compileStage puts them.
+    if (stage == EShLangCompute) {
+        size_t end = source.text.find('\n');
+        source.text.insert(end == std::string::npos ? source.text.size() : end + 1, computeExtensionLines(library.dialect()));
+    }
     shader = std::make_unique<glslang::TShader>(stage);
     const char* text = source.text.c_str();
     shader->setStrings(&text, 1);

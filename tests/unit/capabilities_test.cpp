@@ -145,6 +145,23 @@ TEST(Capabilities, EsStorageLimitsBelowWhatOasisNeedsTakeTheFallbacks) {
     EXPECT_NE(reason.find("GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS is 0"), std::string::npos) << reason;
 }
 
+// ES 3.1 has compute shaders but `precise` (the interpreter's exact rounding) only with EXT_ or
+// OES_gpu_shader5: with either the GPU path, without both the CPU one, saying so before any compile.
+TEST(Capabilities, Es31PlantInterpreterNeedsGpuShader5) {
+    std::string reason;
+    EXPECT_TRUE(esContextOf(1, {"GL_EXT_gpu_shader5", "GL_OES_gpu_shader5"}).computeAvailable(&reason)) << reason;
+    EXPECT_EQ(reason, "compute shaders and SSBOs present (ES 3.1), precise by GL_EXT_gpu_shader5");
+    EXPECT_TRUE(esContextOf(1, {"GL_OES_gpu_shader5"}).computeAvailable(&reason)) << reason;
+    EXPECT_EQ(reason, "compute shaders and SSBOs present (ES 3.1), precise by GL_OES_gpu_shader5");
+    gl::Capabilities bare = esContextOf(1);
+    EXPECT_TRUE(bare.driverHasCompute() && bare.ssboAvailable());
+    EXPECT_FALSE(bare.computeAvailable(&reason));
+    EXPECT_EQ(reason, "compute shaders present but no ES 3.2 / GL_EXT_gpu_shader5 / GL_OES_gpu_shader5 (precise) "
+                      "for its GLSL");
+    EXPECT_TRUE(esContextOf(2).computeAvailable(&reason)) << "core in ES 3.2: " << reason;
+    EXPECT_EQ(reason, "compute shaders and SSBOs present (ES 3.1)");
+}
+
 TEST(Capabilities, ApiOptionAndTheEsTierForcing) {
     ParseResult r = parseCommandLine({"render", "--api", "gles", "--force", "gles30"});
     ASSERT_TRUE(r.ok) << r.error;

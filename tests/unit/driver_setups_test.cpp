@@ -2,6 +2,7 @@
 // the set-up table, what a child render gets passed on, and the combinations refused.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -31,10 +32,17 @@ TEST(DriverSetups, TableSelectsDriversAndTiers) {
     ASSERT_NE(findDriverSetup("gles"), nullptr);
     EXPECT_TRUE(findDriverSetup("gles")->environment.empty());
     EXPECT_EQ(findDriverSetup("gles")->arguments, (std::vector<std::string>{"--api", "gles"}));
+    // ES 3.1 is Mesa's version override (its variable is cleared for every other set-up's child).
+    ASSERT_NE(findDriverSetup("gles31"), nullptr);
+    EXPECT_EQ(findDriverSetup("gles31")->environment,
+              (std::vector<std::pair<std::string, std::string>>{{"MESA_GLES_VERSION_OVERRIDE", "3.1"}}));
+    EXPECT_EQ(findDriverSetup("gles31")->arguments, (std::vector<std::string>{"--api", "gles"}));
+    const std::vector<std::string>& cleared = driverSelectingVariables();
+    EXPECT_NE(std::find(cleared.begin(), cleared.end(), "MESA_GLES_VERSION_OVERRIDE"), cleared.end());
     ASSERT_NE(findDriverSetup("gles30"), nullptr);
     EXPECT_EQ(findDriverSetup("gles30")->arguments, (std::vector<std::string>{"--api", "gles", "--force", "gles30"}));
     // The child's arguments parse as a render command line.
-    for (const char* name : {"gles", "gles30"}) {
+    for (const char* name : {"gles", "gles31", "gles30"}) {
         std::vector<std::string> args = {"render"};
         for (const std::string& argument : findDriverSetup(name)->arguments) args.push_back(argument);
         EXPECT_TRUE(parseCommandLine(args).ok) << name << ": " << parseCommandLine(args).error;
