@@ -11,6 +11,7 @@
 
 #include "cli/options.h"
 #include "commands/caps_command.h"
+#include "commands/check.h"
 #include "commands/bench.h"
 #include "commands/driver_compare.h"
 #include "commands/headless_commands.h"
@@ -29,6 +30,7 @@ int runCommand(const oasis::Options& options) {
         case Command::Caps: return runCapsCommand(options);
         case Command::Bench: return runBenchCommand(options);
         case Command::Probe: return runProbeCommand(options);
+        case Command::Check: return runCheckCommand(options);
         case Command::Window: return runWindowApp(options);
         case Command::Default:
             return WindowContext::displayAvailable() ? runWindowApp(options) : runMainJob(options);

@@ -122,6 +122,7 @@ const char* commandName(Command command) {
         case Command::Caps: return "caps";
         case Command::Bench: return "bench";
         case Command::Probe: return "probe";
+        case Command::Check: return "check";
     }
     return "";
 }
@@ -255,6 +256,26 @@ std::string usage(Command command) {
                    "  --water-scene S           at water pixels the G-buffer and depth hold direct (the lakebed,\n"
                    "                            default) or mirrored (what the water reflects)\n"
                    "  --json                    one JSON object instead of the text\n" + scene;
+        case Command::Check:
+            return "usage: oasis check [--quick] [--api gl|gles] [--out-dir DIR] [--references DIR]\n"
+                   "       oasis check --diff A.json B.json\n"
+                   "       oasis check --write-references DIR\n"
+                   "  a hardware-compatibility verdict for this driver: renders a covering set of cases (every\n"
+                   "  pair of the values of pipeline, G-buffer layout, depth convention, shadows, reflections,\n"
+                   "  light path and method, plant path, the stencil view's paths, the tiers gl33, gles, gles30\n"
+                   "  and six poses meets at least once), judges each against the repository's reference frame\n"
+                   "  (rendered on llvmpipe) and against this driver's own main path by the rules of docs/check.md,\n"
+                   "  names the first pass where a failing path parts from the main path, and writes\n"
+                   "  DIR/report.json and DIR/report.html (default oasis-check). Exit 0: every case passed or\n"
+                   "  was skipped (a path the driver or a forced tier lacks); 1: a case failed; 2: bad usage\n"
+                   "  --quick                   a subset meeting every value once (7 cases)\n"
+                   "  --api gles                run on an OpenGL ES context (its native tier)\n"
+                   "  --references DIR          the reference frames (default: $OASIS_CHECK_REFERENCES, else\n"
+                   "                            check-references beside the shaders' directory)\n"
+                   "  --diff A.json B.json      regressions, fixes, changed numbers and new skips from report A\n"
+                   "                            to report B; exit 1 on a regression\n"
+                   "  --write-references DIR    render every case here and write DIR/NAME.png (on llvmpipe: the\n"
+                   "                            repository's reference frames, docs/update.sh check-references)\n";
         case Command::Window:
             return "usage: oasis window [scene options] [--water-scene direct|mirrored]\n"
                    "  opens the interactive window (what `oasis` does when a display exists)\n"
@@ -272,6 +293,7 @@ std::string usage(Command command) {
            "  caps       what this driver offers and which paths oasis takes on it (--json)\n"
            "  bench      time against error over pipelines, layouts, quality knobs and sizes\n"
            "  probe      every target's value at one pixel, stored and decoded (--at X,Y)\n"
+           "  check      a hardware-compatibility verdict: every path against references, a report to send\n"
            "  oasis SUBCOMMAND --help for its options\n"
            "  --out-dir DIR             where the main job writes (default oasis-out)\n" + scene;
 }
@@ -293,7 +315,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         else if (name == "caps") options.command = Command::Caps;
         else if (name == "bench") options.command = Command::Bench;
         else if (name == "probe") options.command = Command::Probe;
-        else return fail("unknown subcommand '" + name + "' (expected render, compare, bench, probe, caps or window)");
+        else if (name == "check") options.command = Command::Check;
+        else return fail("unknown subcommand '" + name + "' (expected render, compare, bench, probe, caps, check or window)");
         ++i;
     }
     for (; i < arguments.size(); ++i) {
@@ -308,6 +331,35 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             "--driver", "--reference", "--driver-timeout"};
         bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
+        if (options.command == Command::Check) {
+            // The check sets every scene option itself (its cases); it takes only these.
+            auto value = [&](int count) { return i + size_t(count) < arguments.size(); };
+            if (flag == "--quick") { options.quick = true; continue; }
+            if (flag == "--api" && value(1)) {
+                if (!gl::parseApi(arguments[++i], options.scene.api))
+                    return fail("--api expects gl or gles, got '" + arguments[i] + "'");
+                continue;
+            }
+            if ((flag == "--out-dir" || flag == "--references" || flag == "--write-references") && value(1)) {
+                const std::string& path = arguments[++i];
+                if (path.empty()) return fail(flag + " expects a directory name, got ''");
+                (flag == "--out-dir" ? options.outDir : flag == "--references" ? options.checkReferences
+                                                                                : options.writeReferences) = path;
+                if (flag == "--out-dir") options.outDirGiven = true;
+                continue;
+            }
+            if (flag == "--diff" && value(2)) {
+                options.diffReports = {arguments[i + 1], arguments[i + 2]};
+                i += 2;
+                continue;
+            }
+            if (flag == "--diff" || flag == "--api" || flag == "--out-dir" || flag == "--references" ||
+                flag == "--write-references")
+                return fail("option " + flag + (flag == "--diff" ? " needs two reports: --diff A.json B.json"
+                                                                  : " needs a value (see oasis check --help)"));
+            return fail("option " + flag + " does not belong to `oasis check` (it sets the scene itself; see oasis "
+                        "check --help)");
+        }
         if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
             options.json = true;
             continue;

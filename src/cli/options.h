@@ -36,7 +36,7 @@ struct SceneOptions {
     gl::Api api = gl::Api::Gl;  // --api: desktop OpenGL core or OpenGL ES 3.x (headless commands)
 };
 
-enum class Command { Default, Window, Render, Compare, Caps, Bench, Probe };
+enum class Command { Default, Window, Render, Compare, Caps, Bench, Probe, Check };
 
 struct Options {
     Command command = Command::Default;
@@ -71,6 +71,10 @@ struct Options {
     double driverTimeoutSeconds = 300.0;
     bool driverTimeoutGiven = false;
     bool pipelineGiven = false;
+    // check (commands/check.h): the reference frames' directory (empty: found beside the shaders),
+    // --write-references DIR, and --diff A.json B.json.
+    std::string checkReferences, writeReferences;
+    std::vector<std::string> diffReports;
     std::vector<std::string> givenFlags;  // the options on the command line, in order (cli/option_rules.h)
     bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }
 };

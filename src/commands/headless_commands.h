@@ -1,10 +1,12 @@
 // The headless commands: `render`, `compare`, `probe` and the main job (what `oasis` runs with no display).
 // Each returns the process exit code: 0 done, 1 a runtime failure (message printed).
 #pragma once
+#include <cstdio>
 #include <string>
 
 #include "cli/options.h"
 #include "render/image.h"
+#include "render/renderer.h"
 
 namespace oasis {
 
@@ -13,6 +15,10 @@ int runCompareCommand(const Options& options);
 int runMainJob(const Options& options);
 // Prints every target's value at --at X,Y of the frame (render/pixel_probe.h).
 int runProbeCommand(const Options& options);
+
+// The image `render` writes for its options: the view (or its values through the controls), the
+// overlay, and under a single view its legend (with --legend on); `report` gets the value counts.
+Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* report);
 
 // The difference image compare writes: the heat map of a against b (render/image.h, full scale 16
 // levels) with a legend strip naming them and giving PSNR, max abs and RMSE. Sizes must agree.

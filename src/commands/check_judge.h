@@ -1,0 +1,38 @@
+// How `oasis check` judges a frame: one table of image rules (each with the measurement that set
+// it), the comparison they apply (PSNR, max abs, pixels above a level, as dEQP's fuzzy compare and
+// Filament's renderdiff do), and the error mask a failure keeps.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "render/image.h"
+
+namespace oasis {
+
+struct ImageRule {
+    std::string name;      // "identical", "cross-driver", ...
+    int level = 0;         // a pixel "differs" when its largest channel difference exceeds this
+    double minPsnrDb = 0;  // over the frame's RGB (100 = identical)
+    int maxAbs = 0;        // the largest channel difference allowed anywhere
+    double maxFractionOver = 0;  // of the frame's pixels, at most this fraction may differ
+    std::string measuredBy;      // the measurement between correct drivers or paths that set it
+};
+
+// The table (docs/check.md prints it): identical, and the rules for what is not promised identical.
+const std::vector<ImageRule>& imageRules();
+const ImageRule& imageRule(const std::string& name);
+
+struct Judgement {
+    bool pass = false;
+    double psnrDb = 0;
+    int maxAbs = 0;
+    long pixelsOver = 0;
+    std::string summary;  // "PSNR 41.2 dB, max abs 38, 12 pixels over 16 (rule cross-driver: ...)"
+};
+// Throws std::invalid_argument when the sizes differ.
+Judgement judge(const Image& result, const Image& reference, const ImageRule& rule);
+
+// Red where a pixel differs by more than the rule's level, dark grey copies of the reference elsewhere.
+Image errorMask(const Image& result, const Image& reference, const ImageRule& rule);
+
+}  // namespace oasis

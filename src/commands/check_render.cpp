@@ -1,0 +1,157 @@
+// Rendering a check case in this process (commands/check_render.h).
+#include "commands/check_render.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <cstdio>
+#include <stdexcept>
+
+#include "cli/options.h"
+#include "commands/headless_commands.h"
+#include "commands/session.h"
+#include "context/gl_context.h"
+
+namespace oasis {
+namespace {
+
+// The targets a pass can leave, through the views that read them (the same on every tier).
+const std::pair<const char*, const char*> kTargetViews[] = {
+    {"albedo", "Albedo"}, {"normal", "Normal"}, {"position", "Position"}, {"info", "Info"},
+    {"depth", "DepthStencil (depth)"}, {"stencil", "DepthStencil (stencil)"}, {"radiance", "Radiance"},
+    {"reflection-raw", "Reflection"}, {"final", "Final"}};
+
+Options caseOptions(const std::vector<std::string>& arguments) {
+    std::vector<std::string> command = {"render"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    for (const char* extra : {"--legend", "off"}) command.push_back(extra);
+    ParseResult parsed = parseCommandLine(command);
+    if (!parsed.ok) throw std::runtime_error("a check case's arguments are refused: " + parsed.error);
+    return parsed.options;
+}
+
+// The session's own report lines (its fallbacks) would bury the check's progress: stderr goes to a
+// scratch file while a case renders, and comes back afterwards.
+class QuietStderr {
+public:
+    QuietStderr() {
+        std::fflush(stderr);
+        saved_ = dup(STDERR_FILENO);
+        scratch_ = std::tmpfile();
+        if (saved_ >= 0 && scratch_) dup2(fileno(scratch_), STDERR_FILENO);
+    }
+    ~QuietStderr() {
+        std::fflush(stderr);
+        if (saved_ >= 0) {
+            dup2(saved_, STDERR_FILENO);
+            close(saved_);
+        }
+        if (scratch_) std::fclose(scratch_);
+    }
+
+private:
+    int saved_ = -1;
+    std::FILE* scratch_ = nullptr;
+};
+
+std::string limitOf(const Options& options) { return options.scene.force.any() ? "forced tier" : "driver"; }
+
+// Why the session did not take a path the options ask for, or "".
+std::string pathNotTaken(const Options& options, const RenderSession& session, bool gpuPlants) {
+    const Renderer& renderer = *session.renderer;
+    const SceneOptions& scene = options.scene;
+    if (scene.lightsPath && renderer.lightsPath() != *scene.lightsPath)
+        return "lights path " + std::string(lightsPathName(*scene.lightsPath)) + " not taken: " + renderer.lightsPathReason();
+    if (scene.lightMethod && options.pipeline == PipelineKind::Deferred && renderer.lightMethod() != *scene.lightMethod)
+        return "light method " + std::string(lightMethodName(*scene.lightMethod)) + " not taken: " +
+               renderer.lightMethodReason();
+    if (gpuPlants && session.plantPath != PlantInterpretation::Gpu) return "plants on the GPU not taken: " + session.plantPathReason;
+    if (options.stencilView && renderer.stencilViewPath() != *options.stencilView)
+        return std::string("stencil view ") + stencilViewPathName(*options.stencilView) + " not taken: " +
+               session.stencilPathReason;
+    if (scene.depth == "reversed-z" && renderer.depthFellBack())
+        return "reversed-z depth not taken: " + renderer.depthConventionReason();
+    return {};
+}
+
+}  // namespace
+
+CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants) {
+    Options options = caseOptions(arguments);
+    CaseFrame frame;
+    QuietStderr quiet;
+    std::unique_ptr<HeadlessContext> context;
+    try {
+        context = std::make_unique<HeadlessContext>(maxGlVersionFor(options.scene));
+    } catch (const std::exception& error) {
+        frame.skipReason = std::string("no context for it: ") + error.what();
+        frame.limitedBy = limitOf(options);
+        return frame;
+    }
+    RenderSession session(options);
+    if (std::string why = pathNotTaken(options, session, gpuPlants); !why.empty()) {
+        frame.skipReason = why;
+        frame.limitedBy = limitOf(options);
+        return frame;
+    }
+    Renderer& renderer = *session.renderer;
+    renderer.setPipeline(options.pipeline);
+    renderer.renderFrame(session.scene);
+    std::FILE* sink = std::fopen("/dev/null", "w");
+    frame.image = renderedViewImage(options, renderer, sink ? sink : stderr);
+    if (sink) std::fclose(sink);
+    frame.rendered = true;
+    return frame;
+}
+
+std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& arguments) {
+    Options options = caseOptions(arguments);
+    QuietStderr quiet;
+    HeadlessContext context(maxGlVersionFor(options.scene));
+    RenderSession session(options);
+    Renderer& renderer = *session.renderer;
+    renderer.setPipeline(options.pipeline);
+    std::vector<std::string> names;
+    Pipeline passList(options.pipeline);  // GL-free: the names in order
+    for (const auto& pass : passList.passes()) names.push_back(pass->name());
+    std::vector<PassSnapshot> snapshots;
+    for (size_t k = 0; k < names.size(); ++k) {
+        // The frame after pass k is the frame stopped before pass k + 1 (a pass that does not run
+        // this frame leaves the targets as they were).
+        renderer.renderFrame(session.scene, k + 1 < names.size() ? names[k + 1] : std::string());
+        PassSnapshot snapshot{names[k], {}};
+        for (auto [view, target] : kTargetViews) snapshot.targets.push_back({target, renderer.readViewValues(view)});
+        snapshots.push_back(std::move(snapshot));
+    }
+    return snapshots;
+}
+
+bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vector<PassSnapshot>& candidate, int level,
+                     Divergence& found) {
+    for (size_t k = 0; k < reference.size() && k < candidate.size(); ++k) {
+        if (reference[k].pass != candidate[k].pass) break;  // the lists part: nothing more to compare
+        for (size_t t = 0; t < reference[k].targets.size() && t < candidate[k].targets.size(); ++t) {
+            const std::vector<float>& a = reference[k].targets[t].second;
+            const std::vector<float>& b = candidate[k].targets[t].second;
+            if (a.size() != b.size()) continue;
+            long pixels = 0;
+            for (size_t p = 0; p + 3 < a.size(); p += 4) {
+                bool differs = false;
+                for (size_t c = 0; c < 4 && !differs; ++c) {
+                    float x = a[p + c], y = b[p + c];
+                    if (std::isnan(x) || std::isnan(y)) differs = std::isnan(x) != std::isnan(y);
+                    else differs = std::fabs(x - y) > float(level) / 255.0f * std::max(1.0f, std::fabs(x));
+                }
+                pixels += differs;
+            }
+            if (pixels == 0) continue;
+            found = {reference[k].pass, reference[k].targets[t].first, pixels};
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace oasis

@@ -1,0 +1,42 @@
+// `oasis check` renders each case in this process, each on a context of its own tier: the frame
+// (or the view the case asks for), which paths the session really took and why, and, for a failing
+// case, the frame pass by pass to find where two paths part.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "render/image.h"
+
+namespace oasis {
+
+struct CaseFrame {
+    bool rendered = false;
+    std::string skipReason;  // why it could not be rendered as asked (no ES context, a path fell back)
+    std::string limitedBy;   // "driver" or "forced tier" when skipped
+    Image image;
+};
+
+// Renders `oasis render ARGUMENTS` (the final view or the one asked for, no legend) and checks that
+// every path the arguments ask for was taken (and the plants on the GPU where `gpuPlants`, which no
+// argument forces): a fallback makes it a skip, saying whose limit it was. Throws
+// std::runtime_error for a failure that is not a limit (a shader that does not build).
+CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants);
+
+// The frame after each pass, for every target the views can read (albedo ... final): a name per
+// pass in order and, per pass, each target's values.
+struct PassSnapshot {
+    std::string pass;
+    std::vector<std::pair<std::string, std::vector<float>>> targets;  // target name, RGBA floats
+};
+std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& arguments);
+
+struct Divergence {
+    std::string pass, target;
+    long pixels = 0;
+};
+// The first pass after which a target of `candidate` differs from `reference` beyond the level
+// (levels of 1/255, relative above 1), or none.
+bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vector<PassSnapshot>& candidate,
+                     int level, Divergence& found);
+
+}  // namespace oasis
