@@ -1,0 +1,46 @@
+// A small JSON reader for oasis's own reports (report.json, read back by `oasis check --diff`):
+// a recursive-descent parser of RFC 8259 JSON into a tree of values. No JSON library is among the
+// Debian packages oasis depends on, and the reports are small, so clarity wins over speed.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace oasis {
+
+struct JsonValue {
+    enum class Kind { Null, Bool, Number, String, Array, Object };
+    Kind kind = Kind::Null;
+    bool boolean = false;
+    double number = 0.0;
+    std::string text;                                        // a String's bytes (UTF-8, escapes decoded)
+    std::vector<JsonValue> items;                            // an Array's elements
+    std::vector<std::pair<std::string, JsonValue>> members;  // an Object's members, in the file's order
+
+    bool isNull() const { return kind == Kind::Null; }
+    bool isNumber() const { return kind == Kind::Number; }
+    bool isString() const { return kind == Kind::String; }
+    bool isObject() const { return kind == Kind::Object; }
+    bool isArray() const { return kind == Kind::Array; }
+    // An Object's member named `key` (the first, should the file repeat it); nullptr if there is
+    // none or this is not an Object.
+    const JsonValue* find(const std::string& key) const;
+};
+
+// Deep enough for any report oasis writes (report.json nests four levels), shallow enough that a
+// hostile file of "[[[[..." cannot exhaust the stack.
+constexpr int kJsonMaxDepth = 64;
+// A report has hundreds of values; each costs about 100 bytes parsed, so a hostile file of
+// "[[],[],..." (3 bytes a value) could otherwise turn 64 MiB into several GiB.
+constexpr size_t kJsonMaxValues = 1000000;
+
+// Parses `text` whole (one value, surrounded by nothing but white space) into `value`. On bad input
+// returns false with `error` = "at byte N (line L): WHAT", N counted from 0: an unexpected
+// character or end, a bad escape or \u sequence (lone surrogates included), a control character in
+// a string, a malformed or out-of-range number, nesting deeper than `maxDepth`, more than
+// `maxValues` values (arrays, objects and their members each count one), trailing text.
+bool parseJson(const std::string& text, JsonValue& value, std::string& error, int maxDepth = kJsonMaxDepth,
+               size_t maxValues = kJsonMaxValues);
+
+}  // namespace oasis
