@@ -12,6 +12,8 @@
 #include <stdexcept>
 
 #include "commands/check_cases.h"
+#include "commands/check_diff.h"
+#include "commands/check_html.h"
 #include "commands/check_judge.h"
 #include "commands/check_render.h"
 #include "commands/check_report.h"
@@ -68,6 +70,7 @@ struct Checker {
     const Options& options;
     std::string referenceDir;
     std::map<std::vector<std::string>, CaseFrame> mainPaths;  // by arguments: shared between cases
+    std::vector<std::string> notes;  // the running case's, after its verdict's reasons
 
     const CaseFrame& mainPath(const CheckCase& c) {
         std::vector<std::string> arguments = withCommon(c.mainPathArguments(), options);
@@ -94,20 +97,30 @@ struct Checker {
         }
         result.result = frame.image;
         std::vector<std::string> failures;
+        notes.clear();
         judgeAgainstReference(c, result, failures);
-        judgeAgainstMainPath(c, result, failures);
+        bool mainPathFailed = judgeAgainstMainPath(c, result, failures);
         result.verdict = failures.empty() ? Verdict::Pass : Verdict::Fail;
-        for (const std::string& failure : failures) result.reason += (result.reason.empty() ? "" : "; ") + failure;
-        if (failures.empty()) result.reason = "matches the reference frame and the driver's main path";
-        if (result.verdict == Verdict::Fail) findDivergence(c, result);
+        if (failures.empty())
+            failures.push_back(result.referenceCompared ? "matches the reference frame and the driver's main path"
+                                                        : "matches the driver's main path");
+        failures.insert(failures.end(), notes.begin(), notes.end());
+        for (const std::string& text : failures) result.reason += (result.reason.empty() ? "" : "; ") + text;
+        if (mainPathFailed) findDivergence(c, result);
+        else if (result.verdict == Verdict::Fail)
+            result.reason += " (the case matches the driver's main path by its rule: the difference from the "
+                             "reference is this driver's, not this path's)";
         result.seconds = secondsSince(start);
         return result;
     }
 
+    // Without a reference frame the case is judged against the main path alone, and says so.
     void judgeAgainstReference(const CheckCase& c, CaseResult& result, std::vector<std::string>& failures) {
         std::string path = referenceDir + "/" + c.name() + ".png", error;
         if (referenceDir.empty() || !readPng(path, result.reference, error)) {
-            failures.push_back("no reference frame (" + (referenceDir.empty() ? std::string("no reference directory") : error) + ")");
+            result.referenceRule = "none";
+            notes.push_back("no reference frame (" + (referenceDir.empty() ? std::string("no reference directory") : error) +
+                            "): judged against the driver's main path alone");
             return;
         }
         const ImageRule& rule = imageRule("cross-driver");
@@ -116,6 +129,7 @@ struct Checker {
             return;
         }
         Judgement j = judge(result.result, result.reference, rule);
+        result.referenceCompared = true;
         result.psnrDb = j.psnrDb;
         result.maxAbs = j.maxAbs;
         result.pixelsOver = j.pixelsOver;
@@ -125,11 +139,12 @@ struct Checker {
         }
     }
 
-    void judgeAgainstMainPath(const CheckCase& c, CaseResult& result, std::vector<std::string>& failures) {
+    // True when the case fails against its main path (then the pass-by-pass search runs).
+    bool judgeAgainstMainPath(const CheckCase& c, CaseResult& result, std::vector<std::string>& failures) {
         const CaseFrame& main = mainPath(c);
         if (!main.rendered) {
             failures.push_back("the driver's main path did not render: " + main.skipReason);
-            return;
+            return false;
         }
         const ImageRule& rule = mainPathRule(c);
         Judgement j = judge(result.result, main.image, rule);
@@ -138,20 +153,17 @@ struct Checker {
         result.mainPathPsnrDb = j.psnrDb;
         result.mainPathMaxAbs = j.maxAbs;
         result.mainPathPixelsOver = j.pixelsOver;
-        if (j.pass) return;
+        if (j.pass) return false;
         failures.push_back("against the driver's main path: " + j.summary);
         if (result.errorMask.width == 0) {
             result.errorMask = errorMask(result.result, main.image, rule);
             if (result.reference.width == 0) result.reference = main.image;
         }
+        return true;
     }
 
     // Where the case's path parts from the main path on this driver, pass by pass.
     void findDivergence(const CheckCase& c, CaseResult& result) {
-        if (result.mainPathCompared && result.mainPathMaxAbs == 0) {
-            result.reason += " (the driver's main path draws the same frame: the difference is the driver's, not a path's)";
-            return;
-        }
         try {
             std::vector<PassSnapshot> main = renderPassByPass(withCommon(c.mainPathArguments(), options));
             std::vector<PassSnapshot> candidate = renderPassByPass(result.options);
@@ -216,7 +228,8 @@ int writeReferences(const Options& options, const std::vector<CheckCase>& cases)
 // case its frame, the frame it was judged against and the error mask.
 int writeCheckReport(const Options& options, const CheckReport& report) {
     std::string directory = options.outDirGiven ? options.outDir : "oasis-check";
-    std::vector<OutputFile> files = {{directory + "/report.json", checkReportJson(report)}};
+    std::vector<OutputFile> files = {{directory + "/report.json", checkReportJson(report)},
+                                     {directory + "/report.html", checkReportHtml(report)}};
     for (const CaseResult& c : report.cases) {
         if (c.verdict != Verdict::Fail) continue;
         for (const auto& [suffix, image] : {std::pair{"result", &c.result}, {"reference", &c.reference}, {"mask", &c.errorMask}}) {
@@ -239,7 +252,7 @@ int writeCheckReport(const Options& options, const CheckReport& report) {
     std::printf("oasis check: %d passed, %d failed, %d skipped of %zu cases in %s on %s\n", report.passed(),
                 report.failed(), report.skipped(), report.cases.size(), formatSeconds(report.seconds).c_str(),
                 report.renderer.c_str());
-    std::printf("  wrote %s/report.json%s\n", directory.c_str(),
+    std::printf("  wrote %s/report.json, %s/report.html%s\n", directory.c_str(), directory.c_str(),
                 files.size() > 1 ? (" and the failing cases' images in " + directory + "/cases").c_str() : "");
     return report.failed() ? 1 : 0;
 }
@@ -248,13 +261,17 @@ int writeCheckReport(const Options& options, const CheckReport& report) {
 
 std::string findCheckReferences() {
     if (const char* set = std::getenv("OASIS_CHECK_REFERENCES"); set && *set) return set;
+    // Beside the shaders in use (an install's share/oasis, or a copy made with its references),
+    // then the install prefix's and the source tree's.
     std::string shaders = findShaderDirectory();
-    for (const std::string& candidate : {parentOf(shaders) + "/check-references", parentOf(shaders) + "/tests/check-references"})
+    for (const std::string& candidate : {parentOf(shaders) + "/check-references", std::string(OASIS_INSTALL_CHECK_REFERENCES),
+                                         std::string(OASIS_SOURCE_CHECK_REFERENCES)})
         if (isDirectory(candidate)) return candidate;
     return {};
 }
 
 int runCheckCommand(const Options& options) {
+    if (!options.diffReports.empty()) return runCheckDiff(options.diffReports[0], options.diffReports[1]);
     Clock::time_point start = Clock::now();
     std::vector<CheckCase> all = coveringCases();
     std::vector<CheckCase> cases = options.quick ? quickCases(all) : all;
@@ -266,11 +283,15 @@ int runCheckCommand(const Options& options) {
         report.oasisVersion = OASIS_VERSION;
         report.oasisCommit = OASIS_COMMIT;
         fillDriver(report, options);
-        Checker checker{options, options.checkReferences.empty() ? findCheckReferences() : options.checkReferences, {}};
+        Checker checker{options, options.checkReferences.empty() ? findCheckReferences() : options.checkReferences, {}, {}};
         std::printf("oasis check: %zu cases%s (the full set of %zu meets all %d compatible pairs of %zu dimensions' "
                     "values) on %s\n", cases.size(), options.quick ? " (--quick: every value once)" : "", all.size(),
                     coverage.pairs, checkDimensions().size(), report.renderer.c_str());
-        std::printf("  reference frames: %s\n", checker.referenceDir.empty() ? "none found" : checker.referenceDir.c_str());
+        if (checker.referenceDir.empty())
+            std::printf("  reference frames: NONE FOUND (set OASIS_CHECK_REFERENCES or --references DIR): every case is "
+                        "judged against this driver's main path alone\n");
+        else
+            std::printf("  reference frames: %s\n", checker.referenceDir.c_str());
         for (size_t i = 0; i < cases.size(); ++i) {
             double elapsed = secondsSince(start);
             std::fprintf(stderr, "oasis check: case %zu of %zu, %s (%s elapsed%s)\n", i + 1, cases.size(),

@@ -26,7 +26,7 @@ std::string caseJson(const CaseResult& c) {
     if (c.firstDivergence)
         divergence = "{\"pass\": " + jsonString(c.firstDivergence->pass) + ", \"target\": " +
                      jsonString(c.firstDivergence->target) + ", \"pixels\": " + std::to_string(c.firstDivergence->pixels) + "}";
-    bool judged = c.verdict != Verdict::Skip;
+    bool judged = c.referenceCompared;
     std::string json = "{\"name\": " + jsonString(c.name) + ", \"options\": " + stringList(c.options) +
                        ", \"verdict\": " + jsonString(verdictName(c.verdict)) + ", \"reason\": " + jsonString(c.reason);
     json += ", \"psnr_db\": " + (judged ? number(c.psnrDb) : "null");

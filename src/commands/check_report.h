@@ -28,6 +28,7 @@ struct CaseResult {
     // Against the reference frame (the repository's llvmpipe frame of the same options): the numbers
     // and the rule applied; against the driver's own main path: the same, where it was compared.
     std::string referenceRule, mainPathRule;
+    bool referenceCompared = false;  // a reference frame was found and compared
     double psnrDb = 0.0;  // against the reference frame
     int maxAbs = 0;
     long pixelsOver = 0;  // pixels whose largest channel difference exceeds the rule's level
