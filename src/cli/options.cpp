@@ -7,6 +7,7 @@
 #include "cli/driver_setups.h"
 #include "cli/input_domains.h"
 #include "cli/option_rules.h"
+#include "cli/scene_arguments.h"
 #include "debug/debug_views.h"
 #include "render/depth_convention.h"
 #include "render/encoding_error.h"
@@ -15,30 +16,6 @@
 
 namespace oasis {
 namespace {
-
-// The scene's two-way switches, parsed alike: the flag, the value that turns the field on, the
-// one that turns it off, and the field ("--shadows expects on or off, got 'x'").
-struct SceneSwitch {
-    const char* flag;
-    const char* on;
-    const char* off;
-    bool& (*field)(SceneOptions&);
-};
-const SceneSwitch kSceneSwitches[] = {
-    {"--reflections", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflections; }},
-    {"--reflection-bounds", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflectionBounds; }},
-    {"--vegetation", "on", "off", [](SceneOptions& s) -> bool& { return s.vegetation.enabled; }},
-    {"--billboards", "trimmed", "whole", [](SceneOptions& s) -> bool& { return s.vegetation.trimmedBillboards; }},
-    {"--tone-map", "fused", "separate", [](SceneOptions& s) -> bool& { return s.work.fuseToneMap; }},
-    {"--depth-read", "in-place", "copy", [](SceneOptions& s) -> bool& { return s.work.depthReadInPlace; }},
-    {"--shadows", "on", "off", [](SceneOptions& s) -> bool& { return s.shadows.enabled; }},
-};
-
-const SceneSwitch* findSceneSwitch(const std::string& flag) {
-    for (const SceneSwitch& sceneSwitch : kSceneSwitches)
-        if (flag == sceneSwitch.flag) return &sceneSwitch;
-    return nullptr;
-}
 
 // A number of `name`'s domain (cli/input_domains.h), as the parser's error when it is not one.
 bool readNumber(const std::string& name, const std::string& text, double& value, std::string& error) {
@@ -284,6 +261,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         result.error = message;
         return result;
     };
+    std::vector<std::string> command = {"oasis"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    options.commandLine = shellCommandLine(command);
     size_t i = 0;
     if (i < arguments.size() && !arguments[i].empty() && arguments[i][0] != '-') {
         const std::string& name = arguments[i];

@@ -72,6 +72,7 @@ struct Options {
     bool driverTimeoutGiven = false;
     bool pipelineGiven = false;
     std::vector<std::string> givenFlags;  // the options on the command line, in order (cli/option_rules.h)
+    std::string commandLine;  // "oasis" and the arguments as given, shell-quoted (a PNG's provenance)
     bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }
 };
 
