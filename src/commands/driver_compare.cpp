@@ -25,6 +25,7 @@
 #include "cli/input_domains.h"
 #include "commands/bench_report.h"
 #include "commands/headless_commands.h"
+#include "commands/provenance.h"
 #include "context/gl_context.h"
 #include "render/file_output.h"
 #include "render/image.h"
@@ -345,9 +346,11 @@ int runDriverCompare(const Options& options) {
     }
     ImageDifference difference = compareImages(a.image, b.image);
     Image heat;
+    Provenance provenance;
     try {
         HeadlessContext context;  // the legend's text is drawn with GL, on this process's own driver
         heat = differenceImage(a.image, a.label, b.image, b.label);
+        provenance = pictureProvenance(options, "difference", pipelineName(options.pipeline), heat.height, a.image.height);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: difference.png: %s\n", error.what());
         return 1;
@@ -358,7 +361,7 @@ int runDriverCompare(const Options& options) {
         if (!s->reference) set.push_back({s->path, s->bytes});
     set.push_back({differencePath, {}});
     std::vector<std::string> written;
-    if (!encodePng(heat, set.back().bytes) || !writeFilesWhole(set, written, error)) {
+    if (!encodePng(heat, set.back().bytes, provenanceTexts(provenance)) || !writeFilesWhole(set, written, error)) {
         std::fprintf(stderr, "oasis: %s\n", error.empty() ? ("cannot write " + differencePath + ": PNG encoding failed").c_str()
                                                             : error.c_str());
         for (const std::string& path : written)
