@@ -7,6 +7,7 @@
 #include "cli/driver_setups.h"
 #include "cli/input_domains.h"
 #include "cli/option_rules.h"
+#include "cli/scene_arguments.h"
 #include "debug/debug_views.h"
 #include "render/depth_convention.h"
 #include "render/encoding_error.h"
@@ -15,30 +16,6 @@
 
 namespace oasis {
 namespace {
-
-// The scene's two-way switches, parsed alike: the flag, the value that turns the field on, the
-// one that turns it off, and the field ("--shadows expects on or off, got 'x'").
-struct SceneSwitch {
-    const char* flag;
-    const char* on;
-    const char* off;
-    bool& (*field)(SceneOptions&);
-};
-const SceneSwitch kSceneSwitches[] = {
-    {"--reflections", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflections; }},
-    {"--reflection-bounds", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflectionBounds; }},
-    {"--vegetation", "on", "off", [](SceneOptions& s) -> bool& { return s.vegetation.enabled; }},
-    {"--billboards", "trimmed", "whole", [](SceneOptions& s) -> bool& { return s.vegetation.trimmedBillboards; }},
-    {"--tone-map", "fused", "separate", [](SceneOptions& s) -> bool& { return s.work.fuseToneMap; }},
-    {"--depth-read", "in-place", "copy", [](SceneOptions& s) -> bool& { return s.work.depthReadInPlace; }},
-    {"--shadows", "on", "off", [](SceneOptions& s) -> bool& { return s.shadows.enabled; }},
-};
-
-const SceneSwitch* findSceneSwitch(const std::string& flag) {
-    for (const SceneSwitch& sceneSwitch : kSceneSwitches)
-        if (flag == sceneSwitch.flag) return &sceneSwitch;
-    return nullptr;
-}
 
 // A number of `name`'s domain (cli/input_domains.h), as the parser's error when it is not one.
 bool readNumber(const std::string& name, const std::string& text, double& value, std::string& error) {
@@ -216,8 +193,14 @@ std::string usage(Command command) {
                    "  --driver NAME             a set-up: " + driverSetupNames() + "\n"
                    "  --reference FILE.png      compare against a saved frame (e.g. from another machine) instead of\n"
                    "                            a second set-up; without --driver, against the frame rendered here\n"
-                   "                            (this process's environment); without --size, the frame is rendered\n"
-                   "                            at the reference's size (a different --size is exit 2)\n"
+                   "                            (this process's environment). With no scene option given (--size\n"
+                   "                            aside), the frame is rendered with the options and pipeline the PNG\n"
+                   "                            carries (its provenance: `--reference sent.png` alone draws the\n"
+                   "                            sender's frame); options given must be the reference's, every one\n"
+                   "                            (exit 2 naming those that differ); a view other than final or a\n"
+                   "                            legend strip is exit 2. A PNG without provenance: a warning; without\n"
+                   "                            --size, the frame is rendered at the reference's size (a different\n"
+                   "                            --size is exit 2)\n"
                    "  --pipeline forward|deferred  the pipeline of the rendered frames (default deferred)\n"
                    "  --driver-timeout SECONDS  kill a child render (its process group) still running after this\n"
                    "                            long: exit 1 naming the set-up (default 300)\n" + scene;
@@ -306,6 +289,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         result.error = message;
         return result;
     };
+    std::vector<std::string> command = {"oasis"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    options.commandLine = shellCommandLine(command);
     size_t i = 0;
     if (i < arguments.size() && !arguments[i].empty() && arguments[i][0] != '-') {
         const std::string& name = arguments[i];

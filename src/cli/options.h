@@ -76,6 +76,7 @@ struct Options {
     std::string checkReferences, writeReferences;
     std::vector<std::string> diffReports;
     std::vector<std::string> givenFlags;  // the options on the command line, in order (cli/option_rules.h)
+    std::string commandLine;  // "oasis" and the arguments as given, shell-quoted (a PNG's provenance)
     bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }
 };
 

@@ -16,6 +16,7 @@
 #include "commands/check_html.h"
 #include "commands/check_judge.h"
 #include "commands/check_render.h"
+#include "commands/provenance.h"
 #include "commands/check_report.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
@@ -207,7 +208,7 @@ int writeReferences(const Options& options, const std::vector<CheckCase>& cases)
             return 1;
         }
         files.push_back({options.writeReferences + "/" + c.name() + ".png", {}});
-        encodePng(frame.image, files.back().bytes);
+        encodePng(frame.image, files.back().bytes, frame.provenance);
         std::fprintf(stderr, "oasis check: [%d/%zu] %s\n", c.index, cases.size(), c.name().c_str());
     }
     if (mkdir(options.writeReferences.c_str(), 0755) != 0 && errno != EEXIST) {
@@ -280,8 +281,8 @@ int runCheckCommand(const Options& options) {
         if (!options.writeReferences.empty()) return writeReferences(options, all);
         CheckReport report;
         report.quick = options.quick;
-        report.oasisVersion = OASIS_VERSION;
-        report.oasisCommit = OASIS_COMMIT;
+        report.oasisVersion = oasisRelease();
+        report.oasisCommit = oasisCommit();
         fillDriver(report, options);
         Checker checker{options, options.checkReferences.empty() ? findCheckReferences() : options.checkReferences, {}, {}};
         std::printf("oasis check: %zu cases%s (the full set of %zu meets all %d compatible pairs of %zu dimensions' "

@@ -11,6 +11,7 @@
 
 #include "cli/options.h"
 #include "commands/headless_commands.h"
+#include "commands/provenance.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
 
@@ -102,6 +103,8 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
     std::FILE* sink = std::fopen("/dev/null", "w");
     frame.image = renderedViewImage(options, renderer, sink ? sink : stderr);
     if (sink) std::fclose(sink);
+    frame.provenance = provenanceTexts(pictureProvenance(options, options.view, pipelineName(options.pipeline),
+                                                         frame.image.height, frame.image.height));
     frame.rendered = true;
     return frame;
 }

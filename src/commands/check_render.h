@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "render/image.h"
+#include "render/png_text.h"
 
 namespace oasis {
 
@@ -14,6 +15,7 @@ struct CaseFrame {
     std::string skipReason;  // why it could not be rendered as asked (no ES context, a path fell back)
     std::string limitedBy;   // "driver" or "forced tier" when skipped
     Image image;
+    std::vector<PngText> provenance;  // what made it (commands/provenance.h), for the PNGs the check writes
 };
 
 // Renders `oasis render ARGUMENTS` (the final view or the one asked for, no legend) and checks that

@@ -1,5 +1,5 @@
 // compare --driver / --reference (commands/driver_compare.h): child processes, their output and
-// the driver check, then the comparison of the two PNGs.
+// the driver check, a reference's provenance, then the comparison of the two PNGs.
 #include "commands/driver_compare.h"
 
 #include <fcntl.h>
@@ -19,12 +19,15 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cli/driver_setups.h"
 #include "cli/input_domains.h"
+#include "cli/scene_arguments.h"
 #include "commands/bench_report.h"
 #include "commands/headless_commands.h"
+#include "commands/provenance.h"
 #include "context/gl_context.h"
 #include "render/file_output.h"
 #include "render/image.h"
@@ -258,9 +261,147 @@ std::string fileLabel(const std::string& path) {
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// 2 after saying so when --size was given and the reference is another size, else 0.
+int referenceSizeRefused(const Options& options, const Image& reference) {
+    const SceneOptions& scene = options.scene;
+    if (!options.sizeGiven || (reference.width == scene.width && reference.height == scene.height)) return 0;
+    std::fprintf(stderr, "oasis: --reference %s is %s but --size is %s: give the reference's size, or leave "
+                 "--size out to render at the reference's size\n", options.reference.c_str(),
+                 sizeText(reference.width, reference.height).c_str(), sizeText(scene.width, scene.height).c_str());
+    return 2;
+}
+
+// FLAG -> value of canonical scene arguments ({"--size", "160x90", "--hour", "18"}).
+std::vector<std::pair<std::string, std::string>> argumentPairs(const std::vector<std::string>& arguments) {
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (size_t k = 0; k + 1 < arguments.size(); k += 2) pairs.push_back({arguments[k], arguments[k + 1]});
+    return pairs;
+}
+
+std::string valueIn(const std::vector<std::pair<std::string, std::string>>& pairs, const std::string& flag) {
+    for (const auto& [name, value] : pairs)
+        if (name == flag) return value;
+    return {};
+}
+
+// The reference's provenance (commands/provenance.h) applied to the comparison: with none, a
+// warning and the reference compared as it is; a reference that is not a plain frame, or whose
+// options this oasis cannot read, or that differs from the scene options given, is refused (2,
+// saying why); otherwise `run` gets its options (all of them when no scene option was given, and
+// its pipeline when --pipeline was not) and 0 is returned.
+int adoptReference(const Options& options, const std::string& fileBytes, Side& reference, Options& run) {
+    const char* path = options.reference.c_str();
+    Provenance provenance;
+    std::string why;
+    if (!readProvenance(readPngTexts(fileBytes), provenance, why)) {
+        std::fprintf(stderr, "oasis: --reference %s has no oasis provenance: %s; it is compared as it is (its scene "
+                     "options, view and legend unchecked)\n", path, why.c_str());
+        return 0;
+    }
+    reference.renderer = provenance.renderer;
+    std::string madeBy = "written by oasis " + provenance.version;
+    if (provenance.view != "final" || provenance.hasLegend() || !provenance.viewOptions.empty()) {
+        std::string what = "--view " + provenance.view + (provenance.viewOptions.empty() ? "" : " " + provenance.viewOptions) +
+                           (provenance.hasLegend() ? " with a legend strip under the frame (oasis:legend: " +
+                                                         provenance.legend + ")"
+                                                   : " without a legend strip");
+        std::fprintf(stderr, "oasis: --reference %s is not a frame alone: it is %s; compare --reference compares the "
+                     "final view without a legend, as `oasis render --legend off` writes it\n", path, what.c_str());
+        return 2;
+    }
+    PipelineKind pipeline;
+    if (!parsePipelineKind(provenance.pipeline, pipeline)) {
+        std::fprintf(stderr, "oasis: --reference %s: its oasis:pipeline '%s' is not forward or deferred (%s)\n", path,
+                     provenance.pipeline.c_str(), madeBy.c_str());
+        return 2;
+    }
+    // Its options read as this oasis reads them: only the picture's options, each known here.
+    std::vector<std::string> arguments = splitArguments(provenance.options);
+    for (size_t k = 0; k < arguments.size(); k += 2) {
+        const SceneArgument* row = findSceneArgument(arguments[k]);
+        if (!row || row->kind != SceneArgumentKind::Picture || row->bare) {
+            std::fprintf(stderr, "oasis: --reference %s: its oasis:options '%s' hold '%s', not a scene option of this "
+                         "oasis (%s)\n", path, provenance.options.c_str(), arguments[k].c_str(), madeBy.c_str());
+            return 2;
+        }
+    }
+    std::vector<std::string> renderArguments = {"render"};
+    renderArguments.insert(renderArguments.end(), arguments.begin(), arguments.end());
+    ParseResult parsed = parseCommandLine(renderArguments);
+    if (!parsed.ok || std::find(arguments.begin(), arguments.end(), "--size") == arguments.end()) {
+        std::fprintf(stderr, "oasis: --reference %s: its oasis:options '%s' cannot be read here: %s (%s)\n", path,
+                     provenance.options.c_str(), parsed.ok ? "no --size" : parsed.error.c_str(), madeBy.c_str());
+        return 2;
+    }
+    const SceneOptions& theirs = parsed.options.scene;
+    if (theirs.width != reference.image.width || theirs.height != reference.image.height) {
+        std::fprintf(stderr, "oasis: --reference %s is %s but its oasis:options say --size %s (%s)\n", path,
+                     sizeText(reference.image.width, reference.image.height).c_str(),
+                     sizeText(theirs.width, theirs.height).c_str(), madeBy.c_str());
+        return 2;
+    }
+    if (int code = referenceSizeRefused(options, reference.image)) return code;
+    // The scene options given here must be the reference's, every one (an option left out is at its
+    // default here). --size alone gives nothing new: it was held to the reference's size above.
+    bool sceneGiven = false;
+    for (const std::string& flag : options.givenFlags) {
+        const SceneArgument* row = findSceneArgument(flag);
+        sceneGiven = sceneGiven || (row && row->kind == SceneArgumentKind::Picture && flag != "--size");
+    }
+    auto there = argumentPairs(sceneArguments(theirs, SceneArgumentKind::Picture));
+    std::string differences;
+    auto differ = [&](const std::string& flag, const std::string& thereValue, const std::string& hereValue) {
+        differences += "\n  " + flag + ": " + (thereValue.empty() ? "the default" : thereValue) +
+                       " there, " + (hereValue.empty() ? "the default" : hereValue) + " here";
+    };
+    if (sceneGiven) {
+        SceneOptions mine = options.scene;
+        if (!options.sizeGiven) std::tie(mine.width, mine.height) = std::pair{theirs.width, theirs.height};
+        auto here = argumentPairs(sceneArguments(mine, SceneArgumentKind::Picture));
+        for (const SceneArgument& row : sceneArgumentTable()) {
+            if (row.kind != SceneArgumentKind::Picture) continue;
+            std::string thereValue = valueIn(there, row.flag), hereValue = valueIn(here, row.flag);
+            if (thereValue != hereValue) differ(row.flag, thereValue, hereValue);
+        }
+    }
+    if (options.pipelineGiven && options.pipeline != pipeline)
+        differ("--pipeline", pipelineName(pipeline), pipelineName(options.pipeline));
+    std::string adopted = joinArguments(sceneArguments(theirs, SceneArgumentKind::Picture)) + " --pipeline " +
+                          pipelineName(pipeline);
+    if (!differences.empty()) {
+        std::fprintf(stderr, "oasis: --reference %s was rendered with other options than the ones given:%s\n"
+                     "  leave the scene options out to render with the reference's: %s\n", path, differences.c_str(),
+                     adopted.c_str());
+        return 2;
+    }
+    if (!sceneGiven) {
+        run.sceneArguments = sceneArguments(theirs, SceneArgumentKind::Picture);
+        run.sceneArguments.insert(run.sceneArguments.end(), options.sceneArguments.begin(), options.sceneArguments.end());
+        run.sizeGiven = true;
+    }
+    if (!options.pipelineGiven) {
+        run.pipeline = pipeline;
+        run.pipelineGiven = true;
+        run.sceneArguments.insert(run.sceneArguments.end(), {"--pipeline", pipelineName(pipeline)});
+    }
+    std::vector<std::string> runArguments = {"render"};
+    runArguments.insert(runArguments.end(), run.sceneArguments.begin(), run.sceneArguments.end());
+    ParseResult runParsed = parseCommandLine(runArguments);
+    if (runParsed.ok) run.scene = runParsed.options.scene;  // else checkChildArguments says why
+    if (!sceneGiven || !options.pipelineGiven)
+        std::fprintf(stderr, "oasis: --reference %s: rendering with its options: %s (%s on %s)\n", path,
+                     adopted.c_str(), madeBy.c_str(),
+                     provenance.renderer.empty() ? "an unnamed renderer" : provenance.renderer.c_str());
+    if (!provenance.driverOptions.empty())
+        std::fprintf(stderr, "oasis: --reference %s was drawn with %s: driver options are not taken from a reference "
+                     "(each side is drawn with its own set-up's)\n", path, provenance.driverOptions.c_str());
+    return 0;
+}
+
 }  // namespace
 
-int runDriverCompare(const Options& options) {
+int runDriverCompare(const Options& given) {
+    Options options = given;  // with a reference's options and pipeline where it has them (adoptReference)
     std::vector<Side> sides;
     for (const std::string& name : options.drivers) sides.push_back(Side(name, findDriverSetup(name)));
     if (options.drivers.size() == 2 && options.drivers[0] == options.drivers[1]) sides[1].label += "-2";
@@ -270,20 +411,18 @@ int runDriverCompare(const Options& options) {
         Side reference(fileLabel(options.reference));
         reference.reference = true;
         reference.path = options.reference;
-        std::string error;
-        if (!readPng(options.reference, reference.image, error)) {
+        std::string error, bytes;
+        if (!readPng(options.reference, reference.image, error, &bytes)) {
             std::fprintf(stderr, "oasis: --reference: %s\n", error.c_str());
             return 2;
         }
-        const SceneOptions& scene = options.scene;
-        if (options.sizeGiven && (reference.image.width != scene.width || reference.image.height != scene.height)) {
-            std::fprintf(stderr, "oasis: --reference %s is %s but --size is %s: give the reference's size, or leave "
-                         "--size out to render at the reference's size\n", options.reference.c_str(),
-                         sizeText(reference.image.width, reference.image.height).c_str(),
-                         sizeText(scene.width, scene.height).c_str());
-            return 2;
+        if (int code = adoptReference(given, bytes, reference, options)) return code;
+        if (int code = referenceSizeRefused(given, reference.image)) return code;
+        if (!options.sizeGiven) {
+            extraArguments = {"--size", sizeText(reference.image.width, reference.image.height)};
+            options.scene.width = reference.image.width;
+            options.scene.height = reference.image.height;
         }
-        if (!options.sizeGiven) extraArguments = {"--size", sizeText(reference.image.width, reference.image.height)};
         sides.push_back(std::move(reference));
     }
     // Where each set-up's frame ends up; the file sent must not be one of them.
@@ -345,9 +484,11 @@ int runDriverCompare(const Options& options) {
     }
     ImageDifference difference = compareImages(a.image, b.image);
     Image heat;
+    Provenance provenance;
     try {
         HeadlessContext context;  // the legend's text is drawn with GL, on this process's own driver
         heat = differenceImage(a.image, a.label, b.image, b.label);
+        provenance = pictureProvenance(options, "difference", pipelineName(options.pipeline), heat.height, a.image.height);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: difference.png: %s\n", error.what());
         return 1;
@@ -358,7 +499,7 @@ int runDriverCompare(const Options& options) {
         if (!s->reference) set.push_back({s->path, s->bytes});
     set.push_back({differencePath, {}});
     std::vector<std::string> written;
-    if (!encodePng(heat, set.back().bytes) || !writeFilesWhole(set, written, error)) {
+    if (!encodePng(heat, set.back().bytes, provenanceTexts(provenance)) || !writeFilesWhole(set, written, error)) {
         std::fprintf(stderr, "oasis: %s\n", error.empty() ? ("cannot write " + differencePath + ": PNG encoding failed").c_str()
                                                             : error.c_str());
         for (const std::string& path : written)
@@ -366,16 +507,17 @@ int runDriverCompare(const Options& options) {
         return 1;
     }
     bool identical = difference.maxAbs == 0;
+    std::string pictureOptions = joinArguments(sceneArguments(options.scene, SceneArgumentKind::Picture));
     if (options.json) {
         auto side = [](const Side& s) {
             return "{\"name\": " + jsonString(s.label) + ", \"kind\": " +
                    jsonString(s.reference ? "reference" : s.setup ? "set-up" : "here") + ", \"image\": " +
                    jsonString(s.path) + ", \"renderer\": " + jsonString(s.renderer) + "}";
         };
-        std::printf("{\"a\": %s, \"b\": %s, \"width\": %d, \"height\": %d, \"pipeline\": \"%s\", \"psnr_db\": %.4f, "
-                    "\"max_abs\": %d, \"rmse\": %.6f, \"identical\": %s, \"difference\": %s}\n",
+        std::printf("{\"a\": %s, \"b\": %s, \"width\": %d, \"height\": %d, \"pipeline\": \"%s\", \"options\": %s, "
+                    "\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"identical\": %s, \"difference\": %s}\n",
                     side(a).c_str(), side(b).c_str(), a.image.width, a.image.height, pipelineName(options.pipeline),
-                    difference.psnrDb, difference.maxAbs, difference.rmse, identical ? "true" : "false",
+                    jsonString(pictureOptions).c_str(), difference.psnrDb, difference.maxAbs, difference.rmse, identical ? "true" : "false",
                     jsonString(differencePath).c_str());
         return 0;
     }
@@ -383,9 +525,10 @@ int runDriverCompare(const Options& options) {
                 a.label.c_str(), b.label.c_str(), sizeText(a.image.width, a.image.height).c_str(),
                 pipelineName(options.pipeline), difference.psnrDb, identical ? " (identical)" : "", difference.maxAbs,
                 difference.rmse);
+    std::printf("  %-12s %s\n", "options:", pictureOptions.c_str());
     for (const Side* s : {&a, &b})
         std::printf("  %-12s %s\n", (s->label + ":").c_str(),
-                    s->reference ? ("saved image " + s->path).c_str() : (s->renderer + ", " + s->path).c_str());
+                    s->reference ? ("saved image " + s->path + (s->renderer.empty() ? "" : ", drawn on " + s->renderer)).c_str() : (s->renderer + ", " + s->path).c_str());
     std::printf("  wrote %s\n", differencePath.c_str());
     return 0;
 }

@@ -11,6 +11,7 @@
 
 #include "commands/bench_report.h"
 #include "commands/overview_overlay.h"
+#include "commands/provenance.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
 #include "gl/frame_capture.h"
@@ -76,17 +77,23 @@ bool isStandardOutput(const std::string& path) {
            named.st_ino == out.st_ino;
 }
 
+// One PNG of a set: its file name, its image and where the image comes from (commands/provenance.h).
+struct ImageFile {
+    std::string file;
+    const Image* image;
+    Provenance provenance;
+};
+
 // Writes the images as one set (render/file_output.h): all of them or, on a failure, none, so the
 // directory never mixes this run's images with an earlier run's. On failure the message names the
 // file; a path is reported written only once it is complete under its name.
-bool writeImages(const std::string& directory, const std::vector<std::pair<std::string, const Image*>>& images,
-                 std::vector<std::string>& written) {
+bool writeImages(const std::string& directory, const std::vector<ImageFile>& images, std::vector<std::string>& written) {
     std::string error;
     if (!ensureDirectory(directory, error)) { std::fprintf(stderr, "oasis: %s\n", error.c_str()); return false; }
     std::vector<OutputFile> files;
-    for (const auto& [file, image] : images) {
-        files.push_back({directory + "/" + file, {}});
-        if (!encodePng(*image, files.back().bytes)) {
+    for (const ImageFile& image : images) {
+        files.push_back({directory + "/" + image.file, {}});
+        if (!encodePng(*image.image, files.back().bytes, provenanceTexts(image.provenance))) {
             std::fprintf(stderr, "oasis: cannot write %s: PNG encoding failed\n", files.back().path.c_str());
             return false;
         }
@@ -96,6 +103,14 @@ bool writeImages(const std::string& directory, const std::vector<std::pair<std::
     for (const std::string& path : written)
         std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
     return false;
+}
+
+// compare's set: each pipeline's final frame and the difference of the two with its legend.
+std::vector<ImageFile> comparisonFiles(const Options& options, const Comparison& c, const Image& heat) {
+    int height = c.forward.height;
+    return {{"forward.png", &c.forward, pictureProvenance(options, "final", "forward", height, height)},
+            {"deferred.png", &c.deferred, pictureProvenance(options, "final", "deferred", height, height)},
+            {"difference.png", &heat, pictureProvenance(options, "difference", "forward and deferred", heat.height, height)}};
 }
 
 void printSummary(const Options& options, const RenderSession& session, const Comparison& c) {
@@ -297,7 +312,10 @@ int runRenderCommand(const Options& options) {
         Image image = errorView ? encodingErrorImage(options, session, *errorView, report)
                                 : renderedViewImage(options, renderer, report);
         std::string error;
-        if (!writePng(options.out, image, error)) {
+        Provenance provenance = pictureProvenance(options, options.view,
+                                                  errorView ? "deferred" : pipelineName(options.pipeline),
+                                                  image.height, renderer.targets().height());
+        if (!writePng(options.out, image, error, provenanceTexts(provenance))) {
             std::fprintf(stderr, "oasis: %s\n", error.c_str());
             return 1;
         }
@@ -320,9 +338,7 @@ int runCompareCommand(const Options& options) {
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes, options.capture);
         Image heat = differenceImage(c.forward, "forward", c.deferred, "deferred");
         std::vector<std::string> written;
-        if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
-                                          {"difference.png", &heat}}, written))
-            return 1;
+        if (!writeImages(options.outDir, comparisonFiles(options, c, heat), written)) return 1;
         if (options.json) {
             printJson(options, session, c);
         } else {
@@ -343,10 +359,12 @@ int runMainJob(const Options& options) {
         session.renderer->renderView(kOverviewName);
         Image overview = session.renderer->readDisplay();
         Image heat = differenceImage(c.forward, "forward", c.deferred, "deferred");
+        std::vector<ImageFile> files = comparisonFiles(options, c, heat);
+        files.push_back({"overview.png", &overview,
+                         pictureProvenance(options, kOverviewName, pipelineName(session.renderer->pipeline()),
+                                           overview.height, overview.height)});
         std::vector<std::string> written;
-        if (!writeImages(options.outDir, {{"forward.png", &c.forward}, {"deferred.png", &c.deferred},
-                                          {"difference.png", &heat}, {"overview.png", &overview}}, written))
-            return 1;
+        if (!writeImages(options.outDir, files, written)) return 1;
         if (options.json) printJson(options, session, c);
         else printSummary(options, session, c);
         for (const std::string& path : written) std::fprintf(report, "  wrote %s\n", path.c_str());

@@ -28,19 +28,20 @@ void Image::flipRows() {
     }
 }
 
-bool encodePng(const Image& image, std::string& png) {
+bool encodePng(const Image& image, std::string& png, const std::vector<PngText>& texts) {
     png.clear();
     if (image.width < 1 || image.height < 1) return false;
     auto append = [](void* context, void* data, int size) {
         static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
     };
+    std::string error;
     return stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.rgba.data(), image.width * 4) &&
-           !png.empty();
+           !png.empty() && (texts.empty() || insertPngTexts(png, texts, error));
 }
 
-bool writePng(const std::string& path, const Image& image, std::string& error) {
+bool writePng(const std::string& path, const Image& image, std::string& error, const std::vector<PngText>& texts) {
     std::string png;
-    if (!encodePng(image, png)) {
+    if (!encodePng(image, png, texts)) {
         error = "cannot write " + path + ": PNG encoding failed (" + std::to_string(image.width) + "x" +
                 std::to_string(image.height) + ")";
         return false;

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "render/png_text.h"
+
 namespace oasis {
 
 struct Image {
@@ -18,18 +20,20 @@ struct Image {
     void flipRows();
 };
 
-// The PNG file's bytes, encoded in memory; false if the encoder fails (no memory, an empty image).
-bool encodePng(const Image& image, std::string& png);
+// The PNG file's bytes, encoded in memory, with `texts` as text chunks after the header
+// (render/png_text.h); false if the encoder fails (no memory, an empty image) or a text cannot be
+// a chunk (a bad keyword, over kMaxPngTextBytes).
+bool encodePng(const Image& image, std::string& png, const std::vector<PngText>& texts = {});
 
-// Writes a PNG whole or not at all (render/file_output.h); on failure returns false and `error`
-// says "cannot write PATH: REASON".
-bool writePng(const std::string& path, const Image& image, std::string& error);
+// Writes a PNG (with `texts`, as encodePng) whole or not at all (render/file_output.h); on failure
+// returns false and `error` says "cannot write PATH: REASON".
+bool writePng(const std::string& path, const Image& image, std::string& error, const std::vector<PngText>& texts = {});
 
 // Reads a PNG file (any bit depth or channel count; converted to 8-bit RGBA, alpha 255 where it
 // has none). The file is checked before it is read (render/file_input.h: a regular file of at most
 // 256 MiB) and its signature and header before its data (1..32768 pixels a side). False with
 // `error` saying "cannot read PATH: REASON" if it is missing, unreadable, not such a file or not a
-// PNG. `fileBytes`, if given, gets the file as it was read.
+// PNG. `fileBytes`, if given, gets the file as it was read (readPngTexts finds its text chunks).
 bool readPng(const std::string& path, Image& image, std::string& error, std::string* fileBytes = nullptr);
 
 // PSNR is capped at kPsnrIdentical (identical images have infinite PSNR).

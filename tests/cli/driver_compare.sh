@@ -5,7 +5,8 @@
 #   zink       llvmpipe against zink over lavapipe: a finite PSNR of at least $ZINK_MIN_PSNR dB
 #              (exit 77 = skipped, saying why, when zink is not on this machine)
 #   reference  a frame `render` wrote, as --reference: identical (the size taken from the file)
-#   altered    a frame of another hour as --reference: PSNR under 30 dB, difference.png with its legend
+#   altered    a frame of another hour, its provenance stripped (else compare would render its hour:
+#              tests/cli/provenance.sh), as --reference: PSNR under 30 dB, difference.png with its legend
 #   timeout    a child that really hangs (stopped with SIGSTOP as soon as it runs: it cannot even act
 #              on the SIGTERM that comes first) is killed at --driver-timeout: exit 1 naming the
 #              set-up and the limit, no process of it and nothing it staged left; and a limit far
@@ -68,8 +69,18 @@ reference)
     compare --reference "$scratch/ref.png" || fail "exit $?: $(cat "$scratch/stderr")"
     expect_identical ;;
 altered)
-    "$oasis" render --size $size --hour 18 --legend off --out "$scratch/ref.png" > /dev/null || fail "render failed"
+    "$oasis" render --size $size --hour 18 --legend off --out "$scratch/sent.png" > /dev/null || fail "render failed"
+    # Every chunk but the text chunks, so the reference has no oasis:options to render with.
+    python3 -c "
+import struct, sys
+data, out, at = open(sys.argv[1], 'rb').read(), [], 8
+while at < len(data):
+    length, kind = struct.unpack('>I4s', data[at:at + 8])
+    if kind not in (b'iTXt', b'tEXt', b'zTXt'): out.append(data[at:at + 12 + length])
+    at += 12 + length
+open(sys.argv[2], 'wb').write(data[:8] + b''.join(out))" "$scratch/sent.png" "$scratch/ref.png" || fail "cannot strip"
     compare --driver llvmpipe --reference "$scratch/ref.png" || fail "exit $?: $(cat "$scratch/stderr")"
+    grep -q "has no oasis provenance" "$scratch/stderr" || fail "no warning for a reference without provenance"
     psnr=$(field psnr_db)
     python3 -c "import sys; sys.exit(0 if float(sys.argv[1]) < 30 else 1)" "$psnr" ||
         fail "a frame at 18:00 against 10:00: PSNR $psnr dB, expected under 30"
