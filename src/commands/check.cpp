@@ -4,7 +4,9 @@
 #include <sys/stat.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <cstdio>
 #include <cstdlib>
@@ -168,8 +170,18 @@ struct Checker {
         try {
             std::vector<PassSnapshot> main = renderPassByPass(withCommon(c.mainPathArguments(), options));
             std::vector<PassSnapshot> candidate = renderPassByPass(result.options);
+            // The pixels whose final colours part, bottom row first as the views read them.
+            const Image& mainImage = mainPath(c).image;
+            std::vector<bool> where(size_t(mainImage.width) * size_t(mainImage.height));
+            for (int y = 0; y < mainImage.height; ++y)
+                for (int x = 0; x < mainImage.width; ++x) {
+                    int d = 0;
+                    for (int k = 0; k < 3; ++k)
+                        d = std::max(d, std::abs(int(mainImage.pixel(x, y)[k]) - int(result.result.pixel(x, y)[k])));
+                    where[size_t(mainImage.height - 1 - y) * size_t(mainImage.width) + size_t(x)] = d > mainPathRule(c).level;
+                }
             Divergence found;
-            if (firstDivergence(main, candidate, mainPathRule(c).level, found))
+            if (firstDivergence(main, candidate, mainPathRule(c).level, where, found))
                 result.firstDivergence = FirstDivergence{found.pass, found.target, found.pixels};
         } catch (const std::exception& error) {
             result.reason += " (pass by pass: " + std::string(error.what()) + ")";
@@ -254,7 +266,7 @@ int writeCheckReport(const Options& options, const CheckReport& report) {
                 report.failed(), report.skipped(), report.cases.size(), formatSeconds(report.seconds).c_str(),
                 report.renderer.c_str());
     std::printf("  wrote %s/report.json, %s/report.html%s\n", directory.c_str(), directory.c_str(),
-                files.size() > 1 ? (" and the failing cases' images in " + directory + "/cases").c_str() : "");
+                report.failed() ? (" and the failing cases' images in " + directory + "/cases").c_str() : "");
     return report.failed() ? 1 : 0;
 }
 

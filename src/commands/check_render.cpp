@@ -132,7 +132,7 @@ std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& argum
 }
 
 bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vector<PassSnapshot>& candidate, int level,
-                     Divergence& found) {
+                     const std::vector<bool>& where, Divergence& found) {
     for (size_t k = 0; k < reference.size() && k < candidate.size(); ++k) {
         if (reference[k].pass != candidate[k].pass) break;  // the lists part: nothing more to compare
         for (size_t t = 0; t < reference[k].targets.size() && t < candidate[k].targets.size(); ++t) {
@@ -141,6 +141,7 @@ bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vect
             if (a.size() != b.size()) continue;
             long pixels = 0;
             for (size_t p = 0; p + 3 < a.size(); p += 4) {
+                if (p / 4 < where.size() && !where[p / 4]) continue;
                 bool differs = false;
                 for (size_t c = 0; c < 4 && !differs; ++c) {
                     float x = a[p + c], y = b[p + c];

@@ -37,8 +37,10 @@ struct Divergence {
     long pixels = 0;
 };
 // The first pass after which a target of `candidate` differs from `reference` beyond the level
-// (levels of 1/255, relative above 1), or none.
+// (levels of 1/255, relative above 1) at a pixel of `where` (the pixels whose final colours differ,
+// bottom row first as the views read: a difference a later pass overwrites, such as a tier's
+// lighting leaving the sky black for the sky pass, is not the one the frame shows), or none.
 bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vector<PassSnapshot>& candidate,
-                     int level, Divergence& found);
+                     int level, const std::vector<bool>& where, Divergence& found);
 
 }  // namespace oasis

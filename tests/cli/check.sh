@@ -1,0 +1,105 @@
+#!/bin/sh
+# `oasis check` end to end (commands/check.h), one case per ctest test:
+#   quick      --quick on this machine's llvmpipe against the repository's reference frames: exit 0,
+#              report.json with the keys scripts depend on and counts that add up, report.html
+#              opened in chromium-headless-shell showing the same counts, within the 90 s budget
+#   perturbed  a copy of the shaders whose UBO light list returns each light 4x as bright: the full
+#              check fails exactly the cases that draw lights through the UBO path into the final
+#              frame (not the far lands, out of the lights' sight) and names for each a pass that adds
+#              or carries the lights; every other case passes; --diff against the clean run lists
+#              those cases as regressions and exits 1
+#   usage      bad arguments: exit 2
+# usage: check.sh OASIS SHADER_DIR REFERENCES WORK_DIR CASE
+set -u
+oasis=$1 shaders=$2 references=$3 work=$4 case=$5
+fail() { echo "FAIL ($case): $*"; exit 1; }
+rm -rf "$work" && mkdir -p "$work" || fail "cannot make $work"
+cd "$work" || fail "cannot enter $work"
+
+case $case in
+quick)
+    start=$(date +%s)
+    "$oasis" check --quick --references "$references" --out-dir out > out.txt 2> err.txt
+    code=$? elapsed=$(($(date +%s) - start))
+    [ $code -eq 0 ] || fail "exit $code: $(tail -n 20 out.txt err.txt)"
+    [ $elapsed -le 90 ] || fail "--quick took $elapsed s, over its 90 s budget"
+    grep -q "case 1 of [0-9]*, 0[0-9]-" err.txt || fail "no progress line (case i of n, name): $(head -n 3 err.txt)"
+    python3 - out/report.json << 'EOF' || fail "report.json"
+import json, sys
+report = json.load(open(sys.argv[1]))
+for key in ("summary", "driver", "caps", "cases", "oasis"):
+    assert key in report, key
+summary, cases = report["summary"], report["cases"]
+assert summary["fail"] == 0 and summary["pass"] + summary["skip"] == len(cases) >= 6, summary
+for c in cases:
+    for key in ("name", "options", "verdict", "reason", "psnr_db", "max_abs", "pixels_over", "first_divergence"):
+        assert key in c, (c["name"], key)
+    assert c["verdict"] in ("pass", "fail", "skip"), c
+    assert isinstance(c["options"], list) and all(isinstance(o, str) for o in c["options"]), c["options"]
+    assert c["verdict"] != "pass" or c["max_abs"] == 0, ("llvmpipe against its own references", c)
+assert "llvmpipe" in report["driver"]["renderer"], report["driver"]
+assert all({"feature", "available", "used", "limited_by"} <= set(row) for row in report["caps"]), report["caps"]
+print("report.json: %d cases, %s" % (len(cases), summary))
+EOF
+    if browser=$(command -v chromium-headless-shell); then
+        profile=$(mktemp -d)
+        timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --disable-background-networking \
+            --disable-component-update --no-first-run --user-data-dir="$profile" --dump-dom "file://$work/out/report.html" \
+            > dom.html 2> chromium.log || fail "chromium exited $? on report.html"
+        rm -rf "$profile"
+        for verdict in pass fail skip; do
+            expected=$(python3 -c "import json; print(json.load(open('out/report.json'))['summary']['$verdict'])")
+            shown=$(sed -n "s/.*id=\"count-$verdict\">\([0-9]*\)<.*/\1/p" dom.html)
+            [ "$shown" = "$expected" ] || fail "report.html shows $verdict '$shown', report.json has '$expected'"
+        done
+    else
+        echo "(chromium-headless-shell absent: report.html not opened)"
+    fi
+    echo "check quick: $(tail -n 2 out.txt | head -n 1) in $elapsed s" ;;
+perturbed)
+    "$oasis" check --references "$references" --out-dir clean > clean.txt 2> clean.err ||
+        fail "the clean check failed: $(grep -v '^  pass' clean.txt)"
+    cp -r "$shaders" shaders || fail "cannot copy the shaders"
+    # The UBO light list only (both of its lightAt() definitions: GLSL 4.00 on and before).
+    sed -i 's|PointLight lightAt(int i) { return lightBlocks\[i / LIGHTS_UBO_CAPACITY\].lights\[i % LIGHTS_UBO_CAPACITY\]; }|PointLight lightAt(int i) { PointLight l = lightBlocks[i / LIGHTS_UBO_CAPACITY].lights[i % LIGHTS_UBO_CAPACITY]; l.colourIntensity.w *= 4.0; return l; }|; s|^    return lightBlocks\[0\].lights\[index\];|    PointLight l = lightBlocks[0].lights[index]; l.colourIntensity.w *= 4.0; return l;|' shaders/common/lights.glsl
+    [ "$(grep -c 'colourIntensity.w \*= 4.0' shaders/common/lights.glsl)" -eq 2 ] || fail "the perturbation did not apply"
+    OASIS_SHADER_DIR=$work/shaders "$oasis" check --references "$references" --out-dir perturbed > perturbed.txt 2> perturbed.err
+    code=$?
+    [ $code -eq 1 ] || fail "the perturbed check: exit $code, expected 1"
+    python3 - clean/report.json perturbed/report.json << 'EOF' || fail "the perturbed check's verdicts"
+import json, sys
+clean, perturbed = (json.load(open(path)) for path in sys.argv[1:3])
+assert [c["name"] for c in clean["cases"]] == [c["name"] for c in perturbed["cases"]]
+lit_passes = ("LightVolumePass", "LightingPass", "TerrainPass.forward", "VegetationPass.forward", "ReflectionUpsamplePass")
+expected = 0
+for c in perturbed["cases"]:
+    on_path = "-ubo-" in c["name"] and "-final-" in c["name"] and "-far-" not in c["name"]
+    expected += on_path
+    assert (c["verdict"] == "fail") == on_path, (c["name"], c["verdict"], c["reason"])
+    if on_path:
+        divergence = c["first_divergence"]
+        assert divergence and divergence["pass"].startswith(lit_passes) and divergence["pixels"] > 0, (c["name"], divergence)
+        if "-deferred-" in c["name"] and "-volumes-" in c["name"] and "-reflections-off-" in c["name"]:
+            assert divergence["pass"] == "LightVolumePass" and divergence["target"] == "Radiance", (c["name"], divergence)
+assert expected >= 5, expected
+print("perturbed: %d cases on the UBO path failed, each naming its pass; %d others passed" % (expected, len(perturbed["cases"]) - expected))
+EOF
+    "$oasis" check --diff clean/report.json perturbed/report.json > diff.txt 2> diff.err
+    code=$?
+    [ $code -eq 1 ] || fail "--diff clean perturbed: exit $code, expected 1: $(cat diff.err)"
+    grep -q "^regressions ([1-9]" diff.txt || fail "--diff lists no regressions: $(head -n 20 diff.txt)"
+    "$oasis" check --diff clean/report.json clean/report.json > same.txt || fail "--diff of a report with itself: exit $?"
+    echo "check perturbed: OK ($(grep '^regressions' diff.txt))" ;;
+usage)
+    for args in "--quick --frames 3" "--diff a.json" "--out-dir" "--size 64x36" "--api vulkan"; do
+        # shellcheck disable=SC2086
+        "$oasis" check $args > /dev/null 2> err.txt
+        code=$?
+        [ $code -eq 2 ] || fail "check $args: exit $code, expected 2"
+        grep -q "^oasis: " err.txt || fail "check $args: no message"
+    done
+    "$oasis" check --diff missing.json missing.json > /dev/null 2> err.txt
+    [ $? -eq 2 ] || fail "--diff of missing files is not exit 2"
+    echo "check usage: OK" ;;
+*) fail "unknown case" ;;
+esac
