@@ -99,8 +99,6 @@ int main(int argc, char** argv) {
     // Past a file-size limit (ulimit -f) a write should fail with EFBIG and be reported as a file
     // that could not be written (exit 1), not kill the process with SIGXFSZ.
     std::signal(SIGXFSZ, SIG_IGN);
-    // A closed pipe on stdout (oasis caps | head -1) is a failed write to report, not a silent death.
-    std::signal(SIGPIPE, SIG_IGN);
     ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
     if (!parsed.ok) {
         std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());

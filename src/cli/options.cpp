@@ -251,14 +251,15 @@ std::string usage(Command command) {
                    "  names the first pass where a failing path parts from the main path, and writes\n"
                    "  DIR/report.json and DIR/report.html (default oasis-check). Exit 0: every case passed or\n"
                    "  was skipped (a path the driver or a forced tier lacks); 1: a case failed; 2: bad usage\n"
-                   "  --quick                   a subset meeting every value once (7 cases)\n"
+                   "  --quick                   a subset of the cases meeting every value at least once\n"
                    "  --api gles                run on an OpenGL ES context (its native tier)\n"
                    "  --references DIR          the reference frames (default: $OASIS_CHECK_REFERENCES, else\n"
                    "                            check-references beside the shaders' directory)\n"
                    "  --diff A.json B.json      regressions, fixes, changed numbers and new skips from report A\n"
                    "                            to report B; exit 1 on a regression\n"
                    "  --write-references DIR    render every case here and write DIR/NAME.png (on llvmpipe: the\n"
-                   "                            repository's reference frames, docs/update.sh check-references)\n";
+                   "                            repository's reference frames, docs/update.sh check-references)\n"
+                   "  --tables                  print the dimensions and the image rules (docs/check.md's tables)\n";
         case Command::Window:
             return "usage: oasis window [scene options] [--water-scene direct|mirrored]\n"
                    "  opens the interactive window (what `oasis` does when a display exists)\n"
@@ -321,6 +322,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             // The check sets every scene option itself (its cases); it takes only these.
             auto value = [&](int count) { return i + size_t(count) < arguments.size(); };
             if (flag == "--quick") { options.quick = true; continue; }
+            if (flag == "--tables") { options.checkTables = true; continue; }
             if (flag == "--api" && value(1)) {
                 if (!gl::parseApi(arguments[++i], options.scene.api))
                     return fail("--api expects gl or gles, got '" + arguments[i] + "'");

@@ -75,6 +75,7 @@ struct Options {
     // --write-references DIR, and --diff A.json B.json.
     std::string checkReferences, writeReferences;
     std::vector<std::string> diffReports;
+    bool checkTables = false;  // check --tables: print the dimensions and rules as Markdown
     std::vector<std::string> givenFlags;  // the options on the command line, in order (cli/option_rules.h)
     std::string commandLine;  // "oasis" and the arguments as given, shell-quoted (a PNG's provenance)
     bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }

@@ -89,12 +89,12 @@ struct Checker {
         result.options = withCommon(c.arguments(), options);
         result.referenceRule = imageRule("cross-driver").name;
         if (std::string refused = caseRefused(c, options); !refused.empty()) {
-            result.reason = "skip (forced tier): " + refused;
+            result.reason = "forced tier: " + refused;
             return result;
         }
         CaseFrame frame = renderCaseFrame(result.options, c.value("plants").name == "plants-gpu");
         if (!frame.rendered) {
-            result.reason = "skip (" + frame.limitedBy + "): " + frame.skipReason;
+            result.reason = frame.limitedBy + ": " + frame.skipReason;
             result.seconds = secondsSince(start);
             return result;
         }
@@ -272,6 +272,34 @@ int writeCheckReport(const Options& options, const CheckReport& report) {
 
 }  // namespace
 
+// The tables docs/check.md shows (docs/update.sh check-tables regenerates them; a test compares):
+// the dimensions with their values, and the image rules with the measurement behind each.
+std::string checkTablesMarkdown() {
+    std::string text = "| dimension | values (the first is the driver's own choice where the dimension is a path) |\n| --- | --- |\n";
+    for (const CheckDimension& dimension : checkDimensions()) {
+        text += "| " + dimension.name + (dimension.pathOnly ? " (path)" : "") + " | ";
+        for (size_t v = 0; v < dimension.values.size(); ++v) {
+            const CheckValue& value = dimension.values[v];
+            std::string arguments;
+            for (const std::string& argument : value.arguments) arguments += (arguments.empty() ? "" : " ") + argument;
+            text += (v ? ", " : "") + value.name + (arguments.empty() ? "" : " (`" + arguments + "`)");
+        }
+        text += " |\n";
+    }
+    text += "\n| rule | a pixel differs above | PSNR at least | max abs at most | differing pixels at most | set by |\n"
+            "| --- | --- | --- | --- | --- | --- |\n";
+    for (const ImageRule& rule : imageRules()) {
+        char line[1024];
+        std::snprintf(line, sizeof(line), "| %s | %d levels | %.0f dB | %d | %.1f%% | %s |\n", rule.name.c_str(), rule.level,
+                      rule.minPsnrDb, rule.maxAbs, rule.maxFractionOver * 100.0, rule.measuredBy.c_str());
+        text += line;
+    }
+    PairCoverage coverage = pairCoverage(coveringCases());
+    text += "\n" + std::to_string(coveringCases().size()) + " cases meet all " + std::to_string(coverage.pairs) +
+            " required pairs; `--quick` runs " + std::to_string(quickCases(coveringCases()).size()) + " of them.\n";
+    return text;
+}
+
 std::string findCheckReferences() {
     if (const char* set = std::getenv("OASIS_CHECK_REFERENCES"); set && *set) return set;
     // Beside the shaders in use (an install's share/oasis, or a copy made with its references),
@@ -285,6 +313,10 @@ std::string findCheckReferences() {
 
 int runCheckCommand(const Options& options) {
     if (!options.diffReports.empty()) return runCheckDiff(options.diffReports[0], options.diffReports[1]);
+    if (options.checkTables) {
+        std::fputs(checkTablesMarkdown().c_str(), stdout);
+        return 0;
+    }
     Clock::time_point start = Clock::now();
     std::vector<CheckCase> all = coveringCases();
     std::vector<CheckCase> cases = options.quick ? quickCases(all) : all;

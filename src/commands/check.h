@@ -14,4 +14,7 @@ int runCheckCommand(const Options& options);
 // (an install's share/oasis/check-references, the source tree's tests/check-references).
 std::string findCheckReferences();
 
+// The dimensions and the image rules as the Markdown tables docs/check.md shows (`check --tables`).
+std::string checkTablesMarkdown();
+
 }  // namespace oasis

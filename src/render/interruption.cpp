@@ -25,7 +25,9 @@ struct Slot {
 Slot slots[kMaxRemovals];
 std::atomic<int> holdDepth{0};
 volatile sig_atomic_t held = 0;
-const int kEndingSignals[] = {SIGINT, SIGTERM, SIGHUP};
+// SIGPIPE too: a reader that goes away (oasis caps | head -1) ends oasis quietly, as it ends any
+// filter, but not before the temporaries go.
+const int kEndingSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
 
 // Removes everything inside the open directory `fd`, depth first (a handful of levels at most: what
 // a driver leaves in a runtime directory).

@@ -1,4 +1,4 @@
-// What oasis removes when a signal ends it: SIGINT, SIGTERM and SIGHUP remove the temporaries and
+// What oasis removes when a signal ends it: SIGINT, SIGTERM, SIGHUP and SIGPIPE remove the temporaries and
 // directories oasis made that are not finished yet (registered here while they exist), then end the
 // process with that signal's usual status. While a child process runs (compare --driver), a signal
 // is held instead, so that the caller can stop the child first and then end (endForHeldSignal).

@@ -1,0 +1,55 @@
+// oasis check's image rules (commands/check_judge.h): a frame passes or fails each rule by its own
+// numbers, and the error mask marks exactly the pixels above the rule's level.
+#include <gtest/gtest.h>
+
+#include "commands/check_judge.h"
+
+namespace oasis {
+namespace {
+
+Image flat(int width, int height, uint8_t value) {
+    Image image(width, height);
+    for (size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = (i % 4 == 3) ? 255 : value;
+    return image;
+}
+
+TEST(CheckJudge, OneLevelAtOnePixelFailsIdenticalOnly) {
+    Image reference = flat(64, 36, 100), result = reference;
+    result.pixel(10, 5)[1] = 101;
+    EXPECT_FALSE(judge(result, reference, imageRule("identical")).pass);
+    Judgement fallback = judge(result, reference, imageRule("same-driver-fallback"));
+    EXPECT_TRUE(fallback.pass);
+    EXPECT_EQ(fallback.maxAbs, 1);
+    EXPECT_EQ(fallback.pixelsOver, 0);  // a pixel differs only above the rule's level
+    EXPECT_TRUE(judge(result, reference, imageRule("cross-driver")).pass);
+}
+
+TEST(CheckJudge, ThePixelCapDecidesForAnotherRasteriser) {
+    const ImageRule& rule = imageRule("cross-driver");
+    Image reference = flat(100, 100, 80), result = reference;
+    int allowed = int(rule.maxFractionOver * 100 * 100);
+    for (int i = 0; i < allowed; ++i) result.pixel(i % 100, i / 100)[0] = 80 + rule.level + 1;
+    Judgement atCap = judge(result, reference, rule);
+    EXPECT_EQ(atCap.pixelsOver, allowed);
+    EXPECT_TRUE(atCap.pass) << atCap.summary;
+    result.pixel(99, 99)[0] = 80 + rule.level + 1;
+    EXPECT_FALSE(judge(result, reference, rule).pass);
+}
+
+TEST(CheckJudge, TheMaskMarksThePixelsOverTheLevel) {
+    const ImageRule& rule = imageRule("same-driver-fallback");
+    Image reference = flat(8, 4, 40), result = reference;
+    result.pixel(3, 2)[2] = 40 + rule.level + 1;  // over
+    result.pixel(5, 1)[0] = 40 + rule.level;      // not over
+    Image mask = errorMask(result, reference, rule);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 8; ++x) EXPECT_EQ(mask.pixel(x, y)[0] == 255, x == 3 && y == 2) << x << "," << y;
+}
+
+TEST(CheckJudge, SizesMustAgree) {
+    EXPECT_THROW(judge(flat(4, 4, 0), flat(4, 5, 0), imageRule("identical")), std::invalid_argument);
+    EXPECT_THROW(imageRule("no-such-rule"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace oasis
