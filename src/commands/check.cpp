@@ -209,6 +209,23 @@ std::string formatSeconds(double seconds) {
     return text;
 }
 
+// Makes the directories, then writes the files as one set (whole or not at all); false after
+// saying what failed.
+bool writeSet(const std::vector<std::string>& directories, const std::vector<OutputFile>& files) {
+    for (const std::string& dir : directories)
+        if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST) {
+            std::fprintf(stderr, "oasis: cannot create directory %s: %s\n", dir.c_str(), std::strerror(errno));
+            return false;
+        }
+    std::vector<std::string> written;
+    std::string error;
+    if (writeFilesWhole(files, written, error)) return true;
+    std::fprintf(stderr, "oasis: %s\n", error.c_str());
+    for (const std::string& path : written)
+        std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
+    return false;
+}
+
 int writeReferences(const Options& options, const std::vector<CheckCase>& cases) {
     std::vector<OutputFile> files;
     for (const CheckCase& c : cases) {
@@ -223,17 +240,8 @@ int writeReferences(const Options& options, const std::vector<CheckCase>& cases)
         encodePng(frame.image, files.back().bytes, frame.provenance);
         std::fprintf(stderr, "oasis check: [%d/%zu] %s\n", c.index, cases.size(), c.name().c_str());
     }
-    if (mkdir(options.writeReferences.c_str(), 0755) != 0 && errno != EEXIST) {
-        std::fprintf(stderr, "oasis: cannot create directory %s\n", options.writeReferences.c_str());
-        return 1;
-    }
-    std::vector<std::string> written;
-    std::string error;
-    if (!writeFilesWhole(files, written, error)) {
-        std::fprintf(stderr, "oasis: %s\n", error.c_str());
-        return 1;
-    }
-    std::printf("oasis check: wrote %zu reference frames to %s\n", written.size(), options.writeReferences.c_str());
+    if (!writeSet({options.writeReferences}, files)) return 1;
+    std::printf("oasis check: wrote %zu reference frames to %s\n", files.size(), options.writeReferences.c_str());
     return 0;
 }
 
@@ -251,17 +259,7 @@ int writeCheckReport(const Options& options, const CheckReport& report) {
             encodePng(*image, files.back().bytes);
         }
     }
-    for (const std::string& dir : {directory, directory + "/cases"})
-        if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST) {
-            std::fprintf(stderr, "oasis: cannot create directory %s: %s\n", dir.c_str(), std::strerror(errno));
-            return 1;
-        }
-    std::vector<std::string> written;
-    std::string error;
-    if (!writeFilesWhole(files, written, error)) {
-        std::fprintf(stderr, "oasis: %s\n", error.c_str());
-        return 1;
-    }
+    if (!writeSet({directory, directory + "/cases"}, files)) return 1;
     std::printf("oasis check: %d passed, %d failed, %d skipped of %zu cases in %s on %s\n", report.passed(),
                 report.failed(), report.skipped(), report.cases.size(), formatSeconds(report.seconds).c_str(),
                 report.renderer.c_str());
