@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <set>
 #include <cstdio>
 #include <stdexcept>
 
@@ -19,10 +20,17 @@ namespace oasis {
 namespace {
 
 // The targets a pass can leave, through the views that read them (the same on every tier).
-const std::pair<const char*, const char*> kTargetViews[] = {
-    {"albedo", "Albedo"}, {"normal", "Normal"}, {"position", "Position"}, {"info", "Info"},
-    {"depth", "DepthStencil (depth)"}, {"stencil", "DepthStencil (stencil)"}, {"radiance", "Radiance"},
-    {"reflection-raw", "Reflection"}, {"final", "Final"}};
+struct TargetView {
+    const char* view;   // the view that reads it
+    const char* label;  // what the report calls it
+    Target target;      // what the passes declare they write
+};
+const TargetView kTargetViews[] = {
+    {"albedo", "Albedo", Target::Albedo}, {"normal", "Normal", Target::Normal},
+    {"position", "Position", Target::Position}, {"info", "Info", Target::Info},
+    {"depth", "DepthStencil (depth)", Target::DepthStencil}, {"stencil", "DepthStencil (stencil)", Target::DepthStencil},
+    {"radiance", "Radiance", Target::Radiance}, {"reflection-raw", "Reflection", Target::Reflection},
+    {"final", "Final", Target::Final}};
 
 Options caseOptions(const std::vector<std::string>& arguments) {
     std::vector<std::string> command = {"render"};
@@ -116,16 +124,18 @@ std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& argum
     RenderSession session(options);
     Renderer& renderer = *session.renderer;
     renderer.setPipeline(options.pipeline);
-    std::vector<std::string> names;
-    Pipeline passList(options.pipeline);  // GL-free: the names in order
-    for (const auto& pass : passList.passes()) names.push_back(pass->name());
+    Pipeline passList(options.pipeline);  // GL-free: the passes in order, with their declarations
+    const auto& passes = passList.passes();
+    std::set<Target> written;  // what the frame has written so far: the rest holds no value yet
     std::vector<PassSnapshot> snapshots;
-    for (size_t k = 0; k < names.size(); ++k) {
+    for (size_t k = 0; k < passes.size(); ++k) {
+        for (Target target : passes[k]->writes()) written.insert(target);
         // The frame after pass k is the frame stopped before pass k + 1 (a pass that does not run
         // this frame leaves the targets as they were).
-        renderer.renderFrame(session.scene, k + 1 < names.size() ? names[k + 1] : std::string());
-        PassSnapshot snapshot{names[k], {}};
-        for (auto [view, target] : kTargetViews) snapshot.targets.push_back({target, renderer.readViewValues(view)});
+        renderer.renderFrame(session.scene, k + 1 < passes.size() ? passes[k + 1]->name() : std::string());
+        PassSnapshot snapshot{passes[k]->name(), {}};
+        for (const TargetView& target : kTargetViews)
+            if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.readViewValues(target.view)});
         snapshots.push_back(std::move(snapshot));
     }
     return snapshots;
@@ -135,9 +145,11 @@ bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vect
                      const std::vector<bool>& where, Divergence& found) {
     for (size_t k = 0; k < reference.size() && k < candidate.size(); ++k) {
         if (reference[k].pass != candidate[k].pass) break;  // the lists part: nothing more to compare
-        for (size_t t = 0; t < reference[k].targets.size() && t < candidate[k].targets.size(); ++t) {
-            const std::vector<float>& a = reference[k].targets[t].second;
-            const std::vector<float>& b = candidate[k].targets[t].second;
+        for (const auto& [label, a] : reference[k].targets) {
+            auto other = std::find_if(candidate[k].targets.begin(), candidate[k].targets.end(),
+                                      [&](const auto& target) { return target.first == label; });
+            if (other == candidate[k].targets.end()) continue;
+            const std::vector<float>& b = other->second;
             if (a.size() != b.size()) continue;
             long pixels = 0;
             for (size_t p = 0; p + 3 < a.size(); p += 4) {
@@ -151,7 +163,7 @@ bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vect
                 pixels += differs;
             }
             if (pixels == 0) continue;
-            found = {reference[k].pass, reference[k].targets[t].first, pixels};
+            found = {reference[k].pass, label, pixels};
             return true;
         }
     }
