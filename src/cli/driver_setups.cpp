@@ -7,6 +7,10 @@ const std::vector<DriverSetup>& driverSetups() {
     static const std::vector<DriverSetup> setups = [] {
         const std::string noSsbo = "-GL_ARB_shader_storage_buffer_object -GL_ARB_compute_shader";
         std::vector<DriverSetup> table = {
+            // Whatever driver this machine gives by default (AMD, Intel, NVIDIA, Mesa...): nothing set,
+            // no renderer required; the Mesa-selecting variables are cleared as for every set-up.
+            {"native", "this machine's default driver, whatever its name (nothing set, no renderer check)", {}, {}, "",
+             "an OpenGL driver with EGL"},
             {"llvmpipe", "Mesa llvmpipe, GL 4.5 core (the default)", {}, {}, "llvmpipe", "Mesa's llvmpipe (libgl1-mesa-dri)"},
             {"zink", "zink over lavapipe, GL 4.6 core",
              {{"LIBGL_ALWAYS_SOFTWARE", "1"}, {"GALLIUM_DRIVER", "zink"}, {"XDG_RUNTIME_DIR", kRuntimeDirValue}},
@@ -34,9 +38,11 @@ const std::vector<DriverSetup>& driverSetups() {
             {"gles30", "llvmpipe, OpenGL ES 3.2 treated as ES 3.0 (--api gles --force gles30)", {},
              {"--api", "gles", "--force", "gles30"}, "llvmpipe", "Mesa's llvmpipe with OpenGL ES (libgles2 / libegl-mesa0)"},
         };
-        // Each forced fallback alone on llvmpipe (--force NAME): bit-identical to llvmpipe by design.
+        // Each forced fallback alone on llvmpipe (--force NAME): bit-identical to llvmpipe by design
+        // (gles30 is the ES row above: it needs --api gles). driver_setups_test holds this list to
+        // every name --force accepts.
         for (const char* name : {"gl33", "no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa", "no-clip-control",
-                                 "no-read-only-depth"})
+                                 "no-depth-clamp", "no-read-only-depth"})
             table.push_back({name, std::string("llvmpipe, --force ") + name, {}, {"--force", name}, "llvmpipe",
                              "Mesa's llvmpipe (libgl1-mesa-dri)"});
         return table;

@@ -191,6 +191,8 @@ std::string usage(Command command) {
                    "  writes DIR/A.png, DIR/B.png and DIR/difference.png (legend as above); a set-up whose driver is\n"
                    "  missing here, or whose render fails, is exit 1 naming it\n"
                    "  --driver NAME             a set-up: " + driverSetupNames() + "\n"
+                   "                            (native: this machine's default driver, whatever its name; the\n"
+                   "                            others Mesa's, each forced tier on llvmpipe)\n"
                    "  --reference FILE.png      compare against a saved frame (e.g. from another machine) instead of\n"
                    "                            a second set-up; without --driver, against the frame rendered here\n"
                    "                            (this process's environment). With no scene option given (--size\n"
@@ -207,7 +209,9 @@ std::string usage(Command command) {
         case Command::Caps:
             return "usage: oasis caps [--json] [--force LIST]\n"
                    "  the context's GL version, vendor, renderer, GLSL version, the limits and extensions that\n"
-                   "  matter to oasis, and for each feature oasis can use whether it is used here and why not\n" + scene;
+                   "  matter to oasis, and for each feature oasis can use whether the driver has it (available),\n"
+                   "  whether it is used here, what limits it when not (driver, forced tier or not asked for)\n"
+                   "  and why\n" + scene;
         case Command::Bench:
             return "usage: oasis bench [--quick] [--out-dir DIR] [--json] [--frames N] [scene options]\n"
                    "  times every configuration of pipeline x G-buffer layout x quality knob (grid, octaves,\n"

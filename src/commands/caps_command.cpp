@@ -68,9 +68,17 @@ void printText(const RenderSession& session) {
     std::printf("extensions that matter (%s has some in core):\n", caps.apiVersionName().c_str());
     for (const auto& [name, present] : caps.relevantExtensions())
         std::printf("  %-36s %s\n", name.c_str(), present ? "yes" : "no");
-    std::printf("features:\n");
-    for (const gl::FeatureReport& feature : session.features())
-        std::printf("  %-30s %-8s %s\n", feature.name.c_str(), feature.used ? "used" : "NOT used", feature.reason.c_str());
+    std::printf("features (available: the driver has it, --force aside; limited by: driver, forced tier or not "
+                "asked for, - where used):\n");
+    std::printf("  %-30s %-9s %-4s %-14s %s\n", "feature", "available", "used", "limited by", "reason");
+    for (const gl::FeatureReport& feature : session.features()) {
+        // The used column says "not used" already: the reason alone follows.
+        const std::string notUsed = "not used: ";
+        bool prefixed = feature.reason.compare(0, notUsed.size(), notUsed) == 0;
+        std::printf("  %-30s %-9s %-4s %-14s %s\n", feature.name.c_str(), feature.available ? "yes" : "no",
+                    feature.used ? "yes" : "no", feature.limitedBy.empty() ? "-" : feature.limitedBy.c_str(),
+                    feature.reason.c_str() + (prefixed ? notUsed.size() : 0));
+    }
 }
 
 void printJson(const RenderSession& session) {
@@ -97,8 +105,11 @@ void printJson(const RenderSession& session) {
     json += "}, \"features\": {";
     first = true;
     for (const gl::FeatureReport& feature : session.features()) {
+        // "used" and "reason" first, as before: scripts match on them.
         json += (first ? "\"" : ", \"") + feature.name + "\": {\"used\": " + (feature.used ? "true" : "false") +
-                ", \"reason\": " + jsonString(feature.reason) + "}";
+                ", \"reason\": " + jsonString(feature.reason) + ", \"available\": " +
+                (feature.available ? "true" : "false") + ", \"limited_by\": " +
+                (feature.limitedBy.empty() ? std::string("null") : jsonString(feature.limitedBy)) + "}";
         first = false;
     }
     json += "}, \"fallbacks\": [";

@@ -200,7 +200,7 @@ void fillDriver(CheckReport& report, const Options& options) {
     report.glslVersion = caps.glslVersion;
     report.api = caps.es ? "OpenGL ES" : "OpenGL";
     for (const gl::FeatureReport& feature : session.features())
-        report.caps.push_back({feature.name, feature.used, feature.used, feature.reason, feature.used ? "" : "driver"});
+        report.caps.push_back({feature.name, feature.available, feature.used, feature.reason, feature.limitedBy});
 }
 
 std::string formatSeconds(double seconds) {

@@ -65,23 +65,36 @@ private:
     std::FILE* scratch_ = nullptr;
 };
 
-std::string limitOf(const Options& options) { return options.scene.force.any() ? "forced tier" : "driver"; }
+// Whose limit a path not taken is: the driver's own answer (ignoring --force) decides.
+std::string limitOf(bool driverHasIt) { return driverHasIt ? "forced tier" : "driver"; }
 
-// Why the session did not take a path the options ask for, or "".
-std::string pathNotTaken(const Options& options, const RenderSession& session, bool gpuPlants) {
+// Why the session did not take a path the options ask for (and whose limit), or "".
+std::string pathNotTaken(const Options& options, const RenderSession& session, bool gpuPlants, std::string& limitedBy) {
     const Renderer& renderer = *session.renderer;
     const SceneOptions& scene = options.scene;
-    if (scene.lightsPath && renderer.lightsPath() != *scene.lightsPath)
+    const gl::Capabilities& caps = session.caps;
+    if (scene.lightsPath && renderer.lightsPath() != *scene.lightsPath) {
+        limitedBy = limitOf(caps.driverHasSsbo());
         return "lights path " + std::string(lightsPathName(*scene.lightsPath)) + " not taken: " + renderer.lightsPathReason();
-    if (scene.lightMethod && options.pipeline == PipelineKind::Deferred && renderer.lightMethod() != *scene.lightMethod)
+    }
+    if (scene.lightMethod && options.pipeline == PipelineKind::Deferred && renderer.lightMethod() != *scene.lightMethod) {
+        limitedBy = limitOf(caps.driverHasCompute() && caps.driverHasSsbo());
         return "light method " + std::string(lightMethodName(*scene.lightMethod)) + " not taken: " +
                renderer.lightMethodReason();
-    if (gpuPlants && session.plantPath != PlantInterpretation::Gpu) return "plants on the GPU not taken: " + session.plantPathReason;
-    if (options.stencilView && renderer.stencilViewPath() != *options.stencilView)
+    }
+    if (gpuPlants && session.plantPath != PlantInterpretation::Gpu) {
+        limitedBy = limitOf(caps.driverHasCompute() && caps.driverHasSsbo());
+        return "plants on the GPU not taken: " + session.plantPathReason;
+    }
+    if (options.stencilView && renderer.stencilViewPath() != *options.stencilView) {
+        limitedBy = limitOf(caps.driverHasStencilTexturing());
         return std::string("stencil view ") + stencilViewPathName(*options.stencilView) + " not taken: " +
                session.stencilPathReason;
-    if (scene.depth == "reversed-z" && renderer.depthFellBack())
+    }
+    if (scene.depth == "reversed-z" && renderer.depthFellBack()) {
+        limitedBy = limitOf(caps.driverHasClipControl());
         return "reversed-z depth not taken: " + renderer.depthConventionReason();
+    }
     return {};
 }
 
@@ -96,13 +109,12 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
         context = std::make_unique<HeadlessContext>(maxGlVersionFor(options.scene));
     } catch (const std::exception& error) {
         frame.skipReason = std::string("no context for it: ") + error.what();
-        frame.limitedBy = limitOf(options);
+        frame.limitedBy = "driver";
         return frame;
     }
     RenderSession session(options);
-    if (std::string why = pathNotTaken(options, session, gpuPlants); !why.empty()) {
+    if (std::string why = pathNotTaken(options, session, gpuPlants, frame.limitedBy); !why.empty()) {
         frame.skipReason = why;
-        frame.limitedBy = limitOf(options);
         return frame;
     }
     Renderer& renderer = *session.renderer;

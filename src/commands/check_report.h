@@ -47,7 +47,7 @@ struct CapabilityRow {
     bool available = false;
     bool used = false;
     std::string reason;    // why used or not
-    std::string limitedBy; // "driver", "forced tier" or "" (used)
+    std::string limitedBy; // "" (used), "driver", "forced tier" or "not asked for" (gl::limitedBy)
 };
 
 struct CheckReport {

@@ -241,7 +241,8 @@ int renderSide(const Options& options, Side& side, const std::vector<std::string
         return code == 2 ? 2 : 1;  // a usage error stays one (e.g. a reference's size outside --size's domain)
     }
     side.renderer = reportedRenderer(child.output);
-    if (side.setup && side.renderer.rfind(side.setup->rendererPrefix, 0) != 0) {
+    const bool anyRenderer = side.setup && side.setup->rendererPrefix.empty();  // native: whatever this machine gives
+    if (side.setup && !anyRenderer && side.renderer.rfind(side.setup->rendererPrefix, 0) != 0) {
         // Mesa falls back to another driver rather than failing: the frame is not the set-up's.
         std::fprintf(stderr, "oasis: set-up %s is not available here: the frame was rendered by '%s', not %s (it needs %s)\n",
                      side.setup->name.c_str(), side.renderer.empty() ? "an unreported renderer" : side.renderer.c_str(),

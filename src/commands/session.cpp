@@ -44,19 +44,27 @@ StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optiona
 }
 
 namespace {
+// A report row: `can` says whether the driver has the feature and whether --force leaves it.
+gl::FeatureReport reportOf(std::string name, bool used, std::string reason, const gl::Availability& can) {
+    return {std::move(name), used, std::move(reason), can.driver, gl::limitedBy(used, can)};
+}
+
 // Clip control serves --depth reversed-z only: without it a standard frame loses nothing, so it is
 // a fallback only where reversed-z was asked for or clip control was switched off by --force.
 gl::FeatureReport clipControlFeature(const gl::Capabilities& caps, const Renderer& renderer) {
-    std::string why;
-    bool available = caps.clipControlAvailable(&why);
+    gl::Availability can = caps.availability(&gl::Capabilities::clipControlAvailable);
+    const std::string& why = can.reason;
     if (renderer.depthConvention().needsClipControl())
-        return {"clip-control", true, "depth " + renderer.depthConventionReason()};
+        return reportOf("clip-control", true, "depth " + renderer.depthConventionReason(), can);
     if (renderer.depthFellBack())
-        return {"clip-control", false, "fallback: depth " + renderer.depthConventionReason()};
+        return reportOf("clip-control", false, "fallback: depth " + renderer.depthConventionReason(), can);
     if (caps.forced.noClipControl)
-        return {"clip-control", false, "fallback: " + why + " (--depth reversed-z would draw standard depth)"};
-    return {"clip-control", false, "not used: depth " + renderer.depthConventionReason() +
-                                       (available ? "; " + why + " for --depth reversed-z" : "; the driver has " + why)};
+        return reportOf("clip-control", false, "fallback: " + why + " (--depth reversed-z would draw standard depth)", can);
+    // `why` names a forced tier itself where one hides what the driver has.
+    return reportOf("clip-control", false,
+                    "not used: depth " + renderer.depthConventionReason() +
+                        (can.tier ? "; " + why + " for --depth reversed-z" : can.driver ? "; " + why : "; the driver has " + why),
+                    can);
 }
 }  // namespace
 
@@ -136,56 +144,81 @@ RenderSession::RenderSession(const Options& options, Shaders need)
 }
 
 std::vector<gl::FeatureReport> RenderSession::features() const {
+    using gl::Capabilities;
     std::vector<gl::FeatureReport> list;
-    std::string why;
     // The light list: the renderer's path choice (from the capabilities above and --lights-path).
     bool ssbo = renderer->lightsPath() != LightsPath::Ubo;
-    list.push_back({"ssbo-light-list", ssbo, ssbo ? "SSBO light list, path " + renderer->lightsPathReason()
-                                                  : "fallback: UBO light list, path " + renderer->lightsPathReason()});
+    list.push_back(reportOf("ssbo-light-list", ssbo,
+                            ssbo ? "SSBO light list, path " + renderer->lightsPathReason()
+                                 : "fallback: UBO light list, path " + renderer->lightsPathReason(),
+                            caps.availability(&Capabilities::ssboAvailable)));
     // The deferred light method (--light-method): tiled where asked for and compute exists.
     bool tiled = renderer->lightMethod() == LightMethod::Tiled;
     bool tiledRefused = !tiled && scene.lights.method == LightMethod::Tiled;
-    list.push_back({"tiled-light-culling", tiled,
-                    tiled ? "deferred lights by " + renderer->lightMethodReason()
-                          : (tiledRefused ? "fallback: deferred lights by " : "not used: deferred lights by ") +
-                                renderer->lightMethodReason()});
+    gl::Availability compute = caps.availability(&Capabilities::computeAvailable);
+    // Not asked for, it still says why --light-method tiled would fall back where it would.
+    list.push_back(reportOf("tiled-light-culling", tiled,
+                            tiled ? "deferred lights by " + renderer->lightMethodReason()
+                                  : (tiledRefused ? "fallback: deferred lights by " : "not used: deferred lights by ") +
+                                        renderer->lightMethodReason() +
+                                        (tiledRefused || compute.tier ? "" : "; tiled needs compute: " + compute.reason),
+                            compute));
     bool gpuPlants = plantAtlas ? plantAtlas->path() == PlantInterpretation::Gpu : plantPath == PlantInterpretation::Gpu;
-    list.push_back({"compute-plant-interpretation", gpuPlants,
-                    gpuPlants ? plantPathReason : "fallback: " + plantPathReason});
+    // The GPU path chosen but its build failed (the constructor fell back): the driver's limit too.
+    gl::Availability plants = compute;
+    if (!gpuPlants && plantPath == PlantInterpretation::Gpu) plants.driver = false;
+    list.push_back(reportOf("compute-plant-interpretation", gpuPlants,
+                            gpuPlants ? plantPathReason : "fallback: " + plantPathReason, plants));
     bool texturing = renderer->stencilViewPath() == StencilViewPath::Texturing;
-    list.push_back({"stencil-texturing", texturing,
-                    texturing ? "stencil view by " + stencilPathReason : "fallback: stencil view by " + stencilPathReason});
-    bool floats = caps.floatRenderTargetsAvailable(&why);
-    list.push_back({"float-render-targets", floats, floats ? "Radiance, Reflection and the G-buffer: " + why
-                                                           : "required and missing: " + why});
-    caps.dsaAvailable(&why);
-    list.push_back({"direct-state-access", false,
-                    "not used: oasis edits GL objects through glBind* on every context, so no path depends "
-                    "on it (driver: " + (caps.driverHasDsa() ? std::string("has it") : "lacks it") +
-                    (caps.forced.noDsa ? "; --force no-dsa accepted, nothing changes)" : ")")});
+    list.push_back(reportOf("stencil-texturing", texturing,
+                            texturing ? "stencil view by " + stencilPathReason : "fallback: stencil view by " + stencilPathReason,
+                            caps.availability(&Capabilities::stencilTexturingAvailable)));
+    gl::Availability floats = caps.availability(&Capabilities::floatRenderTargetsAvailable);
+    list.push_back(reportOf("float-render-targets", floats.tier,
+                            floats.tier ? "Radiance, Reflection and the G-buffer: " + floats.reason
+                                        : "required and missing: " + floats.reason,
+                            floats));
+    // Never used, --force no-dsa or not: what limits it is oasis's choice unless the driver lacks it.
+    gl::FeatureReport dsa = reportOf("direct-state-access", false,
+                                     "not used: oasis edits GL objects through glBind* on every context, so no path depends "
+                                     "on it (driver: " + (caps.driverHasDsa() ? std::string("has it") : "lacks it") +
+                                         (caps.forced.noDsa ? "; --force no-dsa accepted, nothing changes)" : ")"),
+                                     caps.availability(&Capabilities::dsaAvailable));
+    if (dsa.available) dsa.limitedBy = gl::kLimitedByNotAskedFor;
+    list.push_back(dsa);
     list.push_back(clipControlFeature(caps, *renderer));
     const GBufferLayout& layout = renderer->targets().layout();
-    list.push_back({"depth-read-in-place", layout.positionFromDepth(),
-                    layout.positionFromDepth()
-                        ? "the " + layout.name + " layout rebuilds position from depth: the direct lighting, tiling, "
-                          "views and probe sample the depth-stencil target itself (the lighting tests against it "
-                          "read-only where read-only-depth says so); DepthCopyPass copies it only for passes that "
-                          "write stencil or may not read what they test (light volumes, the reflection's lighting)"
-                        : "not used: the " + layout.name + " layout stores position, no pass reads depth"});
+    // Sampling the depth-stencil target is core on every context oasis makes: the layout decides.
+    list.push_back(reportOf("depth-read-in-place", layout.positionFromDepth(),
+                            layout.positionFromDepth()
+                                ? "the " + layout.name + " layout rebuilds position from depth: the direct lighting, tiling, "
+                                  "views and probe sample the depth-stencil target itself (the lighting tests against it "
+                                  "read-only where read-only-depth says so); DepthCopyPass copies it only for passes that "
+                                  "write stencil or may not read what they test (light volumes, the reflection's lighting)"
+                                : "not used: the " + layout.name + " layout stores position, no pass reads depth",
+                            gl::Availability{true, true, {}}));
     bool readOnlyDepth = renderer->readOnlyDepthAvailable();
-    list.push_back({"read-only-depth", readOnlyDepth,
-                    readOnlyDepth ? "the deferred lighting shades only the surfaces (a far-plane triangle depth-tested "
-                                    "against the depth-stencil target it samples, writes off; SkyPass draws the sky): " +
-                                        renderer->readOnlyDepthReason()
-                                  : renderer->readOnlyDepthReason()});
-    bool clipDistances = caps.clipDistancesAvailable(&why);
-    list.push_back({"clip-distances", clipDistances,
-                    clipDistances ? "the reflection clipped at the water plane by " + why : why});
-    bool depthClamp = caps.depthClampAvailable(&why);
-    list.push_back({"depth-clamp", depthClamp, depthClamp ? "shadow casters nearer the sun than a cascade kept by " + why : why});
-    bool debug = caps.debugOutputAvailable(&why);
-    list.push_back({"debug-output", debug, debug ? "GL errors to stderr and a debug group per pass: " + why
-                                                 : "fallback: no debug messages or groups (" + why + ")"});
+    list.push_back(reportOf("read-only-depth", readOnlyDepth,
+                            readOnlyDepth ? "the deferred lighting shades only the surfaces (a far-plane triangle depth-tested "
+                                            "against the depth-stencil target it samples, writes off; SkyPass draws the sky): " +
+                                                renderer->readOnlyDepthReason()
+                                          : renderer->readOnlyDepthReason(),
+                            caps.availability(&Capabilities::readOnlyDepthAvailable)));
+    gl::Availability clipDistances = caps.availability(&Capabilities::clipDistancesAvailable);
+    list.push_back(reportOf("clip-distances", clipDistances.tier,
+                            clipDistances.tier ? "the reflection clipped at the water plane by " + clipDistances.reason
+                                               : clipDistances.reason,
+                            clipDistances));
+    gl::Availability depthClamp = caps.availability(&Capabilities::depthClampAvailable);
+    list.push_back(reportOf("depth-clamp", depthClamp.tier,
+                            depthClamp.tier ? "shadow casters nearer the sun than a cascade kept by " + depthClamp.reason
+                                            : depthClamp.reason,
+                            depthClamp));
+    gl::Availability debug = caps.availability(&Capabilities::debugOutputAvailable);
+    list.push_back(reportOf("debug-output", debug.tier,
+                            debug.tier ? "GL errors to stderr and a debug group per pass: " + debug.reason
+                                       : "fallback: no debug messages or groups (" + debug.reason + ")",
+                            debug));
     return list;
 }
 

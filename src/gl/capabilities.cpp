@@ -63,17 +63,37 @@ const FeatureSource kDepthClamp{3, 2, "GL_ARB_depth_clamp", 0, 0, "GL_EXT_depth_
 // draws write. ES is not assumed to allow it.
 const FeatureSource kReadOnlyDepth{4, 5, "GL_ARB_texture_barrier", 0, 0, nullptr};  // desktop only
 
-// "GL 4.3" / "ES 3.1" when the core version has it, else the extension's name when listed, else "".
-std::string source(const Capabilities& caps, const FeatureSource& feature) {
-    int major = caps.es ? feature.esMajor : feature.major, minor = caps.es ? feature.esMinor : feature.minor;
-    const char* extension = caps.es ? feature.esExtension : feature.extension;
-    if (major > 0 && caps.atLeast(major, minor))
-        return (caps.es ? "ES " : "GL ") + std::to_string(major) + "." + std::to_string(minor);
-    if (extension && caps.hasExtension(extension)) return extension;
-    return {};
+// A version and extension list to ask: the tier oasis goes by (major/minor/extensions) or the
+// context's own (beforeTier, where a forced tier replaced them).
+struct Offer {
+    bool es;
+    int major, minor;
+    const std::set<std::string>& extensions;
+    bool atLeast(int wantMajor, int wantMinor) const {
+        return major > wantMajor || (major == wantMajor && minor >= wantMinor);
+    }
+    bool has(const char* name) const { return extensions.count(name) != 0; }
+};
+Offer tierOffer(const Capabilities& caps) { return {caps.es, caps.major, caps.minor, caps.extensions}; }
+Offer driverOffer(const Capabilities& caps) {
+    if (!caps.beforeTier) return tierOffer(caps);
+    return {caps.es, caps.beforeTier->major, caps.beforeTier->minor, caps.beforeTier->extensions};
 }
 
-// "no GL 4.3 / GL_ARB_compute_shader" or "no ES 3.1" in the context's own terms.
+// "GL 4.3" / "ES 3.1" when the core version has it, else the extension's name when listed, else "".
+std::string source(const Offer& offer, const FeatureSource& feature) {
+    int major = offer.es ? feature.esMajor : feature.major, minor = offer.es ? feature.esMinor : feature.minor;
+    const char* extension = offer.es ? feature.esExtension : feature.extension;
+    if (major > 0 && offer.atLeast(major, minor))
+        return (offer.es ? "ES " : "GL ") + std::to_string(major) + "." + std::to_string(minor);
+    if (extension && offer.has(extension)) return extension;
+    return {};
+}
+std::string source(const Capabilities& caps, const FeatureSource& feature) { return source(tierOffer(caps), feature); }
+
+// "no GL 4.3 / GL_ARB_compute_shader" or "no ES 3.1" in the context's own terms; where a forced
+// tier hides what the driver has, the tier is named as the limit: "no GL_EXT_clip_control in the
+// forced ES 3.0 tier (--force gles30; the driver has GL_EXT_clip_control)".
 std::string missing(const Capabilities& caps, const FeatureSource& feature) {
     int major = caps.es ? feature.esMajor : feature.major, minor = caps.es ? feature.esMinor : feature.minor;
     const char* extension = caps.es ? feature.esExtension : feature.extension;
@@ -81,6 +101,12 @@ std::string missing(const Capabilities& caps, const FeatureSource& feature) {
     if (major > 0) text += std::string(caps.es ? "ES " : "GL ") + std::to_string(major) + "." + std::to_string(minor);
     if (extension) text += std::string(major > 0 ? " / " : "") + extension;
     if (major == 0 && !extension) text += "such feature in OpenGL ES";
+    std::string driverHas = source(driverOffer(caps), feature);
+    if (caps.beforeTier && !driverHas.empty()) {
+        bool gles30 = caps.es && caps.forced.gles30;
+        text += std::string(" in the forced ") + (gles30 ? "ES 3.0 tier (--force gles30" : "GL 3.3 tier (--force gl33") +
+                "; the driver has " + driverHas + ")";
+    }
     return text;
 }
 
@@ -163,17 +189,44 @@ bool parseForcedFallbacks(const std::string& text, ForcedFallbacks& forced, std:
     return true;
 }
 
-bool Capabilities::driverHasSsbo() const { return !source(*this, kSsbo).empty(); }
-bool Capabilities::driverHasCompute() const { return !source(*this, kCompute).empty(); }
-bool Capabilities::driverHasStencilTexturing() const { return !source(*this, kStencilTexturing).empty(); }
-bool Capabilities::driverHasDsa() const { return !source(*this, kDsa).empty(); }
-bool Capabilities::driverHasDebugOutput() const { return !source(*this, kDebug).empty(); }
-bool Capabilities::driverHasClipControl() const { return !source(*this, kClipControl).empty(); }
-bool Capabilities::driverHasClipDistances() const { return !source(*this, kClipDistances).empty(); }
-bool Capabilities::driverHasDepthClamp() const { return !source(*this, kDepthClamp).empty(); }
+bool Capabilities::driverHasSsbo() const { return !source(driverOffer(*this), kSsbo).empty(); }
+bool Capabilities::driverHasCompute() const { return !source(driverOffer(*this), kCompute).empty(); }
+bool Capabilities::driverHasStencilTexturing() const { return !source(driverOffer(*this), kStencilTexturing).empty(); }
+bool Capabilities::driverHasDsa() const { return !source(driverOffer(*this), kDsa).empty(); }
+bool Capabilities::driverHasDebugOutput() const { return !source(driverOffer(*this), kDebug).empty(); }
+bool Capabilities::driverHasClipControl() const { return !source(driverOffer(*this), kClipControl).empty(); }
+bool Capabilities::driverHasClipDistances() const { return !source(driverOffer(*this), kClipDistances).empty(); }
+bool Capabilities::driverHasDepthClamp() const { return !source(driverOffer(*this), kDepthClamp).empty(); }
 bool Capabilities::driverHasFloatRenderTargets() const {
-    if (es) return !source(*this, kFloatTargets).empty();
-    return atLeast(3, 0) || (hasExtension("GL_ARB_texture_float") && hasExtension("GL_ARB_color_buffer_float"));
+    Offer own = driverOffer(*this);
+    if (es) return !source(own, kFloatTargets).empty();
+    return own.atLeast(3, 0) || (own.has("GL_ARB_texture_float") && own.has("GL_ARB_color_buffer_float"));
+}
+
+Capabilities Capabilities::unforced() const {
+    Capabilities own = *this;
+    own.forced = {};
+    if (beforeTier) {
+        own.major = beforeTier->major;
+        own.minor = beforeTier->minor;
+        own.extensions = beforeTier->extensions;
+        own.beforeTier.reset();
+    }
+    return own;
+}
+
+Availability Capabilities::availability(bool (Capabilities::*available)(std::string*) const) const {
+    Availability answer;
+    answer.tier = (this->*available)(&answer.reason);
+    answer.driver = (unforced().*available)(nullptr);
+    return answer;
+}
+
+std::string limitedBy(bool used, const Availability& availability) {
+    if (used) return {};
+    if (!availability.driver) return kLimitedByDriver;
+    if (!availability.tier) return kLimitedByForcedTier;
+    return kLimitedByNotAskedFor;
 }
 
 bool Capabilities::ssboAvailable(std::string* reason) const {
@@ -235,7 +288,8 @@ bool Capabilities::floatRenderTargetsAvailable(std::string* reason) const {
         if (from.empty()) return answer(false, reason, missing(*this, kFloatTargets));
         return answer(true, reason, "RGBA16F/RGBA32F colour-renderable (" + from + ")");
     }
-    if (!driverHasFloatRenderTargets()) return answer(false, reason, "no GL 3.0 / GL_ARB_texture_float");
+    if (!atLeast(3, 0) && !(hasExtension("GL_ARB_texture_float") && hasExtension("GL_ARB_color_buffer_float")))
+        return answer(false, reason, "no GL 3.0 / GL_ARB_texture_float");
     return answer(true, reason, atLeast(3, 0) ? "RGBA16F/RGBA32F colour-renderable (core since GL 3.0)"
                                               : "GL_ARB_texture_float + GL_ARB_color_buffer_float");
 }
@@ -292,6 +346,32 @@ std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() con
     return list;
 }
 
+void applyForcedTier(Capabilities& caps) {
+    ContextOwn own{caps.major, caps.minor, caps.extensions};
+    bool changed = false;
+    if (caps.forced.gles30 && caps.es && caps.atLeast(3, 1)) {  // Mesa gives ES 3.2 for any 3.x request
+        caps.version += " (treated as ES 3.0: --force gles30)";
+        caps.glslVersion += " (shaders as 300 es: --force gles30)";
+        caps.major = 3;
+        caps.minor = 0;
+        changed = true;
+    }
+    if (caps.forced.gl33 && !caps.es && caps.atLeast(3, 4)) {  // a driver that gave more than the 3.3 asked for
+        caps.version += " (treated as 3.3: --force gl33)";
+        caps.major = 3;
+        caps.minor = 3;
+        changed = true;
+    }
+    if (caps.forced.gles30 && caps.es) {
+        std::set<std::string> kept;
+        for (const char* name : kGles30Extensions)
+            if (caps.hasExtension(name)) kept.insert(name);
+        changed = changed || kept != caps.extensions;
+        caps.extensions = std::move(kept);
+    }
+    if (changed) caps.beforeTier = std::move(own);
+}
+
 Capabilities measureCapabilities(const ForcedFallbacks& forced) {
     Capabilities caps;
     caps.forced = forced;
@@ -302,27 +382,11 @@ Capabilities measureCapabilities(const ForcedFallbacks& forced) {
     caps.major = getInt(GL_MAJOR_VERSION);
     caps.minor = getInt(GL_MINOR_VERSION);
     caps.es = !epoxy_is_desktop_gl();
-    if (forced.gles30 && caps.es && caps.atLeast(3, 1)) {  // Mesa gives ES 3.2 for any 3.x request
-        caps.version += " (treated as ES 3.0: --force gles30)";
-        caps.glslVersion += " (shaders as 300 es: --force gles30)";
-        caps.major = 3;
-        caps.minor = 0;
-    }
-    if (forced.gl33 && caps.atLeast(3, 4)) {  // a driver that gave more than the 3.3 asked for
-        caps.version += " (treated as 3.3: --force gl33)";
-        caps.major = 3;
-        caps.minor = 3;
-    }
     int count = getInt(GL_NUM_EXTENSIONS);
     for (int i = 0; i < count; ++i)
         if (const GLubyte* name = glGetStringi(GL_EXTENSIONS, GLuint(i)))
             caps.extensions.insert(reinterpret_cast<const char*>(name));
-    if (forced.gles30 && caps.es) {
-        std::set<std::string> kept;
-        for (const char* name : kGles30Extensions)
-            if (caps.hasExtension(name)) kept.insert(name);
-        caps.extensions = kept;
-    }
+    applyForcedTier(caps);
     Limits& limits = caps.limits;
     limits.maxUniformBlockSize = getInt(GL_MAX_UNIFORM_BLOCK_SIZE);
     limits.maxDrawBuffers = getInt(GL_MAX_DRAW_BUFFERS);

@@ -2,6 +2,7 @@
 // combined with the fallbacks forced on the command line (--force). Every capability-dependent
 // path choice asks this one object, so a user's driver can be reproduced by switching features off.
 #pragma once
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -76,11 +77,36 @@ extern const StorageNeed kPlantInterpreterStorage;
 // "GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS is 0, the SSBO light list needs 4".
 std::string storageShortfall(const Limits& limits, const StorageNeed& need);
 
-// One feature oasis can use: whether it is used here, and why (why not when not).
+// One feature oasis can use: whether the driver could, whether it is used here, who limits it
+// when not, and why.
 struct FeatureReport {
     std::string name;    // "ssbo-light-list", "compute-plant-interpretation", ...
     bool used = false;
     std::string reason;  // "SSBOs present (GL 4.3)" / "fallback: UBO light list (no GL 4.3 / ...)"
+    bool available = false;  // the driver has it, whatever --force says
+    std::string limitedBy;   // "" when used, else one of the kLimitedBy* below (limitedBy())
+};
+
+// A feature's answer twice: the driver's own (--force undone: Capabilities::unforced) and the one
+// oasis goes by (--force applied), with the latter's reason.
+struct Availability {
+    bool driver = false;
+    bool tier = false;
+    std::string reason;
+};
+
+// Who keeps a feature from being used, as the report words it.
+constexpr const char* kLimitedByDriver = "driver";            // the driver lacks it
+constexpr const char* kLimitedByForcedTier = "forced tier";   // the driver has it; a --force hides it
+constexpr const char* kLimitedByNotAskedFor = "not asked for";  // oasis could; the options (or its default) do not
+// "" when used, else the first of the three that holds.
+std::string limitedBy(bool used, const Availability& availability);
+
+// The context's own version and extensions, kept where a forced tier replaced them in
+// Capabilities (--force gles30 on an ES 3.1+ context, --force gl33 on a driver that gave more).
+struct ContextOwn {
+    int major = 0, minor = 0;
+    std::set<std::string> extensions;
 };
 
 struct Capabilities {
@@ -88,15 +114,18 @@ struct Capabilities {
     int major = 0, minor = 0;
     bool es = false;  // an OpenGL ES context: major.minor is the ES version
     Limits limits;
-    std::set<std::string> extensions;  // every extension the context lists
+    std::set<std::string> extensions;  // every extension the context lists (the forced tier's, if one)
     ForcedFallbacks forced;
+    // Set by applyForcedTier when the tier changed major.minor or extensions: what the context itself
+    // gave, so that the report tells a tier's limit from the driver's.
+    std::optional<ContextOwn> beforeTier;
 
     bool atLeast(int wantMajor, int wantMinor) const {
         return major > wantMajor || (major == wantMajor && minor >= wantMinor);
     }
     bool hasExtension(const std::string& name) const { return extensions.count(name) != 0; }
 
-    // The driver's own answer, ignoring --force: core version or extension.
+    // The driver's own answer, ignoring --force (a forced tier included): core version or extension.
     bool driverHasSsbo() const;
     bool driverHasCompute() const;
     bool driverHasStencilTexturing() const;
@@ -126,11 +155,26 @@ struct Capabilities {
     // "OpenGL 4.5" / "OpenGL ES 3.2": the version as the reasons name it.
     std::string apiVersionName() const;
 
+    // The driver's own capabilities: the forced tier undone (beforeTier), nothing forced. Their
+    // *Available() say what this driver could do.
+    Capabilities unforced() const;
+    // One *Available() asked of the driver's own capabilities and of these:
+    // availability(&Capabilities::clipControlAvailable).
+    Availability availability(bool (Capabilities::*available)(std::string*) const) const;
+
     // The extensions oasis cares about (each with whether the context lists it), in a fixed order.
     std::vector<std::pair<std::string, bool>> relevantExtensions() const;
 };
 
-// Measures the current context (needs one made current); `forced` is kept alongside.
+// Applies the forced tier of caps.forced to a context's measured version and extensions: gles30
+// makes an ES 3.1+ context 3.0 keeping only the extensions an ES 3.0 device lists too (float
+// colour targets, debug output), gl33 caps a context above 3.3 at 3.3
+// (the version strings say so); what the context gave goes to beforeTier. Nothing else forced
+// changes here: the *Available() apply the rest.
+void applyForcedTier(Capabilities& caps);
+
+// Measures the current context (needs one made current); `forced` is kept alongside and its tier
+// applied (applyForcedTier).
 Capabilities measureCapabilities(const ForcedFallbacks& forced = {});
 
 }  // namespace oasis::gl

@@ -145,7 +145,8 @@ GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool dept
 }
 
 GlslDialect glslDialectForEs(const gl::Capabilities& caps) {
-    return glslDialectForEs(caps.major, caps.minor, caps.driverHasClipDistances(), caps.driverHasDepthClamp(),
+    // The tier's answers (--force gles30 has neither), not the driver's own.
+    return glslDialectForEs(caps.major, caps.minor, caps.clipDistancesAvailable(), caps.depthClampAvailable(),
                             esPreciseExtension([&](const char* name) { return caps.hasExtension(name); }));
 }
 

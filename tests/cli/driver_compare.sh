@@ -2,6 +2,9 @@
 # compare --driver / --reference end to end (commands/driver_compare.h), one case per ctest test:
 #   same       llvmpipe against llvmpipe: max abs 0, both frames and difference.png written
 #   forced     llvmpipe against no-ssbo (--force no-ssbo, bit-identical by design): max abs 0
+#   native     this machine's default driver (no renderer check) against llvmpipe at 64x36: where the
+#              default is llvmpipe (this project's machines), identical; and native against a frame
+#              it rendered, as --reference: identical
 #   zink       llvmpipe against zink over lavapipe: a finite PSNR of at least $ZINK_MIN_PSNR dB
 #              (exit 77 = skipped, saying why, when zink is not on this machine)
 #   reference  a frame `render` wrote, as --reference: identical (the size taken from the file)
@@ -50,6 +53,17 @@ same)
     expect_difference_png ;;
 forced)
     compare --driver llvmpipe --driver no-ssbo --size $size || fail "exit $?: $(cat "$scratch/stderr")"
+    expect_identical ;;
+native)
+    compare --driver native --driver llvmpipe --size 64x36 || fail "exit $?: $(cat "$scratch/stderr")"
+    renderer=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['a']['renderer'])" "$scratch/out.json")
+    case $renderer in
+    llvmpipe*) expect_identical ;;
+    *) echo "native is $renderer here, not llvmpipe: max abs $(field max_abs), PSNR $(field psnr_db) dB" ;;
+    esac
+    echo "native ($renderer) against llvmpipe at 64x36: max abs $(field max_abs)"
+    "$oasis" render --size 64x36 --legend off --out "$scratch/native-ref.png" > /dev/null 2>&1 || fail "render failed"
+    compare --driver native --reference "$scratch/native-ref.png" || fail "--reference: exit $?: $(cat "$scratch/stderr")"
     expect_identical ;;
 zink)
     compare --driver llvmpipe --driver zink --size $size

@@ -162,6 +162,87 @@ TEST(Capabilities, Es31PlantInterpreterNeedsGpuShader5) {
     EXPECT_EQ(reason, "compute shaders and SSBOs present (ES 3.1)");
 }
 
+// --force gles30 on an ES 3.2 driver with the extensions: the tier hides them, and the report says
+// the tier limits them while the driver has them (issue 29: it said "the driver has no ...").
+TEST(Capabilities, ForcedEs30TierIsTheLimitWhereTheDriverHasTheFeature) {
+    gl::Capabilities caps = esContextOf(2, {"GL_EXT_clip_control", "GL_EXT_clip_cull_distance", "GL_EXT_depth_clamp",
+                                            "GL_EXT_color_buffer_float", "GL_KHR_debug"});
+    caps.forced.gles30 = true;
+    gl::applyForcedTier(caps);
+    EXPECT_EQ(caps.minor, 0);
+    ASSERT_TRUE(caps.beforeTier.has_value());
+    EXPECT_EQ(caps.beforeTier->minor, 2);
+    EXPECT_FALSE(caps.hasExtension("GL_EXT_clip_control")) << "the tier's own extensions alone";
+    EXPECT_TRUE(caps.driverHasClipControl() && caps.driverHasClipDistances() && caps.driverHasDepthClamp() &&
+                caps.driverHasSsbo())
+        << "the driver's answer ignores the tier";
+    gl::Availability clip = caps.availability(&gl::Capabilities::clipControlAvailable);
+    EXPECT_TRUE(clip.driver);
+    EXPECT_FALSE(clip.tier);
+    EXPECT_EQ(clip.reason,
+              "no GL_EXT_clip_control in the forced ES 3.0 tier (--force gles30; the driver has GL_EXT_clip_control)");
+    EXPECT_EQ(gl::limitedBy(false, clip), gl::kLimitedByForcedTier);
+    for (auto available : {&gl::Capabilities::clipDistancesAvailable, &gl::Capabilities::depthClampAvailable,
+                           &gl::Capabilities::ssboAvailable, &gl::Capabilities::stencilTexturingAvailable}) {
+        gl::Availability each = caps.availability(available);
+        EXPECT_TRUE(each.driver && !each.tier) << each.reason;
+        EXPECT_NE(each.reason.find("in the forced ES 3.0 tier (--force gles30; the driver has "), std::string::npos)
+            << each.reason;
+        EXPECT_EQ(gl::limitedBy(false, each), gl::kLimitedByForcedTier) << each.reason;
+    }
+    EXPECT_EQ(caps.availability(&gl::Capabilities::ssboAvailable).reason,
+              "no ES 3.1 in the forced ES 3.0 tier (--force gles30; the driver has ES 3.1)");
+    // What the ES 3.0 tier keeps is used: float targets by the extension, debug output.
+    gl::Availability floats = caps.availability(&gl::Capabilities::floatRenderTargetsAvailable);
+    EXPECT_TRUE(floats.driver && floats.tier) << floats.reason;
+    EXPECT_EQ(gl::limitedBy(true, floats), "");
+    EXPECT_TRUE(caps.unforced().clipControlAvailable()) << "the driver's own capabilities";
+}
+
+// The same tier on a driver without the extensions: the driver is the limit, said in its terms.
+TEST(Capabilities, ForcedEs30TierOnADriverWithoutTheExtensionsBlamesTheDriver) {
+    gl::Capabilities caps = esContextOf(2, {"GL_EXT_color_buffer_float"});
+    caps.forced.gles30 = true;
+    gl::applyForcedTier(caps);
+    gl::Availability clip = caps.availability(&gl::Capabilities::clipControlAvailable);
+    EXPECT_FALSE(clip.driver || clip.tier);
+    EXPECT_EQ(clip.reason, "no GL_EXT_clip_control");
+    EXPECT_EQ(gl::limitedBy(false, clip), gl::kLimitedByDriver);
+    // SSBOs: ES 3.2 has them, the tier hides them.
+    EXPECT_EQ(gl::limitedBy(false, caps.availability(&gl::Capabilities::ssboAvailable)), gl::kLimitedByForcedTier);
+    // Unforced, a driver that has clip control and is not asked for reversed-z: not asked for.
+    gl::Capabilities plain = esContextOf(2, {"GL_EXT_clip_control"});
+    EXPECT_EQ(gl::limitedBy(false, plain.availability(&gl::Capabilities::clipControlAvailable)),
+              gl::kLimitedByNotAskedFor);
+    EXPECT_FALSE(plain.beforeTier.has_value());
+}
+
+// --force NAME switches a feature off where the driver has it: the forced tier limits it, and a
+// context with nothing to cap keeps no beforeTier.
+TEST(Capabilities, ForcedFallbacksAreTheForcedTiersLimit) {
+    gl::Capabilities caps = contextOf(4, 5, {"GL_KHR_debug"});
+    caps.forced.noSsbo = caps.forced.noDepthClamp = true;
+    gl::applyForcedTier(caps);
+    EXPECT_FALSE(caps.beforeTier.has_value());
+    for (auto available : {&gl::Capabilities::ssboAvailable, &gl::Capabilities::computeAvailable,
+                           &gl::Capabilities::depthClampAvailable}) {
+        gl::Availability each = caps.availability(available);
+        EXPECT_EQ(gl::limitedBy(false, each), gl::kLimitedByForcedTier) << each.reason;
+        EXPECT_NE(each.reason.find("--force no-"), std::string::npos) << each.reason;
+    }
+    // --force gl33 on a driver that gave 4.5 (not Mesa: its context is made 3.3): capped, the
+    // driver's 4.5 kept for the report.
+    gl::Capabilities gl45 = contextOf(4, 5);
+    gl45.forced.gl33 = true;
+    gl::applyForcedTier(gl45);
+    EXPECT_EQ(gl45.minor, 3);
+    ASSERT_TRUE(gl45.beforeTier.has_value());
+    gl::Availability ssbo = gl45.availability(&gl::Capabilities::ssboAvailable);
+    EXPECT_TRUE(ssbo.driver && !ssbo.tier);
+    EXPECT_EQ(ssbo.reason, "no GL 4.3 / GL_ARB_shader_storage_buffer_object in the forced GL 3.3 tier (--force gl33; "
+                           "the driver has GL 4.3)");
+}
+
 TEST(Capabilities, ApiOptionAndTheEsTierForcing) {
     ParseResult r = parseCommandLine({"render", "--api", "gles", "--force", "gles30"});
     ASSERT_TRUE(r.ok) << r.error;

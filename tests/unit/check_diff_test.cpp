@@ -20,6 +20,7 @@ CaseResult makeCase(const std::string& name, Verdict verdict, double psnrDb = 45
     c.psnrDb = psnrDb;
     c.maxAbs = maxAbs;
     c.pixelsOver = pixelsOver;
+    c.referenceCompared = verdict != Verdict::Skip;  // a skip has no numbers
     c.reason = verdict == Verdict::Skip ? "the driver has no SSBOs" : "within the rule";
     return c;
 }

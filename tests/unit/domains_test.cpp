@@ -37,6 +37,8 @@ std::vector<std::string> argumentsFor(const InputDomain& domain, const std::stri
     if (name == "--size H") return {"render", "--size", "32x" + text};
     if (name == "--frames") return {"compare", "--frames", text};
     if (name == "--driver-timeout") return {"compare", "--driver", "llvmpipe", "--driver", "zink", name, text};
+    // The exposure scales the HDR views only (a rule refuses it on the final view: cli/option_rules.h).
+    if (name == "--view-exposure") return {"render", "--view", "radiance", name, text};
     if (name == "--range LO") return {"render", "--view", "depth", "--range", text + ",1e9"};
     if (name == "--range HI") return {"render", "--view", "depth", "--range", "-1e9," + text};
     if (name == "--at X") return {"probe", "--size", "32768x18", "--at", text + ",0"};

@@ -8,6 +8,7 @@
 
 #include "cli/driver_setups.h"
 #include "cli/options.h"
+#include "gl/capabilities.h"
 
 namespace oasis {
 namespace {
@@ -47,6 +48,26 @@ TEST(DriverSetups, TableSelectsDriversAndTiers) {
         for (const std::string& argument : findDriverSetup(name)->arguments) args.push_back(argument);
         EXPECT_TRUE(parseCommandLine(args).ok) << name << ": " << parseCommandLine(args).error;
     }
+    // native: this machine's default driver, whatever its renderer: nothing set, nothing passed.
+    const DriverSetup* native = findDriverSetup("native");
+    ASSERT_NE(native, nullptr);
+    EXPECT_TRUE(native->environment.empty() && native->arguments.empty());
+    EXPECT_EQ(native->rendererPrefix, "") << "no renderer required";
+    EXPECT_TRUE(parseCommandLine({"compare", "--driver", "native", "--reference", "sent.png"}).ok);
+    EXPECT_TRUE(parseCommandLine({"compare", "--driver", "native", "--driver", "llvmpipe"}).ok);
+    // A set-up for every name --force accepts (gles30's with --api gles), whose child parses.
+    std::string names = gl::forcedFallbackNames();
+    for (size_t at = 0; at < names.size();) {
+        size_t end = names.find(", ", at);
+        std::string name = names.substr(at, end == std::string::npos ? std::string::npos : end - at);
+        at = end == std::string::npos ? names.size() : end + 2;
+        const DriverSetup* tier = findDriverSetup(name);
+        ASSERT_NE(tier, nullptr) << "no set-up for --force " << name;
+        std::vector<std::string> args = {"render"};
+        args.insert(args.end(), tier->arguments.begin(), tier->arguments.end());
+        EXPECT_NE(std::find(args.begin(), args.end(), name), args.end()) << name << " is not forced by its set-up";
+        EXPECT_TRUE(parseCommandLine(args).ok) << name << ": " << parseCommandLine(args).error;
+    }
     // Every named set-up is in the list the errors print, once.
     for (const DriverSetup& setup : driverSetups()) {
         std::string names = ", " + driverSetupNames() + ",";
@@ -77,7 +98,7 @@ TEST(DriverSetups, RefusedCombinations) {
         EXPECT_FALSE(r.ok) << args.size();
         return r.error;
     };
-    EXPECT_NE(error({"compare", "--driver", "nope", "--driver", "zink"}).find("one of: llvmpipe, zink"), std::string::npos);
+    EXPECT_NE(error({"compare", "--driver", "nope", "--driver", "zink"}).find("one of: native, llvmpipe, zink"), std::string::npos);
     EXPECT_NE(error({"compare", "--driver", "zink"}).find("needs a second --driver or --reference"), std::string::npos);
     EXPECT_NE(error({"compare", "--driver", "zink", "--driver", "zink", "--driver", "llvmpipe"}).find("three"),
               std::string::npos);

@@ -136,6 +136,7 @@ TEST(JsonValue, ReadsTheCheckReportItsWriterWrites) {
     c.name = "forward-ubo";
     c.verdict = Verdict::Fail;
     c.options = {"--pipeline", "forward"};
+    c.referenceCompared = true;
     c.psnrDb = 31.5;
     c.firstDivergence = FirstDivergence{"LightingPass", "Radiance", 12};
     report.cases.push_back(c);
