@@ -178,7 +178,7 @@ done
 # compare --driver / --reference: unknown set-ups (listing the valid ones), one or three set-ups,
 # both forms at once, a reference that is no readable PNG or not the --size asked for; nothing rendered.
 expect 2 compare --driver nope --driver llvmpipe
-grep -q 'one of: llvmpipe, zink, softpipe' "$scratch/stderr" || fail "unknown --driver does not list the set-ups: $(cat "$scratch/stderr")"
+grep -q 'one of: native, llvmpipe, zink, softpipe' "$scratch/stderr" || fail "unknown --driver does not list the set-ups: $(cat "$scratch/stderr")"
 expect 2 compare --driver llvmpipe
 expect 2 compare --driver llvmpipe --driver zink --driver softpipe
 expect 2 compare --driver llvmpipe --driver llvmpipe --reference "$scratch/ref.png"

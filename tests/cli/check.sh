@@ -43,7 +43,8 @@ print("report.json: %d cases, %s" % (len(cases), summary))
 EOF
     if browser=$(command -v chromium-headless-shell); then
         profile=$(mktemp -d)
-        timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --disable-background-networking \
+        # The browser is not oasis: the sanitizer build's preload and options are not for it.
+        env -u LD_PRELOAD -u ASAN_OPTIONS -u UBSAN_OPTIONS -u LSAN_OPTIONS timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --disable-background-networking \
             --disable-component-update --no-first-run --user-data-dir="$profile" --dump-dom "file://$work/out/report.html" \
             > dom.html 2> chromium.log || fail "chromium exited $? on report.html"
         rm -rf "$profile"
