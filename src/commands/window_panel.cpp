@@ -1,0 +1,187 @@
+// The window's ImGui panel: pipeline, G-buffer, depth, view, time, camera and the scene's option
+// sections (shadows, water, vegetation, lights, frame work), beside the inspector and comparison.
+#include "commands/window_state.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "render/encoding_error.h"
+
+namespace oasis {
+namespace window {
+
+namespace {
+
+// Point lights: the count, the path (automatic or forced) and which path is active and why.
+void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
+    if (!ImGui::CollapsingHeader("lights")) return;
+    ImGui::SliderInt("point lights", &scene.lights.count, 0, kMaxLights);
+    const char* choices[] = {"automatic", "ssbo", "ssbo-count", "ubo"};
+    int choice = scene.lights.path ? 1 + int(*scene.lights.path) : 0;
+    if (ImGui::Combo("light path", &choice, choices, 4))
+        scene.lights.path = choice == 0 ? std::nullopt : std::optional<LightsPath>(LightsPath(choice - 1));
+    ImGui::TextWrapped("active: %s", renderer.lightsPathReason().c_str());
+    ImGui::Text("%d lights drawn; ubo holds %d x %d", renderer.lightsDrawn(), renderer.uboLights().blocks,
+                renderer.uboLights().capacity);
+    if (renderer.lightsDropped() > 0)
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.2f, 1.0f), "WARNING: %d lights dropped", renderer.lightsDropped());
+}
+
+// The depth convention asked for; the one in use and why when it differs (no clip control).
+void drawDepthCombo(const Renderer& renderer, WindowState& state) {
+    const auto& conventions = depthConventions();
+    size_t& chosen = state.chosen.depthIndex;
+    if (ImGui::BeginCombo("depth (Z)", conventions[chosen].name.c_str())) {
+        for (size_t i = 0; i < conventions.size(); ++i) {
+            std::string label = conventions[i].name + " (" + std::to_string(conventions[i].depthStencil.bytesPerPixel) + " B/px)";
+            if (ImGui::Selectable(label.c_str(), i == chosen)) chosen = i;
+        }
+        ImGui::EndCombo();
+    }
+    if (renderer.depthFellBack()) ImGui::TextWrapped("depth: %s", renderer.depthConventionReason().c_str());
+}
+
+// Which scene the views show under the water (render/view_fill.h), and what the view shows there.
+void drawWaterSceneControl(const Renderer& renderer, Configuration& chosen) {
+    int scene = chosen.waterScene == WaterScene::Direct ? 0 : 1;
+    ImGui::TextUnformatted("under the water (M):");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("direct", &scene, 0)) chosen.waterScene = WaterScene::Direct;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("mirrored", &scene, 1)) chosen.waterScene = WaterScene::Mirrored;
+    const ViewScene& shown = renderer.viewScene();
+    if (const DebugView* view = findDebugView(chosen.view))
+        ImGui::TextWrapped("%s", waterNote(*view, shown.description).c_str());
+    else if (!shown.description.empty())
+        ImGui::TextWrapped("the G-buffer, depth and error tiles under the water: %s", shown.description.c_str());
+    if (!shown.reason.empty()) ImGui::TextWrapped("(%s)", shown.reason.c_str());
+}
+
+}  // namespace
+
+void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
+    ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+    // Wide enough for the probe's lines, as tall as the window allows (the sections collapse).
+    ImGui::SetNextWindowSize(ImVec2(480.0f, std::max(200.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
+    ImGui::Begin("oasis");
+    // The reload result first: a shader error must be seen without scrolling a small window.
+    if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
+    ImGui::SameLine();
+    if (ImGui::Button("capture next frame (F9)")) requestCapture(state);
+    if (state.messageIsError) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.4f, 0.2f, 1.0f));
+    if (!state.message.empty()) ImGui::TextWrapped("%s", state.message.c_str());
+    if (state.messageIsError) ImGui::PopStyleColor();
+    Configuration& chosen = state.chosen;
+    int pipeline = chosen.pipeline == PipelineKind::Forward ? 0 : 1;
+    if (ImGui::RadioButton("forward", &pipeline, 0)) choosePipeline(state, PipelineKind::Forward);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("deferred", &pipeline, 1)) choosePipeline(state, PipelineKind::Deferred);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(Tab)");
+    ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
+    drawComparePanel(state);
+
+    const auto& layouts = gbufferLayouts();
+    if (ImGui::BeginCombo("G-buffer (G)", layouts[chosen.layoutIndex].name.c_str())) {
+        for (size_t i = 0; i < layouts.size(); ++i) {
+            std::string label = layouts[i].name + " (" + std::to_string(layouts[i].bytesPerPixel()) + " B/px)";
+            if (ImGui::Selectable(label.c_str(), i == chosen.layoutIndex)) chosen.layoutIndex = i;
+        }
+        ImGui::EndCombo();
+    }
+    drawDepthCombo(renderer, state);
+    if (ImGui::BeginCombo("view", chosen.view.c_str())) {
+        for (const std::string& name : viewNames())
+            if (ImGui::Selectable(name.c_str(), name == chosen.view)) chosen.view = name;
+        ImGui::EndCombo();
+    }
+    if (const DebugView* view = findDebugView(chosen.view)) ImGui::TextWrapped("%s", view->legend.c_str());
+    if (const EncodingErrorView* view = findEncodingErrorView(chosen.view)) {
+        ImGui::TextWrapped("%s (deferred, this layout against full; ramp from 0 to the frame's largest error, "
+                           "dark grey: no common surface)", view->legend.c_str());
+        if (!state.errorViewSummary.empty()) ImGui::TextWrapped("%s", state.errorViewSummary.c_str());
+    }
+    if (chosen.view != "final" && chosen.pipeline == PipelineKind::Forward)
+        ImGui::TextWrapped("(forward draws no G-buffer; G-buffer views come from the deferred geometry passes)");
+    drawWaterSceneControl(renderer, chosen);
+    drawInspectorPanel(state);
+
+    float hour = float(scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds));
+    if (ImGui::SliderFloat("time of day (h)", &hour, 0.0f, 24.0f, "%.2f")) scene.hour = hour;
+    if (scene.hour && ImGui::Button("follow the clock")) scene.hour.reset();
+    ImGui::Checkbox("pause (Space)", &state.paused);
+    ImGui::Text("time %.1f s", scene.timeSeconds);
+
+    ImGui::Checkbox("free camera (WASD, arrows, Q/E)", &state.freeCamera);
+    CameraPose& pose = *scene.camera;
+    float position[3] = {float(pose.position.x), float(pose.position.y), float(pose.position.z)};
+    if (ImGui::DragFloat3("camera", position, 1.0f)) {
+        pose.position = glm::dvec3(position[0], position[1], position[2]);
+        state.freeCamera = true;
+    }
+    if (ImGui::SliderFloat("yaw", &pose.yawDegrees, -180.0f, 360.0f)) state.freeCamera = true;
+    if (ImGui::SliderFloat("pitch", &pose.pitchDegrees, -89.0f, 89.0f)) state.freeCamera = true;
+
+    if (ImGui::CollapsingHeader("shadows")) {
+        ShadowSettings& shadows = scene.shadows;
+        ImGui::Checkbox("sun shadows", &shadows.enabled);
+        for (const ShadowQuality& quality : shadowQualities()) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(quality.name, shadows.quality == quality.name)) shadows.quality = quality.name;
+        }
+        const FrameSetup& frame = renderer.lastFrame();
+        ImGui::Text("%s", !shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
+    }
+    if (ImGui::CollapsingHeader("water")) {
+        WaterSettings& water = scene.water;
+        ImGui::Checkbox("reflections", &water.reflections);
+        ImGui::Checkbox("reflection bounded to the visible water", &water.reflectionBounds);
+        ImGui::TextUnformatted("reflection resolution");
+        for (const ReflectionResolution& resolution : kReflectionResolutions) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(resolution.name, water.reflectionDivisor == resolution.divisor))
+                water.reflectionDivisor = resolution.divisor;
+        }
+        ImGui::SliderFloat("level", &water.level, -20.0f, 30.0f);
+        ImGui::ColorEdit3("tint", &water.tint.x);
+        ImGui::SliderFloat("absorption", &water.absorption, 0.0f, 0.5f);
+        ImGui::SliderFloat("ripples", &water.rippleStrength, 0.0f, 4.0f);
+    }
+    if (ImGui::CollapsingHeader("vegetation")) {
+        VegetationSettings& vegetation = scene.vegetation;
+        ImGui::Checkbox("plants (V)", &vegetation.enabled);
+        // Density re-places every chunk when released, so it is applied on release, not per drag step.
+        static float density = vegetation.density;
+        ImGui::SliderFloat("density", &density, 0.0f, VegetationSettings::kMaxDensity, "%.2f");
+        if (ImGui::IsItemDeactivatedAfterEdit()) vegetation.density = density;
+        ImGui::SliderFloat("wind", &vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
+        ImGui::SliderFloat("draw distance", &vegetation.drawDistance, 50.0f, 1500.0f, "%.0f");
+        ImGui::SliderFloat("thinning from", &vegetation.thinningStart, 10.0f, 600.0f, "%.0f");
+        ImGui::Checkbox("billboards trimmed to the drawn plant", &vegetation.trimmedBillboards);
+        ImGui::TextWrapped("%s", describeVegetation(renderer).c_str());
+    }
+    drawLightsPanel(renderer, scene);
+    if (ImGui::CollapsingHeader("frame work")) {
+        // Savings that keep the picture: switch one off to see what it saves (the pass times).
+        ImGui::Checkbox("tone map fused into the last colour passes", &scene.work.fuseToneMap);
+        ImGui::Checkbox("compact: lighting reads depth in place", &scene.work.depthReadInPlace);
+        ImGui::TextUnformatted("reflected plants culled on dry land:");
+        for (const MirroredPlantCullMode& mode : kMirroredPlantCullModes) {
+            ImGui::SameLine();
+            if (ImGui::RadioButton(mode.name, scene.work.mirroredPlantCull == mode.mode))
+                scene.work.mirroredPlantCull = mode.mode;
+        }
+    }
+    ImGui::Separator();
+    ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
+                renderer.geometry().terrainTriangles());
+    if (!state.fallbacks.empty() &&
+        ImGui::CollapsingHeader("fallbacks (this driver or --force)", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const std::string& line : state.fallbacks) ImGui::BulletText("%s", line.c_str());
+    }
+    ImGui::End();
+}
+
+}  // namespace window
+}  // namespace oasis
