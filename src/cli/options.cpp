@@ -7,6 +7,7 @@
 #include "cli/driver_setups.h"
 #include "cli/input_domains.h"
 #include "cli/option_rules.h"
+#include "cli/option_table.h"
 #include "cli/scene_arguments.h"
 #include "debug/debug_views.h"
 #include "render/depth_convention.h"
@@ -29,64 +30,6 @@ bool endsWith(const std::string& text, const std::string& suffix) {
     return true;
 }
 
-const char* kSceneOptionsHelp =
-    "scene options (every subcommand):\n"
-    "  --size WxH                frame size in pixels (default 1280x720)\n"
-    "  --time SECONDS            animation time: camera flight and time of day (default 0 = 10:00)\n"
-    "  --hour H                  override the hour of day (6 sunrise, 18 sunset)\n"
-    "  --camera X,Y,Z,YAW,PITCH  fixed camera instead of the flight (degrees; yaw 0 = -Z, 90 = +X)\n"
-    "  --reflections on|off      the mirrored scene in the water (default on; off reflects the sky alone)\n"
-    "  --reflection-bounds on|off  the reflection's passes clip to the rectangle of visible water the\n"
-    "                            water mask records (default on; off: the whole screen, stencil-masked)\n"
-    "  --reflection-plant-cull M  auto (default), on or off: the reflection's plants whose mirror image\n"
-    "                            can land only on dry land culled on the CPU (full reflection resolution;\n"
-    "                            the same picture); auto: while the camera stands still\n"
-    "  --reflection-resolution R  full (default), half or quarter: the mirrored scene drawn at that\n"
-    "                            fraction of the frame's width and height, upsampled bilinearly at the water\n"
-    "  --shadows on|off          the sun's cascaded shadows on terrain and plants (default on; none\n"
-    "                            are drawn while the sun is below the horizon)\n"
-    "  --shadow-quality Q        low (default), medium or high: the cascade count and map size of one\n"
-    "                            table (docs/shadows.md; the bench times each)\n"
-    "  --water-level Y           world height of the water plane (default 0)\n"
-    "  --ripples S               ripple strength, 0 = a still mirror (default 1)\n"
-    "  --absorption A            water absorption per unit depth, 0 = clear (default 0.09)\n"
-    "  --vegetation on|off       the plant billboards (default on)\n"
-    "  --vegetation-density D    plants per unit of ground, times the default (default 1)\n"
-    "  --wind S                  wind strength bending the plants (default 1)\n"
-    "  --billboards trimmed|whole  plant billboards trimmed to their atlas cell's drawn bounds, or\n"
-    "                            whole cells (default trimmed; whole: the reference for the trim)\n"
-    "  --tone-map fused|separate  tone-map in the passes that write each pixel's colour last, or in a\n"
-    "                            separate full-screen ToneMapPass (default fused; the same picture)\n"
-    "  --depth-read in-place|copy  compact layout: the deferred lighting samples the depth-stencil target\n"
-    "                            itself, or a copy made every frame (default in-place). Not bit for bit: the\n"
-    "                            copy is written through gl_FragDepth, whose rounding to 24 bits moves some\n"
-    "                            depths one step, so ~0.7% of pixels differ, nearly all by 1 level (a few by\n"
-    "                            up to 8 where a shadow test flips)\n"
-    "  --no-compute              interpret the plant atlas on the CPU, not in a compute shader\n"
-    "  --gl-debug                synchronous GL debug output: stop at the first GL error, naming its\n"
-    "                            debug group path; count performance warnings, printed at the end\n"
-    "  --lights N                point lights (lanterns, fireflies) around the lake (default 0);\n"
-    "                            they glow at night, e.g. --hour 21\n"
-    "  --lights-path PATH        how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
-    "                            where the context has SSBOs, else ubo)\n"
-    "  --light-method METHOD     how the deferred pipeline adds the lights: volumes (stencil volumes,\n"
-    "                            the default) or tiled (per-tile light lists from a compute pass; needs\n"
-    "                            compute shaders and SSBOs, else volumes, saying why)\n"
-    "  --force LIST              switch capabilities off even where the driver has them, to reproduce\n"
-    "                            another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,\n"
-    "                            no-clip-control,gl33,gles30,no-depth-clamp,no-read-only-depth (gl33: an\n"
-    "                            OpenGL 3.3 core context; gles30: the OpenGL ES context as ES 3.0, with\n"
-    "                            --api gles; no-clip-control: reversed-z depth falls back to standard;\n"
-    "                            no-depth-clamp: shadow casters flattened in the shader, as on ES 3.0;\n"
-    "                            no-read-only-depth: compact's in-place lighting shades every pixel, not\n"
-    "                            only the surfaces, as before GL 4.5);\n"
-    "                            each fallback is reported once\n"
-    "  --api API                 gl (desktop OpenGL core, the default) or gles (an OpenGL ES 3.x context:\n"
-    "                            ES 3.2 on Mesa; every command, the window included)\n"
-    "  --depth CONVENTION        depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
-    "                            near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard;\n"
-    "                            `oasis bench` times and compares both itself)\n"
-    "  --gbuffer LAYOUT          G-buffer layout: ";
 
 }  // namespace
 
@@ -152,8 +95,7 @@ bool parseCameraPose(const std::string& text, CameraPose& pose, std::string* err
 }
 
 std::string usage(Command command) {
-    std::string scene = std::string(kSceneOptionsHelp) + gbufferLayoutNames() + " (default " + kDefaultGBufferLayoutName +
-                        ")\n" + inputDomainsHelp();
+    std::string scene = "scene options (every subcommand):\n" + sceneOptionsHelp() + inputDomainsHelp();
     switch (command) {
         case Command::Render:
             return "usage: oasis render [scene options] [--pipeline forward|deferred] [--view NAME] [--out FILE.png]\n"
@@ -313,14 +255,14 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     for (; i < arguments.size(); ++i) {
         const std::string& flag = arguments[i];
         options.givenFlags.push_back(flag);
+        // The scene options' rows (cli/option_table.h), then the subcommands' own options.
         static const std::vector<std::string> kValueOptions = {
-            "--size", "--time", "--hour", "--camera", "--gbuffer", "--reflections", "--reflection-bounds", "--reflection-resolution", "--reflection-plant-cull", "--tone-map", "--depth-read", "--shadows", "--shadow-quality", "--water-level", "--ripples",
-            "--absorption", "--vegetation", "--vegetation-density", "--wind", "--billboards", "--pipeline", "--view", "--out",
-            "--stencil-view", "--stop-before", "--out-dir", "--frames", "--lights", "--lights-path", "--light-method",
-            "--force", "--api",
-            "--depth", "--at", "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend",
-            "--driver", "--reference", "--driver-timeout"};
-        bool takesValue = std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
+            "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames", "--at",
+            "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend", "--driver",
+            "--reference", "--driver-timeout"};
+        const OptionRow* row = findOption(flag);
+        bool takesValue = (row && !row->bare) ||
+                          std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (options.command == Command::Check) {
             // The check sets every scene option itself (its cases); it takes only these.
@@ -376,8 +318,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("option " + flag + " is set by `oasis bench` itself (its sizes, frames, layouts and knobs)");
         if (flag == "--json") { options.json = true; continue; }
         if (flag == "--passes") { options.passTimes = true; continue; }
-        if (flag == "--no-compute" || flag == "--gl-debug") {  // scene switches: a child render gets them too
-            (flag == "--no-compute" ? options.scene.noCompute : options.glDebug) = true;
+        if (row && row->bare) {  // scene switches: a child render gets them too
+            std::string error;
+            readOption(*row, "", options, result.notes, error);
             if (options.command == Command::Compare) options.sceneArguments.push_back(flag);
             continue;
         }
@@ -415,10 +358,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (flag == "--water-scene" && options.command != Command::Render && options.command != Command::Probe &&
             options.command != Command::Window && options.command != Command::Default)
             return fail("option --water-scene belongs to `oasis render`, `oasis probe` and the window");
-        if (const SceneSwitch* sceneSwitch = findSceneSwitch(flag)) {
-            if (value != sceneSwitch->on && value != sceneSwitch->off)
-                return fail(flag + " expects " + sceneSwitch->on + " or " + sceneSwitch->off + ", got '" + value + "'");
-            sceneSwitch->field(options.scene) = value == sceneSwitch->on;
+        if (row) {
+            std::string error;
+            if (!readOption(*row, value, options, result.notes, error)) return fail(error);
         } else if (flag == "--driver") {
             if (!findDriverSetup(value))
                 return fail("--driver: unknown set-up '" + value + "' (one of: " + driverSetupNames() + ")");
@@ -433,73 +375,6 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             if (!endsWith(value, ".png")) return fail("--reference expects a PNG file (FILE.png), got '" + value + "'");
             if (!options.reference.empty()) return fail("--reference given twice");
             options.reference = value;
-        } else if (flag == "--size") {
-            options.sizeGiven = true;
-            std::string error;
-            if (!parseSize(value, options.scene.width, options.scene.height, &error)) return fail(error);
-        } else if (flag == "--time") {
-            std::string error;
-            if (!readNumber(flag, value, options.scene.timeSeconds, error)) return fail(error);
-        } else if (flag == "--hour") {
-            double hour = 0.0;
-            std::string error;
-            if (!readNumber(flag, value, hour, error)) return fail(error);
-            options.scene.hour = hour;
-        } else if (flag == "--camera") {
-            CameraPose pose;
-            std::string error, note;
-            if (!parseCameraPose(value, pose, &error, &note)) return fail(error);
-            if (!note.empty()) result.notes.push_back(note);
-            options.scene.camera = pose;
-        } else if (flag == "--water-level" || flag == "--ripples" || flag == "--absorption") {
-            double number = 0.0;
-            std::string error;
-            if (!readNumber(flag, value, number, error)) return fail(error);
-            float& field = flag == "--water-level" ? options.scene.water.level
-                           : flag == "--ripples"   ? options.scene.water.rippleStrength
-                                                   : options.scene.water.absorption;
-            field = float(number);
-        } else if (flag == "--reflection-resolution") {
-            const ReflectionResolution* resolution = findReflectionResolution(value);
-            if (!resolution)
-                return fail("--reflection-resolution expects one of " + std::string(kReflectionResolutionNames) +
-                            ", got '" + value + "'");
-            options.scene.water.reflectionDivisor = resolution->divisor;
-        } else if (flag == "--reflection-plant-cull") {
-            const MirroredPlantCullMode* mode = findMirroredPlantCull(value);
-            if (!mode) return fail("--reflection-plant-cull expects auto, on or off, got '" + value + "'");
-            options.scene.work.mirroredPlantCull = mode->mode;
-        } else if (flag == "--shadow-quality") {
-            if (!findShadowQuality(value))
-                return fail("--shadow-quality expects one of " + shadowQualityNames() + ", got '" + value + "'");
-            options.scene.shadows.quality = value;
-        } else if (flag == "--vegetation-density" || flag == "--wind") {
-            double number = 0.0;
-            bool density = flag == "--vegetation-density";
-            std::string error;
-            if (!readNumber(flag, value, number, error)) return fail(error);
-            (density ? options.scene.vegetation.density : options.scene.vegetation.windStrength) = float(number);
-        } else if (flag == "--lights") {
-            std::string error;
-            if (!parseIntInDomain(value, inputDomain(flag), options.scene.lights, error)) return fail(error);
-        } else if (flag == "--lights-path") {
-            LightsPath path;
-            if (!parseLightsPath(value, path))
-                return fail("--lights-path expects one of " + lightsPathNames() + ", got '" + value + "'");
-            options.scene.lightsPath = path;
-        } else if (flag == "--light-method") {
-            LightMethod method;
-            if (!parseLightMethod(value, method))
-                return fail("--light-method expects one of " + lightMethodNames() + ", got '" + value + "'");
-            options.scene.lightMethod = method;
-        } else if (flag == "--gbuffer") {
-            if (!findGBufferLayout(value))
-                return fail("--gbuffer: unknown layout '" + value + "' (one of: " + gbufferLayoutNames() + ")");
-            options.scene.gbuffer = value;
-        } else if (flag == "--depth") {
-            if (!findDepthConvention(value))
-                return fail("--depth: unknown convention '" + value + "' (one of: " + depthConventionNames() + ")");
-            options.scene.depth = value;
         } else if (flag == "--pipeline") {
             if (!parsePipelineKind(value, options.pipeline))
                 return fail("--pipeline expects forward or deferred, got '" + value + "'");
@@ -543,11 +418,6 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             std::optional<WaterScene> scene = parseWaterScene(value);
             if (!scene) return fail("--water-scene expects " + std::string(kWaterSceneNames) + ", got '" + value + "'");
             options.waterScene = *scene;
-        } else if (flag == "--force") {
-            std::string error;
-            if (!parseForcedFallbacks(value, options.scene.force, error)) return fail("--force: " + error);
-        } else if (flag == "--api") {
-            if (!gl::parseApi(value, options.scene.api)) return fail("--api expects gl or gles, got '" + value + "'");
         } else if (flag == "--at") {
             size_t comma = value.find(',');
             if (comma == std::string::npos)

@@ -1,6 +1,6 @@
-// The scene options' table of text forms (cli/scene_arguments.h). A new scene option is one row
-// here (and its parsing in cli/options.cpp; tests/unit/scene_arguments_test.cpp holds the two
-// to each other: every row written is parsed back to the same options).
+// The scene options' table of text forms (cli/scene_arguments.h), in the order a picture's
+// provenance lists them; each option's parsing is its row in cli/option_table.cpp
+// (tests/unit/scene_arguments_test.cpp: every row written is parsed back to the same options).
 #include "cli/scene_arguments.h"
 
 #include <cctype>
@@ -8,26 +8,14 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "cli/option_table.h"
 #include "cli/options.h"
 
 namespace oasis {
 namespace {
 
-const SceneSwitch kSceneSwitches[] = {
-    {"--reflections", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflections; }},
-    {"--reflection-bounds", "on", "off", [](SceneOptions& s) -> bool& { return s.water.reflectionBounds; }},
-    {"--vegetation", "on", "off", [](SceneOptions& s) -> bool& { return s.vegetation.enabled; }},
-    {"--billboards", "trimmed", "whole", [](SceneOptions& s) -> bool& { return s.vegetation.trimmedBillboards; }},
-    {"--tone-map", "fused", "separate", [](SceneOptions& s) -> bool& { return s.work.fuseToneMap; }},
-    {"--depth-read", "in-place", "copy", [](SceneOptions& s) -> bool& { return s.work.depthReadInPlace; }},
-    {"--shadows", "on", "off", [](SceneOptions& s) -> bool& { return s.shadows.enabled; }},
-};
-
-std::string switchValue(const SceneOptions& scene, const char* flag) {
-    const SceneSwitch* sceneSwitch = findSceneSwitch(flag);
-    SceneOptions copy = scene;  // the switches' fields are reached through a mutable reference
-    return sceneSwitch->field(copy) ? sceneSwitch->on : sceneSwitch->off;
-}
+// A two-way switch's word, from its row (cli/option_table.h).
+std::string switchValue(const SceneOptions& scene, const char* flag) { return optionValue(*findOption(flag), scene); }
 
 std::string floatValue(float value) { return exactNumber(value, true); }
 
@@ -117,12 +105,6 @@ std::vector<std::string> sceneArguments(const SceneOptions& scene, SceneArgument
         if (!row.bare) arguments.push_back(value);
     }
     return arguments;
-}
-
-const SceneSwitch* findSceneSwitch(const std::string& flag) {
-    for (const SceneSwitch& sceneSwitch : kSceneSwitches)
-        if (flag == sceneSwitch.flag) return &sceneSwitch;
-    return nullptr;
 }
 
 std::string joinArguments(const std::vector<std::string>& arguments) {

@@ -30,16 +30,6 @@ const SceneArgument* findSceneArgument(const std::string& flag);  // null for ot
 // starts with --size. E.g. {"--size", "160x90", "--hour", "18"}.
 std::vector<std::string> sceneArguments(const SceneOptions& scene, SceneArgumentKind kind);
 
-// The scene's two-way switches, parsed alike: the flag, the word that turns the field on, the
-// one that turns it off, and the field ("--shadows expects on or off, got 'x'").
-struct SceneSwitch {
-    const char* flag;
-    const char* on;
-    const char* off;
-    bool& (*field)(SceneOptions&);
-};
-const SceneSwitch* findSceneSwitch(const std::string& flag);
-
 // Arguments as one line, separated by single spaces (no scene option's value holds a space), and
 // back. splitArguments splits at spaces and drops empty items.
 std::string joinArguments(const std::vector<std::string>& arguments);

@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <map>
 
+#include "cli/option_table.h"
+#include "cli/options.h"
+
 namespace oasis {
 namespace {
 
@@ -27,43 +30,23 @@ KnobLevel vegetationLevel(const char* label, bool enabled, float density) {
             }};
 }
 
-KnobLevel reflectionLevel(const char* label, bool on) {
-    return {label, [on](SceneSettings& scene) { scene.water.reflections = on; }};
-}
-
-// The reflection's resolution, from the cheapest to the reference's (the last level): the table
-// of render/frame_setup.h, full first there.
-QualityKnob reflectionResolutionKnob() {
-    QualityKnob knob{"reflection-resolution", "the mirrored scene drawn at this fraction of the frame's width and "
-                     "height, upsampled bilinearly", {}, 0};
-    for (auto it = std::rbegin(kReflectionResolutions); it != std::rend(kReflectionResolutions); ++it) {
-        int divisor = it->divisor;
-        if (divisor == WaterSettings{}.reflectionDivisor) knob.defaultLevel = int(knob.levels.size());
-        knob.levels.push_back({it->name, [divisor](SceneSettings& scene) { scene.water.reflectionDivisor = divisor; }});
+// A knob made from an option's row (cli/option_table.h): its levels are values of the option,
+// applied to the scene as the command line would set them.
+QualityKnob optionKnob(const char* flag) {
+    const OptionRow& row = *findOption(flag);
+    QualityKnob knob{row.bench.knob, row.bench.description, {}, row.bench.defaultLevel};
+    for (const char* level : row.bench.levels) {
+        std::string value = level;
+        knob.levels.push_back({level, [&row, value](SceneSettings& scene) {
+                                   Options options;
+                                   options.scene = sceneOptionsOf(scene);
+                                   std::vector<std::string> notes;
+                                   std::string error;
+                                   readOption(row, value, options, notes, error);
+                                   applySceneOptions(options.scene, scene);
+                               }});
     }
     return knob;
-}
-
-// Work the frame saves without changing its picture: the saving is the time of the default level
-// against the reference's (the work done in full), at the same error.
-KnobLevel billboardLevel(const char* label, bool trimmed) {
-    return {label, [trimmed](SceneSettings& scene) { scene.vegetation.trimmedBillboards = trimmed; }};
-}
-
-KnobLevel reflectionBoundsLevel(const char* label, bool bounded) {
-    return {label, [bounded](SceneSettings& scene) { scene.water.reflectionBounds = bounded; }};
-}
-
-KnobLevel toneMapLevel(const char* label, bool fused) {
-    return {label, [fused](SceneSettings& scene) { scene.work.fuseToneMap = fused; }};
-}
-
-KnobLevel depthReadLevel(const char* label, bool inPlace) {
-    return {label, [inPlace](SceneSettings& scene) { scene.work.depthReadInPlace = inPlace; }};
-}
-
-KnobLevel plantCullLevel(const char* label, MirroredPlantCull cull) {
-    return {label, [cull](SceneSettings& scene) { scene.work.mirroredPlantCull = cull; }};
 }
 
 // Sun shadows: off, then every level of the shadow quality table (render/shadow_cascades.cpp).
@@ -90,19 +73,14 @@ const std::vector<QualityKnob> kKnobs = {
      octaveLevel("7", 7)}, 2},
     {"vegetation", "plant density (off, or times the default candidates per chunk)",
      {vegetationLevel("off", false, 1.0f), vegetationLevel("0.5", true, 0.5f), vegetationLevel("1", true, 1.0f)}, 2},
-    {"reflections", "the mirrored scene in the water", {reflectionLevel("off", false), reflectionLevel("on", true)}, 1},
-    reflectionResolutionKnob(),
-    {"billboards", "plant billboards trimmed to their atlas cell's drawn bounds, or whole cells",
-     {billboardLevel("trimmed", true), billboardLevel("whole", false)}, 0},
-    {"reflection-bounds", "the reflection's full-screen draws clipped to the visible water, or the whole screen",
-     {reflectionBoundsLevel("on", true), reflectionBoundsLevel("off", false)}, 0},
-    {"tone-map", "tone mapping fused into the passes that write each pixel last, or a separate pass",
-     {toneMapLevel("fused", true), toneMapLevel("separate", false)}, 0},
-    {"depth-read", "compact's lighting samples the depth-stencil target, or a copy made every frame",
-     {depthReadLevel("in-place", true), depthReadLevel("copy", false)}, 0},
-    {"reflection-plant-cull", "the reflection's plants whose image lands only on dry land culled on the CPU "
-     "(auto: while the camera stands still, as it does over a configuration's timed frames)",
-     {plantCullLevel("auto", MirroredPlantCull::Auto), plantCullLevel("off", MirroredPlantCull::Off)}, 0},
+    // The options' own knobs, in the bench's order (bench.csv and bench.json list them so).
+    optionKnob("--reflections"),
+    optionKnob("--reflection-resolution"),
+    optionKnob("--billboards"),
+    optionKnob("--reflection-bounds"),
+    optionKnob("--tone-map"),
+    optionKnob("--depth-read"),
+    optionKnob("--reflection-plant-cull"),
     shadowKnob(),
 };
 

@@ -10,21 +10,32 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cli/option_table.h"
+
 namespace oasis {
 
 SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     SceneSettings scene;
-    scene.timeSeconds = options.timeSeconds;
-    scene.hour = options.hour;
-    scene.camera = options.camera;
-    scene.water = options.water;
-    scene.shadows = options.shadows;
-    scene.vegetation = options.vegetation;
-    scene.work = options.work;
-    scene.lights.count = options.lights;
-    scene.lights.path = options.lightsPath;
-    scene.lights.method = options.lightMethod;
+    applySceneOptions(options, scene);  // the fields the option rows reach (cli/option_table.h)
     return scene;
+}
+
+RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const SceneSettings& scene) {
+    RendererCapabilities c;
+    c.ssbo.available = caps.ssboAvailable(&c.ssbo.reason);
+    c.compute.available = caps.computeAvailable(&c.compute.reason);
+    c.clipControl.available = caps.clipControlAvailable(&c.clipControl.reason);
+    c.readOnlyDepth.available = caps.readOnlyDepthAvailable(&c.readOnlyDepth.reason);
+    c.forcedLightsPath = scene.lights.path;
+    c.forcedLightMethod = scene.lights.method;
+    return c;
+}
+
+void giveCapabilities(Renderer& renderer, const RendererCapabilities& c) {
+    renderer.setSsboAvailable(c.ssbo.available, c.ssbo.reason, c.forcedLightsPath);
+    renderer.setComputeAvailable(c.compute.available, c.compute.reason, c.forcedLightMethod);
+    renderer.setClipControlAvailable(c.clipControl.available, c.clipControl.reason);
+    renderer.setReadOnlyDepthAvailable(c.readOnlyDepth.available, c.readOnlyDepth.reason);
 }
 
 StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optional<StencilViewPath> forced,
@@ -80,13 +91,11 @@ const TimingClock& RenderSession::timingClock() {
 
 std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     auto second = std::make_unique<Renderer>(*shaders, scene);
-    std::string whyNoSsbo, clipControlReason;
-    bool ssbo = caps.ssboAvailable(&whyNoSsbo);
-    second->setSsboAvailable(ssbo, whyNoSsbo, scene.lights.path);
-    std::string computeReason;
-    second->setComputeAvailable(caps.computeAvailable(&computeReason), computeReason, scene.lights.method);
-    second->setClipControlAvailable(caps.clipControlAvailable(&clipControlReason), clipControlReason);
-    second->setReadOnlyDepthAvailable(renderer->readOnlyDepthAvailable(), renderer->readOnlyDepthReason());
+    RendererCapabilities same = rendererCaps;
+    same.readOnlyDepth = {renderer->readOnlyDepthAvailable(), renderer->readOnlyDepthReason()};  // as the first took it
+    same.forcedLightsPath = scene.lights.path;  // the scene's now: the window's panel may have changed it
+    same.forcedLightMethod = scene.lights.method;
+    giveCapabilities(*second, same);
     second->setDepthConvention(renderer->depthConvention());
     second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
     second->setStencilViewPath(renderer->stencilViewPath());
@@ -109,17 +118,8 @@ RenderSession::RenderSession(const Options& options, Shaders need)
         dialect.defines.push_back(noDepthClamp);
     shaders = std::make_unique<ShaderLibrary>(directory, dialect);
     renderer = std::make_unique<Renderer>(*shaders, scene);
-    std::string whyNoSsbo;
-    bool ssbo = caps.ssboAvailable(&whyNoSsbo);
-    renderer->setSsboAvailable(ssbo, whyNoSsbo, scene.lights.path);
-    std::string computeReason;
-    renderer->setComputeAvailable(caps.computeAvailable(&computeReason), computeReason, scene.lights.method);
-    std::string clipControlReason;
-    bool clipControl = caps.clipControlAvailable(&clipControlReason);
-    renderer->setClipControlAvailable(clipControl, clipControlReason);
-    std::string readOnlyDepthReason;
-    bool readOnlyDepth = caps.readOnlyDepthAvailable(&readOnlyDepthReason);
-    renderer->setReadOnlyDepthAvailable(readOnlyDepth, readOnlyDepthReason);
+    rendererCaps = rendererCapabilities(caps, scene);
+    giveCapabilities(*renderer, rendererCaps);
     renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
     renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));

@@ -1,17 +1,69 @@
 // The window's ImGui panel: pipeline, G-buffer, depth, view, time, camera and the scene's option
-// sections (shadows, water, vegetation, lights, frame work), beside the inspector and comparison.
+// sections (shadows, water, vegetation, frame work: widgets made from cli/option_table.h's rows).
 #include "commands/window_state.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <map>
 
+#include "cli/option_table.h"
 #include "render/encoding_error.h"
 
 namespace oasis {
 namespace window {
 
 namespace {
+
+// A slider whose value rebuilds scene content shows its drag here and applies it on release.
+float& pendingValue(const char* flag, float value) {
+    static std::map<std::string, float> pending;
+    return pending.try_emplace(flag, value).first->second;
+}
+
+// The widgets of the option rows (cli/option_table.h) in one section of the panel, in the rows'
+// order; they edit the scene as the options' own values, read and written through the rows.
+void drawOptionWidgets(const char* section, SceneSettings& scene) {
+    SceneOptions options = sceneOptionsOf(scene);
+    std::vector<std::string> notes;
+    std::string error;
+    bool changed = false;
+    Options parsed;
+    auto set = [&](const OptionRow& row, const std::string& value) {
+        parsed.scene = options;
+        if (!readOption(row, value, parsed, notes, error)) return;
+        options = parsed.scene;
+        changed = true;
+    };
+    for (const OptionRow& row : optionTable()) {
+        const OptionWidget& widget = row.widget;
+        if (widget.kind == OptionWidgetKind::None || std::string(widget.section) != section) continue;
+        std::string value = optionValue(row, options);
+        if (widget.kind == OptionWidgetKind::Checkbox) {
+            bool on = value == row.on;
+            if (ImGui::Checkbox(widget.label, &on)) set(row, on ? row.on : row.off);
+        } else if (widget.kind == OptionWidgetKind::Slider) {
+            float& field = row.numberField(options);
+            if (!widget.applyOnRelease) {
+                changed |= ImGui::SliderFloat(widget.label, &field, widget.low, widget.high, widget.format);
+                continue;
+            }
+            float& shown = pendingValue(row.flag, field);
+            ImGui::SliderFloat(widget.label, &shown, widget.low, widget.high, widget.format);
+            if (ImGui::IsItemDeactivatedAfterEdit()) {
+                field = shown;
+                changed = true;
+            } else if (!ImGui::IsItemActive()) shown = field;  // follows the value set elsewhere
+        } else if (widget.kind == OptionWidgetKind::Radios) {
+            if (widget.label) ImGui::TextUnformatted(widget.label);
+            for (const std::string& choice : row.choices()) {
+                ImGui::SameLine();
+                if (ImGui::RadioButton(choice.c_str(), value == choice)) set(row, choice);
+            }
+        }
+    }
+    if (changed) applySceneOptions(options, scene);
+}
 
 // Point lights: the count, the path (automatic or forced) and which path is active and why.
 void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
@@ -124,54 +176,24 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::SliderFloat("pitch", &pose.pitchDegrees, -89.0f, 89.0f)) state.freeCamera = true;
 
     if (ImGui::CollapsingHeader("shadows")) {
-        ShadowSettings& shadows = scene.shadows;
-        ImGui::Checkbox("sun shadows", &shadows.enabled);
-        for (const ShadowQuality& quality : shadowQualities()) {
-            ImGui::SameLine();
-            if (ImGui::RadioButton(quality.name, shadows.quality == quality.name)) shadows.quality = quality.name;
-        }
+        drawOptionWidgets("shadows", scene);
         const FrameSetup& frame = renderer.lastFrame();
-        ImGui::Text("%s", !shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
+        ImGui::Text("%s", !scene.shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
     }
     if (ImGui::CollapsingHeader("water")) {
-        WaterSettings& water = scene.water;
-        ImGui::Checkbox("reflections", &water.reflections);
-        ImGui::Checkbox("reflection bounded to the visible water", &water.reflectionBounds);
-        ImGui::TextUnformatted("reflection resolution");
-        for (const ReflectionResolution& resolution : kReflectionResolutions) {
-            ImGui::SameLine();
-            if (ImGui::RadioButton(resolution.name, water.reflectionDivisor == resolution.divisor))
-                water.reflectionDivisor = resolution.divisor;
-        }
-        ImGui::SliderFloat("level", &water.level, -20.0f, 30.0f);
-        ImGui::ColorEdit3("tint", &water.tint.x);
-        ImGui::SliderFloat("absorption", &water.absorption, 0.0f, 0.5f);
-        ImGui::SliderFloat("ripples", &water.rippleStrength, 0.0f, 4.0f);
+        drawOptionWidgets("water", scene);
+        ImGui::ColorEdit3("tint", &scene.water.tint.x);
     }
     if (ImGui::CollapsingHeader("vegetation")) {
-        VegetationSettings& vegetation = scene.vegetation;
-        ImGui::Checkbox("plants (V)", &vegetation.enabled);
-        // Density re-places every chunk when released, so it is applied on release, not per drag step.
-        static float density = vegetation.density;
-        ImGui::SliderFloat("density", &density, 0.0f, VegetationSettings::kMaxDensity, "%.2f");
-        if (ImGui::IsItemDeactivatedAfterEdit()) vegetation.density = density;
-        ImGui::SliderFloat("wind", &vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
-        ImGui::SliderFloat("draw distance", &vegetation.drawDistance, 50.0f, 1500.0f, "%.0f");
-        ImGui::SliderFloat("thinning from", &vegetation.thinningStart, 10.0f, 600.0f, "%.0f");
-        ImGui::Checkbox("billboards trimmed to the drawn plant", &vegetation.trimmedBillboards);
+        drawOptionWidgets("vegetation", scene);
+        ImGui::SliderFloat("draw distance", &scene.vegetation.drawDistance, 50.0f, 1500.0f, "%.0f");
+        ImGui::SliderFloat("thinning from", &scene.vegetation.thinningStart, 10.0f, 600.0f, "%.0f");
         ImGui::TextWrapped("%s", describeVegetation(renderer).c_str());
     }
     drawLightsPanel(renderer, scene);
     if (ImGui::CollapsingHeader("frame work")) {
         // Savings that keep the picture: switch one off to see what it saves (the pass times).
-        ImGui::Checkbox("tone map fused into the last colour passes", &scene.work.fuseToneMap);
-        ImGui::Checkbox("compact: lighting reads depth in place", &scene.work.depthReadInPlace);
-        ImGui::TextUnformatted("reflected plants culled on dry land:");
-        for (const MirroredPlantCullMode& mode : kMirroredPlantCullModes) {
-            ImGui::SameLine();
-            if (ImGui::RadioButton(mode.name, scene.work.mirroredPlantCull == mode.mode))
-                scene.work.mirroredPlantCull = mode.mode;
-        }
+        drawOptionWidgets("frame work", scene);
     }
     ImGui::Separator();
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
