@@ -251,7 +251,7 @@ Image encodingErrorImage(const Options& options, RenderSession& session, const E
     std::snprintf(line, sizeof(line), "%s, %s against full: median %.4g, 99%% %.4g, max %.4g over %ld surface pixels",
                   view.name.c_str(), error.layout.c_str(), summary.median, summary.p99, summary.max, summary.count);
     std::fprintf(report, "oasis: %s\n", line);
-    if (!options.legend) return image;
+    if (!options.legend.value_or(true)) return image;  // an error view is a buffer view: a legend by default
     Legend legend;
     legend.title = view.name + " (deferred, " + error.layout + " against full): " + view.legend;
     legend.scale = LegendScale::LinearRamp;
@@ -290,7 +290,8 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
                  view->name.c_str(), describeChannel(*view, channel).c_str(), statistics.values, statistics.nan,
                  statistics.positiveInfinity, statistics.negativeInfinity, statistics.negative, statistics.min,
                  statistics.max);
-    if (!options.legend) return image;
+    // The final frame is a picture: the size asked for, no strip unless --legend on.
+    if (!options.legend.value_or(view->name != "final")) return image;
     gl::endFrame();  // the frame ends with its view read back; the legend strip is a frame of its own
     const FrameData& frame = renderer.lastFrame().data;
     LegendRenderer legends;
