@@ -81,7 +81,7 @@ int runParsed(const oasis::Options& options) {
     if (options.glDebug) std::fprintf(stderr, "oasis: %s\n", glDebugSummary().c_str());
     if (options.capture) {
         std::vector<std::string> captures = gl::renderDocCaptures();
-        for (const std::string& path : captures) std::printf("oasis: RenderDoc capture: %s\n", path.c_str());
+        for (const std::string& path : captures) std::fprintf(stderr, "oasis: RenderDoc capture: %s\n", path.c_str());  // a log line
         if (captures.empty() && code == 0) {
             std::fprintf(stderr, "oasis: --capture: RenderDoc wrote no capture\n");
             return 1;

@@ -530,7 +530,7 @@ int runDriverCompare(const Options& given) {
     for (const Side* s : {&a, &b})
         std::printf("  %-12s %s\n", (s->label + ":").c_str(),
                     s->reference ? ("saved image " + s->path + (s->renderer.empty() ? "" : ", drawn on " + s->renderer)).c_str() : (s->renderer + ", " + s->path).c_str());
-    std::printf("  wrote %s\n", differencePath.c_str());
+    std::fprintf(stderr, "  wrote %s\n", differencePath.c_str());  // a log line: stderr, as every command's
     return 0;
 }
 

@@ -70,13 +70,6 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     return result;
 }
 
-// Whether `path` is the file standard output goes to (/dev/stdout, or the file stdout is redirected to).
-bool isStandardOutput(const std::string& path) {
-    struct stat named, out;
-    return stat(path.c_str(), &named) == 0 && fstat(STDOUT_FILENO, &out) == 0 && named.st_dev == out.st_dev &&
-           named.st_ino == out.st_ino;
-}
-
 // One PNG of a set: its file name, its image and where the image comes from (commands/provenance.h).
 struct ImageFile {
     std::string file;
@@ -309,7 +302,9 @@ int runRenderCommand(const Options& options) {
         if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
         if (options.capture) gl::armCaptures(1);
         renderer.renderFrame(session.scene, options.stopBefore);
-        std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
+        // Logs go to stderr always: stdout carries only what was asked for (a PNG with --out
+        // /dev/stdout), never a log line (issue 31, defect 8).
+        std::FILE* report = stderr;
         Image image = errorView ? encodingErrorImage(options, session, *errorView, report)
                                 : renderedViewImage(options, renderer, report);
         std::string error;
@@ -344,7 +339,7 @@ int runCompareCommand(const Options& options) {
             printJson(options, session, c);
         } else {
             printSummary(options, session, c);
-            for (const std::string& path : written) std::printf("  wrote %s\n", path.c_str());
+            for (const std::string& path : written) std::fprintf(stderr, "  wrote %s\n", path.c_str());  // a log line
         }
         return 0;
     });
@@ -352,8 +347,8 @@ int runCompareCommand(const Options& options) {
 
 int runMainJob(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
-        // With --json, stdout carries the JSON alone (compare's keys); the rest goes to stderr.
-        std::FILE* report = options.json ? stderr : stdout;
+        // stdout carries the summary (or with --json the JSON alone, compare's keys); log lines go to stderr.
+        std::FILE* report = stderr;
         std::fprintf(report, "oasis: no display, running the headless main job (stencil view: %s)\n",
                      session.stencilPathReason.c_str());
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
