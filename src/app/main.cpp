@@ -17,6 +17,7 @@
 #include "commands/headless_commands.h"
 #include "commands/window_app.h"
 #include "context/gl_context.h"
+#include "context/runtime_dir.h"
 #include "gl/frame_capture.h"
 #include "render/interruption.h"
 
@@ -105,5 +106,6 @@ int main(int argc, char** argv) {
         return 2;
     }
     for (const std::string& note : parsed.notes) std::fprintf(stderr, "oasis: %s\n", note.c_str());
+    PrivateRuntimeDir runtimeDir;  // before any context: zink's WSI reads XDG_RUNTIME_DIR
     return checkStandardOutput(runParsed(parsed.options));
 }
