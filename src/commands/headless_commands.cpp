@@ -26,6 +26,7 @@ namespace {
 
 struct Comparison {
     ImageDifference difference;
+    DifferingPixels differing;  // how many pixels differ by more than 0, 1, 4, 16 levels
     PipelineTimes times;  // both pipelines and the floor, timed in turn
     Image forward, deferred;
     using PassTimes = std::vector<std::pair<std::string, double>>;
@@ -58,6 +59,7 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
     result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
     result.difference = compareImages(result.forward, result.deferred);
+    result.differing = countDifferingPixels(result.forward, result.deferred);
     result.times = timePipelinesInTurn(renderer, session.scene, timingFrames);
     if (passTimes) {
         result.clock = session.timingClock();
@@ -116,6 +118,7 @@ void printSummary(const Options& options, const RenderSession& session, const Co
                 queryContextInfo().summary().c_str());
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
+    std::printf("  %s\n", c.differing.describe().c_str());
     const PipelineTimes& t = c.times;
     std::printf("  forward  %8.2f ms/frame  (%.2fx floor)\n", t.forwardMs, t.forwardRatio);
     std::printf("  deferred %8.2f ms/frame  (%.2fx floor; rounds %.2fx to %.2fx)\n", t.deferredMs, t.deferredRatio,
@@ -162,6 +165,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"plants_drawn_mirrored\": %zu, ",
                 session.renderer->lastFrame().vegetationEnabled ? "true" : "false", session.scene.vegetation.density,
                 plants.plantsPlaced, plants.plantsDrawn, plants.plantsDrawnMirrored);
+    std::printf("\"pixels_differing\": %s, ", c.differing.json().c_str());
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"forward_floor_ratio\": %.4f, \"deferred_floor_ratio\": %.4f, "
                 "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
@@ -225,6 +229,7 @@ Image differenceImage(const Image& a, const std::string& aName, const Image& b, 
     // "identical" only at max abs 0: the 100 dB cap is also reached by a 1-level difference in a
     // few pixels (zink against llvmpipe).
     legend.notes.push_back(numbers);
+    legend.notes.push_back(countDifferingPixels(a, b).describe());  // the heat map shows where, this how many
     LegendRenderer legends;
     Image heat = differenceHeatmap(a, b, kFullScale);
     return stackImages(heat, legends.draw(legend, heat.width));
