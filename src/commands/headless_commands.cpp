@@ -119,14 +119,22 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
     std::printf("  %s\n", c.differing.describe().c_str());
+    // Each "x floor" is the median ms over the median floor ms printed beside it, so the numbers a
+    // reader divides agree (issue 31, defect 5); the rounds' range and a noise flag say how far
+    // to trust a difference (JSON keeps the per-round ratios' medians too).
     const PipelineTimes& t = c.times;
-    std::printf("  forward  %8.2f ms/frame  (%.2fx floor)\n", t.forwardMs, t.forwardRatio);
-    std::printf("  deferred %8.2f ms/frame  (%.2fx floor; rounds %.2fx to %.2fx)\n", t.deferredMs, t.deferredRatio,
-                t.deferredRatioLowest, t.deferredRatioHighest);
-    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, timed in turn with the frames)\n", t.floorMs);
+    std::printf("  forward  %8.2f ms/frame  (%.2fx floor; rounds %.2f to %.2f ms)\n", t.forwardMs, t.forwardOverFloor,
+                t.forwardLowest, t.forwardHighest);
+    std::printf("  deferred %8.2f ms/frame  (%.2fx floor; rounds %.2f to %.2f ms)\n", t.deferredMs, t.deferredOverFloor,
+                t.deferredLowest, t.deferredHighest);
+    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, timed in turn with the frames; rounds "
+                "%.2f to %.2f ms)\n", t.floorMs, t.floorLowest, t.floorHighest);
     std::printf("  medians of %d rounds (a forward frame, a deferred frame, the floor), wall time around glFinish; "
-                "ratios are each round's own; terrain %d triangles\n",
+                "x floor = median ms / median floor ms; terrain %d triangles\n",
                 t.rounds, session.renderer->geometry().terrainTriangles());
+    std::printf("  %s: the rounds spread by up to %.0f%% of their median (highest - lowest; noisy above %.0f%%%s)\n",
+                t.noisy() ? "NOISY" : "steady", 100.0 * t.spread, 100.0 * PipelineTimes::kNoiseSpread,
+                t.noisy() ? ": differences smaller than that are not measured; more --frames or an idle machine" : "");
     std::printf("  %s\n", describePlantAtlas(session).c_str());
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
@@ -151,6 +159,21 @@ std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) 
     return json + "}";
 }
 
+// Beside the per-round ratios' medians (kept): the ratios of the medians, each stream's lowest and
+// highest round, the largest spread and whether it is over the noise threshold (issue 31, defect 5).
+std::string timingSpreadJson(const PipelineTimes& t) {
+    char text[512];
+    std::snprintf(text, sizeof(text),
+                  "\"forward_over_floor\": %.4f, \"deferred_over_floor\": %.4f, \"forward_ms_lowest\": %.4f, "
+                  "\"forward_ms_highest\": %.4f, \"deferred_ms_lowest\": %.4f, \"deferred_ms_highest\": %.4f, "
+                  "\"floor_ms_lowest\": %.4f, \"floor_ms_highest\": %.4f, \"rounds_spread\": %.4f, "
+                  "\"noise_threshold\": %.2f, \"noisy\": %s, ",
+                  t.forwardOverFloor, t.deferredOverFloor, t.forwardLowest, t.forwardHighest, t.deferredLowest,
+                  t.deferredHighest, t.floorLowest, t.floorHighest, t.spread, PipelineTimes::kNoiseSpread,
+                  t.noisy() ? "true" : "false");
+    return text;
+}
+
 // Which clock timed the passes and why (only with --passes: the check costs frames).
 std::string passClockJson(const Comparison& c) {
     if (c.forwardPasses.empty()) return {};
@@ -168,7 +191,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     std::printf("\"pixels_differing\": %s, ", c.differing.json().c_str());
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"forward_floor_ratio\": %.4f, \"deferred_floor_ratio\": %.4f, "
-                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
                 "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
@@ -177,7 +200,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.times.forwardMs, c.times.deferredMs,
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
-                c.times.deferredRatioHighest,
+                c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(),
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
                 session.renderer->depthConventionReason().c_str(), options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
