@@ -4,6 +4,10 @@
 #include <epoxy/gl.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
 #include "debug/imgui_gl_backend.h"
 #include "debug/imgui_gl_labels.h"
 #include "gl/objects.h"
@@ -50,6 +54,16 @@ void LabelOverlay::draw(const std::vector<Label>& labels, int width, int height,
             draw.AddText(ImVec2(corner.x + pad, corner.y + pad), IM_COL32(255, 255, 255, 255), label.text.c_str());
         }
     }, width, height, scale);
+}
+
+int LabelOverlay::wrappedLines(const std::string& text, float wrapWidth, float scale) {
+    ContextScope scope(context_);
+    ImFontAtlas* fonts = ImGui::GetIO().Fonts;
+    if (!fonts->IsBuilt()) fonts->Build();  // the default font, as the first frame would build it
+    ImFont* font = fonts->Fonts[0];
+    const float size = font->FontSize * scale;  // what AddText(nullptr, 0.0f, ...) draws at
+    ImVec2 extent = font->CalcTextSizeA(size, FLT_MAX, wrapWidth, text.c_str(), text.c_str() + text.size());
+    return std::max(1, int(std::lround(extent.y / size)));
 }
 
 void LabelOverlay::drawWith(const std::function<void(ImDrawList&)>& paint, int width, int height, float scale) {

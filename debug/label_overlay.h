@@ -26,6 +26,9 @@ public:
     void draw(const std::vector<Label>& labels, int width, int height, float scale);
     // Draws whatever `paint` adds to a draw list (text, rectangles, gradients) the same way.
     void drawWith(const std::function<void(ImDrawList&)>& paint, int width, int height, float scale);
+    // How many lines `text` takes drawn at `scale` and wrapped at `wrapWidth` pixels, as ImGui
+    // wraps it (at word ends and after punctuation, so more than its length over the width).
+    int wrappedLines(const std::string& text, float wrapWidth, float scale);
 
 private:
     ImGuiContext* context_ = nullptr;

@@ -147,8 +147,14 @@ Image LegendRenderer::draw(const Legend& legend, int width) {
     if (width < kMinLegendWidth) return Image();
     const float scale = std::clamp(float(width) / 640.0f, 1.0f, 2.0f);
     const float pad = 4.0f * scale, line = kLineHeight * scale, textWidth = float(width) - 2.0f * pad;
+    if (!overlay_) overlay_ = std::make_unique<LabelOverlay>();
+    // The characters over the width are a lower bound; ImGui wraps at word ends and needs more
+    // lines where words do not fill a line (at 320 wide difference.png's title took three where
+    // two were reserved, and the colour bar hid "levels": issue 31, defect 6). Never fewer lines
+    // than before, so legends that fitted stay as they were.
     auto linesOf = [&](const std::string& text) {
-        return std::max(1, int(std::ceil(float(text.size()) * kGlyphWidth * scale / std::max(textWidth, 1.0f))));
+        int estimate = std::max(1, int(std::ceil(float(text.size()) * kGlyphWidth * scale / std::max(textWidth, 1.0f))));
+        return std::max(estimate, overlay_->wrappedLines(text, textWidth, scale));
     };
     int textLines = linesOf(legend.title);
     for (const std::string& note : legend.notes) textLines += linesOf(note);
@@ -163,7 +169,6 @@ Image LegendRenderer::draw(const Legend& legend, int width) {
     glViewport(0, 0, width, height);
     glClearColor(0.09f, 0.09f, 0.09f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    if (!overlay_) overlay_ = std::make_unique<LabelOverlay>();
     overlay_->drawWith([&](ImDrawList& draw) {
         const ImU32 white = IM_COL32(235, 235, 235, 255);
         float y = pad;

@@ -2,25 +2,35 @@
 # Renders the README's scene pictures into docs/ (1280x720 PNGs, no legend strip) with the built
 # oasis: the default frame in both pipelines and its debug overview; day, dusk and night; sun shadows off and on; water at
 # sunset with its stencil and reflection views; the meadow with its vegetation view; lights at night
-# with their light-volumes view. Open them after a run: a black or flat picture is a bug.
-# usage: docs/pictures.sh [path/to/oasis]
+# with their light-volumes view; and docs/inspecting.md's depth and normal-error views at 640x360
+# with their legend strips. Open them after a run: a black or flat picture is a bug.
+# tests/docs/docs_current.sh renders them into a scratch directory and holds docs/ to them pixel
+# for pixel (issue 31, defect 7: default-deferred.png had drifted by one level).
+# usage: docs/pictures.sh [path/to/oasis] [output directory, default docs]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 oasis=$(realpath "${1:-build/oasis}")
+out=${2:-docs}
+mkdir -p "$out"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
 picture() {
   local name=$1
   shift
-  "$oasis" render --legend off "$@" --out "docs/$name" > /dev/null
-  echo "docs/$name: oasis render $*"
+  "$oasis" render --legend off "$@" --out "$out/$name" 2> /dev/null
+  echo "$out/$name: oasis render $*"
 }
 
-"$oasis" compare --out-dir "$scratch" > /dev/null
-cp "$scratch/forward.png" docs/default-forward.png
-cp "$scratch/deferred.png" docs/default-deferred.png
-echo "docs/default-forward.png, docs/default-deferred.png: oasis compare"
+# --frames 1: the frames are the same whatever the timing rounds.
+"$oasis" compare --frames 1 --out-dir "$scratch" > /dev/null 2>&1
+cp "$scratch/forward.png" "$out/default-forward.png"
+cp "$scratch/deferred.png" "$out/default-deferred.png"
+echo "$out/default-forward.png, $out/default-deferred.png: oasis compare"
+
+# docs/inspecting.md's views with their legend strips (the README's inspector row).
+picture inspect-depth-legend.png --size 640x360 --view depth --legend on
+picture inspect-normal-error.png --size 640x360 --view normal-error --legend on
 
 picture overview.png --view overview
 picture scene-day.png --hour 10

@@ -17,6 +17,7 @@
 #include "commands/headless_commands.h"
 #include "commands/window_app.h"
 #include "context/gl_context.h"
+#include "context/runtime_dir.h"
 #include "gl/frame_capture.h"
 #include "render/interruption.h"
 
@@ -81,7 +82,7 @@ int runParsed(const oasis::Options& options) {
     if (options.glDebug) std::fprintf(stderr, "oasis: %s\n", glDebugSummary().c_str());
     if (options.capture) {
         std::vector<std::string> captures = gl::renderDocCaptures();
-        for (const std::string& path : captures) std::printf("oasis: RenderDoc capture: %s\n", path.c_str());
+        for (const std::string& path : captures) std::fprintf(stderr, "oasis: RenderDoc capture: %s\n", path.c_str());  // a log line
         if (captures.empty() && code == 0) {
             std::fprintf(stderr, "oasis: --capture: RenderDoc wrote no capture\n");
             return 1;
@@ -105,5 +106,6 @@ int main(int argc, char** argv) {
         return 2;
     }
     for (const std::string& note : parsed.notes) std::fprintf(stderr, "oasis: %s\n", note.c_str());
+    PrivateRuntimeDir runtimeDir;  // before any context: zink's WSI reads XDG_RUNTIME_DIR
     return checkStandardOutput(runParsed(parsed.options));
 }

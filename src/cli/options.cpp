@@ -62,7 +62,7 @@ std::string usage(Command command) {
                    "                            luminance (the channels each view fills: docs/command-line.md)\n"
                    "  --range LO,HI             values LO..HI to black..white (default: the frame's finite min..max)\n"
                    "  --overlay LIST            paint nan, inf, negative values in checkers (default nan,inf; none)\n"
-                   "  --legend on|off           the legend strip under the image (default on)\n"
+                   "  --legend on|off           the legend strip under the image (default on; off for final)\n"
                    "  --stencil-view PATH       texturing | read-back (default: texturing where supported)\n"
                    "  --water-scene S           what the G-buffer, depth and error views show at water pixels:\n"
                    "                            direct (the lakebed, default) or mirrored (what the water reflects)\n"

@@ -46,7 +46,9 @@ struct Options {
     std::string view = "final";
     float viewExposure = 0.0f;  // render: the HDR views' exposure in stops
     ViewControls viewControls;  // render: --channel, --range, --overlay
-    bool legend = true;         // render: the legend strip under a single view
+    // render: the legend strip under a single view; unset, a buffer view has one and the final
+    // frame none (a picture of the size asked for, usable as a --reference: issue 31, defect 4).
+    std::optional<bool> legend;
     std::string out = "oasis.png";
     std::string outDir = "oasis-out";
     bool json = false;

@@ -282,7 +282,9 @@ std::string benchConfigJson(const BenchResult& r) {
            ", \"lights\": " + std::to_string(c.lights) +
            ", \"light_method\": " + jsonString(lightMethodName(c.lightMethod)) + ", \"ms_median\": " + jsonNumber(r.msMedian) + ", \"ms_min\": " + jsonNumber(r.msMin) +
            ", \"ms_max\": " + jsonNumber(r.msMax) + ", \"floor_ms\": " + jsonNumber(r.floorMs) +
-           ", \"floor_ratio\": " + jsonNumber(r.floorRatio()) + ", \"psnr_db\": " + jsonNumber(r.psnrDb) +
+           ", \"floor_ratio\": " + jsonNumber(r.floorRatio()) + ", \"ms_over_floor_ms\": " + jsonNumber(r.msOverFloor()) +
+           ", \"ms_spread\": " + jsonNumber(r.msSpread()) + ", \"noisy\": " + (r.noisy() ? "true" : "false") +
+           ", \"psnr_db\": " + jsonNumber(r.psnrDb) +
            ", \"rmse\": " + jsonNumber(r.rmse, 6) + ", \"max_abs\": " + std::to_string(r.maxAbs) +
            ", \"ssim\": " + jsonNumber(r.ssim, 6) + ", \"same_knobs_psnr_db\": " + jsonNumber(r.sameKnobsPsnrDb) +
            ", \"same_knobs_max_abs\": " + std::to_string(r.sameKnobsMaxAbs) + ", \"bytes_per_pixel\": " + std::to_string(r.bytesPerPixel) +
@@ -290,6 +292,32 @@ std::string benchConfigJson(const BenchResult& r) {
            ", \"target_mib\": " + jsonNumber(r.targetMiB, 3) + ", \"passes_ms\": {" + passes + "}" +
            ", \"pareto\": " + (r.pareto ? "true" : "false") +
            ", \"pareto_in_pipeline\": " + (r.paretoInPipeline ? "true" : "false") + ", \"depth\": " + jsonString(c.depth) + "}";
+}
+
+// Per size, the range of the floors timed in turn with the configurations (what xfloor divides
+// by), and the rows whose timed frames spread by more than BenchResult::kNoiseSpread.
+std::string floorsInTurnText(const std::vector<BenchResult>& results) {
+    std::map<std::string, std::pair<double, double>> ranges;
+    std::vector<std::string> noisy;
+    for (const BenchResult& r : results) {
+        std::string size = std::to_string(r.config.width) + "x" + std::to_string(r.config.height);
+        auto [it, added] = ranges.try_emplace(size, r.floorMs, r.floorMs);
+        it->second = {std::min(it->second.first, r.floorMs), std::max(it->second.second, r.floorMs)};
+        if (r.noisy()) noisy.push_back(size + " " + std::to_string(r.config.lights) + " lights " + pipelineName(r.config.pipeline) + " " +
+                            r.config.layout + " " + r.variation);
+    }
+    std::string text;
+    char line[256];
+    for (const auto& [size, range] : ranges) {
+        std::snprintf(line, sizeof(line), "floor %s timed in turn with the configurations (xfloor's divisor): %.2f to %.2f ms\n",
+                      size.c_str(), range.first, range.second);
+        text += line;
+    }
+    std::snprintf(line, sizeof(line), "noisy rows (ms max - ms min over %.0f%% of ms med; their xfloor is not a measured difference): %zu of %zu%s",
+                  100.0 * BenchResult::kNoiseSpread, noisy.size(), results.size(), noisy.empty() ? "\n" : ":");
+    text += line;
+    for (size_t i = 0; i < noisy.size(); ++i) text += (i ? ", " : " ") + noisy[i] + (i + 1 == noisy.size() ? "\n" : "");
+    return text;
 }
 
 }  // namespace oasis

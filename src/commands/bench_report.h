@@ -110,6 +110,14 @@ struct BenchResult {
         if (pairedFloorRatio > 0.0) return pairedFloorRatio;
         return floorMs > 0.0 ? msMedian / floorMs : 0.0;
     }
+    // What the table prints as xfloor: the median ms over this configuration's floor_ms, so the two
+    // numbers a reader divides agree (the paired median above can differ from it by the noise:
+    // 46.3x printed for 304.9 ms over a floor of 8.52, issue 31, defect 5).
+    double msOverFloor() const { return floorMs > 0.0 ? msMedian / floorMs : 0.0; }
+    // (ms max - ms min) / ms median of its timed frames; over kNoiseSpread the row is marked noisy.
+    static constexpr double kNoiseSpread = 0.10;
+    double msSpread() const { return msMedian > 0.0 ? (msMax - msMin) / msMedian : 0.0; }
+    bool noisy() const { return msSpread() > kNoiseSpread; }
 };
 
 // Marks `pareto` and `paretoInPipeline` (cost: median ms; error: RMSE, which orders like PSNR).
@@ -121,5 +129,9 @@ std::string benchConfigJson(const BenchResult& result);
 // A number as JSON: finite values with `decimals`, anything else as null.
 std::string jsonNumber(double value, int decimals = 4);
 std::string jsonString(const std::string& text);
+
+// The table's footer lines after the floors alone: per size the range of the floors timed in turn
+// with the configurations (what xfloor divides by), and the rows marked noisy.
+std::string floorsInTurnText(const std::vector<BenchResult>& results);
 
 }  // namespace oasis

@@ -241,7 +241,7 @@ int writeReferences(const Options& options, const std::vector<CheckCase>& cases)
         std::fprintf(stderr, "oasis check: [%d/%zu] %s\n", c.index, cases.size(), c.name().c_str());
     }
     if (!writeSet({options.writeReferences}, files)) return 1;
-    std::printf("oasis check: wrote %zu reference frames to %s\n", files.size(), options.writeReferences.c_str());
+    std::fprintf(stderr, "oasis check: wrote %zu reference frames to %s\n", files.size(), options.writeReferences.c_str());
     return 0;
 }
 
@@ -263,7 +263,7 @@ int writeCheckReport(const Options& options, const CheckReport& report) {
     std::printf("oasis check: %d passed, %d failed, %d skipped of %zu cases in %s on %s\n", report.passed(),
                 report.failed(), report.skipped(), report.cases.size(), formatSeconds(report.seconds).c_str(),
                 report.renderer.c_str());
-    std::printf("  wrote %s/report.json, %s/report.html%s\n", directory.c_str(), directory.c_str(),
+    std::fprintf(stderr, "  wrote %s/report.json, %s/report.html%s\n", directory.c_str(), directory.c_str(),
                 report.failed() ? (" and the failing cases' images in " + directory + "/cases").c_str() : "");
     return report.failed() ? 1 : 0;
 }

@@ -484,6 +484,7 @@ int runDriverCompare(const Options& given) {
         return 1;
     }
     ImageDifference difference = compareImages(a.image, b.image);
+    DifferingPixels differing = countDifferingPixels(a.image, b.image);
     Image heat;
     Provenance provenance;
     try {
@@ -516,21 +517,23 @@ int runDriverCompare(const Options& given) {
                    jsonString(s.path) + ", \"renderer\": " + jsonString(s.renderer) + "}";
         };
         std::printf("{\"a\": %s, \"b\": %s, \"width\": %d, \"height\": %d, \"pipeline\": \"%s\", \"options\": %s, "
-                    "\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"identical\": %s, \"difference\": %s}\n",
+                    "\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"pixels_differing\": %s, \"identical\": %s, "
+                    "\"difference\": %s}\n",
                     side(a).c_str(), side(b).c_str(), a.image.width, a.image.height, pipelineName(options.pipeline),
-                    jsonString(pictureOptions).c_str(), difference.psnrDb, difference.maxAbs, difference.rmse, identical ? "true" : "false",
-                    jsonString(differencePath).c_str());
+                    jsonString(pictureOptions).c_str(), difference.psnrDb, difference.maxAbs, difference.rmse, differing.json().c_str(),
+                    identical ? "true" : "false", jsonString(differencePath).c_str());
         return 0;
     }
     std::printf("oasis: %s vs %s, %s, %s pipeline: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n",
                 a.label.c_str(), b.label.c_str(), sizeText(a.image.width, a.image.height).c_str(),
                 pipelineName(options.pipeline), difference.psnrDb, identical ? " (identical)" : "", difference.maxAbs,
                 difference.rmse);
+    std::printf("  %s\n", differing.describe().c_str());
     std::printf("  %-12s %s\n", "options:", pictureOptions.c_str());
     for (const Side* s : {&a, &b})
         std::printf("  %-12s %s\n", (s->label + ":").c_str(),
                     s->reference ? ("saved image " + s->path + (s->renderer.empty() ? "" : ", drawn on " + s->renderer)).c_str() : (s->renderer + ", " + s->path).c_str());
-    std::printf("  wrote %s\n", differencePath.c_str());
+    std::fprintf(stderr, "  wrote %s\n", differencePath.c_str());  // a log line: stderr, as every command's
     return 0;
 }
 

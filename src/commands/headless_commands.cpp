@@ -26,6 +26,7 @@ namespace {
 
 struct Comparison {
     ImageDifference difference;
+    DifferingPixels differing;  // how many pixels differ by more than 0, 1, 4, 16 levels
     PipelineTimes times;  // both pipelines and the floor, timed in turn
     Image forward, deferred;
     using PassTimes = std::vector<std::pair<std::string, double>>;
@@ -58,6 +59,7 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
     result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
     result.difference = compareImages(result.forward, result.deferred);
+    result.differing = countDifferingPixels(result.forward, result.deferred);
     result.times = timePipelinesInTurn(renderer, session.scene, timingFrames);
     if (passTimes) {
         result.clock = session.timingClock();
@@ -68,13 +70,6 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     }
     renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
     return result;
-}
-
-// Whether `path` is the file standard output goes to (/dev/stdout, or the file stdout is redirected to).
-bool isStandardOutput(const std::string& path) {
-    struct stat named, out;
-    return stat(path.c_str(), &named) == 0 && fstat(STDOUT_FILENO, &out) == 0 && named.st_dev == out.st_dev &&
-           named.st_ino == out.st_ino;
 }
 
 // One PNG of a set: its file name, its image and where the image comes from (commands/provenance.h).
@@ -123,14 +118,23 @@ void printSummary(const Options& options, const RenderSession& session, const Co
                 queryContextInfo().summary().c_str());
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
+    std::printf("  %s\n", c.differing.describe().c_str());
+    // Each "x floor" is the median ms over the median floor ms printed beside it, so the numbers a
+    // reader divides agree (issue 31, defect 5); the rounds' range and a noise flag say how far
+    // to trust a difference (JSON keeps the per-round ratios' medians too).
     const PipelineTimes& t = c.times;
-    std::printf("  forward  %8.2f ms/frame  (%.2fx floor)\n", t.forwardMs, t.forwardRatio);
-    std::printf("  deferred %8.2f ms/frame  (%.2fx floor; rounds %.2fx to %.2fx)\n", t.deferredMs, t.deferredRatio,
-                t.deferredRatioLowest, t.deferredRatioHighest);
-    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, timed in turn with the frames)\n", t.floorMs);
+    std::printf("  forward  %8.2f ms/frame  (%.2fx floor; rounds %.2f to %.2f ms)\n", t.forwardMs, t.forwardOverFloor,
+                t.forwardLowest, t.forwardHighest);
+    std::printf("  deferred %8.2f ms/frame  (%.2fx floor; rounds %.2f to %.2f ms)\n", t.deferredMs, t.deferredOverFloor,
+                t.deferredLowest, t.deferredHighest);
+    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, timed in turn with the frames; rounds "
+                "%.2f to %.2f ms)\n", t.floorMs, t.floorLowest, t.floorHighest);
     std::printf("  medians of %d rounds (a forward frame, a deferred frame, the floor), wall time around glFinish; "
-                "ratios are each round's own; terrain %d triangles\n",
+                "x floor = median ms / median floor ms; terrain %d triangles\n",
                 t.rounds, session.renderer->geometry().terrainTriangles());
+    std::printf("  %s: the rounds spread by up to %.0f%% of their median (highest - lowest; noisy above %.0f%%%s)\n",
+                t.noisy() ? "NOISY" : "steady", 100.0 * t.spread, 100.0 * PipelineTimes::kNoiseSpread,
+                t.noisy() ? ": differences smaller than that are not measured; more --frames or an idle machine" : "");
     std::printf("  %s\n", describePlantAtlas(session).c_str());
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
@@ -155,6 +159,21 @@ std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) 
     return json + "}";
 }
 
+// Beside the per-round ratios' medians (kept): the ratios of the medians, each stream's lowest and
+// highest round, the largest spread and whether it is over the noise threshold (issue 31, defect 5).
+std::string timingSpreadJson(const PipelineTimes& t) {
+    char text[512];
+    std::snprintf(text, sizeof(text),
+                  "\"forward_over_floor\": %.4f, \"deferred_over_floor\": %.4f, \"forward_ms_lowest\": %.4f, "
+                  "\"forward_ms_highest\": %.4f, \"deferred_ms_lowest\": %.4f, \"deferred_ms_highest\": %.4f, "
+                  "\"floor_ms_lowest\": %.4f, \"floor_ms_highest\": %.4f, \"rounds_spread\": %.4f, "
+                  "\"noise_threshold\": %.2f, \"noisy\": %s, ",
+                  t.forwardOverFloor, t.deferredOverFloor, t.forwardLowest, t.forwardHighest, t.deferredLowest,
+                  t.deferredHighest, t.floorLowest, t.floorHighest, t.spread, PipelineTimes::kNoiseSpread,
+                  t.noisy() ? "true" : "false");
+    return text;
+}
+
 // Which clock timed the passes and why (only with --passes: the check costs frames).
 std::string passClockJson(const Comparison& c) {
     if (c.forwardPasses.empty()) return {};
@@ -169,9 +188,10 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"plants_drawn_mirrored\": %zu, ",
                 session.renderer->lastFrame().vegetationEnabled ? "true" : "false", session.scene.vegetation.density,
                 plants.plantsPlaced, plants.plantsDrawn, plants.plantsDrawnMirrored);
+    std::printf("\"pixels_differing\": %s, ", c.differing.json().c_str());
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"forward_floor_ratio\": %.4f, \"deferred_floor_ratio\": %.4f, "
-                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, \"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
                 "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
@@ -180,7 +200,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.times.forwardMs, c.times.deferredMs,
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
-                c.times.deferredRatioHighest,
+                c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(),
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
                 session.renderer->depthConventionReason().c_str(), options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
@@ -232,6 +252,7 @@ Image differenceImage(const Image& a, const std::string& aName, const Image& b, 
     // "identical" only at max abs 0: the 100 dB cap is also reached by a 1-level difference in a
     // few pixels (zink against llvmpipe).
     legend.notes.push_back(numbers);
+    legend.notes.push_back(countDifferingPixels(a, b).describe());  // the heat map shows where, this how many
     LegendRenderer legends;
     Image heat = differenceHeatmap(a, b, kFullScale);
     return stackImages(heat, legends.draw(legend, heat.width));
@@ -251,7 +272,7 @@ Image encodingErrorImage(const Options& options, RenderSession& session, const E
     std::snprintf(line, sizeof(line), "%s, %s against full: median %.4g, 99%% %.4g, max %.4g over %ld surface pixels",
                   view.name.c_str(), error.layout.c_str(), summary.median, summary.p99, summary.max, summary.count);
     std::fprintf(report, "oasis: %s\n", line);
-    if (!options.legend) return image;
+    if (!options.legend.value_or(true)) return image;  // an error view is a buffer view: a legend by default
     Legend legend;
     legend.title = view.name + " (deferred, " + error.layout + " against full): " + view.legend;
     legend.scale = LegendScale::LinearRamp;
@@ -290,7 +311,8 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
                  view->name.c_str(), describeChannel(*view, channel).c_str(), statistics.values, statistics.nan,
                  statistics.positiveInfinity, statistics.negativeInfinity, statistics.negative, statistics.min,
                  statistics.max);
-    if (!options.legend) return image;
+    // The final frame is a picture: the size asked for, no strip unless --legend on.
+    if (!options.legend.value_or(view->name != "final")) return image;
     gl::endFrame();  // the frame ends with its view read back; the legend strip is a frame of its own
     const FrameData& frame = renderer.lastFrame().data;
     LegendRenderer legends;
@@ -308,7 +330,9 @@ int runRenderCommand(const Options& options) {
         if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
         if (options.capture) gl::armCaptures(1);
         renderer.renderFrame(session.scene, options.stopBefore);
-        std::FILE* report = isStandardOutput(options.out) ? stderr : stdout;  // keep a piped PNG clean
+        // Logs go to stderr always: stdout carries only what was asked for (a PNG with --out
+        // /dev/stdout), never a log line (issue 31, defect 8).
+        std::FILE* report = stderr;
         Image image = errorView ? encodingErrorImage(options, session, *errorView, report)
                                 : renderedViewImage(options, renderer, report);
         std::string error;
@@ -343,7 +367,7 @@ int runCompareCommand(const Options& options) {
             printJson(options, session, c);
         } else {
             printSummary(options, session, c);
-            for (const std::string& path : written) std::printf("  wrote %s\n", path.c_str());
+            for (const std::string& path : written) std::fprintf(stderr, "  wrote %s\n", path.c_str());  // a log line
         }
         return 0;
     });
@@ -351,8 +375,8 @@ int runCompareCommand(const Options& options) {
 
 int runMainJob(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
-        // With --json, stdout carries the JSON alone (compare's keys); the rest goes to stderr.
-        std::FILE* report = options.json ? stderr : stdout;
+        // stdout carries the summary (or with --json the JSON alone, compare's keys); log lines go to stderr.
+        std::FILE* report = stderr;
         std::fprintf(report, "oasis: no display, running the headless main job (stencil view: %s)\n",
                      session.stencilPathReason.c_str());
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes);

@@ -389,6 +389,16 @@ PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::v
     times.deferredRatio = median(deferredRatios);
     times.deferredRatioLowest = *std::min_element(deferredRatios.begin(), deferredRatios.end());
     times.deferredRatioHighest = *std::max_element(deferredRatios.begin(), deferredRatios.end());
+    times.forwardOverFloor = times.forwardMs / times.floorMs;
+    times.deferredOverFloor = times.deferredMs / times.floorMs;
+    auto [forwardLow, forwardHigh] = std::minmax_element(forwardMs.begin(), forwardMs.end());
+    auto [deferredLow, deferredHigh] = std::minmax_element(deferredMs.begin(), deferredMs.end());
+    auto [floorLow, floorHigh] = std::minmax_element(floorMs.begin(), floorMs.end());
+    times.forwardLowest = *forwardLow, times.forwardHighest = *forwardHigh;
+    times.deferredLowest = *deferredLow, times.deferredHighest = *deferredHigh;
+    times.floorLowest = *floorLow, times.floorHighest = *floorHigh;
+    times.spread = std::max({(*forwardHigh - *forwardLow) / times.forwardMs, (*deferredHigh - *deferredLow) / times.deferredMs,
+                             (*floorHigh - *floorLow) / times.floorMs});
     return times;
 }
 

@@ -108,6 +108,17 @@ struct PipelineTimes {
     // Medians of each round's own ratio to its floor, and the lowest and highest round's.
     double forwardRatio = 0.0, deferredRatio = 0.0;
     double deferredRatioLowest = 0.0, deferredRatioHighest = 0.0;
+    // What the summary prints beside the medians, so the numbers read side by side agree: each
+    // pipeline's median ms over the median floor ms (issue 31, defect 5: a median of per-round
+    // ratios made the faster pipeline's ratio the larger), and each stream's lowest and highest round.
+    double forwardOverFloor = 0.0, deferredOverFloor = 0.0;
+    double forwardLowest = 0.0, forwardHighest = 0.0, deferredLowest = 0.0, deferredHighest = 0.0;
+    double floorLowest = 0.0, floorHighest = 0.0;
+    // The largest (highest - lowest) / median of the three streams; above kNoiseSpread the rounds
+    // disagree too much for a difference of that size to mean anything, and the output says so.
+    double spread = 0.0;
+    static constexpr double kNoiseSpread = 0.10;
+    bool noisy() const { return spread > kNoiseSpread; }
 };
 // Leaves the renderer on the pipeline it was on.
 PipelineTimes timePipelinesInTurn(Renderer& renderer, const SceneSettings& scene, int rounds);

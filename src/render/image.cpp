@@ -134,9 +134,40 @@ Image stackImages(const Image& top, const Image& bottom) {
 }
 
 void differenceHeatColour(float t, uint8_t rgb[3]) {
+    // Any non-zero difference at least as bright as 3/16 of the scale (red 143): one level at the
+    // default full scale of 16 was red 47, five such pixels invisible in difference.png (issue 31,
+    // defect 6). The counts of differing pixels say how many are that small.
+    if (t > 0.0f) t = std::max(t, kMinVisibleHeat);
     rgb[0] = uint8_t(255.0f * std::clamp(t * 3.0f, 0.0f, 1.0f));
     rgb[1] = uint8_t(255.0f * std::clamp(t * 3.0f - 1.0f, 0.0f, 1.0f));
     rgb[2] = uint8_t(255.0f * std::clamp(t * 3.0f - 2.0f, 0.0f, 1.0f));
+}
+
+DifferingPixels countDifferingPixels(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height) throw std::invalid_argument("images differ in size");
+    DifferingPixels counts;
+    counts.pixels = long(a.width) * long(a.height);
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            int d = 0;
+            for (int c = 0; c < 3; ++c) d = std::max(d, std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])));
+            for (size_t i = 0; i < DifferingPixels::kLevels.size(); ++i) counts.over[i] += d > DifferingPixels::kLevels[i];
+        }
+    return counts;
+}
+
+std::string DifferingPixels::describe() const {
+    std::string text = "pixels differing by more than";
+    for (size_t i = 0; i < kLevels.size(); ++i)
+        text += (i ? ", " : " ") + std::to_string(kLevels[i]) + ": " + std::to_string(over[i]);
+    return text + " levels (of " + std::to_string(pixels) + ")";
+}
+
+std::string DifferingPixels::json() const {
+    std::string text = "{";
+    for (size_t i = 0; i < kLevels.size(); ++i)
+        text += (i ? ", \"" : "\"") + std::to_string(kLevels[i]) + "\": " + std::to_string(over[i]);
+    return text + "}";
 }
 
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale) {

@@ -1,6 +1,7 @@
 // 8-bit RGBA images (top row first): PNG output and input and the comparisons oasis reports between
 // frames (PSNR, RMSE and max absolute difference over RGB, and a difference heat map).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -56,8 +57,21 @@ double ssim(const Image& a, const Image& b);
 // Per pixel max channel difference on a black-red-yellow-white scale that saturates at `fullScale`.
 // Throws std::invalid_argument if sizes differ.
 Image differenceHeatmap(const Image& a, const Image& b, int fullScale = 16);
-// The heat map's colour at t = difference / fullScale in 0..1 (its legend draws the same scale).
+// The heat map's colour at t = difference / fullScale in 0..1 (its legend draws the same scale);
+// any t > 0 at least kMinVisibleHeat, so that a one-level difference shows.
+constexpr float kMinVisibleHeat = 3.0f / 16.0f;
 void differenceHeatColour(float t, uint8_t rgb[3]);
+
+// How many pixels differ by more than 0, 1, 4 and 16 levels (the largest RGB channel difference):
+// the heat map shows where, these say how many. Throws std::invalid_argument if sizes differ.
+struct DifferingPixels {
+    static constexpr std::array<int, 4> kLevels = {0, 1, 4, 16};
+    std::array<long, 4> over{};
+    long pixels = 0;
+    std::string describe() const;  // "pixels differing by more than 0: N, 1: N, 4: N, 16: N levels (of P)"
+    std::string json() const;      // {"0": N, "1": N, "4": N, "16": N}
+};
+DifferingPixels countDifferingPixels(const Image& a, const Image& b);
 // `bottom` under `top` (the same width): a frame and its legend strip in one image; an empty
 // `bottom` leaves `top` as it is.
 Image stackImages(const Image& top, const Image& bottom);

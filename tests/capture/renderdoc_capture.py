@@ -25,7 +25,7 @@ run = subprocess.run(["renderdoccmd", "capture", "-w", "-d", scratch, "-c", os.p
                       "--out", os.path.join(scratch, "frame.png")], capture_output=True, text=True, timeout=300)
 print(run.stdout[-2000:], run.stderr[-2000:])
 prefix = "oasis: RenderDoc capture: "
-paths = [line[len(prefix):] for line in run.stdout.splitlines() if line.startswith(prefix)]
+paths = [line[len(prefix):] for line in run.stderr.splitlines() if line.startswith(prefix)]
 assert run.returncode == 0 and len(paths) == 1, f"expected one capture, exit {run.returncode}: {paths}"
 
 os.environ.setdefault("EGL_PLATFORM", "surfaceless")  # replay headless, as oasis renders

@@ -151,7 +151,7 @@ refuse)
         --reference "$scratch/r.png" --hour 10
     render --view depth --out "$scratch/depth.png"
     refused "is --view depth with a legend strip under the frame" --reference "$scratch/depth.png"
-    render --out "$scratch/legend.png"
+    render --legend on --out "$scratch/legend.png"
     refused "is --view final with a legend strip under the frame" --reference "$scratch/legend.png"
     render --view normal --legend off --out "$scratch/normal.png"
     refused "is --view normal without a legend strip" --reference "$scratch/normal.png"

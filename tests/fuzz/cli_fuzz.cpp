@@ -415,8 +415,9 @@ std::string checkSuccess(const Running& run, const std::string& stdoutText) {
         // A channel or a range may rightly map the whole frame to one grey (alpha is 1 everywhere).
         bool picture = (view == "final" || view == "overview") && !has(args, "--stop-before") &&
                        !has(args, "--channel") && !has(args, "--range");
-        // A single view carries its legend strip under the frame unless --legend off.
-        bool legend = view != "overview" && lastValue(args, "--legend", "on") != "off";
+        // A buffer view carries its legend strip under the frame unless --legend off; the final
+        // frame only with --legend on.
+        bool legend = view != "overview" && lastValue(args, "--legend", view == "final" ? "off" : "on") != "off";
         return checkImage(run.dir / lastValue(args, "--out", "oasis.png"), width, height, picture, legend);
     }
     if (sub == "probe") {

@@ -318,5 +318,20 @@ TEST(SvgPlot, DrawsEveryPointTheFrontierAndTheLegend) {
     EXPECT_NE(tall.find("width=\"560.0\" height=\"910.0\""), std::string::npos) << tall.substr(0, 120);
 }
 
+// Issue 31, defect 5: a row printed 46.3x for 304.9 ms over a floor_ms of 8.52: the table's xfloor
+// is the median ms over the row's floor_ms, and a row whose frames spread over 10% is noisy.
+TEST(BenchResult, TableRatioAgreesWithFloorMsAndNoiseIsMarked) {
+    BenchResult r;
+    r.msMedian = 304.9, r.msMin = 250.0, r.msMax = 320.0, r.floorMs = 8.52, r.pairedFloorRatio = 46.3;
+    EXPECT_DOUBLE_EQ(r.msOverFloor(), 304.9 / 8.52);
+    EXPECT_DOUBLE_EQ(r.floorRatio(), 46.3);  // bench.json's floor_ratio keeps its meaning
+    EXPECT_TRUE(r.noisy());
+    std::string footer = floorsInTurnText({r});
+    EXPECT_NE(footer.find("timed in turn with the configurations (xfloor's divisor): 8.52 to 8.52 ms"), std::string::npos) << footer;
+    EXPECT_NE(footer.find("noisy rows (ms max - ms min over 10% of ms med; their xfloor is not a measured difference): 1 of 1:"),
+              std::string::npos) << footer;
+    EXPECT_NE(benchConfigJson(r).find("\"ms_over_floor_ms\": 35.7864"), std::string::npos) << benchConfigJson(r);
+}
+
 }  // namespace
 }  // namespace oasis

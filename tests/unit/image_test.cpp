@@ -266,5 +266,26 @@ TEST_F(WritePng, FailsWithAMessageForAMissingDirectory) {
     EXPECT_FALSE(std::filesystem::exists("/nonexistent/dir/x.png"));
 }
 
+// Issue 31, defect 6: a one-level difference shows (five such pixels were black-red 47 at the
+// default scale of 16), and the counts over 0, 1, 4 and 16 levels say how many differ.
+TEST(DifferenceHeatmap, OneLevelIsVisible) {
+    Image heat = differenceHeatmap(solid(1, 1, 100, 100, 100), solid(1, 1, 101, 100, 100));
+    EXPECT_GE(heat.pixel(0, 0)[0], 128);
+}
+
+TEST(DifferingPixels, CountsOverEachLevel) {
+    Image a = solid(5, 1, 100, 100, 100), b = a;
+    const int differences[5] = {0, 1, 2, 5, 17};
+    for (int x = 0; x < 5; ++x) b.pixel(x, 0)[2] = uint8_t(100 + differences[x]);
+    DifferingPixels counts = countDifferingPixels(a, b);
+    EXPECT_EQ(counts.pixels, 5);
+    EXPECT_EQ(counts.over[0], 4);  // > 0
+    EXPECT_EQ(counts.over[1], 3);  // > 1
+    EXPECT_EQ(counts.over[2], 2);  // > 4
+    EXPECT_EQ(counts.over[3], 1);  // > 16
+    EXPECT_EQ(counts.describe(), "pixels differing by more than 0: 4, 1: 3, 4: 2, 16: 1 levels (of 5)");
+    EXPECT_EQ(counts.json(), "{\"0\": 4, \"1\": 3, \"4\": 2, \"16\": 1}");
+}
+
 }  // namespace
 }  // namespace oasis

@@ -61,5 +61,25 @@ TEST(PipelineTimes, MismatchedOrEmptyRoundsAreRefused) {
     EXPECT_THROW(summariseRounds({1, 2}, {1}, {1, 2}), std::invalid_argument);
 }
 
+// Issue 31, defect 5: the faster pipeline printed the larger ratio (medians of per-round ratios).
+// The ratios printed are the medians' own, so they order as the milliseconds do and agree with
+// them; rounds that spread over 10% of their median are flagged noisy.
+TEST(PipelineTimes, PrintedRatiosAreTheMediansOwnAndNoiseIsFlagged) {
+    std::vector<double> forward = {570, 560, 600}, deferred = {447, 300, 460}, floor = {25.45, 15, 30};
+    PipelineTimes t = summariseRounds(forward, deferred, floor);
+    EXPECT_DOUBLE_EQ(t.forwardOverFloor, t.forwardMs / t.floorMs);
+    EXPECT_DOUBLE_EQ(t.deferredOverFloor, t.deferredMs / t.floorMs);
+    EXPECT_LT(t.deferredMs, t.forwardMs);
+    EXPECT_LT(t.deferredOverFloor, t.forwardOverFloor);  // the faster pipeline, the smaller ratio
+    EXPECT_DOUBLE_EQ(t.deferredLowest, 300.0);
+    EXPECT_DOUBLE_EQ(t.deferredHighest, 460.0);
+    EXPECT_DOUBLE_EQ(t.floorLowest, 15.0);
+    EXPECT_DOUBLE_EQ(t.floorHighest, 30.0);
+    EXPECT_TRUE(t.noisy());
+    PipelineTimes steady = summariseRounds({100, 101, 99}, {50, 51, 50}, {10, 10.5, 10});
+    EXPECT_FALSE(steady.noisy());
+    EXPECT_NEAR(steady.spread, 0.05, 1e-12);  // the floor's 0.5 over its median 10
+}
+
 }  // namespace
 }  // namespace oasis
