@@ -46,7 +46,8 @@ TEST(FrameGraph, TheDepthCopyRunsOnlyWhereAPassReadsIt) {
 TEST(FrameGraph, TheLightTilesAreBuiltOnlyForTheTiledLighting) {
     Pipeline deferred(PipelineKind::Deferred);
     EXPECT_TRUE(stepNamed(deferred.graph(compactFrame(LightMethod::Tiled, true)), "LightTilingPass").runs);
-    const GraphStep& volumes = stepNamed(deferred.graph(compactFrame(LightMethod::Volumes, true)), "LightTilingPass");
+    FrameGraph volumesGraph = deferred.graph(compactFrame(LightMethod::Volumes, true));
+    const GraphStep& volumes = stepNamed(volumesGraph, "LightTilingPass");
     EXPECT_FALSE(volumes.runs);
     EXPECT_EQ(volumes.culled, "nothing later reads what it writes (LightTiles)");
     FrameSetup noLights = compactFrame(LightMethod::Tiled, true);
