@@ -16,7 +16,7 @@ const char* stencilViewPathName(StencilViewPath path) {
 void DebugViewPass::uploadStencilCopy(const FrameTargets& targets) {
     int w = targets.width(), h = targets.height();
     stencilBytes_.resize(size_t(w) * size_t(h));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.radianceFramebuffer());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, Target::DepthStencil));
     readStencilBytes(w, h, stencilBytes_.data());  // render/pixel_readback.h: ES has no GL_STENCIL_INDEX read
     if (!stencilCopy_ || stencilCopyWidth_ != w || stencilCopyHeight_ != h) {
         stencilCopy_ = gl::createTargetTexture("stencil read-back copy", GL_R8UI, w, h);

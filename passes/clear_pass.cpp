@@ -6,8 +6,26 @@
 
 namespace oasis {
 
+// The targets the clear leaves: the G-buffer's, or for forward only the depth-stencil (a whole
+// forward frame writes every pixel of Radiance); Radiance too for a frame stopped early.
+static std::vector<Access> clearedTargets(const FrameSetup& frame, SurfaceOutput output) {
+    std::vector<Access> cleared;
+    if (output == SurfaceOutput::GBuffer)
+        for (Target target : surfaceOutputTargets(frame, output)) cleared.push_back({target, Use::Write});
+    appendDepthStencil(cleared, {Use::DepthWrite, Use::StencilWrite});
+    return cleared;
+}
+
+std::vector<Access> ClearPass::accesses(const FrameSetup& frame) const {
+    std::vector<Access> used = clearedTargets(frame, output_);
+    if (!frame.runsToEnd) used.push_back({Target::Radiance, Use::Write});
+    return used;
+}
+
 void ClearPass::execute(PassContext& context) {
-    bindSurfaceOutput(context.targets, output_);
+    std::vector<Access> cleared = clearedTargets(context.frame, output_);
+    if (output_ == SurfaceOutput::Forward && !context.frame.runsToEnd) cleared.push_back({Target::Radiance, Use::Write});
+    bindFramebufferOf(context.targets, cleared);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
@@ -24,9 +42,9 @@ void ClearPass::execute(PassContext& context) {
         if (!context.frame.runsToEnd) {
             // LightingPass leaves the sky's pixels to SkyPass: a frame stopped between them shows
             // Radiance from black there, not an earlier frame's.
-            glBindFramebuffer(GL_FRAMEBUFFER, targets.radianceOnlyFramebuffer(false));
+            bindFramebufferOf(targets, {{Target::Radiance, Use::Write}});
             glClearBufferfv(GL_COLOR, 0, nothing);
-            bindSurfaceOutput(context.targets, output_);
+            bindFramebufferOf(targets, cleared);
         }
     } else if (!context.frame.runsToEnd) {
         // A whole forward frame needs no colour clear: every pixel of Radiance is written by a

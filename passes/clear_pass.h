@@ -9,8 +9,7 @@ class ClearPass : public Pass {
 public:
     explicit ClearPass(SurfaceOutput output) : output_(output) {}
     std::string name() const override { return std::string("ClearPass.") + surfaceOutputName(output_); }
-    std::vector<Target> reads() const override { return {}; }
-    std::vector<Target> writes() const override { return surfaceOutputTargets(output_); }
+    std::vector<Access> accesses(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return "clear"; }
 
 protected:

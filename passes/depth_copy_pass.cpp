@@ -7,8 +7,7 @@ namespace oasis {
 
 void DepthCopyPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.sceneDepthFramebuffer());
-    glViewport(0, 0, targets.width(), targets.height());
+    bindDeclaredOutputs(context);
     glActiveTexture(GL_TEXTURE0 + kUnitDepth);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::DepthStencil));
     glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);

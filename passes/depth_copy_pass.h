@@ -7,7 +7,6 @@
 // itself (DepthRead::FromTarget), so the direct copy runs only in frames with light volumes. Mirrored,
 // it copies the mirrored scene's depth inside the water's rectangle, the only pixels read there.
 #pragma once
-#include "passes/light_volume_pass.h"
 #include "passes/pass.h"
 
 namespace oasis {
@@ -18,13 +17,15 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "DepthCopyPass.mirrored" : "DepthCopyPass";
     }
-    std::vector<Target> reads() const override { return {Target::DepthStencil}; }
-    std::vector<Target> writes() const override { return {Target::SceneDepth}; }
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        return {{Target::DepthStencil, Use::Sample}, {Target::SceneDepth, Use::Replace},
+                {Target::SceneDepth, Use::DepthWrite}};
+    }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
+    // Only a layout that rebuilds position from depth has the copy; the frame graph culls it where
+    // no later pass samples the copy.
     bool active(const FrameSetup& frame) const override {
-        if (!frame.positionFromDepth || !mirroredPassActive(frame, mirroring_)) return false;
-        return mirroring_ == Mirroring::Mirrored || !frame.depthReadInPlace ||
-               LightVolumePass::volumesActive(frame, mirroring_);
+        return frame.positionFromDepth && mirroredPassActive(frame, mirroring_);
     }
 
 protected:

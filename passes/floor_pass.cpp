@@ -5,7 +5,10 @@ namespace oasis {
 
 void FloorPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
-    bindSurfaceOutput(targets, SurfaceOutput::GBuffer);
+    std::vector<Access> gbuffer;
+    for (Target target : surfaceOutputTargets(context.frame, SurfaceOutput::GBuffer)) gbuffer.push_back({target, Use::Write});
+    appendDepthStencil(gbuffer, {Use::DepthWrite});
+    bindFramebufferOf(targets, gbuffer);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
@@ -13,7 +16,7 @@ void FloorPass::execute(PassContext& context) {
     context.geometry.drawFullscreenTriangle();
     glDisable(GL_DEPTH_TEST);
 
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.finalFramebuffer());
+    bindFramebufferOf(targets, {{Target::Final, Use::Write}});
     bindGBufferInputs(targets);
     glUseProgram(context.shaders.program(targets.layout().program("floor.read")));
     context.geometry.drawFullscreenTriangle();

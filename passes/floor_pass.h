@@ -9,11 +9,14 @@ namespace oasis {
 class FloorPass : public Pass {
 public:
     std::string name() const override { return "FloorPass"; }
-    std::vector<Target> reads() const override {
-        return {Target::Albedo, Target::Normal, Target::Position, Target::Info};
-    }
-    std::vector<Target> writes() const override {
-        return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil, Target::Final};
+    // Writes a floor into the G-buffer (and its depth), then reads it back into Final.
+    std::vector<Access> accesses(const FrameSetup& frame) const override {
+        std::vector<Access> used;
+        for (Target target : surfaceOutputTargets(frame, SurfaceOutput::GBuffer)) used.push_back({target, Use::Write});
+        appendDepthStencil(used, {Use::DepthTest, Use::DepthWrite});
+        for (const Access& sample : gbufferSamples(frame, DepthRead::FromTarget)) used.push_back(sample);
+        used.push_back({Target::Final, Use::Write});
+        return used;
     }
 
 protected:

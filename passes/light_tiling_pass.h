@@ -13,18 +13,14 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "LightTilingPass.mirrored" : "LightTilingPass";
     }
-    std::vector<Target> reads() const override {
-        return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::SceneDepth};
+    std::vector<Access> accesses(const FrameSetup& frame) const override {
+        std::vector<Access> used = gbufferSamples(frame, DepthRead::FromTarget);
+        used.push_back({Buffer::LightTiles, Use::Replace});  // its own tile-list buffer
+        return used;
     }
-    std::vector<Target> writes() const override { return {}; }  // its own tile-list buffer, no target
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
-    bool active(const FrameSetup& frame) const override { return tiledLightsActive(frame, mirroring_); }
-
-    // Whether a half of the deferred frame adds its lights by tiles: the tiled method, lights to add,
-    // and the half drawn at all. The LightingPass picks its tiled variant by the same test.
-    static bool tiledLightsActive(const FrameSetup& frame, Mirroring mirroring) {
-        return frame.lightMethod == LightMethod::Tiled && !frame.lights.empty() && mirroredPassActive(frame, mirroring);
-    }
+    // Culled by the frame graph where no LightingPass reads the tiles (another light method).
+    bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
     // Screen tiles across and down a frame, and the bytes of their lists.
     static int tilesAcross(int pixels);
     static size_t listBytes(int width, int height);

@@ -26,7 +26,7 @@ bool sphereInFrustum(const glm::mat4& viewProjection, DepthMapping mapping, glm:
 void LightVolumePass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
     bool mirrored = mirroring_ == Mirroring::Mirrored;
-    bindSurfaceOutput(targets, SurfaceOutput::Forward, mirroring_);
+    bindDeclaredOutputs(context);
     bindGBufferInputs(targets, DepthRead::FromCopy);
     std::string suffix = (mirrored ? ".mirrored" : "") + lightsVariantSuffix(context.frame.lightsPath);
     GLuint mark = context.shaders.program("light.mark" + suffix);

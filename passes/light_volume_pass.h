@@ -17,17 +17,17 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "LightVolumePass.mirrored" : "LightVolumePass";
     }
-    std::vector<Target> reads() const override {
-        return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
-    }
-    std::vector<Target> writes() const override {
-        return {mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
+    std::vector<Access> accesses(const FrameSetup& frame) const override {
+        // It writes stencil while it tests depth, so a compact layout's depth comes from the copy.
+        std::vector<Access> used = gbufferSamples(frame, DepthRead::FromCopy);
+        used.push_back({mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Use::Write});
+        appendDepthStencil(used, {Use::DepthTest, Use::StencilTest, Use::StencilWrite});
+        if (frame.shadowsActive) used.push_back({Buffer::ShadowMaps, Use::Sample});
+        return used;
     }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
-    bool active(const FrameSetup& frame) const override { return volumesActive(frame, mirroring_); }
-    // Whether the frame adds its lights with stencil volumes (for DepthCopyPass, which copies depth for them).
-    static bool volumesActive(const FrameSetup& frame, Mirroring mirroring) {
-        return frame.lightMethod == LightMethod::Volumes && !frame.lights.empty() && mirroredPassActive(frame, mirroring);
+    bool active(const FrameSetup& frame) const override {
+        return frame.lightMethod == LightMethod::Volumes && !frame.lights.empty() && mirroredPassActive(frame, mirroring_);
     }
 
 protected:

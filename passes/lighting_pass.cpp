@@ -5,7 +5,6 @@
 // variant also adds the lights its LightTilingPass listed for the pixel's tile.
 #include "passes/lighting_pass.h"
 
-#include "passes/light_tiling_pass.h"
 
 namespace oasis {
 
@@ -16,20 +15,36 @@ bool LightingPass::testsSurfaces(const FrameSetup& frame) const {
     return !samplesTheTarget || frame.readOnlyDepth;
 }
 
+// Whether the tiled variant adds the point lights: the tiled method, lights to add (LightTilingPass
+// of the same half writes the list; the frame graph keeps it because this reads it).
+static bool addsTiledLights(const FrameSetup& frame) {
+    return frame.lightMethod == LightMethod::Tiled && !frame.lights.empty();
+}
+
+std::vector<Access> LightingPass::accesses(const FrameSetup& frame) const {
+    bool inPlace = mirroring_ == Mirroring::Direct && frame.depthReadInPlace;
+    std::vector<Access> used = gbufferSamples(frame, inPlace ? DepthRead::FromTarget : DepthRead::FromCopy);
+    for (Target target : surfaceOutputTargets(frame, SurfaceOutput::Forward, mirroring_))
+        used.push_back({target, Use::Write});
+    // Tested, never written; mirrored, the stencil keeps it inside the water.
+    if (testsSurfaces(frame)) appendDepthStencil(used, {Use::DepthTest});
+    if (mirroring_ == Mirroring::Mirrored) appendDepthStencil(used, {Use::StencilTest});
+    if (addsTiledLights(frame)) used.push_back({Buffer::LightTiles, Use::Sample});
+    if (frame.shadowsActive) used.push_back({Buffer::ShadowMaps, Use::Sample});
+    return used;
+}
+
 void LightingPass::execute(PassContext& context) {
     bool fused = toneMapFusedInto(context.frame, SurfaceOutput::Forward, mirroring_);
     bool mirrored = mirroring_ == Mirroring::Mirrored;
-    bool surfacesOnly = testsSurfaces(context.frame);
-    if (surfacesOnly) {
-        // Radiance (or Reflection) with the depth-stencil target, which is tested, never written.
-        bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_, fused);
+    // Radiance (or Reflection), with the depth-stencil target where it tests the surfaces; else
+    // every pixel, the sky's left black for SkyPass to draw over.
+    bindDeclaredOutputs(context);
+    if (testsSurfaces(context.frame)) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(context.targets.depth().fartherFunc);
         glDepthMask(GL_FALSE);
     } else {
-        // Every pixel; the sky's are left black for SkyPass to draw over.
-        glBindFramebuffer(GL_FRAMEBUFFER, context.targets.radianceOnlyFramebuffer(fused));
-        glViewport(0, 0, context.targets.width(), context.targets.height());
         glDisable(GL_DEPTH_TEST);
     }
     bool inPlace = !mirrored && context.frame.depthReadInPlace;
@@ -37,7 +52,7 @@ void LightingPass::execute(PassContext& context) {
     beginMirroredDraw(mirroring_);
     if (mirrored) beginWaterBoundedDraw(context);
     std::string program = mirrored ? "lighting.mirrored" : fused ? "lighting.tonemapped" : "lighting";
-    if (LightTilingPass::tiledLightsActive(context.frame, mirroring_)) program += ".tiled";
+    if (addsTiledLights(context.frame)) program += ".tiled";
     glUseProgram(context.shaders.program(context.targets.layout().program(program)));
     context.geometry.drawFullscreenTriangle();
     if (mirrored) endWaterBoundedDraw(context);

@@ -13,14 +13,7 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "LightingPass.mirrored" : "LightingPass";
     }
-    std::vector<Target> reads() const override {
-        return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
-    }
-    std::vector<Target> writes() const override {
-        // Final too where the tone map is fused into the direct lighting.
-        if (mirroring_ == Mirroring::Mirrored) return {Target::Reflection};
-        return {Target::Radiance, Target::Final};
-    }
+    std::vector<Access> accesses(const FrameSetup& frame) const override;
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
     // Whether the depth test keeps the pass to the surfaces (else every pixel is shaded, the sky's

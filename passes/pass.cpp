@@ -1,17 +1,66 @@
-// Helpers shared by the passes that draw surfaces.
+// A pass's declarations (what it reads and writes, the framebuffer of its writes) and the helpers
+// shared by the passes that draw surfaces.
 #include "passes/pass.h"
+
+#include <algorithm>
+#include <optional>
 
 #include "render/light_paths.h"
 #include "render/texture_units.h"
 
 namespace oasis {
 
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring, bool toneMapFused) {
-    GLuint framebuffer = output == SurfaceOutput::GBuffer ? targets.gbufferFramebuffer()
-                         : mirroring == Mirroring::Mirrored ? targets.reflectionFramebuffer()
-                         : toneMapFused                     ? targets.radianceFinalFramebuffer()
-                                                            : targets.radianceFramebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+const char* bufferName(Buffer buffer) {
+    switch (buffer) {
+        case Buffer::TerrainHeights: return "TerrainHeights";
+        case Buffer::ShadowMaps: return "ShadowMaps";
+        case Buffer::LightTiles: return "LightTiles";
+    }
+    return "?";
+}
+
+std::string resourceName(const Resource& resource) {
+    if (auto target = std::get_if<Target>(&resource)) return targetName(*target);
+    return bufferName(std::get<Buffer>(resource));
+}
+
+bool isRead(Use use) { return use == Use::Sample || use == Use::DepthTest || use == Use::StencilTest; }
+bool isWrite(Use use) { return !isRead(use); }
+
+// The resources of `accesses` whose use `counts`, each once, in declared order.
+static std::vector<Resource> resourcesUsed(const std::vector<Access>& accesses, bool (*counts)(Use)) {
+    std::vector<Resource> used;
+    for (const Access& access : accesses)
+        if (counts(access.use) && std::find(used.begin(), used.end(), access.resource) == used.end())
+            used.push_back(access.resource);
+    return used;
+}
+
+std::vector<Resource> Pass::reads(const FrameSetup& frame) const { return resourcesUsed(accesses(frame), isRead); }
+std::vector<Resource> Pass::writes(const FrameSetup& frame) const { return resourcesUsed(accesses(frame), isWrite); }
+
+bool Pass::writes(const FrameSetup& frame, Target target) const {
+    auto written = writes(frame);
+    return std::find(written.begin(), written.end(), Resource(target)) != written.end();
+}
+
+void Pass::bindDeclaredOutputs(const PassContext& context) const {
+    bindFramebufferOf(context.targets, accesses(context.frame));
+}
+
+void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& accesses) {
+    std::vector<Target> colour;
+    std::optional<Target> depth;
+    for (const Access& access : accesses) {
+        const Target* target = std::get_if<Target>(&access.resource);
+        if (!target || access.use == Use::Sample) continue;
+        if (*target == Target::DepthStencil || *target == Target::SceneDepth) {
+            depth = *target;
+        } else if (std::find(colour.begin(), colour.end(), *target) == colour.end()) {
+            colour.push_back(*target);
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.framebuffer(colour, depth));
     glViewport(0, 0, targets.width(), targets.height());
 }
 
@@ -89,17 +138,21 @@ SurfacePass::SurfacePass(const std::string& baseName, SurfaceOutput output, Mirr
       name_(variantName(baseName, output, mirroring)),
       step_(baseName + (mirroring == Mirroring::Mirrored ? ".mirrored" : "")) {}
 
-std::vector<Target> SurfacePass::writes() const {
-    std::vector<Target> written = surfaceOutputTargets(output_, mirroring_);
-    // The direct forward passes write Final too where the tone map is fused (toneMapFusedInto).
-    if (output_ == SurfaceOutput::Forward && mirroring_ == Mirroring::Direct) written.push_back(Target::Final);
-    return written;
+std::vector<Access> SurfacePass::accesses(const FrameSetup& frame) const {
+    std::vector<Access> used;
+    for (Target target : surfaceOutputTargets(frame, output_, mirroring_)) used.push_back({target, Use::Write});
+    if (mirroring_ == Mirroring::Direct)
+        appendDepthStencil(used, {Use::DepthTest, Use::DepthWrite, Use::StencilWrite});
+    else  // inside the water only (beginMirroredDraw)
+        appendDepthStencil(used, {Use::DepthTest, Use::DepthWrite, Use::StencilTest});
+    if (output_ == SurfaceOutput::Forward && frame.shadowsActive) used.push_back({Buffer::ShadowMaps, Use::Sample});
+    return used;
 }
 
 bool SurfacePass::active(const FrameSetup& frame) const { return mirroredPassActive(frame, mirroring_); }
 
 void SurfacePass::beginSurfaceDraw(PassContext& context, int stencilMark) const {
-    bindSurfaceOutput(context.targets, output_, mirroring_, toneMapFusedInto(context.frame, output_, mirroring_));
+    bindDeclaredOutputs(context);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(context.targets.depth().nearerFunc);
     glDepthMask(GL_TRUE);
@@ -153,10 +206,26 @@ const char* surfaceOutputName(SurfaceOutput output) {
     return output == SurfaceOutput::GBuffer ? "gbuffer" : "forward";
 }
 
-std::vector<Target> surfaceOutputTargets(SurfaceOutput output, Mirroring mirroring) {
-    if (output == SurfaceOutput::GBuffer)  // Position too, though a layout may not store it
-        return {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil};
-    return {mirroring == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Target::DepthStencil};
+std::vector<Target> surfaceOutputTargets(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring) {
+    if (output == SurfaceOutput::GBuffer) {
+        if (frame.positionFromDepth) return {Target::Albedo, Target::Normal, Target::Info};
+        return {Target::Albedo, Target::Normal, Target::Position, Target::Info};
+    }
+    if (mirroring == Mirroring::Mirrored) return {Target::Reflection};
+    if (toneMapFusedInto(frame, output, mirroring)) return {Target::Radiance, Target::Final};
+    return {Target::Radiance};
+}
+
+std::vector<Access> gbufferSamples(const FrameSetup& frame, DepthRead depthRead) {
+    std::vector<Access> samples;
+    for (Target target : surfaceOutputTargets(frame, SurfaceOutput::GBuffer)) samples.push_back({target, Use::Sample});
+    if (frame.positionFromDepth)
+        samples.push_back({depthRead == DepthRead::FromCopy ? Target::SceneDepth : Target::DepthStencil, Use::Sample});
+    return samples;
+}
+
+void appendDepthStencil(std::vector<Access>& accesses, std::initializer_list<Use> uses) {
+    for (Use use : uses) accesses.push_back({Target::DepthStencil, use});
 }
 
 }  // namespace oasis

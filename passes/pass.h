@@ -3,6 +3,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "gl/objects.h"
@@ -57,13 +58,36 @@ private:
     PassContext context_;
 };
 
+// The buffers passes hand each other besides the frame's targets: declared like targets so the
+// frame graph sees who produces and who consumes them.
+enum class Buffer { TerrainHeights, ShadowMaps, LightTiles };
+const char* bufferName(Buffer buffer);
+using Resource = std::variant<Target, Buffer>;
+std::string resourceName(const Resource& resource);
+
+// How a pass touches a resource. Write draws into part of it (blending or depth-tested draws keep
+// the rest); Replace makes all of it anew (a copy, a compute pass), so what an earlier pass wrote
+// there is dead. The depth and stencil uses attach the depth-stencil target.
+enum class Use { Sample, Write, Replace, DepthTest, DepthWrite, StencilTest, StencilWrite };
+struct Access {
+    Resource resource;
+    Use use;
+};
+bool isRead(Use use);   // Sample, DepthTest, StencilTest
+bool isWrite(Use use);  // Write, Replace, DepthWrite, StencilWrite
+
 class Pass {
 public:
     virtual ~Pass() = default;
     virtual std::string name() const = 0;
-    virtual std::vector<Target> reads() const = 0;
-    virtual std::vector<Target> writes() const = 0;
-    // Whether the pass has work this frame (the mirrored passes only with reflections on).
+    // What the pass reads and writes in the frame it is given: the only truth about what it
+    // touches. Framebuffers, culling and the frame's validation are derived from it.
+    virtual std::vector<Access> accesses(const FrameSetup& frame) const = 0;
+    std::vector<Resource> reads(const FrameSetup& frame) const;
+    std::vector<Resource> writes(const FrameSetup& frame) const;
+    bool writes(const FrameSetup& frame, Target target) const;
+    // Whether the pass has work this frame by the frame's own settings (the mirrored passes only
+    // with reflections on). Whether anyone needs its work is the frame graph's (render/frame_graph.h).
     virtual bool active(const FrameSetup&) const { return true; }
     // The step of drawing the scene this pass does, named the same in both pipelines ("clear",
     // "TerrainPass", "TerrainPass.mirrored"): the link between a forward pass and its G-buffer
@@ -82,6 +106,9 @@ public:
 
 protected:
     virtual void execute(PassContext& context) = 0;
+    // Binds the framebuffer of the pass's declared writes (and the depth-stencil target where it
+    // tests or writes depth or stencil) and sets the viewport to the whole target.
+    void bindDeclaredOutputs(const PassContext& context) const;
 };
 
 // The stencil value each kind of surface writes, shown by the stencil debug view.
@@ -93,8 +120,7 @@ class SurfacePass : public Pass {
 public:
     SurfacePass(const std::string& baseName, SurfaceOutput output, Mirroring mirroring);
     std::string name() const override { return name_; }
-    std::vector<Target> reads() const override { return {}; }
-    std::vector<Target> writes() const override;
+    std::vector<Access> accesses(const FrameSetup& frame) const override;
     bool active(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return step_; }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
@@ -116,11 +142,9 @@ private:
     std::string step_;  // the base name, ".mirrored" for the mirrored draw
 };
 
-// Binds the framebuffer a surface output draws into and sets the viewport to the whole frame:
-// the G-buffer, Radiance (forward, direct) or Reflection (forward, mirrored).
-// `toneMapFused`: a direct forward output also writes Final (its ".tonemapped" program variants).
-void bindSurfaceOutput(const FrameTargets& targets, SurfaceOutput output, Mirroring mirroring = Mirroring::Direct,
-                       bool toneMapFused = false);
+// Binds the framebuffer of `accesses` (its writes in order, the depth-stencil target where it is
+// tested or written) and sets the viewport to the whole target.
+void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& accesses);
 // Whether a pass shading into `output` writes Final too this frame (the fused tone map).
 bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring);
 // Mirrored draws pass the stencil test only on water pixels, and flip the front face (a mirror
@@ -159,6 +183,15 @@ enum class DepthRead { FromTarget, FromCopy };
 // Binds the four G-buffer colour targets to their texture units for a pass that reads them, and
 // the depth the position is rebuilt from where the layout does that.
 void bindGBufferInputs(const FrameTargets& targets, DepthRead depthRead = DepthRead::FromTarget);
-std::vector<Target> surfaceOutputTargets(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct);
+// The colour targets a surface output draws into this frame: the G-buffer's stored ones (no
+// Position where the layout rebuilds it from depth), Radiance (+ Final where the tone map is fused)
+// or Reflection.
+std::vector<Target> surfaceOutputTargets(const FrameSetup& frame, SurfaceOutput output,
+                                         Mirroring mirroring = Mirroring::Direct);
+// The G-buffer's colour targets this frame stores, and the depth a compact layout's position is
+// rebuilt from: what a pass that reads the G-buffer samples.
+std::vector<Access> gbufferSamples(const FrameSetup& frame, DepthRead depthRead);
+// The uses of the depth-stencil target of a draw that tests depth (and writes it), and the stencil.
+void appendDepthStencil(std::vector<Access>& accesses, std::initializer_list<Use> uses);
 
 }  // namespace oasis

@@ -14,8 +14,7 @@ namespace {
 // Its Reflection is cleared as well, so taps just outside the water read zero, never stale memory.
 void markReducedWater(PassContext& reflection) {
     const FrameTargets& targets = reflection.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.reflectionFramebuffer());
-    glViewport(0, 0, targets.width(), targets.height());
+    bindFramebufferOf(targets, {{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilWrite}});
     const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearBufferfv(GL_COLOR, 0, nothing);
     glDepthMask(GL_TRUE);
@@ -26,11 +25,27 @@ void markReducedWater(PassContext& reflection) {
 
 }  // namespace
 
+// The mirrored draw that resets the water's depth (and the G-buffer's "nothing drawn" there).
+static std::vector<Access> waterReset(const FrameSetup& frame, SurfaceOutput output) {
+    std::vector<Access> reset;
+    if (output == SurfaceOutput::GBuffer)
+        for (Target target : surfaceOutputTargets(frame, output)) reset.push_back({target, Use::Write});
+    appendDepthStencil(reset, {Use::DepthWrite, Use::StencilTest});
+    return reset;
+}
+
+std::vector<Access> ReflectionClearPass::accesses(const FrameSetup& frame) const {
+    std::vector<Access> used;
+    if (reflection_ == ReflectionTarget::Cleared) used.push_back({Target::Reflection, Use::Write});
+    if (frame.reflectionsActive)
+        for (const Access& access : waterReset(frame, output_)) used.push_back(access);
+    return used;
+}
+
 void ReflectionClearPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
     if (reflection_ == ReflectionTarget::Cleared) {
-        glBindFramebuffer(GL_FRAMEBUFFER, targets.reflectionFramebuffer());
-        glViewport(0, 0, targets.width(), targets.height());
+        bindFramebufferOf(targets, {{Target::Reflection, Use::Write}});
         const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
         glClearBufferfv(GL_COLOR, 0, nothing);
     }
@@ -43,7 +58,7 @@ void ReflectionClearPass::execute(PassContext& context) {
     ReflectionContext reflection(context);
     PassContext& mirrored = reflection.get();
     if (reflection.reduced()) markReducedWater(mirrored);
-    bindSurfaceOutput(mirrored.targets, output_, Mirroring::Mirrored);
+    bindFramebufferOf(mirrored.targets, waterReset(mirrored.frame, output_));
     bool writeGBuffer = output_ == SurfaceOutput::GBuffer;
     glColorMask(writeGBuffer, writeGBuffer, writeGBuffer, writeGBuffer);
     glEnable(GL_DEPTH_TEST);

@@ -13,14 +13,7 @@ public:
     explicit ReflectionClearPass(SurfaceOutput output, ReflectionTarget reflection = ReflectionTarget::Cleared)
         : output_(output), reflection_(reflection) {}
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
-    std::vector<Target> reads() const override { return {Target::DepthStencil}; }
-    std::vector<Target> writes() const override {
-        std::vector<Target> written{Target::DepthStencil};
-        if (reflection_ == ReflectionTarget::Cleared) written.push_back(Target::Reflection);
-        if (output_ == SurfaceOutput::GBuffer)
-            written.insert(written.end(), {Target::Albedo, Target::Normal, Target::Position, Target::Info});
-        return written;
-    }
+    std::vector<Access> accesses(const FrameSetup& frame) const override;
 protected:
     void execute(PassContext& context) override;
 

@@ -9,9 +9,7 @@ void ReflectionUpsamplePass::execute(PassContext& context) {
     if (!context.reflectionTargets) return;  // drawn at full resolution: nothing to bring over
     // Reflection work, but drawn into the frame's targets: the frame's water rectangle and query.
     OnlyWhereWaterIsSeen onlyWithWater(context, true);
-    const FrameTargets& targets = context.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.reflectionFramebuffer());
-    glViewport(0, 0, targets.width(), targets.height());
+    bindDeclaredOutputs(context);
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
     glBindTexture(GL_TEXTURE_2D, context.reflectionTargets->texture(Target::Reflection));
     glEnable(GL_STENCIL_TEST);

@@ -10,8 +10,11 @@ namespace oasis {
 class ReflectionUpsamplePass : public Pass {
 public:
     std::string name() const override { return "ReflectionUpsamplePass"; }
-    std::vector<Target> reads() const override { return {Target::Reflection, Target::DepthStencil}; }
-    std::vector<Target> writes() const override { return {Target::Reflection}; }
+    // The reduced reflection's own Reflection is sampled (not a frame target); the stencil keeps
+    // the draw inside the water.
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        return {{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilTest}};
+    }
     bool active(const FrameSetup& frame) const override {
         return frame.reflectionsActive && frame.reflectionDivisor > 1;
     }

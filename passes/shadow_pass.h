@@ -9,8 +9,9 @@ namespace oasis {
 class ShadowPass : public Pass {
 public:
     std::string name() const override { return "ShadowPass"; }
-    std::vector<Target> reads() const override { return {}; }
-    std::vector<Target> writes() const override { return {}; }  // the shadow maps, no frame target
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        return {{Buffer::TerrainHeights, Use::Sample}, {Buffer::ShadowMaps, Use::Replace}};  // no frame target
+    }
     bool active(const FrameSetup& frame) const override { return frame.shadowsActive; }
 
 protected:

@@ -6,7 +6,7 @@ namespace oasis {
 
 void SkyPass::execute(PassContext& context) {
     bool fused = toneMapFusedInto(context.frame, SurfaceOutput::Forward, mirroring_);
-    bindSurfaceOutput(context.targets, SurfaceOutput::Forward, mirroring_, fused);
+    bindDeclaredOutputs(context);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(context.targets.depth().nearerOrEqualFunc);
     glDepthMask(GL_FALSE);

@@ -16,11 +16,15 @@ public:
         return std::string("SkyPass.") + (pipelineSurfaces_ == SurfaceOutput::Forward ? "forward" : "deferred") +
                (mirroring_ == Mirroring::Mirrored ? ".mirrored" : "");
     }
-    std::vector<Target> reads() const override { return {Target::DepthStencil}; }
-    std::vector<Target> writes() const override {
-        // Final too where the tone map is fused into the direct sky.
-        if (mirroring_ == Mirroring::Mirrored) return {Target::Reflection};
-        return {Target::Radiance, Target::Final};
+    // Where no surface was drawn (the depth test against the far plane); Final too where the tone
+    // map is fused into the direct sky; mirrored, inside the water only.
+    std::vector<Access> accesses(const FrameSetup& frame) const override {
+        std::vector<Access> used;
+        for (Target target : surfaceOutputTargets(frame, SurfaceOutput::Forward, mirroring_))
+            used.push_back({target, Use::Write});
+        appendDepthStencil(used, {Use::DepthTest});
+        if (mirroring_ == Mirroring::Mirrored) appendDepthStencil(used, {Use::StencilTest});
+        return used;
     }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }

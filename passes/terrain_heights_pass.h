@@ -10,8 +10,9 @@ namespace oasis {
 class TerrainHeightsPass : public Pass {
 public:
     std::string name() const override { return "TerrainHeightsPass"; }
-    std::vector<Target> reads() const override { return {}; }
-    std::vector<Target> writes() const override { return {}; }  // the grid's heights buffer, no frame target
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        return {{Buffer::TerrainHeights, Use::Replace}};  // the grid's heights buffer, no frame target
+    }
 
 protected:
     void execute(PassContext& context) override;

@@ -9,6 +9,12 @@ class TerrainPass : public SurfacePass {
 public:
     TerrainPass(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct)
         : SurfacePass("TerrainPass", output, mirroring) {}
+    // The grid's vertices take their heights from TerrainHeightsPass's buffer.
+    std::vector<Access> accesses(const FrameSetup& frame) const override {
+        std::vector<Access> used = SurfacePass::accesses(frame);
+        used.push_back({Buffer::TerrainHeights, Use::Sample});
+        return used;
+    }
 
 protected:
     void execute(PassContext& context) override;

@@ -7,8 +7,7 @@ namespace oasis {
 
 void ToneMapPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.finalFramebuffer());
-    glViewport(0, 0, targets.width(), targets.height());
+    bindDeclaredOutputs(context);
     glDisable(GL_DEPTH_TEST);
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Radiance));

@@ -9,8 +9,9 @@ namespace oasis {
 class ToneMapPass : public Pass {
 public:
     std::string name() const override { return "ToneMapPass"; }
-    std::vector<Target> reads() const override { return {Target::Radiance}; }
-    std::vector<Target> writes() const override { return {Target::Final}; }
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        return {{Target::Radiance, Use::Sample}, {Target::Final, Use::Write}};
+    }
     bool active(const FrameSetup& frame) const override { return !frame.toneMapFused; }
 
 protected:

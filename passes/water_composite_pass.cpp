@@ -10,8 +10,7 @@ void WaterCompositePass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
     // Fused: the same blend done in the shader over Radiance (read, not attached) into Final.
     bool fused = context.frame.toneMapFused;
-    glBindFramebuffer(GL_FRAMEBUFFER, fused ? targets.finalDepthFramebuffer() : targets.radianceFramebuffer());
-    glViewport(0, 0, targets.width(), targets.height());
+    bindDeclaredOutputs(context);
     if (fused) {
         glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
         glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Radiance));

@@ -9,9 +9,15 @@ namespace oasis {
 class WaterCompositePass : public Pass {
 public:
     std::string name() const override { return "WaterCompositePass"; }
-    std::vector<Target> reads() const override { return {Target::Reflection, Target::DepthStencil}; }
-    // Final where the tone map is fused (it blends and tone-maps the water's pixels into Final).
-    std::vector<Target> writes() const override { return {Target::Radiance, Target::Final, Target::DepthStencil}; }
+    // Fused, it blends Radiance (sampled) and tone-maps the water's pixels into Final; else it
+    // blends onto Radiance. Either way it leaves the water surface's depth.
+    std::vector<Access> accesses(const FrameSetup& frame) const override {
+        std::vector<Access> used{{Target::Reflection, Use::Sample}};
+        if (frame.toneMapFused) used.push_back({Target::Radiance, Use::Sample});
+        used.push_back({frame.toneMapFused ? Target::Final : Target::Radiance, Use::Write});
+        appendDepthStencil(used, {Use::StencilTest, Use::DepthWrite});
+        return used;
+    }
     bool active(const FrameSetup& frame) const override { return frame.cameraAboveWater; }
 
 protected:

@@ -22,9 +22,7 @@ void markWaterStencil(PassContext& context, const char* program) {
 }
 
 void WaterMaskPass::execute(PassContext& context) {
-    // Any framebuffer with the shared depth-stencil will do; Radiance's needs no draw buffers set.
-    glBindFramebuffer(GL_FRAMEBUFFER, context.targets.radianceFramebuffer());
-    glViewport(0, 0, context.targets.width(), context.targets.height());
+    bindDeclaredOutputs(context);  // the depth-stencil target alone
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(context.targets.depth().nearerFunc);
     glDepthMask(depth_ == WaterDepth::Written ? GL_TRUE : GL_FALSE);

@@ -19,8 +19,14 @@ class WaterMaskPass : public Pass {
 public:
     explicit WaterMaskPass(WaterDepth depth = WaterDepth::Written) : depth_(depth) {}
     std::string name() const override { return "WaterMaskPass"; }
-    std::vector<Target> reads() const override { return {Target::DepthStencil}; }
-    std::vector<Target> writes() const override { return {Target::DepthStencil}; }
+    // Depth-tested against the surfaces; marks the water in the stencil (and writes its depth
+    // unless kept).
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        std::vector<Access> used;
+        appendDepthStencil(used, {Use::DepthTest, Use::StencilWrite});
+        if (depth_ == WaterDepth::Written) appendDepthStencil(used, {Use::DepthWrite});
+        return used;
+    }
     std::string sceneStep() const override { return "WaterMaskPass"; }  // the same pass in both pipelines
 
 protected:

@@ -70,7 +70,9 @@ std::string usage(Command command) {
                    "                            (e.g. WaterCompositePass; a wrong name lists the passes);\n"
                    "                            Final is black then: view the targets the frame reached\n"
                    "  --capture                 under RenderDoc: capture the rendered frame (set-up and shader\n"
-                   "                            builds outside it) and print where; without RenderDoc, exit 1\n" + scene;
+                   "                            builds outside it) and print where; without RenderDoc, exit 1\n"
+                   "  --graph                   print the frame's passes in order with what each reads and\n"
+                   "                            writes, and why each culled pass was culled; no image\n" + scene;
         case Command::Compare:
             return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N] [--passes]\n"
                    "  renders the frame in both pipelines; prints PSNR, max abs and RMSE over 8-bit RGB and the\n"
@@ -275,6 +277,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             std::string error;
             readOption(*row, "", options, result.notes, error);
             if (options.command == Command::Compare) options.sceneArguments.push_back(flag);
+            continue;
+        }
+        if (flag == "--graph") {
+            if (options.command != Command::Render) return fail("option --graph belongs to `oasis render`");
+            options.graph = true;
             continue;
         }
         if (flag == "--capture") {

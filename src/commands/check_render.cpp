@@ -141,10 +141,11 @@ std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& argum
     std::set<Target> written;  // what the frame has written so far: the rest holds no value yet
     std::vector<PassSnapshot> snapshots;
     for (size_t k = 0; k < passes.size(); ++k) {
-        for (Target target : passes[k]->writes()) written.insert(target);
         // The frame after pass k is the frame stopped before pass k + 1 (a pass that does not run
         // this frame leaves the targets as they were).
         renderer.renderFrame(session.scene, k + 1 < passes.size() ? passes[k + 1]->name() : std::string());
+        for (const Resource& resource : passes[k]->writes(renderer.lastFrame()))
+            if (const Target* target = std::get_if<Target>(&resource)) written.insert(*target);
         PassSnapshot snapshot{passes[k]->name(), {}};
         for (const TargetView& target : kTargetViews)
             if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.readViewValues(target.view)});

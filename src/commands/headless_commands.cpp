@@ -17,6 +17,7 @@
 #include "gl/frame_capture.h"
 #include "render/file_output.h"
 #include "render/encoding_error.h"
+#include "render/frame_graph.h"
 #include "render/pixel_probe.h"
 #include "debug/error_image.h"
 #include "debug/view_legend.h"
@@ -32,6 +33,7 @@ struct Comparison {
     using PassTimes = std::vector<std::pair<std::string, double>>;
     PassTimes forwardPasses, deferredPasses;  // only with --passes
     TimingClock clock;                        // how the passes were timed (measured with --passes)
+    std::string forwardGraph, deferredGraph;  // each frame's graph as JSON (render/frame_graph.h)
 };
 
 bool ensureDirectory(const std::string& path, std::string& error) {
@@ -57,7 +59,9 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     }
     if (capture) gl::armCaptures(2);
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
+    result.forwardGraph = frameGraphJson(renderer.frameGraph());
     result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
+    result.deferredGraph = frameGraphJson(renderer.frameGraph());
     result.difference = compareImages(result.forward, result.deferred);
     result.differing = countDifferingPixels(result.forward, result.deferred);
     result.times = timePipelinesInTurn(renderer, session.scene, timingFrames);
@@ -180,6 +184,12 @@ std::string passClockJson(const Comparison& c) {
     return ", \"pass_clock\": " + jsonString(c.clock.name()) + ", \"pass_clock_reason\": " + jsonString(c.clock.reason);
 }
 
+// The passes of each pipeline's frame in order, culled ones with their reason (with --passes).
+std::string graphJson(const Comparison& c) {
+    if (c.forwardPasses.empty()) return {};
+    return ",\n \"graph\": {\"forward\": " + c.forwardGraph + ",\n  \"deferred\": " + c.deferredGraph + "}";
+}
+
 void printJson(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
     ContextInfo info = queryContextInfo();
@@ -197,7 +207,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
                 "\"light_method\": \"%s\", \"light_method_reason\": \"%s\", "
-                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s}\n",
+                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.times.forwardMs, c.times.deferredMs,
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
                 c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(),
@@ -210,7 +220,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 session.renderer->lightsPathReason().c_str(), session.renderer->lightsDropped(),
                 lightMethodName(session.renderer->lightMethod()), session.renderer->lightMethodReason().c_str(),
                 passClockJson(c).c_str(), passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
-                passTimesJson("deferred_passes_ms", c.deferredPasses).c_str());
+                passTimesJson("deferred_passes_ms", c.deferredPasses).c_str(), graphJson(c).c_str());
 }
 
 // Runs `body` with a headless context and a session, turning failures into messages and exit 1.
@@ -330,6 +340,10 @@ int runRenderCommand(const Options& options) {
         if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
         if (options.capture) gl::armCaptures(1);
         renderer.renderFrame(session.scene, options.stopBefore);
+        if (options.graph) {
+            std::printf("%s", frameGraphText(renderer.frameGraph()).c_str());
+            return 0;
+        }
         // Logs go to stderr always: stdout carries only what was asked for (a PNG with --out
         // /dev/stdout), never a log line (issue 31, defect 8).
         std::FILE* report = stderr;

@@ -73,80 +73,64 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
         throw std::runtime_error("allocating " + std::to_string(width) + "x" + std::to_string(height) +
                                  " render targets failed: " + gl::errorString(error));
 
-    gbufferFbo_ = gl::createFramebuffer(prefix + "G-buffer (" + layout.name + "): geometry passes");
-    glBindFramebuffer(GL_FRAMEBUFFER, gbufferFbo_.name());
-    // The stored colour targets on consecutive attachments, no gaps (gbuffer.glsl's output
-    // locations follow): zink leaves every column past 1024 unrendered at 1280x720 when a draw
-    // buffer in the middle is GL_NONE.
-    GLenum drawBuffers[4];
-    int slots = 0;
-    for (Target target : kGBufferColourTargets) {
-        if (!layout.stores(target)) continue;
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0 + slots, GL_TEXTURE_2D, texture(target), 0);
-        drawBuffers[slots] = GL_COLOR_ATTACHMENT0 + slots;
-        ++slots;
-    }
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                           texture(Target::DepthStencil), 0);
-    glDrawBuffers(slots, drawBuffers);
-    checkComplete("G-buffer");
-
-    auto colourWithDepthStencil = [&](gl::Framebuffer& fbo, Target colour, const char* what, const char* label) {
-        fbo = gl::createFramebuffer(prefix + label);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(colour), 0);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                               texture(Target::DepthStencil), 0);
-        checkComplete(what);
-    };
-    colourWithDepthStencil(radianceFbo_, Target::Radiance, "radiance",
-                           "Radiance + depth-stencil: lighting, light volumes, forward, water passes");
-    colourWithDepthStencil(reflectionFbo_, Target::Reflection, "reflection",
-                           "Reflection + depth-stencil: mirrored lighting, forward mirrored passes");
-
-    colourWithDepthStencil(finalDepthFbo_, Target::Final, "final + depth",
-                           "Final + depth-stencil: the water composite with the tone map fused");
-    auto radianceFinal = [&](gl::Framebuffer& fbo, bool withDepthStencil, const char* what, const char* label) {
-        fbo = gl::createFramebuffer(prefix + label);
-        glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Radiance), 0);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture(Target::Final), 0);
-        if (withDepthStencil)
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                                   texture(Target::DepthStencil), 0);
-        const GLenum radianceFinalBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        glDrawBuffers(2, radianceFinalBuffers);
-        checkComplete(what);
-    };
-    radianceFinal(radianceFinalFbo_, true, "radiance + final", "Radiance, Final + depth-stencil: passes with the tone map fused");
-    radianceFinal(radianceFinalOnlyFbo_, false, "radiance + final, no depth",
-                  "Radiance, Final: deferred lighting with the tone map fused (samples depth)");
-    radianceOnlyFbo_ = gl::createFramebuffer(prefix + "Radiance: deferred lighting (samples depth)");
-    glBindFramebuffer(GL_FRAMEBUFFER, radianceOnlyFbo_.name());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Radiance), 0);
-    checkComplete("radiance, no depth");
-
-    finalFbo_ = gl::createFramebuffer(prefix + "Final: ToneMapPass");
-    glBindFramebuffer(GL_FRAMEBUFFER, finalFbo_.name());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture(Target::Final), 0);
-    checkComplete("final");
-
-    if (layout.stores(Target::SceneDepth)) {
-        sceneDepthFbo_ = gl::createFramebuffer(prefix + "SceneDepth copy: DepthCopyPass");
-        glBindFramebuffer(GL_FRAMEBUFFER, sceneDepthFbo_.name());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                               texture(Target::SceneDepth), 0);
-        const GLenum none = GL_NONE;
-        glDrawBuffers(1, &none);  // glDrawBuffer is desktop-only; this is the same on both APIs
-        glReadBuffer(GL_NONE);
-        checkComplete("scene depth");
-    }
+    labelPrefix_ = prefix;
+    // The framebuffers every frame binds are made now, so an incomplete one is refused here.
+    std::vector<Target> gbuffer = gbufferColourTargets();
+    framebuffer(gbuffer, Target::DepthStencil);
+    framebuffer({Target::Radiance}, Target::DepthStencil);
+    framebuffer({Target::Reflection}, Target::DepthStencil);
+    framebuffer({Target::Final});
 
     displayFbo_ = gl::createFramebuffer(prefix + "Display: debug views");
     glBindFramebuffer(GL_FRAMEBUFFER, displayFbo_.name());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display_.name(), 0);
     checkComplete("display");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optional<Target> depth) const {
+    std::vector<Target> stored;
+    for (Target target : colour)
+        if (layout_.stores(target)) stored.push_back(target);
+    if (depth && !layout_.stores(*depth)) depth.reset();
+    if (stored.empty() && !depth) return 0;  // nothing this layout stores (SceneDepth in full)
+    FramebufferKey key{stored, depth};
+    if (auto found = framebuffers_.find(key); found != framebuffers_.end()) return found->second.name();
+    // Labelled by what it holds, as capture tools list it: "Radiance, Final + DepthStencil".
+    std::string label;
+    for (Target target : stored) label += (label.empty() ? "" : ", ") + std::string(targetName(target));
+    if (depth) label += (label.empty() ? "" : " + ") + std::string(targetName(*depth));
+    gl::Framebuffer fbo = gl::createFramebuffer(labelPrefix_ + label);
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
+    std::vector<GLenum> drawBuffers;
+    for (Target target : stored) {
+        GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + drawBuffers.size());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture(target), 0);
+        drawBuffers.push_back(attachment);
+    }
+    if (depth)
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, texture(*depth), 0);
+    if (drawBuffers.empty()) {
+        const GLenum none = GL_NONE;
+        glDrawBuffers(1, &none);  // glDrawBuffer is desktop-only; this is the same on both APIs
+        glReadBuffer(GL_NONE);
+    } else {
+        glDrawBuffers(GLsizei(drawBuffers.size()), drawBuffers.data());
+    }
+    checkComplete(label.c_str());
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    GLuint name = fbo.name();
+    framebuffers_.emplace(std::move(key), std::move(fbo));
+    return name;
+}
+
+std::vector<Target> FrameTargets::gbufferColourTargets() const {
+    std::vector<Target> stored;
+    for (Target colour : kGBufferColourTargets)
+        if (layout_.stores(colour)) stored.push_back(colour);
+    return stored;
 }
 
 int FrameTargets::gbufferSlot(Target target) const {

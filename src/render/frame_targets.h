@@ -4,7 +4,11 @@
 // Display holds what a debug view shows (or the overview), ready to present or save.
 #pragma once
 #include <array>
+#include <map>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gl/objects.h"
 #include "render/depth_convention.h"
@@ -36,20 +40,14 @@ public:
     int gbufferSlot(Target target) const;
     int gbufferSlotCount() const { return gbufferSlot(Target::Info) + 1; }
     GLuint displayTexture() const { return display_.name(); }
-    GLuint gbufferFramebuffer() const { return gbufferFbo_.name(); }
-    GLuint radianceFramebuffer() const { return radianceFbo_.name(); }      // Radiance + depth-stencil
-    GLuint reflectionFramebuffer() const { return reflectionFbo_.name(); }  // Reflection + depth-stencil
-    GLuint finalFramebuffer() const { return finalFbo_.name(); }            // Final only
-    // The fused tone map's outputs: Radiance and Final (draw buffers 0 and 1) + depth-stencil for
-    // the passes that shade; Final + depth-stencil for the water composite that reads Radiance.
-    GLuint radianceFinalFramebuffer() const { return radianceFinalFbo_.name(); }
-    GLuint finalDepthFramebuffer() const { return finalDepthFbo_.name(); }
-    // Radiance (and Final) without the depth-stencil target: the direct deferred lighting, which
-    // tests neither depth nor stencil and so may sample depth from that target itself.
-    GLuint radianceOnlyFramebuffer(bool withFinal) const {
-        return withFinal ? radianceFinalOnlyFbo_.name() : radianceOnlyFbo_.name();
-    }
-    GLuint sceneDepthFramebuffer() const { return sceneDepthFbo_.name(); }  // SceneDepth; 0 if not stored
+    // The framebuffer over `colour` (attachments 0.. in that order, the targets this layout does not
+    // store left out, so the draw buffers have no gaps: zink leaves every column past 1024
+    // unrendered at 1280x720 when one in the middle is GL_NONE) and `depth` (DepthStencil or
+    // SceneDepth), made on first use and kept: passes bind the one of their declared writes.
+    // 0 where the layout stores none of them.
+    GLuint framebuffer(const std::vector<Target>& colour, std::optional<Target> depth = std::nullopt) const;
+    // The G-buffer's stored colour targets in kGBufferColourTargets order.
+    std::vector<Target> gbufferColourTargets() const;
     GLuint displayFramebuffer() const { return displayFbo_.name(); }
 
 private:
@@ -58,8 +56,10 @@ private:
     int width_, height_;
     std::array<gl::Texture, size_t(Target::Count)> textures_;
     gl::Texture display_;
-    gl::Framebuffer gbufferFbo_, radianceFbo_, reflectionFbo_, finalFbo_, displayFbo_, sceneDepthFbo_;
-    gl::Framebuffer radianceFinalFbo_, finalDepthFbo_, radianceOnlyFbo_, radianceFinalOnlyFbo_;
+    std::string labelPrefix_;
+    gl::Framebuffer displayFbo_;
+    using FramebufferKey = std::pair<std::vector<Target>, std::optional<Target>>;
+    mutable std::map<FramebufferKey, gl::Framebuffer> framebuffers_;
 };
 
 }  // namespace oasis

@@ -1,23 +1,10 @@
-// The two pipelines as pass lists.
+// The two pipelines: their frames assembled (render/frame_assembly.h), run as the graph decides.
 #include "render/pipeline.h"
 
 #include <algorithm>
+#include <stdexcept>
 
-#include "passes/clear_pass.h"
-#include "passes/depth_copy_pass.h"
-#include "passes/light_tiling_pass.h"
-#include "passes/light_volume_pass.h"
-#include "passes/lighting_pass.h"
-#include "passes/reflection_clear_pass.h"
-#include "passes/reflection_upsample_pass.h"
-#include "passes/shadow_pass.h"
-#include "passes/sky_pass.h"
-#include "passes/terrain_heights_pass.h"
-#include "passes/terrain_pass.h"
-#include "passes/tone_map_pass.h"
-#include "passes/vegetation_pass.h"
-#include "passes/water_composite_pass.h"
-#include "passes/water_mask_pass.h"
+#include "render/frame_assembly.h"
 
 namespace oasis {
 
@@ -29,64 +16,36 @@ bool parsePipelineKind(const std::string& text, PipelineKind& out) {
     return false;
 }
 
-Pipeline::Pipeline(PipelineKind kind) : kind_(kind) {
-    auto add = [this](auto pass) { passes_.push_back(std::move(pass)); };
-    // The terrain's heights for every pass that draws it, then the sun's shadow maps: every
-    // shading pass after it reads them (both pipelines alike).
-    add(std::make_unique<TerrainHeightsPass>());
-    add(std::make_unique<ShadowPass>());
-    if (kind == PipelineKind::Deferred) {
-        add(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
-        add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
-        add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));
-        add(std::make_unique<DepthCopyPass>());
-        // The point lights: tiled (a light list per screen tile, added by LightingPass) or the
-        // stencil volumes after it; each pass is active only with its method.
-        add(std::make_unique<LightTilingPass>());
-        add(std::make_unique<LightingPass>());
-        add(std::make_unique<SkyPass>(SurfaceOutput::GBuffer));
-        // Before the water mask: the depth under the water is still the terrain's, which the
-        // volumes test against (the G-buffer there holds that terrain).
-        add(std::make_unique<LightVolumePass>());
-        add(std::make_unique<WaterMaskPass>());
-        add(std::make_unique<ReflectionClearPass>(SurfaceOutput::GBuffer));
-        add(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
-        add(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
-        add(std::make_unique<DepthCopyPass>(Mirroring::Mirrored));
-        add(std::make_unique<LightTilingPass>(Mirroring::Mirrored));
-        add(std::make_unique<LightingPass>(Mirroring::Mirrored));
-        add(std::make_unique<SkyPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
-        add(std::make_unique<LightVolumePass>(Mirroring::Mirrored));
-    } else {
-        add(std::make_unique<ClearPass>(SurfaceOutput::Forward));
-        add(std::make_unique<TerrainPass>(SurfaceOutput::Forward));
-        add(std::make_unique<VegetationPass>(SurfaceOutput::Forward));
-        add(std::make_unique<SkyPass>(SurfaceOutput::Forward));
-        add(std::make_unique<WaterMaskPass>());
-        add(std::make_unique<ReflectionClearPass>(SurfaceOutput::Forward));
-        add(std::make_unique<TerrainPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
-        add(std::make_unique<VegetationPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
-        add(std::make_unique<SkyPass>(SurfaceOutput::Forward, Mirroring::Mirrored));
-    }
-    // A reflection drawn at a reduced resolution is brought to the frame's here (else inactive).
-    add(std::make_unique<ReflectionUpsamplePass>());
-    add(std::make_unique<WaterCompositePass>());
-    add(std::make_unique<ToneMapPass>());
+Pipeline::Pipeline(PipelineKind kind)
+    : kind_(kind), passes_(assembleFrame(kind == PipelineKind::Forward ? FrameOutput::ForwardFrame
+                                                                      : FrameOutput::DeferredFrame)) {}
+
+FrameGraph Pipeline::graph(const FrameSetup& frame) const {
+    std::vector<const Pass*> passes;
+    for (const auto& pass : passes_) passes.push_back(pass.get());
+    return buildFrameGraph(passes, frame, frameOutputs());
 }
 
 bool Pipeline::run(PassContext& context, const std::string& stopBefore,
                    const std::function<void(const Pass&)>& afterEach) const {
     if (!stopBefore.empty() && !hasPass(stopBefore)) return false;
     gl::DebugGroup group(pipelineName(kind_));
-    for (const auto& pass : passes_) {
+    // The whole frame's graph decides what runs, also when it stops early: a stopped frame is the
+    // whole frame's first passes.
+    FrameGraph frameGraph = graph(context.frame);
+    if (frameValidation() && !frameGraph.problems.empty())
+        throw std::logic_error("the " + std::string(pipelineName(kind_)) + " frame is invalid: " +
+                               frameGraph.problems.front());
+    for (size_t k = 0; k < passes_.size(); ++k) {
+        Pass* pass = passes_[k].get();
         if (pass->name() == stopBefore) break;
-        if (!pass->active(context.frame)) continue;
+        if (!frameGraph.steps[k].runs) continue;
         OnlyWhereWaterIsSeen onlyWithWater(context, pass->reflectionWork());
         if (pass->reflectionWork()) {
             ReflectionContext reflection(context);  // the reflection's targets, maybe reduced
-            pass->run(reflection.get());
+            runValidated(*pass, reflection.get());
         } else {
-            pass->run(context);
+            runValidated(*pass, context);
         }
         if (afterEach) afterEach(*pass);
     }
@@ -103,11 +62,21 @@ std::string Pipeline::passNames() const {
     return names;
 }
 
-bool Pipeline::writes(Target target) const {
-    return std::any_of(passes_.begin(), passes_.end(), [&](const auto& pass) {
-        auto written = pass->writes();
-        return std::find(written.begin(), written.end(), target) != written.end();
-    });
+bool Pipeline::writes(const FrameSetup& frame, Target target) const {
+    return std::any_of(passes_.begin(), passes_.end(), [&](const auto& pass) { return pass->writes(frame, target); });
+}
+
+void runValidated(Pass& pass, PassContext& context) {
+    if (!frameValidation()) {
+        pass.run(context);
+        return;
+    }
+    // Nothing bound going in: whatever is bound after the pass, the pass bound itself (and a pass
+    // that drew without binding its outputs draws nowhere, which the pictures show).
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    pass.run(context);
+    std::string problem = auditBoundFramebuffer(pass, context);
+    if (!problem.empty()) throw std::logic_error("frame validation: " + problem);
 }
 
 }  // namespace oasis

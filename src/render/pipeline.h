@@ -1,12 +1,6 @@
-// A pipeline: an ordered list of passes over the shared frame targets.
-//   deferred: Clear(G) Terrain(G) Vegetation(G) Lighting LightVolumes WaterMask | ReflectionClear(G)
-//             Terrain(G, mirrored) Vegetation(G, mirrored) Lighting(mirrored) LightVolumes(mirrored)
-//             | WaterComposite [ToneMap]
-//   forward:  Clear(Radiance) Terrain Vegetation Sky WaterMask | ReflectionClear Terrain(mirrored)
-//             Vegetation(mirrored) Sky(mirrored) | WaterComposite [ToneMap]
-// The passes between the bars run only with reflections on and the camera above the water; the
-// light volumes only when there are point lights; ToneMap only where the tone map is not fused
-// into the passes that write each pixel's colour last (FrameSetup::toneMapFused).
+// A pipeline: the passes of a forward or deferred frame in order (render/frame_assembly.cpp puts
+// them there), run as the frame graph decides (render/frame_graph.h). `oasis render --graph`
+// prints them with what each reads and writes.
 #pragma once
 #include <functional>
 #include <memory>
@@ -14,6 +8,7 @@
 #include <vector>
 
 #include "passes/pass.h"
+#include "render/frame_graph.h"
 
 namespace oasis {
 
@@ -32,12 +27,18 @@ public:
              const std::function<void(const Pass&)>& afterEach = {}) const;
     bool hasPass(const std::string& name) const;
     std::string passNames() const;
-    bool writes(Target target) const;
+    bool writes(const FrameSetup& frame, Target target) const;
+    // The frame's graph: which passes run for `frame`, which are culled and why.
+    FrameGraph graph(const FrameSetup& frame) const;
     const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }
 
 private:
     PipelineKind kind_;
     std::vector<std::unique_ptr<Pass>> passes_;
 };
+
+// Runs a pass and, where frames are validated (frameValidation()), audits the framebuffer it
+// left bound against its declarations; throws std::logic_error on a pass that drew elsewhere.
+void runValidated(Pass& pass, PassContext& context);
 
 }  // namespace oasis

@@ -49,12 +49,9 @@ const ReadFormat& readFormatOf(GLenum internalFormat) {
 // The framebuffer and attachment a target can be read from.
 std::pair<GLuint, GLenum> readSource(const FrameTargets& targets, Target target) {
     switch (target) {
-        case Target::Radiance: return {targets.radianceFramebuffer(), GL_COLOR_ATTACHMENT0};
-        case Target::Reflection: return {targets.reflectionFramebuffer(), GL_COLOR_ATTACHMENT0};
-        case Target::Final: return {targets.finalFramebuffer(), GL_COLOR_ATTACHMENT0};
-        case Target::DepthStencil: return {targets.radianceFramebuffer(), GL_NONE};
-        case Target::SceneDepth: return {targets.sceneDepthFramebuffer(), GL_NONE};
-        default: return {targets.gbufferFramebuffer(), GLenum(GL_COLOR_ATTACHMENT0 + targets.gbufferSlot(target))};
+        case Target::DepthStencil:
+        case Target::SceneDepth: return {targets.framebuffer({}, target), GL_NONE};
+        default: return {targets.framebuffer({target}), GL_COLOR_ATTACHMENT0};
     }
 }
 

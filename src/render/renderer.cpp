@@ -327,7 +327,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     if (!stopBefore.empty()) {
         // Final is not reached: show black rather than whatever an earlier frame left there.
         const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-        glBindFramebuffer(GL_FRAMEBUFFER, targets_->finalFramebuffer());
+        glBindFramebuffer(GL_FRAMEBUFFER, targets_->framebuffer({Target::Final}));
         glClearBufferfv(GL_COLOR, 0, black);
     }
     PassContext passContext = context();
@@ -348,8 +348,10 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     gbufferHolds_.reset();
     radianceAwaitsWater_ = frame_.toneMapFused && waterComposite_.active(frame_);
     stoppedBefore_ = stopBefore;
-    stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(Target::Albedo);
+    stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(frame_, Target::Albedo);
 }
+
+FrameGraph Renderer::frameGraph() const { return pipelineOf(active_).graph(frame_); }
 
 void Renderer::prepareReducedReflection() {
     const int divisor = frame_.reflectionDivisor;
@@ -430,19 +432,15 @@ void Renderer::fillStoppedFrame() {
         return !pass.sceneStep().empty() &&
                std::find(stepsRan_.begin(), stepsRan_.end(), pass.sceneStep()) != stepsRan_.end();
     };
-    auto writes = [](const Pass& pass, Target target) {
-        std::vector<Target> written = pass.writes();
-        return std::find(written.begin(), written.end(), target) != written.end();
-    };
     bool filled = false;
     FrameClipControl clipControl(targets_->depth());
-    for (const auto& pass : deferred_.passes()) {
-        if (writes(*pass, Target::Reflection)) break;  // the mirrored half
-        if (writes(*pass, Target::Radiance)) continue;  // shading
-        // The depth copy has no forward counterpart: it follows whatever the fill drew.
-        bool copiesDepth = writes(*pass, Target::SceneDepth);
-        if (copiesDepth ? filled && pass->active(frame_) : ranInForward(*pass)) {
-            pass->run(passContext);
+    // The depth copy has no forward counterpart: it follows whatever the fill drew, where the
+    // deferred frame's graph keeps it.
+    FrameGraph deferredGraph = deferred_.graph(frame_);
+    for (const auto& pass : viewFill_.stoppedFrameFill()) {
+        bool copiesDepth = pass->writes(frame_, Target::SceneDepth);
+        if (copiesDepth ? filled && deferredGraph.runs(pass->name()) : ranInForward(*pass)) {
+            runValidated(*pass, passContext);
             filled = true;
         }
     }
@@ -515,18 +513,8 @@ std::vector<float> Renderer::readTarget(Target target) {
         throw std::invalid_argument(std::string("the ") + targets_->layout().name + " G-buffer layout has no " +
                                     targetName(target) + " target");
     std::vector<float> pixels(size_t(targets_->width()) * size_t(targets_->height()) * 4);
-    GLuint fbo = targets_->gbufferFramebuffer();
-    int attachment = targets_->gbufferSlot(target);
-    if (target == Target::Final || target == Target::Radiance || target == Target::Reflection) {
-        fbo = target == Target::Final      ? targets_->finalFramebuffer()
-              : target == Target::Radiance ? targets_->radianceFramebuffer()
-                                           : targets_->reflectionFramebuffer();
-        attachment = 0;
-    }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
-    glReadBuffer(GL_COLOR_ATTACHMENT0 + attachment);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->framebuffer({target}));
     readColourFloats(targets_->width(), targets_->height(), pixels.data());
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
     return pixels;
 }
 
@@ -552,14 +540,14 @@ std::vector<float> Renderer::readSurfacePositions() {
 
 std::vector<float> Renderer::readDepth() const {
     std::vector<float> depth(size_t(targets_->width()) * size_t(targets_->height()));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->framebuffer({}, Target::DepthStencil));
     readDepthFloats(targets_->width(), targets_->height(), depth.data());
     return depth;
 }
 
 std::vector<uint8_t> Renderer::readStencil() const {
     std::vector<uint8_t> stencil(size_t(targets_->width()) * size_t(targets_->height()));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->radianceFramebuffer());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->framebuffer({}, Target::DepthStencil));
     readStencilBytes(targets_->width(), targets_->height(), stencil.data());
     return stencil;
 }

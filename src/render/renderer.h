@@ -45,6 +45,8 @@ public:
     void setClipControlAvailable(bool available, const std::string& reason);
     void setPipeline(PipelineKind kind) { active_ = kind; }
     PipelineKind pipeline() const { return active_; }
+    // The last frame's graph: its pipeline's passes, which ran and why the others were culled.
+    FrameGraph frameGraph() const;
     void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
     StencilViewPath stencilViewPath() const { return stencilPath_; }
     // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).

@@ -1,12 +1,8 @@
 // The views' two fills, as lists of the deferred geometry passes (no shading passes).
 #include "render/view_fill.h"
 
-#include "passes/clear_pass.h"
-#include "passes/reflection_clear_pass.h"
-#include "passes/terrain_heights_pass.h"
-#include "passes/terrain_pass.h"
-#include "passes/vegetation_pass.h"
-#include "passes/water_mask_pass.h"
+#include "render/frame_assembly.h"
+#include "render/pipeline.h"
 
 namespace oasis {
 
@@ -18,23 +14,10 @@ std::optional<WaterScene> parseWaterScene(const std::string& text) {
     return std::nullopt;
 }
 
-ViewFill::ViewFill() {
-    auto directScene = [](std::vector<std::unique_ptr<Pass>>& list) {
-        list.push_back(std::make_unique<TerrainHeightsPass>());  // the fill may run before any frame has
-        list.push_back(std::make_unique<ClearPass>(SurfaceOutput::GBuffer));
-        list.push_back(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer));
-        list.push_back(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer));
-    };
-    directScene(direct_);
-    direct_.push_back(std::make_unique<WaterMaskPass>(WaterDepth::Kept));
-
-    directScene(mirrored_);
-    mirrored_.push_back(std::make_unique<WaterMaskPass>(WaterDepth::Written));
-    mirrored_.push_back(std::make_unique<ReflectionClearPass>(SurfaceOutput::GBuffer,
-                                                              ReflectionClearPass::ReflectionTarget::Kept));
-    mirrored_.push_back(std::make_unique<TerrainPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
-    mirrored_.push_back(std::make_unique<VegetationPass>(SurfaceOutput::GBuffer, Mirroring::Mirrored));
-}
+ViewFill::ViewFill()
+    : direct_(assembleFrame(FrameOutput::ViewFillDirect)),
+      mirrored_(assembleFrame(FrameOutput::ViewFillMirrored)),
+      stoppedFrame_(assembleFrame(FrameOutput::StoppedFrameFill)) {}
 
 ViewScene ViewFill::run(PassContext& context, WaterScene scene) const {
     ViewScene shown;
@@ -45,7 +28,7 @@ ViewScene ViewFill::run(PassContext& context, WaterScene scene) const {
     }
     gl::DebugGroup group(scene == WaterScene::Direct ? "views: direct scene" : "views: mirrored scene");
     for (const auto& pass : scene == WaterScene::Direct ? direct_ : mirrored_)
-        if (pass->active(context.frame)) pass->run(context);
+        if (pass->active(context.frame)) runValidated(*pass, context);
     shown.scene = scene;
     shown.description = scene == WaterScene::Direct
                             ? "the direct scene (the lakebed under the water)"

@@ -40,9 +40,12 @@ public:
     // Fills the G-buffer, depth and stencil with `scene` (a mirrored scene needs the frame's
     // reflections; without them the direct scene is filled and the result says so).
     ViewScene run(PassContext& context, WaterScene scene) const;
+    // The deferred steps of the direct scene that fill a stopped forward frame's G-buffer
+    // (Renderer::fillStoppedFrame runs those whose forward step ran).
+    const std::vector<std::unique_ptr<Pass>>& stoppedFrameFill() const { return stoppedFrame_; }
 
 private:
-    std::vector<std::unique_ptr<Pass>> direct_, mirrored_;
+    std::vector<std::unique_ptr<Pass>> direct_, mirrored_, stoppedFrame_;
 };
 
 }  // namespace oasis

@@ -38,9 +38,9 @@ DepthReadRun renderWith(Renderer& renderer, SceneSettings scene, bool inPlace) {
         run.passes.push_back(pass.name());
         // What the direct lighting read: the copy against the target it was made from (the water
         // mask writes the water's depth into the target after this).
-        if (pass.name() != "LightingPass" || !targets.sceneDepthFramebuffer() || inPlace) return;
-        std::vector<uint32_t> target = depthSteps(targets.radianceFramebuffer(), kWidth, kHeight);
-        std::vector<uint32_t> copy = depthSteps(targets.sceneDepthFramebuffer(), kWidth, kHeight);
+        if (pass.name() != "LightingPass" || !targets.framebuffer({}, Target::SceneDepth) || inPlace) return;
+        std::vector<uint32_t> target = depthSteps(targets.framebuffer({}, Target::DepthStencil), kWidth, kHeight);
+        std::vector<uint32_t> copy = depthSteps(targets.framebuffer({}, Target::SceneDepth), kWidth, kHeight);
         for (size_t i = 0; i < target.size(); ++i) run.copyOff.push_back(int(copy[i]) - int(target[i]));
     });
     EXPECT_EQ(renderer.lastFrame().depthReadInPlace, inPlace);

@@ -23,7 +23,7 @@ std::vector<NamedPose> posesWithWater() { return {defaultPose(), vegetationPoses
 std::vector<float> readReducedReflection(const Renderer& renderer) {
     const FrameTargets& reduced = *renderer.reflectionTargets();
     std::vector<float> pixels(size_t(reduced.width()) * size_t(reduced.height()) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, reduced.reflectionFramebuffer());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, reduced.framebuffer({Target::Reflection}));
     readColourFloats(reduced.width(), reduced.height(), pixels.data());
     return pixels;
 }

@@ -84,7 +84,7 @@ TEST_F(GpuTest, NanInRadianceIsCountedAndOverlaid) {
     renderer.renderFrame(scene);
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const GLfloat poisoned[4] = {nan, 0.5f, nan, 1.0f};
-    glBindFramebuffer(GL_FRAMEBUFFER, renderer.targets().radianceFramebuffer());
+    glBindFramebuffer(GL_FRAMEBUFFER, renderer.targets().framebuffer({Target::Radiance}, Target::DepthStencil));
     glClearBufferfv(GL_COLOR, 0, poisoned);
     std::vector<float> values = renderer.readViewValues("radiance");
     ValueStatistics rgb = valueStatistics(values, ViewChannel::Rgb);

@@ -1,0 +1,95 @@
+// The pass lists of every output, from one set of scene steps (render/frame_assembly.h).
+#include "render/frame_assembly.h"
+
+#include "passes/clear_pass.h"
+#include "passes/depth_copy_pass.h"
+#include "passes/light_tiling_pass.h"
+#include "passes/light_volume_pass.h"
+#include "passes/lighting_pass.h"
+#include "passes/reflection_clear_pass.h"
+#include "passes/reflection_upsample_pass.h"
+#include "passes/shadow_pass.h"
+#include "passes/sky_pass.h"
+#include "passes/terrain_heights_pass.h"
+#include "passes/terrain_pass.h"
+#include "passes/tone_map_pass.h"
+#include "passes/vegetation_pass.h"
+#include "passes/water_composite_pass.h"
+#include "passes/water_mask_pass.h"
+
+namespace oasis {
+namespace {
+
+template <typename P, typename... Arguments>
+void add(PassList& list, Arguments... arguments) {
+    list.push_back(std::make_unique<P>(arguments...));
+}
+
+// The steps that draw the scene's surfaces into `output`: cleared first (the direct scene's
+// targets, or the water's depth for the mirrored scene), then the terrain and the plants.
+void addSceneSteps(PassList& list, SurfaceOutput output, Mirroring mirroring,
+                   ReflectionClearPass::ReflectionTarget reflection = ReflectionClearPass::ReflectionTarget::Cleared) {
+    if (mirroring == Mirroring::Direct) add<ClearPass>(list, output);
+    else add<ReflectionClearPass>(list, output, reflection);
+    add<TerrainPass>(list, output, mirroring);
+    add<VegetationPass>(list, output, mirroring);
+}
+
+// The deferred shading of one half of the frame over the G-buffer its scene steps filled. The
+// point lights: tiled (a light list per screen tile, added by LightingPass) or the stencil volumes
+// after the sky; the frame graph keeps the tiling and the depth copy only where they are read.
+void addDeferredShading(PassList& list, Mirroring mirroring) {
+    add<DepthCopyPass>(list, mirroring);
+    add<LightTilingPass>(list, mirroring);
+    add<LightingPass>(list, mirroring);
+    add<SkyPass>(list, SurfaceOutput::GBuffer, mirroring);
+    add<LightVolumePass>(list, mirroring);
+}
+
+PassList assembleFrameOf(SurfaceOutput surfaces) {
+    PassList list;
+    // The terrain's heights for every pass that draws it, then the sun's shadow maps, which every
+    // shading pass after it reads.
+    add<TerrainHeightsPass>(list);
+    add<ShadowPass>(list);
+    for (Mirroring mirroring : {Mirroring::Direct, Mirroring::Mirrored}) {
+        addSceneSteps(list, surfaces, mirroring);
+        if (surfaces == SurfaceOutput::GBuffer) addDeferredShading(list, mirroring);
+        else add<SkyPass>(list, surfaces, mirroring);
+        // After the direct half's light volumes: the depth under the water is still the
+        // terrain's, which they test against (the G-buffer there holds that terrain).
+        if (mirroring == Mirroring::Direct) add<WaterMaskPass>(list);
+    }
+    // A reflection drawn at a reduced resolution is brought to the frame's here (else inactive).
+    add<ReflectionUpsamplePass>(list);
+    add<WaterCompositePass>(list);
+    add<ToneMapPass>(list);
+    return list;
+}
+
+}  // namespace
+
+PassList assembleFrame(FrameOutput output) {
+    if (output == FrameOutput::ForwardFrame) return assembleFrameOf(SurfaceOutput::Forward);
+    if (output == FrameOutput::DeferredFrame) return assembleFrameOf(SurfaceOutput::GBuffer);
+    PassList list;
+    if (output == FrameOutput::StoppedFrameFill) {
+        // Only the steps the forward frame ran; the depth copy follows them where the deferred
+        // frame's graph keeps it (Renderer::fillStoppedFrame).
+        addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct);
+        add<DepthCopyPass>(list, Mirroring::Direct);
+        add<WaterMaskPass>(list);
+        return list;
+    }
+    add<TerrainHeightsPass>(list);  // the fill may run before any frame has
+    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct);
+    if (output == FrameOutput::ViewFillDirect) {
+        add<WaterMaskPass>(list, WaterDepth::Kept);
+        return list;
+    }
+    add<WaterMaskPass>(list, WaterDepth::Written);
+    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Mirrored, ReflectionClearPass::ReflectionTarget::Kept);
+    return list;
+}
+
+}  // namespace oasis

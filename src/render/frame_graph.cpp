@@ -1,0 +1,178 @@
+// Culling, validation and printing of the frame graph (render/frame_graph.h).
+#include "render/frame_graph.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <set>
+
+namespace oasis {
+namespace {
+
+bool contains(const std::vector<Resource>& list, const Resource& resource) {
+    return std::find(list.begin(), list.end(), resource) != list.end();
+}
+
+std::string joined(const std::vector<Resource>& resources) {
+    std::string text;
+    for (const Resource& resource : resources) text += (text.empty() ? "" : ", ") + resourceName(resource);
+    return text;
+}
+
+// Names are identifiers and target names: nothing in them needs escaping but these two.
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string jsonList(const std::vector<Resource>& resources) {
+    std::string text = "[";
+    for (size_t k = 0; k < resources.size(); ++k) text += (k ? ", " : "") + quoted(resourceName(resources[k]));
+    return text + "]";
+}
+
+#ifdef NDEBUG
+constexpr bool kDebugBuild = false;
+#else
+constexpr bool kDebugBuild = true;
+#endif
+
+bool gValidation = kDebugBuild || (std::getenv("OASIS_VALIDATE_FRAME") &&
+                                   std::string(std::getenv("OASIS_VALIDATE_FRAME")) == "1");
+
+}  // namespace
+
+bool FrameGraph::runs(const std::string& passName) const {
+    return std::any_of(steps.begin(), steps.end(),
+                       [&](const GraphStep& step) { return step.runs && step.pass->name() == passName; });
+}
+
+std::vector<Resource> frameOutputs() {
+    std::vector<Resource> outputs;
+    for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::DepthStencil,
+                          Target::Radiance, Target::Reflection, Target::Final})
+        outputs.push_back(target);
+    outputs.push_back(Buffer::ShadowMaps);
+    outputs.push_back(Buffer::TerrainHeights);
+    return outputs;
+}
+
+std::vector<Resource> everyResource() {
+    std::vector<Resource> all = frameOutputs();
+    all.push_back(Target::SceneDepth);
+    all.push_back(Buffer::LightTiles);
+    return all;
+}
+
+FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
+                           const std::vector<Resource>& sinks, const std::vector<Resource>& inputs) {
+    FrameGraph graph;
+    for (const Pass* pass : passes) graph.steps.push_back({pass, pass->reads(frame), pass->writes(frame), false, ""});
+    // Back from the sinks: a pass is needed when a later pass (or the sink) reads what it writes.
+    std::set<Resource> live(sinks.begin(), sinks.end());
+    for (auto step = graph.steps.rbegin(); step != graph.steps.rend(); ++step) {
+        if (!step->pass->active(frame)) {
+            step->culled = "off in this frame's settings";
+            continue;
+        }
+        bool needed = std::any_of(step->writes.begin(), step->writes.end(),
+                                  [&](const Resource& written) { return live.count(written) > 0; });
+        if (!needed) {
+            step->culled = step->writes.empty() ? "writes nothing"
+                                                : "nothing later reads what it writes (" + joined(step->writes) + ")";
+            continue;
+        }
+        step->runs = true;
+        for (const Access& access : step->pass->accesses(frame))
+            if (access.use == Use::Replace) live.erase(access.resource);
+        for (const Resource& read : step->reads) live.insert(read);
+    }
+    // Forward: every read of a running pass has a writer before it or is an input.
+    std::vector<Resource> written = inputs;
+    for (const GraphStep& step : graph.steps) {
+        if (!step.runs) continue;
+        for (const Resource& read : step.reads)
+            if (!contains(written, read))
+                graph.problems.push_back(step.pass->name() + " reads " + resourceName(read) +
+                                         ", which no pass wrote before it");
+        for (const Resource& write : step.writes)
+            if (!contains(written, write)) written.push_back(write);
+    }
+    return graph;
+}
+
+std::string frameGraphText(const FrameGraph& graph) {
+    std::string text;
+    for (const GraphStep& step : graph.steps) {
+        text += step.pass->name() + (step.runs ? "" : " (culled: " + step.culled + ")") + "\n";
+        if (!step.runs) continue;
+        text += "    reads:  " + (step.reads.empty() ? std::string("-") : joined(step.reads)) + "\n";
+        text += "    writes: " + (step.writes.empty() ? std::string("-") : joined(step.writes)) + "\n";
+    }
+    for (const std::string& problem : graph.problems) text += "invalid: " + problem + "\n";
+    return text;
+}
+
+std::string frameGraphJson(const FrameGraph& graph) {
+    std::string json = "[";
+    for (size_t k = 0; k < graph.steps.size(); ++k) {
+        const GraphStep& step = graph.steps[k];
+        json += std::string(k ? ",\n    " : "\n    ") + "{\"name\": " + quoted(step.pass->name()) +
+                ", \"reads\": " + jsonList(step.reads) + ", \"writes\": " + jsonList(step.writes) +
+                ", \"culled\": " + (step.runs ? "false" : "true") + ", \"reason\": " + quoted(step.culled) + "}";
+    }
+    return json + (graph.steps.empty() ? "]" : "\n  ]");
+}
+
+bool frameValidation() { return gValidation; }
+void setFrameValidation(bool on) { gValidation = on; }
+
+std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) {
+    GLint framebuffer = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    if (framebuffer == 0) return {};
+    // What a texture attached there is: a target of the frame's (or of the reduced reflection's).
+    auto targetOf = [&](GLint texture) -> const Target* {
+        static Target found;
+        for (const FrameTargets* targets : {&context.targets, context.reflectionTargets}) {
+            if (!targets) continue;
+            for (int t = 0; t < int(Target::Count); ++t)
+                if (targets->layout().stores(Target(t)) && GLint(targets->texture(Target(t))) == texture) {
+                    found = Target(t);
+                    return &found;
+                }
+        }
+        return nullptr;  // not a frame target (the shadow maps' own framebuffers)
+    };
+    std::vector<Access> declared = pass.accesses(context.frame);
+    auto declaresAttached = [&](Target target, bool depth) {
+        return std::any_of(declared.begin(), declared.end(), [&](const Access& access) {
+            const Target* declaredTarget = std::get_if<Target>(&access.resource);
+            if (!declaredTarget || *declaredTarget != target) return false;
+            return depth ? access.use != Use::Sample : isWrite(access.use);
+        });
+    };
+    GLint maxAttachments = 0;
+    glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &maxAttachments);
+    std::string problems;
+    auto check = [&](GLenum attachment, bool depth) {
+        GLint type = GL_NONE, texture = 0;
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE,
+                                              &type);
+        if (type != GL_TEXTURE) return;
+        glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                                              &texture);
+        const Target* target = targetOf(texture);
+        if (target && !declaresAttached(*target, depth))
+            problems += (problems.empty() ? "" : "; ") + pass.name() + " draws into " + targetName(*target) +
+                        ", which it does not declare";
+    };
+    for (GLint k = 0; k < maxAttachments; ++k) check(GLenum(GL_COLOR_ATTACHMENT0 + k), false);
+    check(GL_DEPTH_ATTACHMENT, true);
+    return problems;
+}
+
+}  // namespace oasis

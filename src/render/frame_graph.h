@@ -1,0 +1,52 @@
+// The frame as a graph derived from the passes' declarations (Pass::accesses): which passes run,
+// which are culled and why, whether every read has a writer before it, and whether a pass drew
+// into anything it did not declare. Printed by `oasis render --graph`.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "passes/pass.h"
+
+namespace oasis {
+
+struct GraphStep {
+    const Pass* pass;
+    std::vector<Resource> reads, writes;
+    bool runs = false;
+    std::string culled;  // why it does not run; "" when it runs
+};
+
+struct FrameGraph {
+    std::vector<GraphStep> steps;
+    // Reads with no writer earlier in the frame and no input to hold them: empty when valid.
+    std::vector<std::string> problems;
+    bool runs(const std::string& passName) const;
+};
+
+// What a finished frame is looked at through afterwards (the sink): every frame target the
+// outputs, views and probe show, the shadow maps and terrain heights they sample; not the depth
+// copy or the tile lists, which only passes of the frame read.
+std::vector<Resource> frameOutputs();
+// What holds values before a fill of a finished frame: everything the frame left.
+std::vector<Resource> everyResource();
+
+// Culls, walking back from `sinks`, every active pass whose writes no later pass (or sink) reads;
+// a Replace write ends what was written before it. Then checks that every read of a running pass
+// was written earlier or is one of `inputs`.
+FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
+                           const std::vector<Resource>& sinks, const std::vector<Resource>& inputs = {});
+
+// The graph in order, one pass a line with its reads and writes, culled passes with their reason.
+std::string frameGraphText(const FrameGraph& graph);
+// The same as a JSON array of {name, reads, writes, culled, reason}.
+std::string frameGraphJson(const FrameGraph& graph);
+
+// Whether frames are validated as they run (Pipeline::run): on in debug builds, with
+// OASIS_VALIDATE_FRAME=1 in the environment, or where a test switches it on.
+bool frameValidation();
+void setFrameValidation(bool on);
+// The audit after a pass ran: every target attached to the bound draw framebuffer must be one the
+// pass declared it writes or tests. Returns what it found wrong, "" when nothing.
+std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context);
+
+}  // namespace oasis

@@ -1,0 +1,81 @@
+// The frame's validation (render/frame_graph.h): a pass that draws into a target it does not
+// declare fails it, one that binds its declared outputs passes, and the real frames of both
+// pipelines pass it in the settings that change their declarations.
+#include "gpu_test.h"
+
+#include <stdexcept>
+
+#include "render/frame_graph.h"
+#include "render/pipeline.h"
+
+namespace oasis::gputest {
+namespace {
+
+// Declares that it writes Radiance; `honest` draws there, otherwise it clears Final.
+class ClearsOneTarget : public Pass {
+public:
+    explicit ClearsOneTarget(bool honest) : honest_(honest) {}
+    std::string name() const override { return honest_ ? "DeclaredPass" : "MisdeclaredPass"; }
+    std::vector<Access> accesses(const FrameSetup&) const override { return {{Target::Radiance, Use::Write}}; }
+
+protected:
+    void execute(PassContext& context) override {
+        if (honest_) bindDeclaredOutputs(context);
+        else bindFramebufferOf(context.targets, {{Target::Final, Use::Write}});
+        const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        glClearBufferfv(GL_COLOR, 0, black);
+    }
+
+private:
+    bool honest_;
+};
+
+// Switches validation on for the scope, as debug builds have it.
+struct ValidatedFrames {
+    bool was = frameValidation();
+    ValidatedFrames() { setFrameValidation(true); }
+    ~ValidatedFrames() { setFrameValidation(was); }
+};
+
+TEST_F(GpuTest, APassDrawingOutsideItsDeclarationFailsValidation) {
+    ValidatedFrames validated;
+    FrameTargets targets(layoutNamed("compact"), standardDepthConvention(), 32, 18);
+    SceneGeometry geometry(SceneSettings{}.grid);
+    VegetationBuffers vegetation;
+    FrameSetup frame;
+    PassContext context{targets, *shaders_, geometry, frame, vegetation};
+    ClearsOneTarget declared(true), misdeclared(false);
+    EXPECT_NO_THROW(runValidated(declared, context));
+    try {
+        runValidated(misdeclared, context);
+        ADD_FAILURE() << "a pass that cleared Final while declaring Radiance passed validation";
+    } catch (const std::logic_error& error) {
+        EXPECT_NE(std::string(error.what()).find("MisdeclaredPass draws into final"), std::string::npos) << error.what();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_F(GpuTest, TheFramesOfBothPipelinesPassValidation) {
+    ValidatedFrames validated;
+    for (const char* layout : {"compact", "full"}) {
+        for (LightMethod method : {LightMethod::Volumes, LightMethod::Tiled}) {
+            for (bool inPlace : {true, false}) {
+                SceneSettings scene = defaultPose().scene;
+                scene.hour = 21.0;
+                scene.lights.count = 4;
+                scene.lights.method = method;
+                scene.work.depthReadInPlace = inPlace;
+                Renderer renderer(*shaders_, scene);
+                renderer.configure(64, 36, layoutNamed(layout));
+                for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+                    renderer.setPipeline(kind);
+                    EXPECT_NO_THROW(renderer.renderFrame(scene)) << layout << " " << pipelineName(kind);
+                    EXPECT_NO_THROW(renderer.renderView("albedo")) << layout << " " << pipelineName(kind);
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace oasis::gputest

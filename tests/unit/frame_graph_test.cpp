@@ -1,0 +1,104 @@
+// The frame graph from the passes' declarations, without GL: which passes it culls and why, and
+// that a read with no writer before it is reported (render/frame_graph.h).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "render/frame_graph.h"
+#include "render/pipeline.h"
+
+namespace oasis {
+namespace {
+
+const GraphStep& stepNamed(const FrameGraph& graph, const std::string& name) {
+    auto found = std::find_if(graph.steps.begin(), graph.steps.end(),
+                              [&](const GraphStep& step) { return step.pass->name() == name; });
+    if (found == graph.steps.end()) throw std::out_of_range("no step " + name);
+    return *found;
+}
+
+// A compact frame with reflections and point lights added by `method`.
+FrameSetup compactFrame(LightMethod method, bool depthReadInPlace) {
+    FrameSetup frame;
+    frame.positionFromDepth = true;
+    frame.depthReadInPlace = depthReadInPlace;
+    frame.lightMethod = method;
+    frame.lights.resize(2);
+    return frame;
+}
+
+TEST(FrameGraph, TheDepthCopyRunsOnlyWhereAPassReadsIt) {
+    Pipeline deferred(PipelineKind::Deferred);
+    FrameGraph tiled = deferred.graph(compactFrame(LightMethod::Tiled, true));
+    EXPECT_FALSE(stepNamed(tiled, "DepthCopyPass").runs);
+    EXPECT_EQ(stepNamed(tiled, "DepthCopyPass").culled, "nothing later reads what it writes (scene-depth)");
+    EXPECT_TRUE(stepNamed(tiled, "DepthCopyPass.mirrored").runs) << "the mirrored lighting reads the copy";
+    EXPECT_TRUE(stepNamed(deferred.graph(compactFrame(LightMethod::Volumes, true)), "DepthCopyPass").runs)
+        << "the light volumes read the copy";
+    EXPECT_TRUE(stepNamed(deferred.graph(compactFrame(LightMethod::Tiled, false)), "DepthCopyPass").runs)
+        << "the lighting reads the copy with --depth-read copy";
+    FrameSetup full = compactFrame(LightMethod::Volumes, true);
+    full.positionFromDepth = false;
+    EXPECT_EQ(stepNamed(deferred.graph(full), "DepthCopyPass").culled, "off in this frame's settings");
+}
+
+TEST(FrameGraph, TheLightTilesAreBuiltOnlyForTheTiledLighting) {
+    Pipeline deferred(PipelineKind::Deferred);
+    EXPECT_TRUE(stepNamed(deferred.graph(compactFrame(LightMethod::Tiled, true)), "LightTilingPass").runs);
+    FrameGraph volumesGraph = deferred.graph(compactFrame(LightMethod::Volumes, true));
+    const GraphStep& volumes = stepNamed(volumesGraph, "LightTilingPass");
+    EXPECT_FALSE(volumes.runs);
+    EXPECT_EQ(volumes.culled, "nothing later reads what it writes (LightTiles)");
+    FrameSetup noLights = compactFrame(LightMethod::Tiled, true);
+    noLights.lights.clear();
+    EXPECT_FALSE(stepNamed(deferred.graph(noLights), "LightTilingPass").runs);
+}
+
+TEST(FrameGraph, TheCompactLayoutDeclaresNoPosition) {
+    Pipeline deferred(PipelineKind::Deferred);
+    FrameGraph graph = deferred.graph(compactFrame(LightMethod::Volumes, true));
+    for (const GraphStep& step : graph.steps) {
+        EXPECT_EQ(std::count(step.reads.begin(), step.reads.end(), Resource(Target::Position)), 0) << step.pass->name();
+        EXPECT_EQ(std::count(step.writes.begin(), step.writes.end(), Resource(Target::Position)), 0) << step.pass->name();
+    }
+}
+
+TEST(FrameGraph, EveryReadOfBothPipelinesHasAWriterBeforeIt) {
+    for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+        Pipeline pipeline(kind);
+        for (LightMethod method : {LightMethod::Volumes, LightMethod::Tiled})
+            for (bool inPlace : {true, false})
+                for (bool reflections : {true, false})
+                    for (bool shadows : {true, false}) {
+                        FrameSetup frame = compactFrame(method, inPlace);
+                        frame.reflectionsActive = reflections;
+                        frame.shadowsActive = shadows;
+                        FrameGraph graph = pipeline.graph(frame);
+                        EXPECT_TRUE(graph.problems.empty()) << pipelineName(kind) << ": " << graph.problems.front();
+                    }
+    }
+}
+
+// A pass that samples the depth copy with nothing before it to make it.
+class ReadsTheCopy : public Pass {
+public:
+    std::string name() const override { return "ReadsTheCopy"; }
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        return {{Target::SceneDepth, Use::Sample}, {Target::Radiance, Use::Write}};
+    }
+
+protected:
+    void execute(PassContext&) override {}
+};
+
+TEST(FrameGraph, AReadWithNoWriterIsReported) {
+    ReadsTheCopy pass;
+    FrameGraph graph = buildFrameGraph({&pass}, FrameSetup{}, frameOutputs());
+    ASSERT_EQ(graph.problems.size(), 1u);
+    EXPECT_EQ(graph.problems[0], "ReadsTheCopy reads scene-depth, which no pass wrote before it");
+    EXPECT_TRUE(buildFrameGraph({&pass}, FrameSetup{}, frameOutputs(), everyResource()).problems.empty());
+}
+
+}  // namespace
+}  // namespace oasis
