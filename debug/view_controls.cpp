@@ -105,12 +105,17 @@ std::string overlayNames(unsigned bits) {
     return names.empty() ? "none" : names;
 }
 
-ValueStatistics valueStatistics(const std::vector<float>& rgba, ViewChannel channel) {
+namespace {
+bool undrawn(const DrawnPixels* drawn, size_t pixel) { return drawn && !drawn->empty() && !(*drawn)[pixel]; }
+}  // namespace
+
+ValueStatistics valueStatistics(const std::vector<float>& rgba, ViewChannel channel, const DrawnPixels* drawn) {
     ValueStatistics s;
     s.min = std::numeric_limits<double>::infinity();
     s.max = -std::numeric_limits<double>::infinity();
     float values[3];
     for (size_t i = 0; i + 3 < rgba.size(); i += 4) {
+        if (undrawn(drawn, i / 4)) { ++s.undrawn; continue; }
         int count = channelValues(&rgba[i], channel, values);
         for (int c = 0; c < count; ++c) {
             float v = values[c];
@@ -143,7 +148,7 @@ OverlayColours overlayColours(OverlayBits kind) {
 }
 
 Image mapViewValues(const std::vector<float>& rgba, int width, int height, ViewChannel channel,
-                    std::pair<double, double> range, unsigned overlay) {
+                    std::pair<double, double> range, unsigned overlay, const DrawnPixels* drawn) {
     Image image(width, height);
     const double low = range.first, scale = 1.0 / (range.second - range.first);
     float values[3];
@@ -151,23 +156,26 @@ Image mapViewValues(const std::vector<float>& rgba, int width, int height, ViewC
         for (int x = 0; x < width; ++x) {
             int count = channelValues(&rgba[(size_t(y) * size_t(width) + size_t(x)) * 4], channel, values);
             uint8_t* out = image.pixel(x, height - 1 - y);
+            bool shown = !undrawn(drawn, size_t(y) * size_t(width) + size_t(x));
             for (int c = 0; c < 3; ++c) {
+                if (!shown) { out[c] = 0; continue; }  // black = not drawn, as the depth view's cleared
                 double v = values[count == 3 ? c : 0];
                 double t = std::isfinite(v) ? std::clamp((v - low) * scale, 0.0, 1.0) : (v > 0 ? 1.0 : 0.0);
                 out[c] = uint8_t(std::lround(t * 255.0));
             }
             out[3] = 255;
         }
-    paintOverlay(image, rgba, channel, overlay);
+    paintOverlay(image, rgba, channel, overlay, drawn);
     return image;
 }
 
-void paintOverlay(Image& image, const std::vector<float>& rgba, ViewChannel channel, unsigned overlay) {
-    paintOverlayIn(image, {0, 0, image.width, image.height}, rgba, image.width, image.height, channel, overlay);
+void paintOverlay(Image& image, const std::vector<float>& rgba, ViewChannel channel, unsigned overlay,
+                  const DrawnPixels* drawn) {
+    paintOverlayIn(image, {0, 0, image.width, image.height}, rgba, image.width, image.height, channel, overlay, drawn);
 }
 
 void paintOverlayIn(Image& image, ImageRect rect, const std::vector<float>& rgba, int frameWidth, int frameHeight,
-                    ViewChannel channel, unsigned overlay) {
+                    ViewChannel channel, unsigned overlay, const DrawnPixels* drawn) {
     const OverlayColours nan = overlayColours(kOverlayNan), inf = overlayColours(kOverlayInfinity),
                          negative = overlayColours(kOverlayNegative), negativeInfinity{{255, 0, 255}, {128, 128, 128}};
     float values[3];
@@ -175,6 +183,7 @@ void paintOverlayIn(Image& image, ImageRect rect, const std::vector<float>& rgba
         for (int tx = 0; tx < rect.width; ++tx) {
             // The frame's texel under the rectangle's pixel centre; y counts from the bottom in GL.
             int x = int((tx + 0.5) * frameWidth / rect.width), y = int((ty + 0.5) * frameHeight / rect.height);
+            if (undrawn(drawn, size_t(y) * size_t(frameWidth) + size_t(x))) continue;
             int count = channelValues(&rgba[(size_t(y) * size_t(frameWidth) + size_t(x)) * 4], channel, values);
             const OverlayColours* paint = nullptr;
             for (int c = 0; c < count && !paint; ++c)

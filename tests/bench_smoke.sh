@@ -16,7 +16,8 @@ json="$out/bench.json"
 grep -q '"configs": \[' "$json" || { echo "no configs list"; exit 1; }
 configs=$(grep -c '^ *{"pipeline": ' "$json" || true)
 test "$configs" -ge 3 || { echo "expected at least 3 configs, found $configs"; exit 1; }
-for key in pipeline layout width height lights ms_median floor_ms floor_ratio psnr_db bytes_per_pixel pareto; do
+for key in pipeline layout width height lights ms_median floor_ms floor_ratio psnr_db bytes_per_pixel pareto \
+           traffic_bytes_per_pixel cleared_bytes_per_pixel floor_traffic_bytes_per_pixel; do
     n=$(grep '^ *{"pipeline": ' "$json" | grep -c "\"$key\": " || true)
     test "$n" -eq "$configs" || { echo "key $key in $n of $configs configs"; exit 1; }
 done

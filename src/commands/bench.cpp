@@ -19,6 +19,7 @@
 #include "commands/svg_plot.h"
 #include "context/gl_context.h"
 #include "gl/frame_capture.h"
+#include "render/frame_traffic.h"
 #include "render/gbuffer_layout.h"
 #include "render/file_output.h"
 #include "render/image.h"
@@ -131,6 +132,18 @@ struct Timed {
     Renderer* renderer;
     BenchResult* result;
 };
+// The first frame's memory traffic, counted once: the counts do not vary from run to run.
+void countTraffic(const std::vector<Timed>& group, Renderer& floorRenderer, const std::vector<SceneSettings>& scenes) {
+    FrameTraffic floor = measureFloorTraffic(floorRenderer);
+    for (size_t c = 0; c < group.size(); ++c) {
+        group[c].renderer->setPipeline(group[c].result->config.pipeline);
+        FrameTraffic traffic = measureFrameTraffic(*group[c].renderer, scenes[c]);
+        if (!traffic.measured()) continue;
+        group[c].result->trafficBytesPerPixel = traffic.bytesPerPixel();
+        group[c].result->clearedBytesPerPixel = traffic.clearedBytesPerPixel();
+        group[c].result->floorTrafficBytesPerPixel = floor.bytesPerPixel();
+    }
+}
 void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, const SceneSettings& base,
                      const std::vector<BenchFrame>& frames, const BenchPlan& plan) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
@@ -168,6 +181,7 @@ void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, c
             floorSamples.push_back(elapsedMs(start));
             for (size_t c = 0; c < group.size(); ++c) floorRatios[c].push_back(samples[c].back() / floorSamples.back());
         }
+        if (&frame == &frames.front()) countTraffic(group, floorRenderer, scenes);
         for (size_t c = 0; c < group.size(); ++c) {
             group[c].renderer->setPipeline(group[c].result->config.pipeline);
             std::vector<PassTimes> timed;
@@ -208,17 +222,17 @@ std::string layoutLabel(const BenchConfig& config) {
 std::string tableText(const std::vector<BenchResult>& results) {
     std::string text;
     char line[320];
-    std::snprintf(line, sizeof(line), "%-9s %6s %-8s %-19s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %s\n", "size",
+    std::snprintf(line, sizeof(line), "%-9s %6s %-8s %-19s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %8s %s\n", "size",
                   "lights", "pipeline", "layout", "variation", "ms med", "ms min", "ms max", "xfloor", "PSNR dB", "RMSE", "max",
-                  "SSIM", "own dB", "B/px", "MiB", "pareto");
+                  "SSIM", "own dB", "B/px", "MiB", "moved/px", "pareto");
     text += line;
     for (const BenchResult& r : results) {
         const BenchConfig& c = r.config;
         const char* pareto = r.pareto ? "yes" : r.paretoInPipeline ? "in pipeline" : "";
-        std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-19s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %s\n",
+        std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-19s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %8.1f %s\n",
                       sizeName(c.width, c.height).c_str(), c.lights, pipelineName(c.pipeline), layoutLabel(c).c_str(),
                       r.variation.c_str(), r.msMedian, r.msMin, r.msMax, r.msOverFloor(), r.psnrDb, r.rmse, r.maxAbs,
-                      r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, pareto);
+                      r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, r.trafficBytesPerPixel, pareto);
         text += line;
     }
     return text;
@@ -500,6 +514,10 @@ int runBenchCommand(const Options& options) {
                                "deferred/%s with the same knobs and lights; pareto: per size and light count "
                                "(\"in pipeline\": only among its pipeline's configurations)\n",
                      defaultGBufferLayout().name.c_str(), reference.name.c_str(), reference.name.c_str());
+        if (!results.empty() && results.front().floorTrafficBytesPerPixel >= 0.0)
+            std::fprintf(tableOut, "moved/px: bytes written and read per pixel of the first frame, counted by the driver's "
+                                   "queries (docs/traffic.md); the floor moves %.1f B/px\n",
+                         results.front().floorTrafficBytesPerPixel);
         std::fprintf(tableOut, "depth precision at %s (deferred, full layout, default knobs; error of the position "
                                "reconstructed from depth against the stored float position, world units and relative "
                                "to distance):\n%s",

@@ -256,7 +256,8 @@ std::string jsonString(const std::string& text) {
 std::string benchCsvHeader() {
     return "pipeline,layout,width,height,variation,knobs,lights,ms_median,ms_min,ms_max,floor_ms,floor_ratio,"
            "psnr_db,rmse,max_abs,ssim,same_knobs_psnr_db,same_knobs_max_abs,bytes_per_pixel,gbuffer_bytes_per_pixel,target_mib,pareto,"
-           "pareto_in_pipeline,passes_ms,depth,light_method";
+           "pareto_in_pipeline,passes_ms,depth,light_method,traffic_bytes_per_pixel,cleared_bytes_per_pixel,"
+           "floor_traffic_bytes_per_pixel";
 }
 
 std::string benchCsvRow(const BenchResult& r) {
@@ -269,7 +270,8 @@ std::string benchCsvRow(const BenchResult& r) {
            std::to_string(r.bytesPerPixel) + "," + std::to_string(r.gbufferBytesPerPixel) + "," +
            format("%.2f", r.targetMiB) + "," + (r.pareto ? "true" : "false") + "," +
            (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r)) + "," + csvField(c.depth) + "," +
-           lightMethodName(c.lightMethod);
+           lightMethodName(c.lightMethod) + "," + format("%.4f", r.trafficBytesPerPixel) + "," +
+           format("%.4f", r.clearedBytesPerPixel) + "," + format("%.4f", r.floorTrafficBytesPerPixel);
 }
 
 std::string benchConfigJson(const BenchResult& r) {
@@ -291,7 +293,10 @@ std::string benchConfigJson(const BenchResult& r) {
            ", \"gbuffer_bytes_per_pixel\": " + std::to_string(r.gbufferBytesPerPixel) +
            ", \"target_mib\": " + jsonNumber(r.targetMiB, 3) + ", \"passes_ms\": {" + passes + "}" +
            ", \"pareto\": " + (r.pareto ? "true" : "false") +
-           ", \"pareto_in_pipeline\": " + (r.paretoInPipeline ? "true" : "false") + ", \"depth\": " + jsonString(c.depth) + "}";
+           ", \"pareto_in_pipeline\": " + (r.paretoInPipeline ? "true" : "false") + ", \"depth\": " + jsonString(c.depth) +
+           ", \"traffic_bytes_per_pixel\": " + jsonNumber(r.trafficBytesPerPixel, 6) +
+           ", \"cleared_bytes_per_pixel\": " + jsonNumber(r.clearedBytesPerPixel, 6) +
+           ", \"floor_traffic_bytes_per_pixel\": " + jsonNumber(r.floorTrafficBytesPerPixel, 6) + "}";
 }
 
 // Per size, the range of the floors timed in turn with the configurations (what xfloor divides

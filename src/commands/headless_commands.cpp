@@ -8,11 +8,14 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <tuple>
 
 #include "commands/bench_report.h"
 #include "commands/overview_overlay.h"
 #include "commands/provenance.h"
 #include "commands/session.h"
+#include "commands/traffic_report.h"
+#include "commands/view_mask.h"
 #include "context/gl_context.h"
 #include "gl/frame_capture.h"
 #include "render/file_output.h"
@@ -34,6 +37,7 @@ struct Comparison {
     PassTimes forwardPasses, deferredPasses;  // only with --passes
     TimingClock clock;                        // how the passes were timed (measured with --passes)
     std::string forwardGraph, deferredGraph;  // each frame's graph as JSON (render/frame_graph.h)
+    FrameTraffic forwardTraffic, deferredTraffic, floorTraffic;  // counted with --passes
 };
 
 bool ensureDirectory(const std::string& path, std::string& error) {
@@ -71,6 +75,11 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
                                                            {PipelineKind::Forward, PipelineKind::Deferred});
         result.forwardPasses = passes[0];
         result.deferredPasses = passes[1];
+        renderer.setPipeline(PipelineKind::Forward);
+        result.forwardTraffic = measureFrameTraffic(renderer, session.scene);
+        renderer.setPipeline(PipelineKind::Deferred);
+        result.deferredTraffic = measureFrameTraffic(renderer, session.scene);
+        result.floorTraffic = measureFloorTraffic(renderer);
     }
     renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
     return result;
@@ -143,13 +152,17 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
     std::printf("  %s\n", describeReflectionBounds(*session.renderer, session.scene).c_str());
-    for (const auto& [pipeline, passes] : {std::pair{"forward", &c.forwardPasses}, {"deferred", &c.deferredPasses}}) {
+    for (const auto& [pipeline, passes, traffic] :
+         {std::tuple{"forward", &c.forwardPasses, &c.forwardTraffic}, {"deferred", &c.deferredPasses, &c.deferredTraffic}}) {
         if (passes->empty()) continue;
-        std::printf("  %s per pass (median ms, %s):\n", pipeline,
-                    c.clock.gpuTimers ? "GPU timer queries" : "wall time, glFinish after each");
-        for (const auto& [name, ms] : *passes) std::printf("    %-30s %7.2f\n", name.c_str(), ms);
+        std::printf("  %s per pass (median ms, %s)%s:\n", pipeline,
+                    c.clock.gpuTimers ? "GPU timer queries" : "wall time, glFinish after each",
+                    traffic->measured() ? trafficColumnsHeader().c_str() : "");
+        for (const auto& [name, ms] : *passes)
+            std::printf("    %-30s %7.2f%s\n", name.c_str(), ms, trafficColumns(*traffic, name).c_str());
     }
     if (!c.forwardPasses.empty()) std::printf("  pass clock: %s\n", c.clock.describe().c_str());
+    std::printf("%s", trafficSummary(c.forwardTraffic, c.deferredTraffic, c.floorTraffic).c_str());
 }
 
 std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) {
@@ -207,7 +220,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
                 "\"light_method\": \"%s\", \"light_method_reason\": \"%s\", "
-                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s%s}\n",
+                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s%s%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.times.forwardMs, c.times.deferredMs,
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
                 c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(),
@@ -220,7 +233,10 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 session.renderer->lightsPathReason().c_str(), session.renderer->lightsDropped(),
                 lightMethodName(session.renderer->lightMethod()), session.renderer->lightMethodReason().c_str(),
                 passClockJson(c).c_str(), passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
-                passTimesJson("deferred_passes_ms", c.deferredPasses).c_str(), graphJson(c).c_str());
+                passTimesJson("deferred_passes_ms", c.deferredPasses).c_str(),
+                pipelineTrafficJson("forward", c.forwardTraffic).c_str(),
+                pipelineTrafficJson("deferred", c.deferredTraffic).c_str(), floorTrafficJson(c.floorTraffic).c_str(),
+                graphJson(c).c_str());
 }
 
 // Runs `body` with a headless context and a session, turning failures into messages and exit 1.
@@ -312,15 +328,18 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     }
     std::vector<float> values = renderer.readViewValues(options.view);
     ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
-    ValueStatistics statistics = valueStatistics(values, channel);
+    const DrawnPixels drawn = drawnPixels(renderer, *view);  // the sky left out (issue 31, defect 1)
+    ValueStatistics statistics = valueStatistics(values, channel, &drawn);
     if (controls.showValues())
-        image = mapViewValues(values, image.width, image.height, channel, rangeInUse(controls, statistics), controls.overlay);
+        image = mapViewValues(values, image.width, image.height, channel, rangeInUse(controls, statistics),
+                              controls.overlay, &drawn);
     else
-        paintOverlay(image, values, channel, controls.overlay);
-    std::fprintf(report, "oasis: view %s values (%s): %ld, NaN %ld, +Inf %ld, -Inf %ld, negative %ld; finite min %.6g, max %.6g\n",
+        paintOverlay(image, values, channel, controls.overlay, &drawn);
+    std::fprintf(report, "oasis: view %s values (%s): %ld, NaN %ld, +Inf %ld, -Inf %ld, negative %ld; finite min %.6g, max %.6g; "
+                 "not drawn %ld px (left out)\n",
                  view->name.c_str(), describeChannel(*view, channel).c_str(), statistics.values, statistics.nan,
                  statistics.positiveInfinity, statistics.negativeInfinity, statistics.negative, statistics.min,
-                 statistics.max);
+                 statistics.max, statistics.undrawn);
     // The final frame is a picture: the size asked for, no strip unless --legend on.
     if (!options.legend.value_or(view->name != "final")) return image;
     gl::endFrame();  // the frame ends with its view read back; the legend strip is a frame of its own
@@ -328,6 +347,8 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     LegendRenderer legends;
     Legend legend = viewLegend(*view, controls, statistics, frame.depthRange.x, frame.depthRange.y,
                                frame.terrainGridCounts.w, waterNote(*view, renderer.viewScene().description));
+    std::string undrawn = undrawnNote(*view, statistics.undrawn, controls.showValues());
+    if (!undrawn.empty()) legend.notes.push_back(undrawn);
     return stackImages(image, legends.draw(legend, image.width));
 }
 

@@ -1,0 +1,116 @@
+// The frame's memory traffic counted by the driver (render/frame_traffic.h): the same counts from
+// run to run (exactly, unlike times), a full-screen draw is one fragment per pixel, and a clear's
+// bytes are its attachments' bytes.
+#include "gpu_test.h"
+
+#include "render/depth_convention.h"
+#include "render/frame_traffic.h"
+
+namespace oasis::gputest {
+namespace {
+
+class FrameTrafficTest : public GpuTest, public ::testing::WithParamInterface<PipelineKind> {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        if (IsSkipped() || HasFatalFailure()) return;
+        std::string whyNot;
+        if (!trafficCountable(&whyNot)) GTEST_SKIP() << whyNot;
+    }
+};
+
+void expectSameCounts(const FrameTraffic& a, const FrameTraffic& b) {
+    ASSERT_EQ(a.passes.size(), b.passes.size());
+    for (size_t i = 0; i < a.passes.size(); ++i) {
+        const PassTraffic &x = a.passes[i], &y = b.passes[i];
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.samples, y.samples) << x.name;
+        EXPECT_EQ(x.invocations, y.invocations) << x.name;
+        EXPECT_EQ(x.clearedBytes, y.clearedBytes) << x.name;
+        EXPECT_EQ(x.bytesWritten, y.bytesWritten) << x.name;
+        EXPECT_EQ(x.bytesRead, y.bytesRead) << x.name;
+    }
+    EXPECT_EQ(a.bytesPerPixel(), b.bytesPerPixel());
+}
+
+TEST_P(FrameTrafficTest, TheCountsAreTheSameFromRunToRun) {
+    const SceneSettings scene = sceneAtHeight(435.0, 4.0, 140.0, 30.0f, -3.0f);  // water, terrain and sky
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(96, 54, layoutNamed("compact"));
+    renderer.setPipeline(GetParam());
+    const FrameTraffic first = measureFrameTraffic(renderer, scene);
+    const FrameTraffic second = measureFrameTraffic(renderer, scene);
+    ASSERT_TRUE(first.measured());
+    expectSameCounts(first, second);
+    EXPECT_GT(first.bytesPerPixel(), 0.0);
+    // Every pass that ran is counted, in the order it ran.
+    std::vector<std::string> ran, counted;
+    for (const auto& [name, ms] : renderer.renderFrameTimingPasses(scene))
+        if (std::find(ran.begin(), ran.end(), name) == ran.end()) ran.push_back(name);
+    for (const PassTraffic& pass : first.passes) counted.push_back(pass.name);
+    EXPECT_EQ(counted, ran);
+    std::printf("[ traffic ] %s 96x54 compact: %.2f B/px, %.2f of it cleared\n", pipelineName(GetParam()),
+                first.bytesPerPixel(), first.clearedBytesPerPixel());
+}
+
+TEST_P(FrameTrafficTest, AClearWritesEveryTexelOfItsAttachments) {
+    const SceneSettings scene = sceneAtHeight(435.0, 4.0, 140.0, 30.0f, -3.0f);
+    Renderer renderer(*shaders_, scene);
+    renderer.configure(64, 36, layoutNamed("compact"));
+    renderer.setPipeline(GetParam());
+    const FrameTraffic traffic = measureFrameTraffic(renderer, scene);
+    const bool deferred = GetParam() == PipelineKind::Deferred;
+    const PassTraffic* clear = traffic.find(deferred ? "ClearPass.gbuffer" : "ClearPass.forward");
+    ASSERT_NE(clear, nullptr);
+    const FrameTargets& targets = renderer.targets();
+    // The depth-stencil always; the stored G-buffer colour targets in the deferred frame.
+    double expected = targetFormat(targets.layout(), targets.depth(), Target::DepthStencil).bytesPerPixel;
+    if (deferred)
+        for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info})
+            expected += targets.layout().format(target).bytesPerPixel;
+    EXPECT_EQ(double(clear->clearedBytes), expected * traffic.pixels());
+    EXPECT_EQ(clear->samples, 0u);  // a clear is no draw
+}
+
+TEST_P(FrameTrafficTest, AFullScreenDrawIsOneFragmentPerPixel) {
+    SceneSettings scene = sceneAtHeight(435.0, 4.0, 140.0, 30.0f, -3.0f);
+    scene.work.fuseToneMap = false;  // the separate tone map: a full-screen pass of its own
+    Renderer renderer(*shaders_, scene);
+    renderer.configure(80, 45, layoutNamed("full"));
+    renderer.setPipeline(GetParam());
+    const FrameTraffic traffic = measureFrameTraffic(renderer, scene);
+    const PassTraffic* toneMap = traffic.find("ToneMapPass");
+    ASSERT_NE(toneMap, nullptr);
+    // One sample per pixel exactly: Final written (4 B) once per pixel.
+    EXPECT_EQ(toneMap->samples, uint64_t(80 * 45));
+    EXPECT_EQ(traffic.perPixel(toneMap->bytesWritten), 4.0);
+    // At least one invocation per pixel: llvmpipe counts whole blocks at the frame's edge too
+    // (1.025 per pixel at 320x180, 1.17 at 80x45: docs/traffic.md); Radiance (8 B) per invocation.
+    EXPECT_GE(toneMap->invocations, uint64_t(80 * 45));
+    EXPECT_EQ(toneMap->bytesRead, 8.0 * double(toneMap->invocations));
+    std::printf("[ traffic ] %s: a full-screen pass runs %.4f fragment invocations per pixel (%s)\n",
+                pipelineName(GetParam()), traffic.perPixel(double(toneMap->invocations)),
+                describeInvocationCount(traffic).c_str());
+
+    // The floor: two full-screen draws, counted the same way.
+    const FrameTraffic floor = measureFloorTraffic(renderer);
+    ASSERT_EQ(floor.passes.size(), 1u);
+    EXPECT_EQ(floor.passes[0].samples, uint64_t(2 * 80 * 45));
+    EXPECT_EQ(floor.passes[0].invocations, 2 * toneMap->invocations);  // the same full-screen draw twice
+    const GBufferLayout& layout = renderer.targets().layout();
+    double gbuffer = 0.0;
+    for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info})
+        gbuffer += layout.format(target).bytesPerPixel;
+    const double depth = targetFormat(layout, renderer.targets().depth(), Target::DepthStencil).bytesPerPixel;
+    const double invocations = floor.perPixel(double(floor.passes[0].invocations)) / 2.0;
+    EXPECT_EQ(floor.perPixel(floor.bytesWritten()), gbuffer + depth + 4.0);
+    EXPECT_DOUBLE_EQ(floor.perPixel(floor.bytesRead()), gbuffer * invocations);
+    expectSameCounts(floor, measureFloorTraffic(renderer));
+}
+
+INSTANTIATE_TEST_SUITE_P(Pipelines, FrameTrafficTest, ::testing::Values(PipelineKind::Forward, PipelineKind::Deferred),
+                         [](const auto& info) { return std::string(pipelineName(info.param)); });
+
+}  // namespace
+}  // namespace oasis::gputest
