@@ -18,6 +18,7 @@
 #include "render/file_output.h"
 #include "render/encoding_error.h"
 #include "render/pixel_probe.h"
+#include "render/shading_probe.h"
 #include "debug/error_image.h"
 #include "debug/view_legend.h"
 
@@ -383,7 +384,12 @@ int runProbeCommand(const Options& options) {
         renderer.renderFrame(session.scene);
         PixelProbe probe = probePixel(renderer, options.probeAt->first, options.probeAt->second);
         if (error) addEncodingError(probe, *error);
-        std::fputs((options.json ? probeJson(probe) + "\n" : probeText(probe)).c_str(), stdout);
+        std::vector<ShadedSurface> shading;
+        if (options.probeShading) shading = probeShading(renderer, probe);
+        std::string report = options.json ? probeJson(probe) : probeText(probe);
+        if (options.json && options.probeShading) report.insert(report.size() - 1, ", \"shading\": " + shadingJson(shading));
+        if (!options.json && options.probeShading) report += shadingText(shading);
+        std::fputs((report + (options.json ? "\n" : "")).c_str(), stdout);
         return 0;
     });
 }
