@@ -247,6 +247,7 @@ std::string usage(Command command) {
                    "                            and specular parts, each point light's share, water crossed, fog,\n"
                    "                            the sky; at water the mirrored scene, Fresnel and what lies under;\n"
                    "                            the tone map's input and output (JSON key \"shading\")\n"
+                   "  --stop-before PASS        probe the frame as it stood before the named pass\n"
                    "  --history                 also every pass of the frame in order: whether it wrote the pixel,\n"
                    "                            why not, and the values it left in each target (JSON key \"history\")\n"
                    "  --json                    one JSON object instead of the text\n" + scene;
@@ -410,6 +411,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                           flag == "--range" || flag == "--overlay" || flag == "--legend";
         if (flag == "--pipeline" && (options.command == Command::Probe || options.command == Command::Compare))
             renderOnly = false;  // compare: only with --driver / --reference (checked after the loop)
+        if (flag == "--stop-before" && options.command == Command::Probe) renderOnly = false;  // probe a stopped frame
         if ((flag == "--driver" || flag == "--reference" || flag == "--driver-timeout") &&
             options.command != Command::Compare)
             return fail("option " + flag + " belongs to `oasis compare`");

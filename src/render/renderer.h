@@ -45,6 +45,8 @@ public:
     void setClipControlAvailable(bool available, const std::string& reason);
     void setPipeline(PipelineKind kind) { active_ = kind; }
     PipelineKind pipeline() const { return active_; }
+    // The active pipeline's passes, in the order a frame runs them (the pixel history walks them).
+    const Pipeline& activePipeline() const { return pipelineOf(active_); }
     void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
     StencilViewPath stencilViewPath() const { return stencilPath_; }
     // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).
