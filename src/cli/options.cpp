@@ -128,7 +128,7 @@ std::string usage(Command command) {
                    "  the bench sets --size, --time, --camera, --gbuffer, --lights and the knobs itself; other scene\n"
                    "  options (e.g. --hour, --ripples) set the scene every configuration starts from\n" + scene;
         case Command::Probe:
-            return "usage: oasis probe --at X,Y [scene options] [--pipeline forward|deferred] [--json]\n"
+            return "usage: oasis probe --at X,Y [scene options] [--pipeline forward|deferred] [--shading] [--history] [--json]\n"
                    "  renders the frame and prints, for pixel X,Y (0,0 the top-left pixel, as in the PNGs), every\n"
                    "  target's texel as stored (bytes, half floats or floats, per the G-buffer layout) and decoded\n"
                    "  on the GPU as the lighting pass reads it: albedo (linear, sRGB), normal, position (camera-\n"
@@ -139,6 +139,14 @@ std::string usage(Command command) {
                    "  --pipeline P              forward or deferred (default deferred)\n"
                    "  --water-scene S           at water pixels the G-buffer and depth hold direct (the lakebed,\n"
                    "                            default) or mirrored (what the water reflects)\n"
+                   "  --shading                 also how the pixel was shaded, term by term, recorded by the\n"
+                   "                            frame's own lighting GLSL: sun, view, N.L, shadow, ambient, diffuse\n"
+                   "                            and specular parts, each point light's share, water crossed, fog,\n"
+                   "                            the sky; at water the mirrored scene, Fresnel and what lies under;\n"
+                   "                            the tone map's input and output (JSON key \"shading\")\n"
+                   "  --stop-before PASS        probe the frame as it stood before the named pass\n"
+                   "  --history                 also every pass of the frame in order: whether it wrote the pixel,\n"
+                   "                            why not, and the values it left in each target (JSON key \"history\")\n"
                    "  --json                    one JSON object instead of the text\n" + scene;
         case Command::Check:
             return "usage: oasis check [--quick] [--api gl|gles] [--out-dir DIR] [--references DIR]\n"
@@ -249,6 +257,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("option " + flag + " does not belong to `oasis check` (it sets the scene itself; see oasis "
                         "check --help)");
         }
+        if (flag == "--shading" || flag == "--history") {
+            if (options.command != Command::Probe) return fail("option " + flag + " belongs to `oasis probe`");
+            (flag == "--shading" ? options.probeShading : options.probeHistory) = true;
+            continue;
+        }
         if (flag == "--json" && (options.command == Command::Caps || options.command == Command::Probe)) {
             options.json = true;
             continue;
@@ -301,6 +314,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                           flag == "--range" || flag == "--overlay" || flag == "--legend";
         if (flag == "--pipeline" && (options.command == Command::Probe || options.command == Command::Compare))
             renderOnly = false;  // compare: only with --driver / --reference (checked after the loop)
+        if (flag == "--stop-before" && options.command == Command::Probe) renderOnly = false;  // probe a stopped frame
         if ((flag == "--driver" || flag == "--reference" || flag == "--driver-timeout") &&
             options.command != Command::Compare)
             return fail("option " + flag + " belongs to `oasis compare`");

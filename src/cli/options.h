@@ -62,6 +62,8 @@ struct Options {
     std::string stopBefore;  // render: end the frame before this pass
     std::optional<std::pair<int, int>> probeAt;  // probe: the pixel, 0,0 top left
     bool graph = false;  // render: print the frame's passes with their reads and writes, no image
+    bool probeShading = false;  // probe --shading: how the pixel was shaded, term by term
+    bool probeHistory = false;  // probe --history: what each pass of the frame wrote there
     bool capture = false;  // render, compare, bench: RenderDoc captures of the rendered frames
     bool glDebug = false;  // every subcommand: synchronous debug output, stop at the first GL error
     // compare --driver / --reference (commands/driver_compare.h): the set-ups (cli/driver_setups.h),

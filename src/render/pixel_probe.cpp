@@ -55,6 +55,8 @@ std::pair<GLuint, GLenum> readSource(const FrameTargets& targets, Target target)
     }
 }
 
+}  // namespace
+
 StoredTexel readStoredTexel(const FrameTargets& targets, Target target, int glX, int glY) {
     const ReadFormat& format = readFormatOf(targetFormat(targets.layout(), targets.depth(), target).internalFormat);
     auto [framebuffer, attachment] = readSource(targets, target);
@@ -91,6 +93,8 @@ StoredTexel readStoredTexel(const FrameTargets& targets, Target target, int glX,
     if (attachment != GL_NONE) glReadBuffer(GL_COLOR_ATTACHMENT0);
     return texel;
 }
+
+namespace {
 
 // What each stencil value means (passes/pass.h StencilMark; bit 0x80 is a light volume's mark,
 // which each light's own draw resets, so a finished frame never holds it).

@@ -18,6 +18,11 @@ struct StoredTexel {
     std::vector<double> values;    // the stored numbers, channel by channel
 };
 
+class FrameTargets;
+enum class Target;
+// One target's texel at GL pixel (glX, glY), bottom row 0, as stored: any time, mid-frame too.
+StoredTexel readStoredTexel(const FrameTargets& targets, Target target, int glX, int glY);
+
 struct PixelProbe {
     int x = 0, y = 0;              // as asked: 0,0 is the top-left pixel (as in the PNGs)
     std::string pipeline, layout, depthConvention;

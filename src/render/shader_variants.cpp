@@ -17,7 +17,8 @@ bool touchesGBuffer(const ProgramVariant& variant) {
     bool writes = std::find(d.begin(), d.end(), "OUTPUT_GBUFFER") != d.end();
     if (variant.computeFile == "light_tiles.comp") return true;  // reads the surfaces' positions
     const std::string readers[] = {"lighting.frag", "light_volume.frag", "gbuffer_clear.frag", "floor.frag",
-                                   "debug_view.frag", "gbuffer_positions.frag", "probe.frag"};
+                                   "debug_view.frag", "gbuffer_positions.frag", "probe.frag",
+                                   "probe_shading.frag"};
     bool marksOnly = std::find(d.begin(), d.end(), "MARK_ONLY") != d.end();
     return writes || (!marksOnly && std::find(std::begin(readers), std::end(readers), variant.fragmentFile) !=
                                         std::end(readers));
@@ -54,6 +55,9 @@ std::vector<ProgramVariant> buildVariants() {
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
         {"gbuffer.positions", "fullscreen.vert", "gbuffer_positions.frag", {}},
         {"probe.pixel", "fullscreen.vert", "probe.frag", {}},
+        // `probe --shading`: the lighting GLSL with its terms recorded (common/shading_terms.glsl).
+        {"probe.shading", "fullscreen.vert", "probe_shading.frag", {"SHADING_RECORD"}},
+        {"probe.shading.lights", "fullscreen.vert", "probe_shading.frag", {"SHADING_RECORD", "SHADING_LIGHTS"}},
         {"depth.copy", "fullscreen.vert", "depth_copy.frag", {}},
         {"depth.copy.mirrored", "fullscreen.vert", "depth_copy.frag", {"WATER_BOUNDED"}},
         {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
