@@ -429,6 +429,14 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     } else if (options.scene.force.gles30) {
         return fail("--force gles30 limits an OpenGL ES context: add --api gles");
     }
+    if (options.graph) {
+        // The pass list replaces the picture: an option that only shapes the picture would be idle.
+        for (const char* idle : {"--out", "--view", "--channel", "--range", "--overlay", "--legend", "--view-exposure",
+                                 "--capture"})
+            if (std::find(options.givenFlags.begin(), options.givenFlags.end(), idle) != options.givenFlags.end())
+                return fail(std::string("--graph prints the frame's passes and writes no picture: ") + idle +
+                            " would do nothing (drop one of them)");
+    }
     if (!options.stopBefore.empty()) {
         // A usage error like any other bad value: the pass lists are GL-free, so check before a context.
         Pipeline pipeline(options.pipeline);

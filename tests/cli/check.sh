@@ -56,7 +56,7 @@ EOF
     else
         echo "(chromium-headless-shell absent: report.html not opened)"
     fi
-    echo "check quick: $(tail -n 2 out.txt | head -n 1) in $elapsed s" ;;
+    echo "check quick: $(grep "^oasis check: " out.txt | tail -n 1) in $elapsed s" ;;
 perturbed)
     "$oasis" check --references "$references" --out-dir clean > clean.txt 2> clean.err ||
         fail "the clean check failed: $(grep -v '^  pass' clean.txt)"

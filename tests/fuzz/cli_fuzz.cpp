@@ -119,6 +119,7 @@ const std::vector<Flag>& flags() {
         {"--json", Value::None},
         {"--frames", Value::Integer, 1, 3},  // more frames only cost time: the extremes test the domain
         {"--passes", Value::None},
+        {"--graph", Value::None},  // render: the frame's passes on stdout, no image
         {"--at", Value::Pixel},
         {"--view-exposure", Value::Number, -20, 20},
         {"--channel", Value::Choice, 0, 0, {"rgb", "r", "g", "b", "a", "luminance"}},
@@ -410,6 +411,8 @@ std::string checkSuccess(const Running& run, const std::string& stdoutText) {
     int width = 1280, height = 720;
     std::string size = lastValue(args, "--size", "1280x720");
     if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2) return "exit 0 with --size '" + size + "'";
+    if (sub == "render" && has(args, "--graph"))
+        return stdoutText.rfind("TerrainHeightsPass\n", 0) == 0 ? "" : "render --graph printed no pass list";
     if (sub == "render") {
         std::string view = lastValue(args, "--view", "final");
         // A channel or a range may rightly map the whole frame to one grey (alpha is 1 everywhere).

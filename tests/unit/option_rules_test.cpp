@@ -33,7 +33,7 @@ const std::vector<Arguments> kRenderOptionValues = {
     {"--view", "albedo"}, {"--view", "radiance"}, {"--view", "overview"}, {"--view", "stencil"},
     {"--view", "normal-error"}, {"--view-exposure", "2"}, {"--channel", "r"}, {"--range", "0,1"},
     {"--overlay", "negative"}, {"--legend", "off"}, {"--stencil-view", "read-back"}, {"--water-scene", "mirrored"},
-    {"--stop-before", "ToneMapPass"}, {"--out", "x.png"}, {"--capture"}};
+    {"--stop-before", "ToneMapPass"}, {"--out", "x.png"}, {"--capture"}, {"--graph"}};
 
 ParseResult parse(const Arguments& a, const Arguments& b) {
     Arguments arguments = {"render"};
