@@ -120,6 +120,8 @@ const std::vector<Flag>& flags() {
         {"--frames", Value::Integer, 1, 3},  // more frames only cost time: the extremes test the domain
         {"--passes", Value::None},
         {"--graph", Value::None},  // render: the frame's passes on stdout, no image
+        {"--shading", Value::None},  // probe: the lighting's terms
+        {"--history", Value::None},  // probe: every pass at the pixel (a frame per pass that left it: kept small)
         {"--at", Value::Pixel},
         {"--view-exposure", Value::Number, -20, 20},
         {"--channel", Value::Choice, 0, 0, {"rgb", "r", "g", "b", "a", "luminance"}},
@@ -267,6 +269,11 @@ struct Generator {
         }
         int mutations = chance(0.6) ? 0 : integer(1, 3);
         for (int m = 0; m < mutations; ++m) mutate(args);
+        // The history renders up to a frame per pass: at the default 1280x720 that outlasts a
+        // case's time limit on llvmpipe, so such a case gets a small frame (its parse is fuzzed anyway).
+        if (std::find(args.begin(), args.end(), "--history") != args.end() &&
+            std::find(args.begin(), args.end(), "--size") == args.end())
+            args.insert(args.end(), {"--size", "48x27"});
         return args;
     }
     void mutate(Args& args) {

@@ -24,5 +24,6 @@ endif()
 set(OASIS_SANITIZE_SKIPPED_CLI_TESTS
   cli.caps_zink cli.caps_softpipe cli.softpipe_bare_gl33_tier cli.no_blits_copies_or_dsa_in_the_renderer
   # the bench's interruption and the full perturbed check take minutes there (the other commands'
-  # interruption cases and check --quick run sanitized); the browser test runs no oasis at all
-  cli.interruption_bench cli.check_perturbed cli.check_html_in_chromium)
+  # interruption cases and check --quick run sanitized); the browser test runs no oasis at all;
+  # the pixel history's test renders ~150 frames (cli.probe_shading runs the probe's new paths sanitized)
+  cli.interruption_bench cli.check_perturbed cli.check_html_in_chromium cli.probe_history)
