@@ -429,6 +429,9 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
     } else if (options.scene.force.gles30) {
         return fail("--force gles30 limits an OpenGL ES context: add --api gles");
     }
+    if (options.probeHistory && !options.stopBefore.empty())
+        return fail("--history lists every pass of the whole frame: not with --stop-before (a stopped frame's "
+                    "passes are the history's first ones)");
     if (options.graph) {
         // The pass list replaces the picture: an option that only shapes the picture would be idle.
         for (const char* idle : {"--out", "--view", "--channel", "--range", "--overlay", "--legend", "--view-exposure",
