@@ -11,6 +11,7 @@
 #include "passes/pass.h"
 #include "render/frame_graph.h"
 #include "render/frame_setup.h"
+#include "render/json_text.h"
 #include "render/renderer.h"
 
 namespace oasis {
@@ -178,25 +179,6 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
     return history;
 }
 
-namespace {
-
-std::string numberList(const std::vector<double>& values, const char* separator, const char* format) {
-    std::string text;
-    char number[32];
-    for (size_t i = 0; i < values.size(); ++i) {
-        std::snprintf(number, sizeof number, format, values[i]);
-        text += (i ? separator : "") + std::string(number);
-    }
-    return text;
-}
-
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
-    return out + "\"";
-}
-
-}  // namespace
 
 std::string historyText(const std::vector<PassAtPixel>& history) {
     std::string text = "history (every pass of the frame, in order):\n";
@@ -220,14 +202,14 @@ std::string historyJson(const std::vector<PassAtPixel>& history) {
     std::string json = "[";
     for (size_t i = 0; i < history.size(); ++i) {
         const PassAtPixel& entry = history[i];
-        json += (i ? ", " : "") + std::string("{\"pass\": ") + jsonString(entry.pass) + ", \"ran\": " +
+        json += (i ? ", " : "") + std::string("{\"pass\": ") + jsonQuoted(entry.pass) + ", \"ran\": " +
                 (entry.ran ? "true" : "false") + ", \"wrote\": " + (entry.wrote ? "true" : "false") +
-                ", \"reason\": " + jsonString(entry.reason) + ", \"targets\": {";
+                ", \"reason\": " + jsonQuoted(entry.reason) + ", \"targets\": {";
         for (size_t t = 0; t < entry.targets.size(); ++t) {
             const StoredTexel& texel = entry.targets[t];
-            json += (t ? ", " : "") + jsonString(texel.target) + ": {\"format\": " + jsonString(texel.format) +
-                    ", \"stored\": [" + numberList(texel.values, ", ", "%.9g") + "], \"decoded\": [" +
-                    numberList(decodedValues(texel), ", ", "%.9g") + "]}";
+            json += (t ? ", " : "") + jsonQuoted(texel.target) + ": {\"format\": " + jsonQuoted(texel.format) +
+                    ", \"stored\": [" + numberList(texel.values, ", ", "%.9g", true) + "], \"decoded\": [" +
+                    numberList(decodedValues(texel), ", ", "%.9g", true) + "]}";
         }
         json += "}}";
     }

@@ -8,6 +8,7 @@
 #include "common/shared_constants.glsl"
 #include "passes/pass.h"
 #include "render/float_readback.h"
+#include "render/json_text.h"
 #include "render/pixel_probe.h"
 #include "render/renderer.h"
 #include "render/texture_units.h"
@@ -133,22 +134,6 @@ ShadedSurface groupTerms(const Slots& slots, Group group, const std::string& nam
     return surface;
 }
 
-std::string numberList(const std::vector<double>& values, const char* separator) {
-    std::string text;
-    char number[32];
-    for (size_t i = 0; i < values.size(); ++i) {
-        std::snprintf(number, sizeof number, "%.6g", values[i]);
-        text += (i ? separator : "") + std::string(number);
-    }
-    return text;
-}
-
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) out += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
-    return out + "\"";
-}
-
 }  // namespace
 
 const ShadingTerm* ShadedSurface::find(const std::string& termName) const {
@@ -192,7 +177,7 @@ std::string shadingText(const std::vector<ShadedSurface>& shading) {
         text += "  " + surface.name + ": " + surface.what + "\n";
         for (const ShadingTerm& term : surface.terms) {
             char line[160];
-            std::snprintf(line, sizeof line, "    %-15s %-44s ", term.name.c_str(), numberList(term.values, " ").c_str());
+            std::snprintf(line, sizeof line, "    %-15s %-44s ", term.name.c_str(), numberList(term.values, " ", "%.6g").c_str());
             text += line + term.unit + "\n";
         }
     }
@@ -203,11 +188,11 @@ std::string shadingJson(const std::vector<ShadedSurface>& shading) {
     std::string json = "{";
     for (size_t s = 0; s < shading.size(); ++s) {
         const ShadedSurface& surface = shading[s];
-        json += (s ? ", " : "") + jsonString(surface.name) + ": {\"what\": " + jsonString(surface.what) + ", \"terms\": {";
+        json += (s ? ", " : "") + jsonQuoted(surface.name) + ": {\"what\": " + jsonQuoted(surface.what) + ", \"terms\": {";
         for (size_t t = 0; t < surface.terms.size(); ++t) {
             const ShadingTerm& term = surface.terms[t];
-            json += (t ? ", " : "") + jsonString(term.name) + ": {\"value\": [" + numberList(term.values, ", ") +
-                    "], \"unit\": " + jsonString(term.unit) + "}";
+            json += (t ? ", " : "") + jsonQuoted(term.name) + ": {\"value\": [" + numberList(term.values, ", ", "%.6g", true) +
+                    "], \"unit\": " + jsonQuoted(term.unit) + "}";
         }
         json += "}}";
     }
