@@ -170,9 +170,10 @@ std::string usage(Command command) {
                    "                            repository's reference frames, docs/update.sh check-references)\n"
                    "  --tables                  print the dimensions and the image rules (docs/check.md's tables)\n";
         case Command::Window:
-            return "usage: oasis window [scene options] [--water-scene direct|mirrored]\n"
+            return "usage: oasis window [scene options] [--water-scene direct|mirrored] [--start-paused]\n"
                    "  opens the interactive window (what `oasis` does when a display exists)\n"
-                   "  --water-scene S           what the views show at water pixels at start (key M switches)\n" + scene;
+                   "  --water-scene S           what the views show at water pixels at start (key M switches)\n"
+                   "  --start-paused            the clock stands still from the first frame (Space runs it)\n" + scene;
         case Command::Default: break;
     }
     return "oasis - a forward/deferred renderer workbench\n"
@@ -290,6 +291,12 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             std::string error;
             readOption(*row, "", options, result.notes, error);
             if (options.command == Command::Compare) options.sceneArguments.push_back(flag);
+            continue;
+        }
+        if (flag == "--start-paused") {
+            if (options.command != Command::Window && options.command != Command::Default)
+                return fail("option --start-paused belongs to the window (`oasis window`)");
+            options.startPaused = true;
             continue;
         }
         if (flag == "--graph") {

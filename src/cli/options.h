@@ -59,6 +59,7 @@ struct Options {
     bool quick = false;              // bench: the short smoke-test run
     std::optional<StencilViewPath> stencilView;
     WaterScene waterScene = WaterScene::Direct;  // render, probe, window: what views show under the water
+    bool startPaused = false;  // window: the clock stands still from the first frame (Space runs it)
     std::string stopBefore;  // render: end the frame before this pass
     std::optional<std::pair<int, int>> probeAt;  // probe: the pixel, 0,0 top left
     bool graph = false;  // render: print the frame's passes with their reads and writes, no image

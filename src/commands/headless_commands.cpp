@@ -12,6 +12,7 @@
 
 #include "commands/bench_report.h"
 #include "commands/overview_overlay.h"
+#include "commands/probe_report.h"
 #include "commands/provenance.h"
 #include "commands/session.h"
 #include "commands/traffic_report.h"
@@ -22,8 +23,6 @@
 #include "render/encoding_error.h"
 #include "render/frame_graph.h"
 #include "render/pixel_probe.h"
-#include "render/pixel_history.h"
-#include "render/shading_probe.h"
 #include "debug/error_image.h"
 #include "debug/view_legend.h"
 
@@ -442,18 +441,13 @@ int runProbeCommand(const Options& options) {
             error = measureEncodingError(renderer, session.scene, renderer.targets().layout());
         renderer.setPipeline(options.pipeline);
         // The history's frames first: its last one scissors a pass, so the probe's frame follows.
-        std::vector<PassAtPixel> history;
-        if (options.probeHistory) history = pixelHistory(renderer, session.scene, options.probeAt->first, options.probeAt->second);
+        ProbeReport probed;
+        if (options.probeHistory) probed.history = pixelHistory(renderer, session.scene, options.probeAt->first, options.probeAt->second);
         renderer.renderFrame(session.scene, options.stopBefore);
-        PixelProbe probe = probePixel(renderer, options.probeAt->first, options.probeAt->second);
-        if (error) addEncodingError(probe, *error);
-        std::vector<ShadedSurface> shading;
-        if (options.probeShading) shading = probeShading(renderer, probe);
-        std::string report = options.json ? probeJson(probe) : probeText(probe);
-        if (options.json && options.probeShading) report.insert(report.size() - 1, ", \"shading\": " + shadingJson(shading));
-        if (!options.json && options.probeShading) report += shadingText(shading);
-        if (options.json && options.probeHistory) report.insert(report.size() - 1, ", \"history\": " + historyJson(history));
-        if (!options.json && options.probeHistory) report += historyText(history);
+        probed.probe = probePixel(renderer, options.probeAt->first, options.probeAt->second);
+        if (error) addEncodingError(probed.probe, *error);
+        if (options.probeShading) probed.shading = probeShading(renderer, probed.probe);
+        std::string report = options.json ? reportJson(probed) : reportText(probed);
         std::fputs((report + (options.json ? "\n" : "")).c_str(), stdout);
         return 0;
     });

@@ -1,8 +1,9 @@
 // The window loop: input, the ImGui panel, one frame, the chosen view, present.
 //   Tab pipeline  1..7 views  0 overview  G layout  Z depth convention  R reload shaders
-//   V plants  H hide/show the panel  Space pause  Esc quit;  free camera: W/S/A/D, arrows, Q/E
+//   V plants  H hide/show the panel  O the frame-time overlay  Space pause  Esc quit;  free camera: W/S/A/D, arrows, Q/E
 //   the inspector: the values under the cursor, click to pin probes (right click: unpin the last),
-//   P prints the probe under the cursor as JSON; the view controls (channel, range, overlay, exposure)
+//   P prints the probe under the cursor as JSON, I the pins' (or the hovered pixel's) shading and
+//   history, F freezes the pins' values; the view controls (channel, range, overlay, exposure)
 //   C cycles the live comparison: split forward | deferred (drag the divider), split layout A | B,
 //   the difference of either, off
 // A switch whose programs do not build (a shader broken on disk, never built before) is undone:
@@ -80,6 +81,7 @@ int runWindowApp(const Options& options) {
         state.fallbacks = session.fallbacks();
         state.chosen.pipeline = options.pipeline;
         state.chosen.waterScene = options.waterScene;
+        state.paused = options.startPaused;
         for (size_t i = 0; i < gbufferLayouts().size(); ++i)
             if (gbufferLayouts()[i].name == options.scene.gbuffer) state.chosen.layoutIndex = i;
         for (size_t i = 0; i < depthConventions().size(); ++i)
@@ -87,6 +89,7 @@ int runWindowApp(const Options& options) {
         SceneSettings& scene = session.scene;
         state.freeCamera = bool(options.scene.camera);
         scene.camera = options.scene.camera ? *options.scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
+        if (state.paused) std::printf("oasis: paused at --time %.17g (--start-paused; Space runs the clock)\n", scene.timeSeconds);
 
         struct Input { Renderer* renderer; WindowState* state; SceneSettings* scene; } input{&renderer, &state, &scene};
         glfwSetWindowUserPointer(window.window(), &input);
@@ -130,6 +133,7 @@ int runWindowApp(const Options& options) {
             handleInspectorMouse(window.window(), state.inspector, state.comparison, state.draggingDivider);
             drawPinMarkers(window.window(), state.inspector);
             drawCompareLabels(window.window(), state.comparison);
+            drawStatusOverlay(window.window(), state);
             nameImGuiObjects(*ImGui::GetBackgroundDrawList(), "ImGui panel");
             ImGui::Render();
 

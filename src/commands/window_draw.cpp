@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "commands/overview_overlay.h"
+#include "commands/view_mask.h"
 #include "debug/error_image.h"
 #include "render/encoding_error.h"
 
@@ -15,14 +16,6 @@ namespace oasis {
 namespace window {
 
 namespace {
-
-// P: the probe under the cursor as one JSON line (scripts and the window tests read it).
-void printHoveredProbe(Inspector& inspector) {
-    if (!inspector.printHovered || !inspector.hoveredProbe) return;
-    std::printf("oasis: probe %s\n", probeJson(*inspector.hoveredProbe).c_str());
-    std::fflush(stdout);
-    inspector.printHovered = false;
-}
 
 // After a view is drawn: its values through the view controls (and the overlay where any value
 // needs it) into Display, and the probes of the pixels hovered and pinned.
@@ -45,7 +38,7 @@ void showEncodingError(Renderer& renderer, const SceneSettings& scene, const Enc
     renderer.showImage(encodingErrorPicture(values, error.width, error.height, 0.0, summary.max > 0.0 ? summary.max : 1.0));
 }
 
-void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector) {
+void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector, const WindowComparison& off) {
     inspector.statistics.reset();
     const DebugView* view = findDebugView(config.view);
     ViewControls controls = inspector.controls();
@@ -54,16 +47,18 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
     if (view && (inspector.sectionOpen || controls.showValues())) {
         std::vector<float> values = renderer.readViewValues(view->name);
         ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
-        ValueStatistics statistics = valueStatistics(values, channel);
+        // As `oasis render` counts them: the sky's undrawn texels are not values (commands/view_mask.h).
+        const DrawnPixels drawn = drawnPixels(renderer, *view);
+        ValueStatistics statistics = valueStatistics(values, channel, &drawn);
         const FrameTargets& targets = renderer.targets();
         if (controls.showValues()) {
             renderer.showImage(mapViewValues(values, targets.width(), targets.height(), channel,
-                                             rangeInUse(controls, statistics), controls.overlay));
+                                             rangeInUse(controls, statistics), controls.overlay, &drawn));
         } else if (((controls.overlay & kOverlayNan) && statistics.nan) ||
                    ((controls.overlay & kOverlayInfinity) && (statistics.positiveInfinity || statistics.negativeInfinity)) ||
                    ((controls.overlay & kOverlayNegative) && statistics.negative)) {
             Image image = renderer.readDisplay();
-            paintOverlay(image, values, channel, controls.overlay);
+            paintOverlay(image, values, channel, controls.overlay, &drawn);
             renderer.showImage(image);
         }
         inspector.statistics = statistics;
@@ -75,15 +70,7 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
         inspector.overviewCounts = overlayOverviewTiles(image, renderer, controls.overlay);
         renderer.showImage(image);
     }
-    auto inside = [&](glm::ivec2 p) { return p.x < renderer.targets().width() && p.y < renderer.targets().height(); };
-    // Probing a forward frame fills its G-buffer first: only while the panel shows the probes, or P asks.
-    inspector.hoveredProbe.reset();
-    if (inspector.hovered && inside(*inspector.hovered) && (inspector.sectionOpen || inspector.printHovered))
-        inspector.hoveredProbe = probePixel(renderer, inspector.hovered->x, inspector.hovered->y);
-    inspector.pinnedProbes.clear();
-    for (glm::ivec2 pin : inspector.pinned)
-        if (inside(pin) && inspector.sectionOpen) inspector.pinnedProbes.push_back(probePixel(renderer, pin.x, pin.y));
-    printHoveredProbe(inspector);
+    probeShownPixels(inspector, {{&renderer, ""}}, off, renderer.targets().width(), renderer.targets().height());
 }
 
 // One frame of `config` into the window's framebuffer (not yet swapped). Throws ShaderBuildError
@@ -101,7 +88,7 @@ std::string comparisonKey(const Configuration& config, const SceneSettings& scen
 }
 
 // Both sides of the live comparison, each on its own renderer (no reallocation between them),
-// timed, then shown split or as their difference; the probes read side A.
+// timed, then shown split or as their difference; each probe reads the side shown at its pixel.
 void drawComparison(RenderSession& session, const Configuration& config, const SceneSettings& scene, int width,
                     int height, WindowState& state) {
     WindowComparison& c = state.comparison;
@@ -145,19 +132,15 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
     }
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
     c.difference = compareImages(images[0], images[1]);
+    // The probes read the side that drew each pixel shown; I's frames come after the images were read.
+    std::vector<DrawnSide> drawn = {{renderers[0], "A: " + c.a.label}, {renderers[1], "B: " + c.b.label}};
+    probeInDepthWhenAsked(state.inspector, scene, drawn, c, width, height);
     Renderer& shown = *renderers[0];
     shown.showImage(showsDifference(c.mode) ? differenceHeatmap(images[0], images[1])
                                             : splitImage(images[0], images[1], int(std::lround(c.divider * float(width)))));
     Inspector& inspector = state.inspector;
     inspector.statistics.reset();
-    inspector.hoveredProbe.reset();
-    inspector.pinnedProbes.clear();
-    auto inside = [&](glm::ivec2 p) { return p.x < width && p.y < height; };
-    if (inspector.hovered && inside(*inspector.hovered) && (inspector.sectionOpen || inspector.printHovered))
-        inspector.hoveredProbe = probePixel(shown, inspector.hovered->x, inspector.hovered->y);
-    for (glm::ivec2 pin : inspector.pinned)
-        if (inside(pin) && inspector.sectionOpen) inspector.pinnedProbes.push_back(probePixel(shown, pin.x, pin.y));
-    printHoveredProbe(inspector);
+    probeShownPixels(inspector, drawn, c, width, height);
     shown.present(width, height);
 }
 
@@ -171,6 +154,7 @@ void drawConfiguration(RenderSession& session, const Configuration& config, cons
     renderer.setPipeline(config.pipeline);
     renderer.setDepthConvention(depthConventions()[config.depthIndex]);
     renderer.configure(width, height, gbufferLayouts()[config.layoutIndex]);
+    probeInDepthWhenAsked(state.inspector, scene, {{&renderer, ""}}, state.comparison, width, height);
     auto start = std::chrono::steady_clock::now();
     renderer.renderFrame(scene);
     glFinish();
@@ -182,7 +166,7 @@ void drawConfiguration(RenderSession& session, const Configuration& config, cons
         showEncodingError(renderer, scene, *errorView, state);
     else
         renderer.renderView(config.view);
-    inspectFrame(renderer, config, state.inspector);
+    inspectFrame(renderer, config, state.inspector, state.comparison);
     renderer.present(width, height);
 }
 

@@ -1,4 +1,4 @@
-// The window's input: the keys (Tab, 1..7, 0, G, Z, R, V, H, P, M, C, F9, Space, Esc), the mouse
+// The window's input: the keys (Tab, 1..7, 0, G, Z, R, V, H, O, P, I, F, M, C, F9, Space, Esc), the mouse
 // over the frame (hover to probe, click to pin, drag the split's divider) and the free camera.
 #include "commands/window_state.h"
 
@@ -37,7 +37,15 @@ void handleKeys(GLFWwindow* window, int key, int action, Renderer& renderer, Win
     if (key == GLFW_KEY_Z) chosen.depthIndex = (chosen.depthIndex + 1) % depthConventions().size();
     if (key == GLFW_KEY_V) scene.vegetation.enabled = !scene.vegetation.enabled;
     if (key == GLFW_KEY_H) state.panelShown = !state.panelShown;
+    if (key == GLFW_KEY_O) state.overlayShown = !state.overlayShown;
     if (key == GLFW_KEY_P) state.inspector.printHovered = true;
+    if (key == GLFW_KEY_I) state.inspector.deepRequested = true;
+    if (key == GLFW_KEY_F) {  // the values printed when frozen are the ones printed when thawed
+        Inspector& inspector = state.inspector;
+        inspector.frozen = !inspector.frozen;
+        inspector.frozenAt = scene.timeSeconds;
+        printPins(inspector, inspector.frozen ? "pin frozen" : "pin thawed, it held");
+    }
     if (key == GLFW_KEY_M)
         chosen.waterScene = chosen.waterScene == WaterScene::Direct ? WaterScene::Mirrored : WaterScene::Direct;
     if (key == GLFW_KEY_C) state.comparison.mode = CompareMode((int(state.comparison.mode) + 1) % kCompareModeCount);

@@ -3,8 +3,10 @@
 #include "commands/window_state.h"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the panel's measures (notePanelGeometry)
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 
 #include "cli/option_table.h"
@@ -14,6 +16,8 @@ namespace oasis {
 namespace window {
 
 namespace {
+
+constexpr float kPanelWidth = 340.0f;  // at first; the panel is resizable
 
 // A slider whose value rebuilds scene content shows its drag here and applies it on release.
 float& pendingValue(const char* flag, float value) {
@@ -74,7 +78,7 @@ void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
     if (ImGui::Combo("light path", &choice, choices, 4))
         scene.lights.path = choice == 0 ? std::nullopt : std::optional<LightsPath>(LightsPath(choice - 1));
     ImGui::TextWrapped("active: %s", renderer.lightsPathReason().c_str());
-    ImGui::Text("%d lights drawn; ubo holds %d x %d", renderer.lightsDrawn(), renderer.uboLights().blocks,
+    ImGui::TextWrapped("%d lights drawn; ubo holds %d x %d", renderer.lightsDrawn(), renderer.uboLights().blocks,
                 renderer.uboLights().capacity);
     if (renderer.lightsDropped() > 0)
         ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.2f, 1.0f), "WARNING: %d lights dropped", renderer.lightsDropped());
@@ -110,13 +114,36 @@ void drawWaterSceneControl(const Renderer& renderer, Configuration& chosen) {
     if (!shown.reason.empty()) ImGui::TextWrapped("(%s)", shown.reason.c_str());
 }
 
+// Prints the panel's rectangle and how far its widest line reaches against what it shows, when
+// they change: a line wider than the panel is cut off (the window tests read these lines).
+void notePanelGeometry(WindowState& state) {
+    const ImGuiWindow* panel = ImGui::GetCurrentWindow();
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    char line[256];
+    std::snprintf(line, sizeof(line), "panel %.0fx%.0f at %.0f,%.0f in a %.0fx%.0f window%s; widest line %.0f px of %.0f",
+                  panel->Size.x, panel->Size.y, panel->Pos.x, panel->Pos.y, display.x, display.y,
+                  panel->Collapsed ? " (collapsed)" : "", panel->DC.CursorMaxPos.x - panel->Pos.x,
+                  panel->InnerClipRect.Max.x - panel->Pos.x);
+    if (state.panelGeometry == line) return;
+    state.panelGeometry = line;
+    std::printf("oasis: %s\n", line);
+    std::fflush(stdout);
+}
+
 }  // namespace
 
 void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-    // Wide enough for the probe's lines, as tall as the window allows (the sections collapse).
-    ImGui::SetNextWindowSize(ImVec2(480.0f, std::max(200.0f, ImGui::GetIO().DisplaySize.y - 20.0f)), ImGuiCond_FirstUseEver);
-    ImGui::Begin("oasis");
+    // Narrow enough to leave most of the frame (and a split's side A) in view; its lines wrap.
+    // Never larger than the window: a smaller window shrinks the panel, which then scrolls.
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, display.y - 20.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(160.0f, 60.0f), ImVec2(std::max(160.0f, display.x - 20.0f),
+                                                                       std::max(60.0f, display.y - 20.0f)));
+    ImGui::Begin("oasis (H hides)");
+    // Widgets leave room for their labels (up to about 20 characters) on the right: a fixed share
+    // of the width cut the longer ones off in a narrow panel.
+    ImGui::PushItemWidth(-ImGui::CalcTextSize("divider (or drag it)").x - 4.0f);
     // The reload result first: a shader error must be seen without scrolling a small window.
     if (ImGui::Button("reload shaders (R)")) reloadShaders(renderer, state);
     ImGui::SameLine();
@@ -131,7 +158,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::RadioButton("deferred", &pipeline, 1)) choosePipeline(state, PipelineKind::Deferred);
     ImGui::SameLine();
     ImGui::TextDisabled("(Tab)");
-    ImGui::Text("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
+    ImGui::TextWrapped("frame %.2f ms (avg %.2f), wall time around glFinish", state.frameMs, state.smoothedMs);
     drawComparePanel(state);
 
     const auto& layouts = gbufferLayouts();
@@ -157,7 +184,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (chosen.view != "final" && chosen.pipeline == PipelineKind::Forward)
         ImGui::TextWrapped("(forward draws no G-buffer; G-buffer views come from the deferred geometry passes)");
     drawWaterSceneControl(renderer, chosen);
-    drawInspectorPanel(state);
+    drawInspectorPanel(state, scene.timeSeconds);
 
     float hour = float(scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds));
     if (ImGui::SliderFloat("time of day (h)", &hour, 0.0f, 24.0f, "%.2f")) scene.hour = hour;
@@ -178,7 +205,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     if (ImGui::CollapsingHeader("shadows")) {
         drawOptionWidgets("shadows", scene);
         const FrameSetup& frame = renderer.lastFrame();
-        ImGui::Text("%s", !scene.shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
+        ImGui::TextWrapped("%s", !scene.shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
     }
     if (ImGui::CollapsingHeader("water")) {
         drawOptionWidgets("water", scene);
@@ -200,8 +227,13 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
                 renderer.geometry().terrainTriangles());
     if (!state.fallbacks.empty() &&
         ImGui::CollapsingHeader("fallbacks (this driver or --force)", ImGuiTreeNodeFlags_DefaultOpen)) {
-        for (const std::string& line : state.fallbacks) ImGui::BulletText("%s", line.c_str());
+        for (const std::string& line : state.fallbacks) {
+            ImGui::Bullet();
+            ImGui::TextWrapped("%s", line.c_str());
+        }
     }
+    notePanelGeometry(state);
+    ImGui::PopItemWidth();
     ImGui::End();
 }
 

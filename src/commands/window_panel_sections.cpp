@@ -29,6 +29,31 @@ void drawPinMarkers(GLFWwindow* window, const Inspector& inspector) {
     }
 }
 
+// The small overlay that stays when the panel hides (H): the pipeline or the comparison's sides,
+// the frame time, and what holds still (the clock, the pins).
+void drawStatusOverlay(GLFWwindow* window, const WindowState& state) {
+    if (!state.overlayShown) return;  // O: the frame alone (screenshots compared pixel for pixel)
+    int windowWidth = 0, windowHeight = 0;
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    const Configuration& shown = state.lastDrawn ? *state.lastDrawn : state.chosen;
+    const WindowComparison& c = state.comparison;
+    char line[256];
+    if (c.mode == CompareMode::Off)
+        std::snprintf(line, sizeof(line), "%s %.2f ms (avg %.2f)", pipelineName(shown.pipeline), state.frameMs,
+                      state.smoothedMs);
+    else
+        std::snprintf(line, sizeof(line), "A %.2f ms, B %.2f ms (medians)", c.msA.median(), c.msB.median());
+    std::string text = line;
+    if (state.paused) text += ", paused";
+    if (state.inspector.frozen && !state.inspector.pinned.empty()) text += ", pins frozen";
+    if (!state.panelShown) text += "  (H: panel, O: this)";
+    ImDrawList* draw = ImGui::GetForegroundDrawList();
+    ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    ImVec2 at(std::max(4.0f, float(windowWidth) - size.x - 8.0f), std::max(4.0f, float(windowHeight) - size.y - 8.0f));
+    draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + size.x + 4, at.y + size.y + 3), IM_COL32(0, 0, 0, 200));
+    draw->AddText(at, IM_COL32(255, 255, 255, 255), text.c_str());
+}
+
 // The sides' names over the frame: at the top of each half of a split, or over the difference.
 void drawCompareLabels(GLFWwindow* window, const WindowComparison& c) {
     if (c.mode == CompareMode::Off) return;
@@ -70,10 +95,12 @@ void drawComparePanel(WindowState& state) {
     if (!showsDifference(c.mode)) ImGui::SliderFloat("divider (or drag it)", &c.divider, 0.0f, 1.0f, "%.2f");
     ImGui::Checkbox("per-pass times", &c.passTimes);
     if (c.passTimes && c.clock) ImGui::TextWrapped("pass clock: %s", c.clock->describe().c_str());
-    ImGui::Text("A %-24s median %7.2f ms", c.a.label.c_str(), c.msA.median());
-    ImGui::Text("B %-24s median %7.2f ms", c.b.label.c_str(), c.msB.median());
-    ImGui::TextDisabled("medians of the last %zu frames each; reset when a setting changes", c.msA.count());
-    ImGui::Text("displayed: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)", c.difference.psnrDb,
+    ImGui::TextWrapped("A %s: median %.2f ms", c.a.label.c_str(), c.msA.median());
+    ImGui::TextWrapped("B %s: median %.2f ms", c.b.label.c_str(), c.msB.median());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("medians of the last %zu frames each; reset when a setting changes", c.msA.count());
+    ImGui::PopStyleColor();
+    ImGui::TextWrapped("displayed: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
     if (showsDifference(c.mode)) {
         // The heat map's scale: black 0, red, yellow, white at 16 levels of 255 or more.
@@ -138,10 +165,23 @@ void drawOverlayChoices(Inspector& inspector) {
     ImGui::Checkbox("negative (overlay)", &inspector.overlayNegative);
 }
 
+// The shading and history I computed for pin `pin` (its side's), or under the cursor.
+void drawDeepProbes(const Inspector& inspector, size_t pin, const std::string& side) {
+    for (const Inspector::Deep& deep : inspector.deep) {
+        if (deep.pin != pin || (deep.side != side && pin != Inspector::kHovered)) continue;
+        std::string title = "shading and history at --time " + std::to_string(deep.timeSeconds).substr(0, 8) +
+                            (deep.side.empty() ? "" : ", " + deep.side);
+        if (!ImGui::TreeNode(title.c_str())) continue;
+        if (deep.report.shading) ImGui::TextWrapped("%s", shadingText(*deep.report.shading).c_str());
+        if (deep.report.history) ImGui::TextWrapped("%s", historyText(*deep.report.history).c_str());
+        ImGui::TreePop();
+    }
+}
+
 }  // namespace
 
 // The inspector's section of the panel: view controls, value counts, the probes.
-void drawInspectorPanel(WindowState& state) {
+void drawInspectorPanel(WindowState& state, double clockSeconds) {
     Inspector& inspector = state.inspector;
     inspector.sectionOpen = ImGui::CollapsingHeader("inspector (hover, click to pin, P prints)", ImGuiTreeNodeFlags_DefaultOpen);
     if (!inspector.sectionOpen) return;
@@ -166,28 +206,52 @@ void drawInspectorPanel(WindowState& state) {
         if (view->remapDefine == "VIEW_HDR") ImGui::SliderFloat("exposure (stops)", &inspector.exposureStops, -20.0f, 20.0f);
         if (inspector.statistics) {
             const ValueStatistics& s = *inspector.statistics;
-            ImGui::TextWrapped("values: NaN %ld, +Inf %ld, -Inf %ld, negative %ld of %ld; finite %.4g .. %.4g", s.nan,
-                               s.positiveInfinity, s.negativeInfinity, s.negative, s.values, s.min, s.max);
+            ImGui::TextWrapped("values: NaN %ld, +Inf %ld, -Inf %ld, negative %ld of %ld; finite %.4g .. %.4g%s", s.nan,
+                               s.positiveInfinity, s.negativeInfinity, s.negative, s.values, s.min, s.max,
+                               s.undrawn ? ("; " + std::to_string(s.undrawn) + " px not drawn (the sky: left out)").c_str() : "");
         }
     } else if (state.chosen.view == kOverviewName) {
         drawOverlayChoices(inspector);
         for (const std::string& line : inspector.overviewCounts) ImGui::TextWrapped("%s", line.c_str());
     }
-    if (inspector.hoveredProbe) {
-        if (ImGui::TreeNodeEx("under the cursor", ImGuiTreeNodeFlags_DefaultOpen)) {
-            ImGui::TextUnformatted(probeText(*inspector.hoveredProbe).c_str());
+    for (size_t i = 0; i < inspector.hoveredProbes.size(); ++i) {
+        const SideProbe& hovered = inspector.hoveredProbes[i];
+        std::string title = "under the cursor" + (hovered.side.empty() ? "" : ", " + hovered.side) + "###hovered" +
+                            std::to_string(i);
+        if (ImGui::TreeNodeEx(title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+            ImGui::TextWrapped("%s", probeText(hovered.probe).c_str());
             ImGui::TreePop();
         }
-    } else {
-        ImGui::TextDisabled("move the cursor over the frame to probe it");
     }
+    if (inspector.hoveredProbes.empty()) ImGui::TextDisabled("move the cursor over the frame to probe it");
+    if (!inspector.pinned.empty()) {
+        if (ImGui::Checkbox("freeze the pins' values (F)", &inspector.frozen) && inspector.frozen)
+            inspector.frozenAt = clockSeconds;
+        if (inspector.frozen) {
+            ImGui::SameLine();
+            ImGui::TextDisabled("at --time %.2f", inspector.frozenAt);
+        }
+    }
+    if (ImGui::Button(inspector.pinned.empty() ? "shading and history under the cursor (I)"
+                                               : "shading and history of the pins (I)"))
+        inspector.deepRequested = true;
     for (size_t i = 0; i < inspector.pinnedProbes.size(); ++i) {
-        std::string label = "#" + std::to_string(i + 1) + " " + probeSummary(inspector.pinnedProbes[i]);
-        if (ImGui::TreeNode(label.c_str())) {
-            ImGui::TextUnformatted(probeText(inspector.pinnedProbes[i]).c_str());
-            ImGui::TreePop();
+        for (const SideProbe& pin : inspector.pinnedProbes[i]) {
+            // A short label (tree nodes do not wrap), the summary wrapped under it.
+            std::string label = "#" + std::to_string(i + 1) + (pin.side.empty() ? "" : " " + pin.side) + "###pin" +
+                                std::to_string(i) + pin.side;
+            bool open = ImGui::TreeNode(label.c_str());
+            ImGui::Indent();
+            ImGui::TextWrapped("%s", probeSummary(pin.probe).c_str());
+            ImGui::Unindent();
+            if (open) {
+                ImGui::TextWrapped("%s", probeText(pin.probe).c_str());
+                drawDeepProbes(inspector, i, pin.side);
+                ImGui::TreePop();
+            }
         }
     }
+    if (inspector.pinned.empty()) drawDeepProbes(inspector, Inspector::kHovered, "");
     if (!inspector.pinned.empty() && ImGui::Button("unpin all")) inspector.pinned.clear();
 }
 

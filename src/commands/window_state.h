@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "commands/probe_report.h"
 #include "commands/session.h"
 #include "commands/window_compare.h"
 #include "debug/debug_views.h"
@@ -45,12 +46,32 @@ struct Configuration {
     }
 };
 
+// A probe of one frame: in a comparison, of the side shown at the pixel ("B: deferred, compact"; both
+// sides in a difference); empty for the window's single frame.
+struct SideProbe {
+    std::string side;
+    PixelProbe probe;
+};
+
 // The inspector: the probe under the cursor and the pinned ones, and the view controls.
 struct Inspector {
     std::optional<glm::ivec2> hovered;   // the framebuffer pixel under the cursor, 0,0 top left
-    std::optional<PixelProbe> hoveredProbe;
+    std::vector<SideProbe> hoveredProbes;
     std::vector<glm::ivec2> pinned;      // numbered on screen in this order
-    std::vector<PixelProbe> pinnedProbes;
+    std::vector<std::vector<SideProbe>> pinnedProbes;  // one entry per pin, each of its sides
+    bool frozen = false;                 // F: the pins keep the values they had (new pins are read once)
+    double frozenAt = 0.0;               // the clock when they were frozen
+    // I: each pin's shading and history (the hovered pixel's when nothing is pinned), computed once
+    // for the frame of that moment, as `oasis probe --shading --history` reports them.
+    bool deepRequested = false;
+    struct Deep {
+        size_t pin;        // its number - 1; the hovered pixel's when no pin was made
+        std::string side;
+        double timeSeconds;
+        ProbeReport report;
+    };
+    std::vector<Deep> deep;
+    static constexpr size_t kHovered = size_t(-1);  // Deep::pin of the hovered pixel's
     bool printHovered = false;           // P: print the next hovered probe
     int channelChoice = 0;               // 0: the view's own colours; else 1 + ViewChannel
     bool fitRange = true;
@@ -87,6 +108,8 @@ struct WindowState {
     bool paused = false;
     bool freeCamera = false;
     bool panelShown = true;
+    bool overlayShown = true;   // the pipeline and frame time in the corner (O), whether the panel shows or not
+    std::string panelGeometry;  // the panel's rectangle and widest line, printed when it changes
     double frameMs = 0.0, smoothedMs = 0.0;
     std::string message;  // last reload result or error, shown in the panel
     bool messageIsError = false;
@@ -124,9 +147,31 @@ void moveFreeCamera(GLFWwindow* window, CameraPose& pose, float seconds);
 // window_panel.cpp and window_panel_sections.cpp: the ImGui panel and what is drawn over the frame.
 void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state);
 void drawComparePanel(WindowState& state);
-void drawInspectorPanel(WindowState& state);
+void drawInspectorPanel(WindowState& state, double clockSeconds);  // the clock: when pins are frozen
 void drawPinMarkers(GLFWwindow* window, const Inspector& inspector);
 void drawCompareLabels(GLFWwindow* window, const WindowComparison& c);
+void drawStatusOverlay(GLFWwindow* window, const WindowState& state);
+
+// A frame the window drew this loop: its renderer, and its side's name in a comparison ("" alone).
+struct DrawnSide {
+    Renderer* renderer;
+    std::string name;
+};
+
+// window_probes.cpp: the inspector's probes of what is shown, read from the side that drew each pixel.
+std::vector<DrawnSide> sidesShownAt(glm::ivec2 pixel, const std::vector<DrawnSide>& sides, const WindowComparison& c,
+                                    int width);
+// I: the pins' (or the hovered pixel's) shading and history, printed as `probe --shading --history
+// --json` prints them ("oasis: probe in depth #N {...}"). Renders frames: call it before the
+// frame that is shown is drawn (or read what was shown first).
+void probeInDepthWhenAsked(Inspector& inspector, const SceneSettings& scene, const std::vector<DrawnSide>& sides,
+                           const WindowComparison& c, int width, int height);
+// The hovered pixel's and the pins' probes (frozen pins keep theirs); P prints the hovered one.
+void probeShownPixels(Inspector& inspector, const std::vector<DrawnSide>& sides, const WindowComparison& c, int width,
+                      int height);
+
+// Each pinned probe as one JSON line after "oasis: WHAT #N " (F prints them when it freezes and thaws).
+void printPins(const Inspector& inspector, const std::string& what);
 
 // window_draw.cpp: one frame of the chosen configuration, single or compared, and its inspection.
 bool drawChosen(RenderSession& session, SceneSettings& scene, WindowState& state, int width, int height);

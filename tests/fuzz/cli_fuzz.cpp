@@ -129,6 +129,7 @@ const std::vector<Flag>& flags() {
         {"--overlay", Value::Choice, 0, 0, {"nan", "inf", "negative", "nan,inf", "nan,inf,negative", "none"}},
         {"--legend", Value::Choice, 0, 0, {"on", "off"}},
         {"--water-scene", Value::Choice, 0, 0, {"direct", "mirrored"}},
+        {"--start-paused", Value::None},  // the window's: refused (exit 2) by the headless commands
         // compare's set-ups: the fast llvmpipe ones (zink and softpipe cost seconds a case).
         {"--driver", Value::Choice, 0, 0, {"llvmpipe", "no-ssbo", "gl33", "no-dsa"}},
         {"--reference", Value::OutFile},  // mostly missing files: the parse and read errors

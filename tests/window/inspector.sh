@@ -26,6 +26,7 @@ if [[ " ${*:3} " == *" --api gles "* ]]; then
     step "$(grep -m1 '^oasis: window on' "$OUT_LOG")"
 fi
 toggle_panel  # H: the frame alone, and the cursor never over the panel
+press o       # O: without the frame-time overlay in the corner either
 from=$(mark "$OUT_LOG")
 press space
 wait_for "$OUT_LOG" "$from" '^oasis: paused at --time ' 30

@@ -1,0 +1,32 @@
+// The probe's report: the pixel's values, its shading and its history, in one text or JSON object.
+#include "commands/probe_report.h"
+
+#include "render/renderer.h"
+
+namespace oasis {
+
+ProbeReport probeInDepth(Renderer& renderer, const SceneSettings& scene, int x, int y) {
+    ProbeReport report;
+    // The history's frames first: its last one scissors a pass, so the probe's frame follows.
+    report.history = pixelHistory(renderer, scene, x, y);
+    renderer.renderFrame(scene);
+    report.probe = probePixel(renderer, x, y);
+    report.shading = probeShading(renderer, report.probe);
+    return report;
+}
+
+std::string reportJson(const ProbeReport& report) {
+    std::string json = probeJson(report.probe);  // one object: the parts go in before its closing brace
+    if (report.shading) json.insert(json.size() - 1, ", \"shading\": " + shadingJson(*report.shading));
+    if (report.history) json.insert(json.size() - 1, ", \"history\": " + historyJson(*report.history));
+    return json;
+}
+
+std::string reportText(const ProbeReport& report) {
+    std::string text = probeText(report.probe);
+    if (report.shading) text += shadingText(*report.shading);
+    if (report.history) text += historyText(*report.history);
+    return text;
+}
+
+}  // namespace oasis
