@@ -11,7 +11,7 @@ namespace oasis {
 bool LightingPass::testsSurfaces(const FrameSetup& frame) const {
     // Mirrored, the depth comes from the copy; a layout that stores position reads no depth; the
     // compact layout's in-place read may also test where the context allows it (read-only depth).
-    bool samplesTheTarget = mirroring_ == Mirroring::Direct && frame.depthReadInPlace && frame.positionFromDepth;
+    bool samplesTheTarget = mirroring_ == Mirroring::Direct && frame.work.depthReadInPlace && frame.positionFromDepth;
     return !samplesTheTarget || frame.readOnlyDepth;
 }
 
@@ -22,7 +22,7 @@ static bool addsTiledLights(const FrameSetup& frame) {
 }
 
 std::vector<Access> LightingPass::accesses(const FrameSetup& frame) const {
-    bool inPlace = mirroring_ == Mirroring::Direct && frame.depthReadInPlace;
+    bool inPlace = mirroring_ == Mirroring::Direct && frame.work.depthReadInPlace;
     std::vector<Access> used = gbufferSamples(frame, inPlace ? DepthRead::FromTarget : DepthRead::FromCopy);
     for (Target target : surfaceOutputTargets(frame, SurfaceOutput::Forward, mirroring_))
         used.push_back({target, Use::Write});
@@ -47,7 +47,7 @@ void LightingPass::execute(PassContext& context) {
     } else {
         glDisable(GL_DEPTH_TEST);
     }
-    bool inPlace = !mirrored && context.frame.depthReadInPlace;
+    bool inPlace = !mirrored && context.frame.work.depthReadInPlace;
     bindGBufferInputs(context.targets, inPlace ? DepthRead::FromTarget : DepthRead::FromCopy);
     beginMirroredDraw(mirroring_);
     if (mirrored) beginWaterBoundedDraw(context);

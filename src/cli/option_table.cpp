@@ -82,9 +82,18 @@ OptionWidget slider(const char* section, const char* label, float low, float hig
 OptionWidget radios(const char* section, const char* label) { return widget(OptionWidgetKind::Radios, section, label); }
 
 // The scene arguments' writer for a flag (cli/scene_arguments.h): one text form per option.
-std::string written(const SceneOptions& scene, const char* flag) {
-    const SceneArgument* argument = findSceneArgument(flag);
-    return argument ? argument->value(scene, flag) : std::string();
+// --camera's text: the position exactly (double), the angles as the floats they are kept in.
+std::string cameraText(const SceneOptions& s) {
+    if (!s.camera) return std::string();
+    const CameraPose& c = *s.camera;
+    return exactNumber(c.position.x) + "," + exactNumber(c.position.y) + "," + exactNumber(c.position.z) + "," +
+           exactNumber(c.yawDegrees, true) + "," + exactNumber(c.pitchDegrees, true);
+}
+
+const char* mirroredPlantCullName(MirroredPlantCull mode) {
+    for (const MirroredPlantCullMode& row : kMirroredPlantCullModes)
+        if (row.mode == mode) return row.name;
+    return "auto";
 }
 
 // On/off for --help's synopsis: "on|off", "trimmed|whole".
@@ -97,12 +106,12 @@ std::vector<OptionRow> makeRows() {
                   o.sizeGiven = true;
                   return parseSize(v, o.scene.width, o.scene.height, &error);
               },
-              [](const SceneOptions& s) { return written(s, "--size"); }),
+              [](const SceneOptions& s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }),
         other("--time", "SECONDS", "animation time: camera flight and time of day (default 0 = 10:00)",
               [](const std::string& v, Options& o, Notes&, std::string& error) {
                   return parseInDomain(v, inputDomain("--time"), o.scene.timeSeconds, error);
               },
-              [](const SceneOptions& s) { return written(s, "--time"); }),
+              [](const SceneOptions& s) { return exactNumber(s.timeSeconds); }),
         other("--hour", "H", "override the hour of day (6 sunrise, 18 sunset)",
               [](const std::string& v, Options& o, Notes&, std::string& error) {
                   double hour = 0.0;
@@ -110,7 +119,7 @@ std::vector<OptionRow> makeRows() {
                   o.scene.hour = hour;
                   return true;
               },
-              [](const SceneOptions& s) { return written(s, "--hour"); }),
+              [](const SceneOptions& s) { return s.hour ? exactNumber(*s.hour) : std::string(); }),
         other("--camera", "X,Y,Z,YAW,PITCH", "fixed camera instead of the flight (degrees; yaw 0 = -Z, 90 = +X)",
               [](const std::string& v, Options& o, Notes& notes, std::string& error) {
                   CameraPose pose;
@@ -120,7 +129,7 @@ std::vector<OptionRow> makeRows() {
                   o.scene.camera = pose;
                   return true;
               },
-              [](const SceneOptions& s) { return written(s, "--camera"); }),
+              [](const SceneOptions& s) { return cameraText(s); }),
         withBench(withWidget(twoWay("--reflections", "on", "off",
                                     "the mirrored scene in the water (default on; off reflects the sky alone)",
                                     [](SceneOptions& s) -> bool& { return s.water.reflections; }),
@@ -146,7 +155,7 @@ std::vector<OptionRow> makeRows() {
                                          o.scene.work.mirroredPlantCull = mode->mode;
                                          return true;
                                      },
-                                     [](const SceneOptions& s) { return written(s, "--reflection-plant-cull"); }),
+                                     [](const SceneOptions& s) { return std::string(mirroredPlantCullName(s.work.mirroredPlantCull)); }),
                                [] {
                                    std::vector<std::string> names;
                                    for (const MirroredPlantCullMode& mode : kMirroredPlantCullModes) names.push_back(mode.name);
@@ -169,7 +178,7 @@ std::vector<OptionRow> makeRows() {
                                          o.scene.water.reflectionDivisor = resolution->divisor;
                                          return true;
                                      },
-                                     [](const SceneOptions& s) { return written(s, "--reflection-resolution"); }),
+                                     [](const SceneOptions& s) { return std::string(reflectionResolutionName(s.water.reflectionDivisor)); }),
                                [] {
                                    std::vector<std::string> names;
                                    for (const ReflectionResolution& r : kReflectionResolutions) names.push_back(r.name);
@@ -195,7 +204,7 @@ std::vector<OptionRow> makeRows() {
                                          o.scene.shadows.quality = v;
                                          return true;
                                      },
-                                     [](const SceneOptions& s) { return written(s, "--shadow-quality"); }),
+                                     [](const SceneOptions& s) { return s.shadows.quality; }),
                                [] {
                                    std::vector<std::string> names;
                                    for (const ShadowQuality& quality : shadowQualities()) names.push_back(quality.name);
@@ -247,7 +256,7 @@ std::vector<OptionRow> makeRows() {
                    {"in-place", "copy"}, 0}),
         other("--no-compute", "", "interpret the plant atlas on the CPU, not in a compute shader",
               [](const std::string&, Options& o, Notes&, std::string&) { return o.scene.noCompute = true; },
-              [](const SceneOptions& s) { return written(s, "--no-compute"); }),
+              [](const SceneOptions& s) { return std::string(s.noCompute ? "on" : "off"); }),
         other("--gl-debug", "",
               "synchronous GL debug output: stop at the first GL error, naming its\n"
               "debug group path; count performance warnings, printed at the end",
@@ -258,7 +267,7 @@ std::vector<OptionRow> makeRows() {
               [](const std::string& v, Options& o, Notes&, std::string& error) {
                   return parseIntInDomain(v, inputDomain("--lights"), o.scene.lights, error);
               },
-              [](const SceneOptions& s) { return written(s, "--lights"); }),
+              [](const SceneOptions& s) { return std::to_string(s.lights); }),
         other("--lights-path", "PATH",
               "how shaders read the lights: ssbo, ssbo-count or ubo (default: ssbo\n"
               "where the context has SSBOs, else ubo)",
@@ -271,7 +280,7 @@ std::vector<OptionRow> makeRows() {
                   o.scene.lightsPath = path;
                   return true;
               },
-              [](const SceneOptions& s) { return written(s, "--lights-path"); }),
+              [](const SceneOptions& s) { return s.lightsPath ? std::string(lightsPathName(*s.lightsPath)) : std::string(); }),
         other("--light-method", "METHOD",
               "how the deferred pipeline adds the lights: volumes (stencil volumes,\n"
               "the default) or tiled (per-tile light lists from a compute pass; needs\n"
@@ -285,7 +294,7 @@ std::vector<OptionRow> makeRows() {
                   o.scene.lightMethod = method;
                   return true;
               },
-              [](const SceneOptions& s) { return written(s, "--light-method"); }),
+              [](const SceneOptions& s) { return s.lightMethod ? std::string(lightMethodName(*s.lightMethod)) : std::string(); }),
         other("--force", "LIST",
               "switch capabilities off even where the driver has them, to reproduce\n"
               "another driver: no-ssbo,no-compute,no-stencil-texturing,no-dsa,\n"
@@ -301,7 +310,7 @@ std::vector<OptionRow> makeRows() {
                   error = "--force: " + error;
                   return false;
               },
-              [](const SceneOptions& s) { return written(s, "--force"); }),
+              [](const SceneOptions& s) { return s.force.list(); }),
         other("--api", "API",
               "gl (desktop OpenGL core, the default) or gles (an OpenGL ES 3.x context:\n"
               "ES 3.2 on Mesa; every command, the window included)",
@@ -310,7 +319,7 @@ std::vector<OptionRow> makeRows() {
                   error = "--api expects gl or gles, got '" + v + "'";
                   return false;
               },
-              [](const SceneOptions& s) { return written(s, "--api"); }),
+              [](const SceneOptions& s) { return std::string(gl::apiName(s.api)); }),
         other("--depth", "CONVENTION",
               "depth buffer: standard (24-bit, near 0 far 1) or reversed-z (32-bit float,\n"
               "near 1 far 0; needs GL 4.5 or GL_ARB_clip_control) (default standard;\n"
@@ -323,7 +332,7 @@ std::vector<OptionRow> makeRows() {
                   o.scene.depth = v;
                   return true;
               },
-              [](const SceneOptions& s) { return written(s, "--depth"); }),
+              [](const SceneOptions& s) { return s.depth; }),
         other("--gbuffer", "LAYOUT", "G-buffer layout: ",
               [](const std::string& v, Options& o, Notes&, std::string& error) {
                   if (!findGBufferLayout(v)) {
@@ -333,12 +342,16 @@ std::vector<OptionRow> makeRows() {
                   o.scene.gbuffer = v;
                   return true;
               },
-              [](const SceneOptions& s) { return written(s, "--gbuffer"); }),
+              [](const SceneOptions& s) { return s.gbuffer; }),
     };
     for (OptionRow& row : rows) {
         if (row.flag == std::string("--gbuffer"))
             row.helpTail = [] { return gbufferLayoutNames() + " (default " + kDefaultGBufferLayoutName + ")"; };
         if (row.flag == std::string("--no-compute") || row.flag == std::string("--gl-debug")) row.bare = true;
+        // How this driver drew the picture, not what it shows; --gl-debug changes neither.
+        for (const char* driver : {"--api", "--force", "--no-compute", "--lights-path", "--light-method"})
+            if (row.flag == std::string(driver)) row.provenance = SceneArgumentKind::Driver;
+        if (row.flag == std::string("--gl-debug")) row.provenance = SceneArgumentKind::None;
     }
     return rows;
 }

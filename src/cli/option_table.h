@@ -1,5 +1,5 @@
 // The scene options, one row each: flag, how its value is read and written back, --help's text,
-// the window panel's widget and the bench's levels. The parser, --help (and docs/command-line.md
+// the window panel's widget, the bench's levels and the provenance's kind. The parser, --help (and docs/command-line.md
 // through it), the panel and the bench knobs are made from these rows; a new option is a row.
 // Domains stay in cli/input_domains.h, idle combinations in cli/option_rules.h.
 #pragma once
@@ -38,6 +38,14 @@ struct OptionBenchKnob {
     int defaultLevel = 0;
 };
 
+// Where a row's value goes in a picture's provenance (cli/scene_arguments.h): what the frame
+// shows, or which of this driver's paths drew it.
+enum class SceneArgumentKind {
+    Picture,  // what the frame shows (--size, --hour, --camera, ...): compare --reference adopts or checks them
+    Driver,   // which of this driver's paths drew it (--api, --force, ...): a driver comparison varies them
+    None,     // not written (--gl-debug)
+};
+
 struct OptionRow {
     const char* flag = nullptr;
     const char* synopsis = "";  // the value's form in --help ("WxH"; a switch's is its words); "" given bare
@@ -55,6 +63,7 @@ struct OptionRow {
     std::string (*write)(const SceneOptions& scene) = nullptr;  // the value as it would be given
     std::vector<std::string> (*choices)() = nullptr;            // the words a Radios widget offers
     bool bare = false;  // given without a value (--no-compute): `read` gets ""
+    SceneArgumentKind provenance = SceneArgumentKind::Picture;
 
     OptionWidget widget;
     OptionBenchKnob bench;

@@ -1,6 +1,6 @@
-// The scene options' table of text forms (cli/scene_arguments.h), in the order a picture's
-// provenance lists them; each option's parsing is its row in cli/option_table.cpp
-// (tests/unit/scene_arguments_test.cpp: every row written is parsed back to the same options).
+// The scene options written back as a command line, in the option rows' order (cli/option_table.h:
+// each row's writer and provenance kind; tests/unit/scene_arguments_test.cpp: every row written
+// is parsed back to the same options).
 #include "cli/scene_arguments.h"
 
 #include <cctype>
@@ -12,78 +12,17 @@
 #include "cli/options.h"
 
 namespace oasis {
-namespace {
-
-// A two-way switch's word, from its row (cli/option_table.h).
-std::string switchValue(const SceneOptions& scene, const char* flag) { return optionValue(*findOption(flag), scene); }
-
-std::string floatValue(float value) { return exactNumber(value, true); }
-
-const char* mirroredPlantCullName(MirroredPlantCull mode) {
-    for (const MirroredPlantCullMode& row : kMirroredPlantCullModes)
-        if (row.mode == mode) return row.name;
-    return "auto";
-}
-
-using Kind = SceneArgumentKind;
-
-}  // namespace
 
 const std::vector<SceneArgument>& sceneArgumentTable() {
-    static const std::vector<SceneArgument> table = {
-        {"--size", Kind::Picture,
-         [](const SceneOptions& s, const char*) { return std::to_string(s.width) + "x" + std::to_string(s.height); }},
-        {"--time", Kind::Picture, [](const SceneOptions& s, const char*) { return exactNumber(s.timeSeconds); }},
-        {"--hour", Kind::Picture,
-         [](const SceneOptions& s, const char*) { return s.hour ? exactNumber(*s.hour) : std::string(); }},
-        {"--camera", Kind::Picture,
-         [](const SceneOptions& s, const char*) {
-             if (!s.camera) return std::string();
-             const CameraPose& c = *s.camera;
-             return exactNumber(c.position.x) + "," + exactNumber(c.position.y) + "," + exactNumber(c.position.z) +
-                    "," + floatValue(c.yawDegrees) + "," + floatValue(c.pitchDegrees);
-         }},
-        {"--gbuffer", Kind::Picture, [](const SceneOptions& s, const char*) { return s.gbuffer; }},
-        {"--depth", Kind::Picture, [](const SceneOptions& s, const char*) { return s.depth; }},
-        {"--reflections", Kind::Picture, switchValue},
-        {"--reflection-bounds", Kind::Picture, switchValue},
-        {"--reflection-resolution", Kind::Picture,
-         [](const SceneOptions& s, const char*) {
-             return std::string(reflectionResolutionName(s.water.reflectionDivisor));
-         }},
-        {"--reflection-plant-cull", Kind::Picture,
-         [](const SceneOptions& s, const char*) {
-             return std::string(mirroredPlantCullName(s.work.mirroredPlantCull));
-         }},
-        {"--water-level", Kind::Picture, [](const SceneOptions& s, const char*) { return floatValue(s.water.level); }},
-        {"--ripples", Kind::Picture,
-         [](const SceneOptions& s, const char*) { return floatValue(s.water.rippleStrength); }},
-        {"--absorption", Kind::Picture,
-         [](const SceneOptions& s, const char*) { return floatValue(s.water.absorption); }},
-        {"--vegetation", Kind::Picture, switchValue},
-        {"--vegetation-density", Kind::Picture,
-         [](const SceneOptions& s, const char*) { return floatValue(s.vegetation.density); }},
-        {"--wind", Kind::Picture,
-         [](const SceneOptions& s, const char*) { return floatValue(s.vegetation.windStrength); }},
-        {"--billboards", Kind::Picture, switchValue},
-        {"--tone-map", Kind::Picture, switchValue},
-        {"--depth-read", Kind::Picture, switchValue},
-        {"--shadows", Kind::Picture, switchValue},
-        {"--shadow-quality", Kind::Picture, [](const SceneOptions& s, const char*) { return s.shadows.quality; }},
-        {"--lights", Kind::Picture, [](const SceneOptions& s, const char*) { return std::to_string(s.lights); }},
-        {"--api", Kind::Driver, [](const SceneOptions& s, const char*) { return std::string(gl::apiName(s.api)); }},
-        {"--force", Kind::Driver, [](const SceneOptions& s, const char*) { return s.force.list(); }},
-        {"--no-compute", Kind::Driver,
-         [](const SceneOptions& s, const char*) { return std::string(s.noCompute ? "on" : "off"); }, true},
-        {"--lights-path", Kind::Driver,
-         [](const SceneOptions& s, const char*) {
-             return s.lightsPath ? std::string(lightsPathName(*s.lightsPath)) : std::string();
-         }},
-        {"--light-method", Kind::Driver,
-         [](const SceneOptions& s, const char*) {
-             return s.lightMethod ? std::string(lightMethodName(*s.lightMethod)) : std::string();
-         }},
-    };
+    static const std::vector<SceneArgument> table = [] {
+        std::vector<SceneArgument> rows;
+        for (const OptionRow& row : optionTable())
+            if (row.provenance != SceneArgumentKind::None)
+                rows.push_back({row.flag, row.provenance,
+                                [](const SceneOptions& s, const char* flag) { return optionValue(*findOption(flag), s); },
+                                row.bare});
+        return rows;
+    }();
     return table;
 }
 

@@ -1,19 +1,16 @@
-// The scene options written back as a command line: one table, one row per option, saying how its
-// value is written from SceneOptions and whether it sets what the picture shows or only how this
-// driver draws it. A picture's options travel in its PNG this way (commands/provenance.h); parsing
+// The scene options written back as a command line: one entry per option row (cli/option_table.h),
+// saying how its value is written from SceneOptions and whether it sets what the picture shows or
+// only how this driver draws it. A picture's options travel in its PNG this way (commands/provenance.h); parsing
 // the arguments gives the same SceneOptions back.
 #pragma once
 #include <string>
 #include <vector>
 
+#include "cli/option_table.h"  // SceneArgumentKind: each row's
+
 namespace oasis {
 
 struct SceneOptions;
-
-enum class SceneArgumentKind {
-    Picture,  // what the frame shows (--size, --hour, --camera, ...): compare --reference adopts or checks them
-    Driver,   // which of this driver's paths drew it (--api, --force, ...): a driver comparison varies them
-};
 
 struct SceneArgument {
     const char* flag;

@@ -66,23 +66,23 @@ QualityKnob shadowKnob() {
     return knob;
 }
 
-const std::vector<QualityKnob> kKnobs = {
-    {"grid", "terrain grid rings x segments (38,400 triangles at medium)",
-     {gridLevel("coarse", 75, 64), gridLevel("medium", 150, 128), gridLevel("fine", 300, 256)}, 1},
-    {"octaves", "simplex-noise octaves of the terrain height", {octaveLevel("3", 3), octaveLevel("5", 5),
-     octaveLevel("7", 7)}, 2},
-    {"vegetation", "plant density (off, or times the default candidates per chunk)",
-     {vegetationLevel("off", false, 1.0f), vegetationLevel("0.5", true, 0.5f), vegetationLevel("1", true, 1.0f)}, 2},
-    // The options' own knobs, in the bench's order (bench.csv and bench.json list them so).
-    optionKnob("--reflections"),
-    optionKnob("--reflection-resolution"),
-    optionKnob("--billboards"),
-    optionKnob("--reflection-bounds"),
-    optionKnob("--tone-map"),
-    optionKnob("--depth-read"),
-    optionKnob("--reflection-plant-cull"),
-    shadowKnob(),
-};
+// The scene's own knobs, then every option row that has bench levels, in the rows' order (bench.csv
+// and bench.json list them so), then the shadows.
+std::vector<QualityKnob> makeKnobs() {
+    std::vector<QualityKnob> knobs = {
+        {"grid", "terrain grid rings x segments (38,400 triangles at medium)",
+         {gridLevel("coarse", 75, 64), gridLevel("medium", 150, 128), gridLevel("fine", 300, 256)}, 1},
+        {"octaves", "simplex-noise octaves of the terrain height", {octaveLevel("3", 3), octaveLevel("5", 5),
+         octaveLevel("7", 7)}, 2},
+        {"vegetation", "plant density (off, or times the default candidates per chunk)",
+         {vegetationLevel("off", false, 1.0f), vegetationLevel("0.5", true, 0.5f), vegetationLevel("1", true, 1.0f)}, 2},
+    };
+    for (const OptionRow& row : optionTable())
+        if (row.bench.knob) knobs.push_back(optionKnob(row.flag));
+    knobs.push_back(shadowKnob());
+    return knobs;
+}
+const std::vector<QualityKnob> kKnobs = makeKnobs();
 
 // Light counts: none (the default scene), 4 (where deferred starts to win on llvmpipe: the README's
 // lights table has the pipelines even at 1 and deferred ahead from 4) and 32. Not more: forward

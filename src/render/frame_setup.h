@@ -104,9 +104,11 @@ struct FrameSetup {
     bool vegetationEnabled = true;
     bool mirroredPlantsCulled = false;  // the reflection's plant chunks culled against the dry land (set by the renderer)
     bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
-    // Such a layout's direct lighting samples the depth-stencil target itself, drawn without it
-    // attached; false: it reads DepthCopyPass's copy, made every frame (set from the scene's work).
-    bool depthReadInPlace = true;
+    // The scene's savings as asked for (--tone-map, --depth-read, --reflection-plant-cull): whole,
+    // so a new one reaches the passes without a line here. With depth-read in place, a layout that
+    // reconstructs positions lights by sampling the depth-stencil target itself, drawn without it
+    // attached; else it reads DepthCopyPass's copy, made every frame.
+    FrameWorkSettings work;
     // The context may depth-test against the target a draw samples (writes off): such a layout's
     // in-place lighting then shades only the surfaces too (set by the renderer from the capabilities).
     bool readOnlyDepth = false;

@@ -319,7 +319,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
                                 !frame_.lights.empty();
     frame_.toneMapFused = scene.work.fuseToneMap && stopBefore.empty() && !volumesAfterLighting;
     frame_.runsToEnd = stopBefore.empty();
-    frame_.depthReadInPlace = scene.work.depthReadInPlace;
+    frame_.work = scene.work;
     frame_.readOnlyDepth = readOnlyDepthAvailable_;
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);

@@ -1,4 +1,4 @@
-// The compact layout's depth read in place (--depth-read in-place, FrameSetup::depthReadInPlace):
+// The compact layout's depth read in place (--depth-read in-place, FrameSetup::work):
 // the direct lighting samples the depth-stencil target itself, drawn without it attached, so
 // DepthCopyPass's direct copy runs only for the stencil light volumes. Against the frame that
 // copies depth for every reader: the copy is not exact on llvmpipe (gl_FragDepth written back to
@@ -43,7 +43,7 @@ DepthReadRun renderWith(Renderer& renderer, SceneSettings scene, bool inPlace) {
         std::vector<uint32_t> copy = depthSteps(targets.framebuffer({}, Target::SceneDepth), kWidth, kHeight);
         for (size_t i = 0; i < target.size(); ++i) run.copyOff.push_back(int(copy[i]) - int(target[i]));
     });
-    EXPECT_EQ(renderer.lastFrame().depthReadInPlace, inPlace);
+    EXPECT_EQ(renderer.lastFrame().work.depthReadInPlace, inPlace);
     run.radiance = renderer.readTarget(Target::Radiance);
     run.positions = renderer.readSurfacePositions();
     renderer.renderView("final");

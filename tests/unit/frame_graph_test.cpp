@@ -22,7 +22,7 @@ const GraphStep& stepNamed(const FrameGraph& graph, const std::string& name) {
 FrameSetup compactFrame(LightMethod method, bool depthReadInPlace) {
     FrameSetup frame;
     frame.positionFromDepth = true;
-    frame.depthReadInPlace = depthReadInPlace;
+    frame.work.depthReadInPlace = depthReadInPlace;
     frame.lightMethod = method;
     frame.lights.resize(2);
     return frame;
