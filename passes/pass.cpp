@@ -48,6 +48,12 @@ void Pass::bindDeclaredOutputs(const PassContext& context) const {
     bindFramebufferOf(context.targets, accesses(context.frame));
 }
 
+namespace {
+std::vector<Target>* boundTargetsRecord = nullptr;
+}
+
+void recordBoundTargets(std::vector<Target>* into) { boundTargetsRecord = into; }
+
 void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& accesses) {
     std::vector<Target> colour;
     std::optional<Target> depth;
@@ -61,6 +67,10 @@ void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& a
         }
     }
     glBindFramebuffer(GL_FRAMEBUFFER, targets.framebuffer(colour, depth));
+    if (boundTargetsRecord) {
+        boundTargetsRecord->insert(boundTargetsRecord->end(), colour.begin(), colour.end());
+        if (depth) boundTargetsRecord->push_back(*depth);
+    }
     glViewport(0, 0, targets.width(), targets.height());
 }
 

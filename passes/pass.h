@@ -145,6 +145,9 @@ private:
 // Binds the framebuffer of `accesses` (its writes in order, the depth-stencil target where it is
 // tested or written) and sets the viewport to the whole target.
 void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& accesses);
+// While `into` is set, bindFramebufferOf adds each target it attaches there: the frame's
+// validation (render/frame_graph.h) holds what a pass bound against what it declared.
+void recordBoundTargets(std::vector<Target>* into);
 // Whether a pass shading into `output` writes Final too this frame (the fused tone map).
 bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring);
 // Mirrored draws pass the stencil test only on water pixels, and flip the front face (a mirror

@@ -175,4 +175,27 @@ std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) 
     return problems;
 }
 
+std::string auditBoundTargets(const Pass& pass, const PassContext& context, const std::vector<Target>& bound) {
+    std::vector<Access> declared = pass.accesses(context.frame);
+    auto declares = [&](Target target, bool (*use)(Use)) {
+        return std::any_of(declared.begin(), declared.end(), [&](const Access& access) {
+            const Target* declaredTarget = std::get_if<Target>(&access.resource);
+            return declaredTarget && *declaredTarget == target && use(access.use);
+        });
+    };
+    auto attaches = [](Use use) { return use != Use::Sample; };
+    std::string problems;
+    auto problem = [&](const std::string& text) { problems += (problems.empty() ? "" : "; ") + text; };
+    for (Target target : bound)
+        if (!declares(target, attaches))
+            problem(pass.name() + " binds " + targetName(target) + " for drawing, which it does not declare");
+    for (const Access& access : declared) {
+        const Target* target = std::get_if<Target>(&access.resource);
+        if (!target || !isWrite(access.use) || !context.targets.layout().stores(*target)) continue;
+        if (std::find(bound.begin(), bound.end(), *target) == bound.end())
+            problem(pass.name() + " declares it writes " + targetName(*target) + " but never binds it");
+    }
+    return problems;
+}
+
 }  // namespace oasis

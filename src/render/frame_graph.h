@@ -48,5 +48,10 @@ void setFrameValidation(bool on);
 // The audit after a pass ran: every target attached to the bound draw framebuffer must be one the
 // pass declared it writes or tests. Returns what it found wrong, "" when nothing.
 std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context);
+// The audit of what the pass bound while it ran (recordBoundTargets, passes/pass.h): every target
+// it bound is declared (written, or depth and stencil tested), and every target it declares it
+// writes was bound (one the layout stores), so a declaration cannot name a write that never
+// happens. Returns what it found wrong, "" when nothing.
+std::string auditBoundTargets(const Pass& pass, const PassContext& context, const std::vector<Target>& bound);
 
 }  // namespace oasis

@@ -74,8 +74,18 @@ void runValidated(Pass& pass, PassContext& context) {
     // Nothing bound going in: whatever is bound after the pass, the pass bound itself (and a pass
     // that drew without binding its outputs draws nowhere, which the pictures show).
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    pass.run(context);
+    std::vector<Target> bound;
+    recordBoundTargets(&bound);
+    try {
+        pass.run(context);
+    } catch (...) {
+        recordBoundTargets(nullptr);
+        throw;
+    }
+    recordBoundTargets(nullptr);
     std::string problem = auditBoundFramebuffer(pass, context);
+    std::string unbound = auditBoundTargets(pass, context, bound);
+    if (!unbound.empty()) problem += (problem.empty() ? "" : "; ") + unbound;
     if (!problem.empty()) throw std::logic_error("frame validation: " + problem);
 }
 

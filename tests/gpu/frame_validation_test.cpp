@@ -1,5 +1,6 @@
 // The frame's validation (render/frame_graph.h): a pass that draws into a target it does not
-// declare fails it, one that binds its declared outputs passes, and the real frames of both
+// declare fails it, so does one that declares a write it never binds, one that binds its declared
+// outputs passes, and the real frames of both
 // pipelines pass it in the settings that change their declarations.
 #include "gpu_test.h"
 
@@ -30,6 +31,22 @@ private:
     bool honest_;
 };
 
+// Declares that it writes Radiance and Final, and binds (and clears) Radiance alone.
+class DeclaresAWriteItNeverMakes : public Pass {
+public:
+    std::string name() const override { return "OverdeclaredPass"; }
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        return {{Target::Radiance, Use::Write}, {Target::Final, Use::Write}};
+    }
+
+protected:
+    void execute(PassContext& context) override {
+        bindFramebufferOf(context.targets, {{Target::Radiance, Use::Write}});
+        const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        glClearBufferfv(GL_COLOR, 0, black);
+    }
+};
+
 // Switches validation on for the scope, as debug builds have it.
 struct ValidatedFrames {
     bool was = frameValidation();
@@ -51,6 +68,25 @@ TEST_F(GpuTest, APassDrawingOutsideItsDeclarationFailsValidation) {
         ADD_FAILURE() << "a pass that cleared Final while declaring Radiance passed validation";
     } catch (const std::logic_error& error) {
         EXPECT_NE(std::string(error.what()).find("MisdeclaredPass draws into final"), std::string::npos) << error.what();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_F(GpuTest, APassDeclaringAWriteItNeverMakesFailsValidation) {
+    ValidatedFrames validated;
+    FrameTargets targets(layoutNamed("compact"), standardDepthConvention(), 32, 18);
+    SceneGeometry geometry(SceneSettings{}.grid);
+    VegetationBuffers vegetation;
+    FrameSetup frame;
+    PassContext context{targets, *shaders_, geometry, frame, vegetation};
+    DeclaresAWriteItNeverMakes overdeclared;
+    try {
+        runValidated(overdeclared, context);
+        ADD_FAILURE() << "a pass that declared Final and never bound it passed validation";
+    } catch (const std::logic_error& error) {
+        EXPECT_NE(std::string(error.what()).find("OverdeclaredPass declares it writes final but never binds it"),
+                  std::string::npos)
+            << error.what();
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
