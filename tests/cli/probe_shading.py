@@ -4,7 +4,9 @@ what the frame stored there. For each pixel kind (sky, terrain, rock, plant, sha
 lights, water) and each pipeline: the parts sum to the lit colour, water and fog carry it to the
 surface's radiance, the lights' shares add up, that radiance is the frame's Radiance (at water:
 the composite of the mirrored scene, Fresnel and what lies under is), the mirrored scene's is the
-frame's Reflection, and the tone map's output is Final. Each pixel is first checked to be of its kind,
+frame's Reflection, all within half-float rounding in both pipelines (forward's record shades the
+surfaces its shaders built, drawn again unrounded, not the views' G-buffer), and the tone map's
+output is Final. Each pixel is first checked to be of its kind,
 so a scene change fails here instead of testing something else.
 usage: probe_shading.py OASIS [env NAME=VALUE ...]"""
 import json
@@ -91,17 +93,13 @@ def main():
             problems = []
             check_surface(direct, where + " direct", problems)
             radiance = probe["radiance"][:3]
-            # Forward shades the surface as drawn; the record reads it from the G-buffer the views
-            # fill, whose 8-bit albedo and compact normals round the surface: measured up to 6.2 %
-            # off at 320x180 (blue at 210,85), so 8 % there; the terms still recombine exactly.
-            frame_bound = HALF_STEP if pipeline == "deferred" else 0.08
             if "water" in shading:
                 water = terms(shading["water"])
                 mirrored = terms(shading["mirrored"])
                 check_surface(mirrored, where + " mirrored", problems)
                 if not close(water["under"], direct["radiance"], 1e-6):
                     problems.append(f"{where}: under != the direct scene's radiance")
-                if not close(mirrored["radiance"], probe["reflection"][:3], frame_bound, 2e-4):
+                if not close(mirrored["radiance"], probe["reflection"][:3], HALF_STEP, 2e-4):
                     problems.append(f"{where}: mirrored radiance {mirrored['radiance']} != Reflection {probe['reflection']}")
                 if not close(water["reflected"], probe["reflection"][:3], 1e-6):
                     problems.append(f"{where}: reflected != Reflection")
@@ -114,7 +112,7 @@ def main():
                 expected = water["result"][:3]
             else:
                 expected = direct["radiance"]
-            if not close(expected, radiance, frame_bound, 2e-4):
+            if not close(expected, radiance, HALF_STEP, 2e-4):
                 problems.append(f"{where}: recorded radiance {expected} != the frame's Radiance {radiance}")
             tone = terms(shading["tone_map"])
             if not close(tone["input"][:3], radiance, 0.0, 0.0):
