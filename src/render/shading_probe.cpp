@@ -12,6 +12,7 @@
 #include "render/float_readback.h"
 #include "render/gbuffer_layout.h"
 #include "render/json_text.h"
+#include "render/light_paths.h"
 #include "render/pixel_probe.h"
 #include "render/renderer.h"
 #include "render/texture_units.h"
@@ -95,7 +96,8 @@ Slots drawRecord(Renderer& renderer, const FrameTargets& surfaces, const std::st
 
 // The point lights' terms first (their own draw), then everything else with their sum.
 Slots recordShading(Renderer& renderer, const FrameTargets& surfaces, int glX, int glY, bool water, bool mirrored) {
-    Slots lights = drawRecord(renderer, surfaces, "probe.shading.lights", glX, glY, water, mirrored, glm::vec3(0.0f));
+    std::string lightsVariant = "probe.shading.lights" + lightsVariantSuffix(renderer.lastFrame().lightsPath);
+    Slots lights = drawRecord(renderer, surfaces, lightsVariant, glX, glY, water, mirrored, glm::vec3(0.0f));
     const float* sum = &lights[OASIS_TERM_LIGHTS * 4];
     Slots slots = drawRecord(renderer, surfaces, "probe.shading", glX, glY, water, mirrored,
                              glm::vec3(sum[0], sum[1], sum[2]));
