@@ -8,10 +8,16 @@ frame's Reflection, all within half-float rounding in both pipelines (forward's 
 surfaces its shaders built, drawn again unrounded, not the views' G-buffer), and the tone map's
 output is Final. Each pixel is first checked to be of its kind,
 so a scene change fails here instead of testing something else.
-usage: probe_shading.py OASIS [env NAME=VALUE ...]"""
+--perturbed SHADERS: the same checks over a copy of SHADERS whose forward surfaces shade 0.4 %
+brighter than the record (emit_surface.glsl): they must fail at forward pixels, and only there.
+With GALLIUM_DRIVER=NAME among the env, exits 77 (skipped) where that driver is not available.
+usage: probe_shading.py OASIS [--perturbed SHADERS] [env NAME=VALUE ...]"""
 import json
+import os
+import shutil
 import subprocess
 import sys
+import tempfile
 
 # Pixel kinds at 320x180 of the default scene with 64 lights (found by probing a grid).
 PIXELS = [
@@ -71,8 +77,8 @@ def check_surface(t, where, problems):
     need(close([s + l for s, l in zip(t["surface"], t["lights"][:3])], t["radiance"], 1e-5), "surface + lights != radiance")
 
 
-def main():
-    oasis, env_args = sys.argv[1], sys.argv[2:]
+def check_pixels(oasis, env_args):
+    """Every pixel in both pipelines: the problems found and the number of pixels checked."""
     failures, checked = [], 0
     for pipeline in ("deferred", "forward"):
         for kind, x, y in PIXELS:
@@ -126,7 +132,46 @@ def main():
     print(f"{checked} pixels checked, {len(failures)} problems")
     for failure in failures:
         print("  " + failure)
-    sys.exit(1 if failures or checked < 2 * len(PIXELS) else 0)
+    return failures, checked
+
+
+def skip_unless_driver(oasis, env_args):
+    """Where the env asks Mesa for a driver (GALLIUM_DRIVER), exit 77 unless oasis gets it."""
+    wanted = [a.split("=", 1)[1] for a in env_args if a.startswith("GALLIUM_DRIVER=")]
+    if not wanted:
+        return
+    run = subprocess.run(["env", *env_args, oasis, "caps", "--json"], capture_output=True, text=True)
+    renderer = json.loads(run.stdout).get("renderer", "") if run.returncode == 0 and run.stdout else ""
+    if not renderer.startswith(wanted[0]):
+        print(f"SKIPPED: {wanted[0]} is not available here (renderer '{renderer}', exit {run.returncode})")
+        sys.exit(77)
+
+
+def perturbed_copy(shaders, into):
+    """SHADERS copied with the forward surfaces' radiance 0.4 % above what the record computes."""
+    copy = os.path.join(into, "shaders")
+    shutil.copytree(shaders, copy)
+    path = os.path.join(copy, "common", "emit_surface.glsl")
+    text = open(path).read()
+    exact = "vec3 radiance = shadeSurface(s) + allPointLights(s);"
+    if text.count(exact) != 1:
+        sys.exit(f"the perturbation does not apply: no single '{exact}' in {path}")
+    open(path, "w").write(text.replace(exact, "vec3 radiance = shadeSurface(s) * 1.004 + allPointLights(s);"))
+    return copy
+
+
+def main():
+    oasis, args = sys.argv[1], sys.argv[2:]
+    if args[:1] != ["--perturbed"]:  # args: [env NAME=VALUE ...]
+        skip_unless_driver(oasis, args[1:])
+        failures, checked = check_pixels(oasis, args[1:])
+        sys.exit(1 if failures or checked < 2 * len(PIXELS) else 0)
+    with tempfile.TemporaryDirectory() as work:
+        failures, checked = check_pixels(oasis, ["OASIS_SHADER_DIR=" + perturbed_copy(args[1], work), *args[3:]])
+    caught = [f for f in failures if f.startswith("forward ") and "!= the frame's Radiance" in f]
+    others = [f for f in failures if f not in caught]
+    print(f"perturbed forward shading: {len(caught)} forward pixels caught, {len(others)} other problems")
+    sys.exit(0 if caught and not others and checked == 2 * len(PIXELS) else 1)
 
 
 if __name__ == "__main__":
