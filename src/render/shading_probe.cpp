@@ -143,7 +143,8 @@ ShadedSurface groupTerms(const Slots& slots, Group group, const std::string& nam
 }
 
 // The surfaces the frame shaded at the pixel, `scene` under the water. Deferred: its G-buffer,
-// which its lighting read (a stopped frame's too: what it reached). A whole forward frame shaded
+// which its lighting read; a forward frame stopped early: the views' fill of the steps it ran
+// (render/view_fill.h), as the other views show it. A whole forward frame shaded
 // each surface as its fragment built it and stored none: the views' G-buffer would round it (8-bit
 // albedo, compact normals: up to 6 % off the frame), so the same surface shaders (terrain.frag,
 // vegetation.frag, the G-buffer variants of the forward ones: the same Surface, only emitted
