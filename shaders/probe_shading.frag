@@ -7,7 +7,7 @@
 #include "common/output.glsl"
 #include "common/water_surface.glsl"
 #if defined(SHADING_LIGHTS)
-#define LIGHTS_UBO
+// Through the frame's light path: the variant's LIGHTS_* define.
 #include "common/lights.glsl"
 #endif
 
@@ -16,8 +16,10 @@ uniform int probeWater;         // 1: the pixel shows the water's surface (its s
 uniform int probeMirrored;      // 1: the G-buffer holds the mirrored scene (its sky is the reflected sky)
 uniform sampler2D sourceTexture;    // Reflection
 uniform sampler2D radianceTexture;  // Radiance, as the frame left it (the tone map's input)
-// The point lights' part, recorded first by the SHADING_LIGHTS variant: lavapipe (zink) crashed
-// running one program with both the sun's shading and the light loop, so they are two draws.
+// The point lights' part, recorded first by the SHADING_LIGHTS variant (its own draw). It reads the
+// lights through the frame's path, as the forward loop and the volumes do: through the UBO path,
+// lavapipe (zink, Mesa 22.3.6) aborts running it ("stack smashing detected" in libvulkan_lvp.so),
+// even with no lights and without the sun's shading.
 uniform vec3 probeLights;
 
 layout(location = 0) out vec4 outValue;

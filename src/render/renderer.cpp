@@ -203,10 +203,12 @@ void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
         vegetationBuffers_.setAtlas(0, 1, 1);
 }
 
-PassContext Renderer::context() {
+PassContext Renderer::context() { return contextOver(*targets_, frame_); }
+
+PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup& frame) {
     // Another renderer of the same context may have bound its own maps there since.
     shadowMaps_.bind();
-    return PassContext{*targets_, shaders_, geometry_, frame_, vegetationBuffers_,
+    return PassContext{targets, shaders_, geometry_, frame, vegetationBuffers_,
                        waterBoundsAvailable_ ? waterBounds_.name() : 0u, &shadowMaps_,
                        frame_.waterBounded ? waterSeen_.name() : 0u};
 }
@@ -415,6 +417,16 @@ void Renderer::ensureGBuffer() {
     FrameClipControl clipControl(targets_->depth());
     viewScene_ = viewFill_.run(passContext, viewWaterScene_);
     gbufferHolds_ = viewWaterScene_;
+}
+
+void Renderer::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
+    ensureRadiance();  // the frame's Radiance complete, as ensureGBuffer leaves it
+    // The frame, but the passes declare (and bind) the targets of `exact`'s layout.
+    FrameSetup frame = frame_;
+    frame.positionFromDepth = exact.layout().positionFromDepth();
+    PassContext passContext = contextOver(exact, frame);
+    FrameClipControl clipControl(exact.depth());
+    viewFill_.run(passContext, scene);
 }
 
 void Renderer::fillStoppedFrame() {

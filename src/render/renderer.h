@@ -118,6 +118,10 @@ public:
     // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
     // that ran). viewScene() says what the views show at water pixels and why.
     void ensureGBuffer();
+    // The last whole frame's surfaces drawn unrounded: the view fill of `scene` run into `exact`
+    // (targets of the frame's size, depth convention and a float layout) instead of the G-buffer.
+    // `probe --shading` reads a forward frame's surfaces there (render/shading_probe.h).
+    void fillExactSurfaces(const FrameTargets& exact, WaterScene scene);
     // With the tone map fused the water composite writes Final only, so Radiance holds what lies
     // under the water there; this lays the water onto Radiance as the separate pass would have
     // (the radiance view, the probe, readTarget). Once per frame, and only when something asks.
@@ -155,6 +159,7 @@ public:
 
 private:
     PassContext context();
+    PassContext contextOver(const FrameTargets& targets, const FrameSetup& frame);
     void prepareVegetation(const SceneSettings& scene);
     // The reduced reflection's targets (kept while the frame's size, layout and depth stay) and
     // its frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.

@@ -57,7 +57,6 @@ std::vector<ProgramVariant> buildVariants() {
         {"probe.pixel", "fullscreen.vert", "probe.frag", {}},
         // `probe --shading`: the lighting GLSL with its terms recorded (common/shading_terms.glsl).
         {"probe.shading", "fullscreen.vert", "probe_shading.frag", {"SHADING_RECORD"}},
-        {"probe.shading.lights", "fullscreen.vert", "probe_shading.frag", {"SHADING_RECORD", "SHADING_LIGHTS"}},
         {"depth.copy", "fullscreen.vert", "depth_copy.frag", {}},
         {"depth.copy.mirrored", "fullscreen.vert", "depth_copy.frag", {"WATER_BOUNDED"}},
         {"floor.write", "fullscreen.vert", "floor.frag", {"FLOOR_WRITE"}},
@@ -100,6 +99,9 @@ std::vector<ProgramVariant> buildVariants() {
         variants.push_back({"light.shade" + suffix, "light_volume.vert", "light_volume.frag", {define}});
         variants.push_back({"light.shade.mirrored" + suffix, "light_volume.vert", "light_volume.frag",
                             {"MIRRORED", define}});
+        // `probe --shading`'s point lights, read through the frame's own path (probe_shading.frag).
+        variants.push_back({"probe.shading.lights" + suffix, "fullscreen.vert", "probe_shading.frag",
+                            {"SHADING_RECORD", "SHADING_LIGHTS", define}});
     }
     for (const DebugView& view : debugViews()) {
         variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});

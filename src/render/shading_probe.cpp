@@ -1,14 +1,18 @@
-// Runs the shading record (shaders/probe_shading.frag) over the G-buffer at one pixel and names
-// what it recorded: one row of kTerms per slot of common/shading_terms.glsl.
+// Runs the shading record (shaders/probe_shading.frag) at one pixel over the surfaces the frame
+// shaded there (the G-buffer, or a forward frame's drawn again unrounded) and names what it
+// recorded: one row of kTerms per slot of common/shading_terms.glsl.
 #include "render/shading_probe.h"
 
 #include <cstdio>
+#include <memory>
 
 #include "common/shading_terms.glsl"
 #include "common/shared_constants.glsl"
 #include "passes/pass.h"
 #include "render/float_readback.h"
+#include "render/gbuffer_layout.h"
 #include "render/json_text.h"
+#include "render/light_paths.h"
 #include "render/pixel_probe.h"
 #include "render/renderer.h"
 #include "render/texture_units.h"
@@ -63,21 +67,23 @@ constexpr TermRow kTerms[] = {
 
 using Slots = std::vector<float>;  // OASIS_SHADING_TERMS RGBA texels
 
-Slots drawRecord(Renderer& renderer, const std::string& variant, int glX, int glY, bool water, bool mirrored,
-                 const glm::vec3& lights) {
+// `surfaces`: where the record reads the surfaces (the G-buffer, or a forward frame's exact ones);
+// Reflection and Radiance are always the frame's.
+Slots drawRecord(Renderer& renderer, const FrameTargets& surfaces, const std::string& variant, int glX, int glY,
+                 bool water, bool mirrored, const glm::vec3& lights) {
     const FrameTargets& targets = renderer.targets();
     FloatReadback values;
     values.bindForDrawing(OASIS_SHADING_TERMS, 1);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
-    bindGBufferInputs(targets);
+    bindGBufferInputs(surfaces);
     renderer.shadowMaps().bind();
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Reflection));
     glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Radiance));
-    GLuint program = renderer.shaders().program(targets.layout().program(variant));
+    GLuint program = renderer.shaders().program(surfaces.layout().program(variant));
     glUseProgram(program);
     glUniform2i(glGetUniformLocation(program, "probePixel"), glX, glY);
     glUniform1i(glGetUniformLocation(program, "probeWater"), water ? 1 : 0);
@@ -89,10 +95,12 @@ Slots drawRecord(Renderer& renderer, const std::string& variant, int glX, int gl
 }
 
 // The point lights' terms first (their own draw), then everything else with their sum.
-Slots recordShading(Renderer& renderer, int glX, int glY, bool water, bool mirrored) {
-    Slots lights = drawRecord(renderer, "probe.shading.lights", glX, glY, water, mirrored, glm::vec3(0.0f));
+Slots recordShading(Renderer& renderer, const FrameTargets& surfaces, int glX, int glY, bool water, bool mirrored) {
+    std::string lightsVariant = "probe.shading.lights" + lightsVariantSuffix(renderer.lastFrame().lightsPath);
+    Slots lights = drawRecord(renderer, surfaces, lightsVariant, glX, glY, water, mirrored, glm::vec3(0.0f));
     const float* sum = &lights[OASIS_TERM_LIGHTS * 4];
-    Slots slots = drawRecord(renderer, "probe.shading", glX, glY, water, mirrored, glm::vec3(sum[0], sum[1], sum[2]));
+    Slots slots = drawRecord(renderer, surfaces, "probe.shading", glX, glY, water, mirrored,
+                             glm::vec3(sum[0], sum[1], sum[2]));
     slots[OASIS_TERM_LIGHTS * 4 + 3] = sum[3];
     for (int c = 0; c < 4; ++c) slots[size_t(OASIS_TERM_LIGHTS * 4 + c)] = sum[c];
     for (int k = 0; k < OASIS_TERM_LIGHT_SLOTS * 4; ++k)
@@ -134,6 +142,36 @@ ShadedSurface groupTerms(const Slots& slots, Group group, const std::string& nam
     return surface;
 }
 
+// The surfaces the frame shaded at the pixel, `scene` under the water. Deferred: its G-buffer,
+// which its lighting read; a forward frame stopped early: the views' fill of the steps it ran
+// (render/view_fill.h), as the other views show it. A whole forward frame shaded
+// each surface as its fragment built it and stored none: the views' G-buffer would round it (8-bit
+// albedo, compact normals: up to 6 % off the frame), so the same surface shaders (terrain.frag,
+// vegetation.frag, the G-buffer variants of the forward ones: the same Surface, only emitted
+// elsewhere) draw it again into targets of the "full" layout, every value a 32-bit float.
+class ShadedSurfaces {
+public:
+    explicit ShadedSurfaces(Renderer& renderer) : renderer_(renderer) {
+        const FrameTargets& frame = renderer.targets();
+        if (renderer.pipeline() == PipelineKind::Forward && renderer.lastFrame().runsToEnd)
+            exact_ = std::make_unique<FrameTargets>(*findGBufferLayout("full"), frame.depth(), frame.width(),
+                                                    frame.height(), "probe --shading: forward surfaces");
+    }
+    const FrameTargets& fill(WaterScene scene) {
+        if (exact_) {
+            renderer_.fillExactSurfaces(*exact_, scene);
+            return *exact_;
+        }
+        renderer_.setViewWaterScene(scene);
+        renderer_.ensureGBuffer();
+        return renderer_.targets();
+    }
+
+private:
+    Renderer& renderer_;
+    std::unique_ptr<FrameTargets> exact_;
+};
+
 }  // namespace
 
 const ShadingTerm* ShadedSurface::find(const std::string& termName) const {
@@ -149,16 +187,13 @@ std::vector<ShadedSurface> probeShading(Renderer& renderer, const PixelProbe& pr
     const WaterScene viewScene = renderer.viewWaterScene();
     std::vector<ShadedSurface> shading;
 
-    renderer.setViewWaterScene(WaterScene::Direct);
-    renderer.ensureGBuffer();
-    Slots direct = recordShading(renderer, glX, glY, water, false);
+    ShadedSurfaces surfaces(renderer);
+    Slots direct = recordShading(renderer, surfaces.fill(WaterScene::Direct), glX, glY, water, false);
     shading.push_back(surfaceTerms(direct, "direct",
                                    water ? "under the water: the direct scene's surface (the frame's Radiance before the composite)"
                                          : "the surface seen here (the frame's Radiance)"));
     if (mirrored) {
-        renderer.setViewWaterScene(WaterScene::Mirrored);
-        renderer.ensureGBuffer();
-        Slots reflected = recordShading(renderer, glX, glY, false, true);
+        Slots reflected = recordShading(renderer, surfaces.fill(WaterScene::Mirrored), glX, glY, false, true);
         std::string what = "what the water reflects: the mirrored scene (the frame's Reflection";
         what += renderer.lastFrame().reflectionDivisor > 1 ? ", drawn there at a reduced resolution and upsampled)" : ")";
         shading.push_back(surfaceTerms(reflected, "mirrored", what));
