@@ -89,7 +89,10 @@ def main():
         for pipeline in ("deferred", "forward"):
             check_finished_frame(oasis, kind, x, y, pipeline, [])
         check_finished_frame(oasis, kind, x, y, "deferred", ["--gbuffer", "full"])
+    # Every layout (standard too) and the ES 3.0 tier in both pipelines.
+    check_finished_frame(oasis, "terrain", 170, 85, "deferred", ["--gbuffer", "standard"])
     check_finished_frame(oasis, "water", 210, 110, "forward", ["--api", "gles", "--force", "gles30"])
+    check_finished_frame(oasis, "terrain", 170, 85, "deferred", ["--api", "gles", "--force", "gles30"])
     for kind, x, y in [PIXELS[0], PIXELS[2]]:
         history = check_finished_frame(oasis, kind, x, y, "deferred", ["--tone-map", "separate"])
         if history:
