@@ -1,7 +1,7 @@
-// ReflectionClearPass: clears Reflection every frame (so it never shows a stale mirror image) and,
-// with reflections active, resets depth inside the water to the far plane (and, for the G-buffer,
-// the "nothing drawn" values) so the mirrored scene is depth-tested against itself only. The views'
-// fill of the mirrored scene (render/view_fill.h) keeps Reflection: the frame's reflection view.
+// ReflectionClearPass: with reflections active, resets depth inside the water to the far plane
+// (and, for the G-buffers that store position, the "nothing drawn" values) so the mirrored scene is
+// depth-tested against itself only. It clears nothing outside the water: Reflection is read only at
+// water pixels, where the mirrored passes write every pixel.
 #pragma once
 #include "passes/pass.h"
 
@@ -9,17 +9,15 @@ namespace oasis {
 
 class ReflectionClearPass : public Pass {
 public:
-    enum class ReflectionTarget { Cleared, Kept };
-    explicit ReflectionClearPass(SurfaceOutput output, ReflectionTarget reflection = ReflectionTarget::Cleared)
-        : output_(output), reflection_(reflection) {}
+    explicit ReflectionClearPass(SurfaceOutput output) : output_(output) {}
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
     std::vector<Access> accesses(const FrameSetup& frame) const override;
+    bool active(const FrameSetup& frame) const override;
 protected:
     void execute(PassContext& context) override;
 
 private:
     SurfaceOutput output_;
-    ReflectionTarget reflection_;
 };
 
 }  // namespace oasis

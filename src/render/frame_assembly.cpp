@@ -27,10 +27,9 @@ void add(PassList& list, Arguments... arguments) {
 
 // The steps that draw the scene's surfaces into `output`: cleared first (the direct scene's
 // targets, or the water's depth for the mirrored scene), then the terrain and the plants.
-void addSceneSteps(PassList& list, SurfaceOutput output, Mirroring mirroring,
-                   ReflectionClearPass::ReflectionTarget reflection = ReflectionClearPass::ReflectionTarget::Cleared) {
+void addSceneSteps(PassList& list, SurfaceOutput output, Mirroring mirroring) {
     if (mirroring == Mirroring::Direct) add<ClearPass>(list, output);
-    else add<ReflectionClearPass>(list, output, reflection);
+    else add<ReflectionClearPass>(list, output);
     add<TerrainPass>(list, output, mirroring);
     add<VegetationPass>(list, output, mirroring);
 }
@@ -88,7 +87,7 @@ PassList assembleFrame(FrameOutput output) {
         return list;
     }
     add<WaterMaskPass>(list, WaterDepth::Written);
-    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Mirrored, ReflectionClearPass::ReflectionTarget::Kept);
+    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Mirrored);
     return list;
 }
 
