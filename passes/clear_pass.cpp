@@ -30,7 +30,7 @@ static std::vector<Access> clearedForStoppedFrame() {
 
 std::vector<Access> ClearPass::accesses(const FrameSetup& frame) const {
     std::vector<Access> used = clearedTargets(frame, output_);
-    if (!frame.runsToEnd)
+    if (clearsStoppedFrameTargets(frame))
         for (const Access& access : clearedForStoppedFrame()) used.push_back(access);
     return used;
 }
@@ -42,7 +42,7 @@ void ClearPass::execute(PassContext& context) {
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
     glDisable(GL_SCISSOR_TEST);
-    if (!context.frame.runsToEnd) {
+    if (clearsStoppedFrameTargets(context.frame)) {
         // Each on its own: the framebuffer of the G-buffer's writes need not hold them.
         for (const Access& access : clearedForStoppedFrame()) {
             bindFramebufferOf(targets, {access});

@@ -27,8 +27,9 @@ void add(PassList& list, Arguments... arguments) {
 
 // The steps that draw the scene's surfaces into `output`: cleared first (the direct scene's
 // targets, or the water's depth for the mirrored scene), then the terrain and the plants.
-void addSceneSteps(PassList& list, SurfaceOutput output, Mirroring mirroring) {
-    if (mirroring == Mirroring::Direct) add<ClearPass>(list, output);
+void addSceneSteps(PassList& list, SurfaceOutput output, Mirroring mirroring,
+                   ClearPass::StoppedFrameTargets stopped = ClearPass::StoppedFrameTargets::Cleared) {
+    if (mirroring == Mirroring::Direct) add<ClearPass>(list, output, stopped);
     else add<ReflectionClearPass>(list, output);
     add<TerrainPass>(list, output, mirroring);
     add<VegetationPass>(list, output, mirroring);
@@ -75,7 +76,8 @@ PassList assembleFrame(FrameOutput output) {
     if (output == FrameOutput::StoppedFrameFill) {
         // Only the steps the forward frame ran; the depth copy follows them where the deferred
         // frame's graph keeps it (Renderer::fillStoppedFrame).
-        addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct);
+        // Radiance and Reflection stay the forward frame's.
+        addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct, ClearPass::StoppedFrameTargets::Kept);
         add<DepthCopyPass>(list, Mirroring::Direct);
         add<WaterMaskPass>(list);
         return list;
