@@ -249,6 +249,11 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     const Image atlasImage = atlas->read();
     renderer.setPipeline(PipelineKind::Deferred);
+    // Earlier frames leave stale texels where this one writes none (the colour targets are not
+    // cleared): the lake mirrored over other pixels in Reflection, then surfaces in every G-buffer
+    // texel (looking down). The views must show none of them.
+    renderer.renderFrame(poseNamed("lakeMirror").scene);
+    renderer.renderFrame(poseNamed("down").scene);
     renderer.renderFrame(pose.scene);
     renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
     const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
