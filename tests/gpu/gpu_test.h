@@ -369,6 +369,26 @@ inline unsigned infoFlags(glm::vec4 info) { return findGBufferLayout("standard")
 // Stencil marks (passes/pass.h: StencilMark).
 constexpr uint8_t kStencilSky = 0, kStencilTerrain = 1, kStencilWater = 2, kStencilPlant = 3;
 
+// The non-finite values of a colour target read after a whole frame, among the texels the frame
+// wrote. Nothing clears a target where no pass writes it (issue 30, item 6): the G-buffer's colour
+// targets are written where a surface is the nearest (stencil terrain or plant; at the water's
+// pixels they hold the mirrored scene, or where it reflects the sky whatever was there), Reflection
+// at the water's pixels with reflections active; the other targets everywhere. Elsewhere a target
+// holds an earlier frame's values or fresh memory (NaNs on zink), which nothing reads.
+inline int countNonFiniteWritten(const std::vector<float>& values, Target target, const std::vector<uint8_t>& stencil,
+                                 bool reflectionsActive) {
+    int count = 0;
+    for (size_t i = 0; i < stencil.size(); ++i) {
+        uint8_t mark = stencil[i] & 0x7f;
+        bool written = true;
+        if (target == Target::Albedo || target == Target::Normal || target == Target::Position || target == Target::Info)
+            written = mark == kStencilTerrain || mark == kStencilPlant;
+        if (target == Target::Reflection) written = reflectionsActive && mark == kStencilWater;
+        for (size_t c = 0; written && c < 4; ++c) count += std::isfinite(values[i * 4 + c]) ? 0 : 1;
+    }
+    return count;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Frame geometry on the CPU, in double, from the frame's own matrices.
 
