@@ -51,7 +51,9 @@ CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool read
     });
     if (counted) glDeleteQueries(1, &query);
     run.radiance = renderer.readTarget(Target::Radiance);
-    run.reflection = renderer.readTarget(Target::Reflection);
+    // Where the frame wrote it: nothing clears Reflection outside the water (fresh NaNs on zink).
+    run.reflection = writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection, renderer.readStencil(),
+                                   renderer.lastFrame().reflectionsActive);
     renderer.renderView("final");
     run.final = renderer.readDisplay();
     return run;
