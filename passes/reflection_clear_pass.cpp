@@ -43,7 +43,10 @@ static std::vector<Access> waterReset(const FrameSetup& frame, SurfaceOutput out
 // has it cleared by ClearPass.
 std::vector<Access> ReflectionClearPass::accesses(const FrameSetup& frame) const {
     if (!frame.reflectionsActive) return {};
-    return waterReset(frame, output_);
+    std::vector<Access> used = waterReset(frame, output_);
+    // The reduced reflection's own Reflection, cleared whole by markReducedWater.
+    if (runsIn_ == RunsIn::Frame && frame.reflectionDivisor > 1) used.insert(used.begin(), {Target::Reflection, Use::Write});
+    return used;
 }
 
 bool ReflectionClearPass::active(const FrameSetup& frame) const { return frame.reflectionsActive; }

@@ -9,7 +9,12 @@ namespace oasis {
 
 class ReflectionClearPass : public Pass {
 public:
-    explicit ReflectionClearPass(SurfaceOutput output) : output_(output) {}
+    // Where it runs: in the frame, whose reflection drawn at a reduced resolution has targets of its
+    // own, cleared and marked here (their Reflection among them); or in the views' fill of the
+    // mirrored scene (render/view_fill.h), always drawn into the frame's targets.
+    enum class RunsIn { Frame, ViewFill };
+    explicit ReflectionClearPass(SurfaceOutput output, RunsIn runsIn = RunsIn::Frame)
+        : output_(output), runsIn_(runsIn) {}
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
     std::vector<Access> accesses(const FrameSetup& frame) const override;
     bool active(const FrameSetup& frame) const override;
@@ -18,6 +23,7 @@ protected:
 
 private:
     SurfaceOutput output_;
+    RunsIn runsIn_;
 };
 
 }  // namespace oasis
