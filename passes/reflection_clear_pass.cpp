@@ -1,6 +1,7 @@
 // A stencil-masked full-screen draw at the far plane with depth test ALWAYS: only the water
-// pixels are touched, never the whole buffer, and the frame's Reflection target is not cleared. At a reduced resolution the reflection's own
-// targets first get their water mask: the water plane, drawn without a depth test.
+// pixels are touched, never the whole buffer, and the frame's Reflection target is not cleared. At
+// a reduced resolution the reflection's own targets first get their water mask: the water plane,
+// drawn without a depth test.
 #include "passes/reflection_clear_pass.h"
 
 #include "passes/water_mask_pass.h"
