@@ -37,7 +37,11 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
     GLuint depthStencil = targets.texture(Target::DepthStencil);
     switch (view.source) {
         case ViewSource::Final: bind(kUnitSource, targets.texture(Target::Final)); break;
-        case ViewSource::Reflection: bind(kUnitSource, targets.texture(Target::Reflection)); break;
+        case ViewSource::Reflection:
+            // Written only at the water's pixels: the view reads the stencil's water mark with it.
+            bind(kUnitSource, targets.texture(Target::Reflection));
+            bindStencil(targets, stencilPath);
+            break;
         case ViewSource::Radiance: bind(kUnitSource, targets.texture(Target::Radiance)); break;
         case ViewSource::PlantAtlas: bind(kUnitSource, plantAtlasTexture_); break;
         case ViewSource::Vegetation:
@@ -54,16 +58,26 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
             bind(kUnitDepth, depthStencil);
             glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
             break;
-        case ViewSource::Stencil:
-            if (stencilPath == StencilViewPath::ReadBack) {
-                uploadStencilCopy(targets);
-                bind(kUnitStencil, stencilCopy_.name());
-            } else {
-                bind(kUnitStencil, depthStencil);
-                glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
-            }
-            break;
+        case ViewSource::Stencil: bindStencil(targets, stencilPath); break;
     }
+}
+
+void DebugViewPass::bindStencil(const FrameTargets& targets, StencilViewPath stencilPath) {
+    glActiveTexture(GL_TEXTURE0 + kUnitStencil);
+    if (stencilPath == StencilViewPath::ReadBack) {
+        uploadStencilCopy(targets);
+        glActiveTexture(GL_TEXTURE0 + kUnitStencil);
+        glBindTexture(GL_TEXTURE_2D, stencilCopy_.name());
+    } else {
+        glBindTexture(GL_TEXTURE_2D, targets.texture(Target::DepthStencil));
+        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+    }
+}
+
+// The views of Reflection show it inside the water only (debug_view.frag's sourceWaterOnly).
+static void setSourceWaterOnly(GLuint program, const DebugView& view) {
+    if (GLint waterOnly = glGetUniformLocation(program, "sourceWaterOnly"); waterOnly >= 0)
+        glUniform1i(waterOnly, view.source == ViewSource::Reflection ? 1 : 0);
 }
 
 void DebugViewPass::drawTile(PassContext& context, const DebugView& view, StencilViewPath stencilPath,
@@ -78,12 +92,14 @@ void DebugViewPass::drawTile(PassContext& context, const DebugView& view, Stenci
     glUseProgram(program);
     if (GLint exposure = glGetUniformLocation(program, "viewExposure"); exposure >= 0)
         glUniform1f(exposure, std::exp2(exposureStops_));
+    setSourceWaterOnly(program, view);
     context.geometry.drawFullscreenTriangle();
     restoreDepthStencilMode(view, stencilPath);
 }
 
 void DebugViewPass::restoreDepthStencilMode(const DebugView& view, StencilViewPath stencilPath) {
-    if (view.source == ViewSource::Stencil && stencilPath == StencilViewPath::Texturing) {
+    bool stencilBound = view.source == ViewSource::Stencil || view.source == ViewSource::Reflection;
+    if (stencilBound && stencilPath == StencilViewPath::Texturing) {
         // Leave the depth-stencil texture in its default mode for the depth view and the passes.
         glActiveTexture(GL_TEXTURE0 + kUnitStencil);
         glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
@@ -100,7 +116,9 @@ std::vector<float> DebugViewPass::readValues(PassContext& context, const DebugVi
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
-    glUseProgram(context.shaders.program(targets.layout().program(debugValuesProgramName(view))));
+    GLuint program = context.shaders.program(targets.layout().program(debugValuesProgramName(view)));
+    glUseProgram(program);
+    setSourceWaterOnly(program, view);
     context.geometry.drawFullscreenTriangle();
     restoreDepthStencilMode(view, stencilPath);
     return values_.read();

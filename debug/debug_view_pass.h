@@ -55,6 +55,9 @@ private:
     void bindSource(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
     void restoreDepthStencilMode(const DebugView& view, StencilViewPath stencilPath);
     void uploadStencilCopy(const FrameTargets& targets);
+    // The stencil on kUnitStencil (texturing, or a read-back copy), for the stencil view and the
+    // water mask of the Reflection views.
+    void bindStencil(const FrameTargets& targets, StencilViewPath stencilPath);
 
     GLuint plantAtlasTexture_ = 0;
     float exposureStops_ = 0.0f;

@@ -1,5 +1,5 @@
-// ClearPass: resets the targets a pipeline draws into (depth 1, stencil 0, colour to "nothing
-// drawn": for the G-buffer that is the sky flag in info, so lighting knows to evaluate the sky).
+// ClearPass: resets what a pipeline reads before anything drew it: depth to the far plane and stencil
+// 0 ("nothing drawn"), and in the G-buffer layouts that store position Info's sky flag.
 #pragma once
 #include "passes/pass.h"
 
@@ -7,7 +7,11 @@ namespace oasis {
 
 class ClearPass : public Pass {
 public:
-    explicit ClearPass(SurfaceOutput output) : output_(output) {}
+    // What a frame stopped early (--stop-before) does with Radiance and Reflection: the frame's own
+    // clear starts them from black; the views' fill of a stopped forward frame keeps the frame's.
+    enum class StoppedFrameTargets { Cleared, Kept };
+    explicit ClearPass(SurfaceOutput output, StoppedFrameTargets stopped = StoppedFrameTargets::Cleared)
+        : output_(output), stopped_(stopped) {}
     std::string name() const override { return std::string("ClearPass.") + surfaceOutputName(output_); }
     std::vector<Access> accesses(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return "clear"; }
@@ -17,6 +21,10 @@ protected:
 
 private:
     SurfaceOutput output_;
+    StoppedFrameTargets stopped_;
+    bool clearsStoppedFrameTargets(const FrameSetup& frame) const {
+        return !frame.runsToEnd && stopped_ == StoppedFrameTargets::Cleared;
+    }
 };
 
 }  // namespace oasis

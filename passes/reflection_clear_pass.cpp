@@ -1,6 +1,7 @@
 // A stencil-masked full-screen draw at the far plane with depth test ALWAYS: only the water
-// pixels are touched, never the whole buffer. At a reduced resolution the reflection's own
-// targets first get their water mask: the water plane, drawn without a depth test.
+// pixels are touched, never the whole buffer, and the frame's Reflection target is not cleared. At
+// a reduced resolution the reflection's own targets first get their water mask: the water plane,
+// drawn without a depth test.
 #include "passes/reflection_clear_pass.h"
 
 #include "passes/water_mask_pass.h"
@@ -25,41 +26,41 @@ void markReducedWater(PassContext& reflection) {
 
 }  // namespace
 
-// The mirrored draw that resets the water's depth (and the G-buffer's "nothing drawn" there).
+// The mirrored draw that resets the water's depth to the far plane: the mirrored scene's "nothing
+// drawn". The compact G-buffer tells the sky by that depth alone (gbufferSkyAt); the layouts that
+// store position also get their "nothing drawn" colour values there (Info's SKY flag).
 static std::vector<Access> waterReset(const FrameSetup& frame, SurfaceOutput output) {
     std::vector<Access> reset;
-    if (output == SurfaceOutput::GBuffer)
+    if (output == SurfaceOutput::GBuffer && !frame.positionFromDepth)
         for (Target target : surfaceOutputTargets(frame, output)) reset.push_back({target, Use::Write});
     appendDepthStencil(reset, {Use::DepthWrite, Use::StencilTest});
     return reset;
 }
 
+// No clear of the frame's Reflection: it is read only at water pixels (the composite and the
+// upsample are stencil-masked to the water), and there every pixel is written each frame by the
+// mirrored passes (a surface, else the mirrored sky) or the upsample; the views and the probe
+// show it only there (black outside the water or with reflections off), and a frame stopped early
+// has it cleared by ClearPass.
 std::vector<Access> ReflectionClearPass::accesses(const FrameSetup& frame) const {
-    std::vector<Access> used;
-    if (reflection_ == ReflectionTarget::Cleared) used.push_back({Target::Reflection, Use::Write});
-    if (frame.reflectionsActive)
-        for (const Access& access : waterReset(frame, output_)) used.push_back(access);
+    if (!frame.reflectionsActive) return {};
+    std::vector<Access> used = waterReset(frame, output_);
+    // The reduced reflection's own Reflection, cleared whole by markReducedWater.
+    if (runsIn_ == RunsIn::Frame && frame.reflectionDivisor > 1) used.insert(used.begin(), {Target::Reflection, Use::Write});
     return used;
 }
 
-void ReflectionClearPass::execute(PassContext& context) {
-    const FrameTargets& targets = context.targets;
-    if (reflection_ == ReflectionTarget::Cleared) {
-        bindFramebufferOf(targets, {{Target::Reflection, Use::Write}});
-        const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-        glClearBufferfv(GL_COLOR, 0, nothing);
-    }
-    if (!context.frame.reflectionsActive) return;
+bool ReflectionClearPass::active(const FrameSetup& frame) const { return frame.reflectionsActive; }
 
-    // The Reflection target's clear above always runs (the views show it outside the water; left
-    // alone it would hold whatever the memory held: NaNs on zink); the G-buffer's clear of the
-    // water only where water is seen.
+void ReflectionClearPass::execute(PassContext& context) {
+    // Only where water is seen: with no water in view nothing is touched at all.
     OnlyWhereWaterIsSeen onlyWithWater(context, true);
     ReflectionContext reflection(context);
     PassContext& mirrored = reflection.get();
     if (reflection.reduced()) markReducedWater(mirrored);
-    bindFramebufferOf(mirrored.targets, waterReset(mirrored.frame, output_));
-    bool writeGBuffer = output_ == SurfaceOutput::GBuffer;
+    std::vector<Access> reset = waterReset(mirrored.frame, output_);
+    bindFramebufferOf(mirrored.targets, reset);
+    bool writeGBuffer = reset.front().resource != Resource(Target::DepthStencil);
     glColorMask(writeGBuffer, writeGBuffer, writeGBuffer, writeGBuffer);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);

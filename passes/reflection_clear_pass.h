@@ -1,7 +1,7 @@
-// ReflectionClearPass: clears Reflection every frame (so it never shows a stale mirror image) and,
-// with reflections active, resets depth inside the water to the far plane (and, for the G-buffer,
-// the "nothing drawn" values) so the mirrored scene is depth-tested against itself only. The views'
-// fill of the mirrored scene (render/view_fill.h) keeps Reflection: the frame's reflection view.
+// ReflectionClearPass: with reflections active, resets depth inside the water to the far plane
+// (and, for the G-buffers that store position, the "nothing drawn" values) so the mirrored scene is
+// depth-tested against itself only. It clears nothing outside the water: Reflection is read only at
+// water pixels, where the mirrored passes write every pixel.
 #pragma once
 #include "passes/pass.h"
 
@@ -9,17 +9,21 @@ namespace oasis {
 
 class ReflectionClearPass : public Pass {
 public:
-    enum class ReflectionTarget { Cleared, Kept };
-    explicit ReflectionClearPass(SurfaceOutput output, ReflectionTarget reflection = ReflectionTarget::Cleared)
-        : output_(output), reflection_(reflection) {}
+    // Where it runs: in the frame, whose reflection drawn at a reduced resolution has targets of its
+    // own, cleared and marked here (their Reflection among them); or in the views' fill of the
+    // mirrored scene (render/view_fill.h), always drawn into the frame's targets.
+    enum class RunsIn { Frame, ViewFill };
+    explicit ReflectionClearPass(SurfaceOutput output, RunsIn runsIn = RunsIn::Frame)
+        : output_(output), runsIn_(runsIn) {}
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
     std::vector<Access> accesses(const FrameSetup& frame) const override;
+    bool active(const FrameSetup& frame) const override;
 protected:
     void execute(PassContext& context) override;
 
 private:
     SurfaceOutput output_;
-    ReflectionTarget reflection_;
+    RunsIn runsIn_;
 };
 
 }  // namespace oasis

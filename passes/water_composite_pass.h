@@ -12,7 +12,9 @@ public:
     // Fused, it blends Radiance (sampled) and tone-maps the water's pixels into Final; else it
     // blends onto Radiance. Either way it leaves the water surface's depth.
     std::vector<Access> accesses(const FrameSetup& frame) const override {
-        std::vector<Access> used{{Target::Reflection, Use::Sample}};
+        // The reflection only where it was drawn (water_composite.frag's reflectionsActive()).
+        std::vector<Access> used;
+        if (frame.reflectionsActive) used.push_back({Target::Reflection, Use::Sample});
         if (frame.toneMapFused) used.push_back({Target::Radiance, Use::Sample});
         used.push_back({frame.toneMapFused ? Target::Final : Target::Radiance, Use::Write});
         appendDepthStencil(used, {Use::StencilTest, Use::DepthWrite});

@@ -25,33 +25,42 @@ vec4 viewValue() { return texture(sourceTexture, vScreenUv); }
 uniform sampler2D sourceTexture;
 vec3 viewColour() {
     // Direct plant pixels only: in the deferred G-buffer the water holds the mirrored scene.
-    uint flags = gbufferFlagsAt(gbufferPixelAt(vScreenUv));
+    uint flags = gbufferSurfaceShownAt(gbufferPixelAt(vScreenUv)).flags;
     bool plant = (flags & SURFACE_PLANT) != 0u && (flags & SURFACE_REFLECTED) == 0u;
     return plant ? texture(sourceTexture, vScreenUv).rgb : vec3(0.0);
 }
 vec4 viewValue() { return vec4(viewColour(), 1.0); }
 
-#elif defined(VIEW_RADIANCE)
-#include "common/output.glsl"
+#elif defined(VIEW_RADIANCE) || defined(VIEW_HDR)
+#include "common/water.glsl"
 uniform sampler2D sourceTexture;
-vec3 viewColour() { return displayEncode(texture(sourceTexture, vScreenUv).rgb); }
-vec4 viewValue() { return texture(sourceTexture, vScreenUv); }  // linear, as stored
-
-#elif defined(VIEW_HDR)
+// Reflection is not cleared: the mirrored passes write it at the water's pixels (stencil mark 2)
+// only, so its views read it there and show 0 elsewhere and with reflections off (1 for them).
+uniform int sourceWaterOnly;
+uniform usampler2D gStencil;
+vec4 sourceAt(vec2 uv) {
+    if (sourceWaterOnly != 0 && (!reflectionsActive() || (texture(gStencil, uv).r & 0x7Fu) != 2u)) return vec4(0.0);
+    return texture(sourceTexture, uv);
+}
+#if defined(VIEW_RADIANCE)
+#include "common/output.glsl"
+vec3 viewColour() { return displayEncode(sourceAt(vScreenUv).rgb); }
+vec4 viewValue() { return sourceAt(vScreenUv); }  // linear, as stored
+#else
 // Linear light as stored, scaled by the view's exposure (2^stops) and gamma-encoded with no tone
 // curve: what lies above 1 after the exposure clips to white, so the stops show the range.
-uniform sampler2D sourceTexture;
 uniform float viewExposure;
-vec3 viewColour() { return pow(clamp(texture(sourceTexture, vScreenUv).rgb * viewExposure, 0.0, 1.0), vec3(1.0 / 2.2)); }
-vec4 viewValue() { return texture(sourceTexture, vScreenUv); }
+vec3 viewColour() { return pow(clamp(sourceAt(vScreenUv).rgb * viewExposure, 0.0, 1.0), vec3(1.0 / 2.2)); }
+vec4 viewValue() { return sourceAt(vScreenUv); }
+#endif
 
 #elif defined(VIEW_ALBEDO)
 vec3 viewColour() {
     // Linear reflectance, gamma-encoded so it reads like the frame; black where nothing was drawn.
-    return pow(clamp(texelFetch(gAlbedo, gbufferPixelAt(vScreenUv), 0).rgb, 0.0, 1.0), vec3(1.0 / 2.2));
+    return pow(clamp(gbufferSurfaceShownAt(gbufferPixelAt(vScreenUv)).albedo, 0.0, 1.0), vec3(1.0 / 2.2));
 }
 vec4 viewValue() {  // linear albedo, specular intensity
-    Surface s = readGBuffer(gbufferPixelAt(vScreenUv));
+    Surface s = gbufferSurfaceShownAt(gbufferPixelAt(vScreenUv));
     return vec4(s.albedo, s.specularIntensity);
 }
 
@@ -62,7 +71,7 @@ vec3 viewColour() {
     return 0.5 + 0.5 * clamp(gbufferNormalAt(pixel), -1.0, 1.0);
 }
 vec4 viewValue() {
-    vec3 n = gbufferNormalAt(gbufferPixelAt(vScreenUv));
+    vec3 n = gbufferSurfaceShownAt(gbufferPixelAt(vScreenUv)).normal;
     return vec4(n, length(n));
 }
 
@@ -94,8 +103,8 @@ vec3 viewColour() {
     float flagMarks = ((s.flags & SURFACE_REFLECTED) != 0u ? 0.5 : 0.0) + ((s.flags & SURFACE_PLANT) != 0u ? 0.25 : 0.0);
     return vec3(s.specularPower / 64.0, s.specularIntensity / 0.25, flagMarks);
 }
-vec4 viewValue() {  // specular power, intensity, flags (the bits), 0
-    Surface s = readGBuffer(gbufferPixelAt(vScreenUv));
+vec4 viewValue() {  // specular power, intensity, flags (the bits: SKY where nothing was drawn), 0
+    Surface s = gbufferSurfaceShownAt(gbufferPixelAt(vScreenUv));
     return vec4(s.specularPower, s.specularIntensity, float(s.flags), 0.0);
 }
 

@@ -27,11 +27,12 @@ bool lightReachesBox(PointLight light, vec3 lo, vec3 hi) {
 // The tile's surfaces of this half: the direct scene's, or (MIRRORED) the reflection's, which lie
 // inside the water only; outside it the G-buffer still holds the direct scene, never lit here.
 bool tileSurfaceAt(ivec2 pixel, out vec3 position) {
+    // The sky first: there the flags are undefined where the layout does not clear them.
+    if (gbufferSkyAt(pixel)) return false;
     uint flags = gbufferFlagsAt(pixel);
 #if defined(MIRRORED)
     if ((flags & SURFACE_REFLECTED) == 0u) return false;
 #endif
-    if ((flags & SURFACE_SKY) != 0u) return false;
     Surface s;
     s.relativePosition = gbufferPositionAt(pixel);
     s.flags = flags;

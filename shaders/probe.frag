@@ -14,7 +14,7 @@ layout(location = 0) out vec4 outValue;
 
 void main() {
     int slot = int(gl_FragCoord.x);
-    Surface s = readGBuffer(probePixel);
+    Surface s = gbufferSurfaceShownAt(probePixel);  // the cleared values at a sky pixel
     float depth = texelFetch(probeDepthStencil, probePixel, 0).r;
     bool sky = gbufferSkyAt(probePixel);
     if (slot == 0) outValue = vec4(s.albedo, s.specularIntensity);

@@ -32,7 +32,8 @@ const int INFO_FLAGS_CHANNEL = OASIS_COMPACT_INFO_FLAGS_CHANNEL;
 const int INFO_FLAGS_CHANNEL = OASIS_INFO_FLAGS_CHANNEL;
 #endif
 
-// The info texel where nothing was drawn: the SKY flag (ClearPass writes the same from C++).
+// The info texel where nothing was drawn: the SKY flag (ClearPass writes the same from C++ in the
+// layouts that keep Info's clear).
 vec4 clearedInfo() {
     vec4 info = vec4(0.0);
     info[INFO_FLAGS_CHANNEL] = float(SURFACE_SKY) / 255.0;
@@ -73,7 +74,18 @@ uniform sampler2D gInfo;
 uniform sampler2D gDepth;     // the depth-stencil target in depth mode; read by those layouts only
 
 uint gbufferFlagsAt(ivec2 pixel) { return gbufferFlags(texelFetch(gInfo, pixel, 0)); }
-bool gbufferSkyAt(ivec2 pixel) { return (gbufferFlagsAt(pixel) & SURFACE_SKY) != 0u; }
+
+// Nothing drawn at the pixel (the sky). ClearPass clears no colour target of the compact layout:
+// there its depth (read for the position anyway) still at the far plane says so, and the colour
+// targets hold whatever an earlier frame left. The other layouts keep Info's clear to the SKY flag
+// (no depth is bound to their readers).
+bool gbufferSkyAt(ivec2 pixel) {
+#if defined(GBUFFER_COMPACT)
+    return depthAtFarPlane(texelFetch(gDepth, pixel, 0).r);
+#else
+    return (gbufferFlagsAt(pixel) & SURFACE_SKY) != 0u;
+#endif
+}
 
 vec3 gbufferNormalAt(ivec2 pixel) {
 #if defined(GBUFFER_COMPACT)
@@ -106,6 +118,25 @@ Surface readGBuffer(ivec2 pixel) {
     s.specularIntensity = info.g;
 #endif
     s.flags = gbufferFlags(info);
+    return s;
+}
+
+// The surface as the views and the probe show it: at a sky pixel the values the colour targets
+// held when they were still cleared (0; the compact normal's (0, 0) texel decoded; SKY), never the
+// undefined texels there; the position as the layout gives it (from depth: the far plane's point).
+Surface gbufferSurfaceShownAt(ivec2 pixel) {
+    Surface s = readGBuffer(pixel);
+    if (!gbufferSkyAt(pixel)) return s;
+    s.albedo = vec3(0.0);
+    s.specularIntensity = 0.0;
+    s.specularPower = 0.0;
+    s.flags = SURFACE_SKY;
+#if defined(GBUFFER_COMPACT)
+    s.normal = octahedralDecode(vec2(-1.0));
+#else
+    s.normal = vec3(0.0);
+    s.relativePosition = vec3(0.0);
+#endif
     return s;
 }
 

@@ -28,9 +28,10 @@ void add(PassList& list, Arguments... arguments) {
 // The steps that draw the scene's surfaces into `output`: cleared first (the direct scene's
 // targets, or the water's depth for the mirrored scene), then the terrain and the plants.
 void addSceneSteps(PassList& list, SurfaceOutput output, Mirroring mirroring,
-                   ReflectionClearPass::ReflectionTarget reflection = ReflectionClearPass::ReflectionTarget::Cleared) {
-    if (mirroring == Mirroring::Direct) add<ClearPass>(list, output);
-    else add<ReflectionClearPass>(list, output, reflection);
+                   ClearPass::StoppedFrameTargets stopped = ClearPass::StoppedFrameTargets::Cleared,
+                   ReflectionClearPass::RunsIn runsIn = ReflectionClearPass::RunsIn::Frame) {
+    if (mirroring == Mirroring::Direct) add<ClearPass>(list, output, stopped);
+    else add<ReflectionClearPass>(list, output, runsIn);
     add<TerrainPass>(list, output, mirroring);
     add<VegetationPass>(list, output, mirroring);
 }
@@ -76,19 +77,22 @@ PassList assembleFrame(FrameOutput output) {
     if (output == FrameOutput::StoppedFrameFill) {
         // Only the steps the forward frame ran; the depth copy follows them where the deferred
         // frame's graph keeps it (Renderer::fillStoppedFrame).
-        addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct);
+        // Radiance and Reflection stay the forward frame's.
+        addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct, ClearPass::StoppedFrameTargets::Kept);
         add<DepthCopyPass>(list, Mirroring::Direct);
         add<WaterMaskPass>(list);
         return list;
     }
     add<TerrainHeightsPass>(list);  // the fill may run before any frame has
-    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct);
+    // The views' fills redraw the scene's surfaces only: Radiance and Reflection stay the frame's.
+    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Direct, ClearPass::StoppedFrameTargets::Kept);
     if (output == FrameOutput::ViewFillDirect) {
         add<WaterMaskPass>(list, WaterDepth::Kept);
         return list;
     }
     add<WaterMaskPass>(list, WaterDepth::Written);
-    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Mirrored, ReflectionClearPass::ReflectionTarget::Kept);
+    addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Mirrored, ClearPass::StoppedFrameTargets::Kept,
+                  ReflectionClearPass::RunsIn::ViewFill);
     return list;
 }
 

@@ -138,6 +138,26 @@ std::string waterSceneAt(const PixelProbe& probe, const Renderer& renderer) {
     return text;
 }
 
+// Texels no pass of the frame wrote hold whatever the memory held (an earlier frame's values, NaNs
+// on zink): nothing clears the G-buffer's colour targets where no surface was drawn (the sky; Info
+// too in the compact layout, which tells the sky by depth) nor Reflection outside the water. The
+// probe shows them as the clear used to leave them: zeros, Info's SKY flag.
+void showUnwrittenAsCleared(PixelProbe& probe, const GBufferLayout& layout, bool reflectionsActive) {
+    bool reflectionWritten = reflectionsActive && (probe.stencil & 0x7f) == kStencilWater;
+    for (StoredTexel& texel : probe.stored) {
+        bool colour = texel.target == targetName(Target::Albedo) || texel.target == targetName(Target::Normal) ||
+                      texel.target == targetName(Target::Position);
+        bool info = texel.target == targetName(Target::Info) && layout.positionFromDepth();
+        bool unwritten = ((colour || info) && probe.sky) ||
+                         (texel.target == targetName(Target::Reflection) && !reflectionWritten);
+        if (!unwritten) continue;
+        std::fill(texel.values.begin(), texel.values.end(), 0.0);
+        if (info)  // the compact layout's info is bytes
+            for (size_t c = 0; c < texel.values.size(); ++c) texel.values[c] = std::round(layout.clearedInfo()[int(c)] * 255.0f);
+    }
+    if (!reflectionWritten) probe.reflection = glm::vec4(0.0f);
+}
+
 // The GPU half: shaders/probe.frag writes its slots into an 8x1 float target.
 constexpr int kProbeSlots = 8;
 
@@ -226,6 +246,7 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
         if (texel.target == targetName(Target::Final))
             probe.final = glm::ivec4(texel.values[0], texel.values[1], texel.values[2], texel.values[3]);
     }
+    showUnwrittenAsCleared(probe, targets.layout(), renderer.lastFrame().reflectionsActive);
     probe.stencilMeaning = stencilMeaning(probe.stencil);
     probe.waterScene = waterSceneAt(probe, renderer);
     const FrameSetup& frame = renderer.lastFrame();

@@ -369,6 +369,43 @@ inline unsigned infoFlags(glm::vec4 info) { return findGBufferLayout("standard")
 // Stencil marks (passes/pass.h: StencilMark).
 constexpr uint8_t kStencilSky = 0, kStencilTerrain = 1, kStencilWater = 2, kStencilPlant = 3;
 
+// Whether a whole frame wrote a colour target's texel (and below: the non-finite values among
+// those, and a target with the rest set to 0). Nothing clears a target where no pass writes it (issue 30, item 6): the G-buffer's colour
+// targets are written where a surface is the nearest (stencil terrain or plant; at the water's
+// pixels they hold the mirrored scene, or where it reflects the sky whatever was there), Reflection
+// at the water's pixels with reflections active; the other targets everywhere. Elsewhere a target
+// holds an earlier frame's values or fresh memory (NaNs on zink), which nothing reads.
+inline bool texelWritten(Target target, uint8_t stencil, bool reflectionsActive) {
+    uint8_t mark = stencil & 0x7f;
+    if (target == Target::Albedo || target == Target::Normal || target == Target::Position || target == Target::Info)
+        return mark == kStencilTerrain || mark == kStencilPlant;
+    if (target == Target::Reflection) return reflectionsActive && mark == kStencilWater;
+    return true;
+}
+inline int countNonFiniteWritten(const std::vector<float>& values, Target target, const std::vector<uint8_t>& stencil,
+                                 bool reflectionsActive) {
+    int count = 0;
+    for (size_t i = 0; i < stencil.size(); ++i)
+        for (size_t c = 0; texelWritten(target, stencil[i], reflectionsActive) && c < 4; ++c)
+            count += std::isfinite(values[i * 4 + c]) ? 0 : 1;
+    return count;
+}
+// The same target with the texels the frame did not write set to 0, for comparing two frames.
+inline std::vector<float> writtenTexels(std::vector<float> values, Target target, const std::vector<uint8_t>& stencil,
+                                        bool reflectionsActive) {
+    for (size_t i = 0; i < stencil.size(); ++i)
+        if (!texelWritten(target, stencil[i], reflectionsActive))
+            for (size_t c = 0; c < 4; ++c) values[i * 4 + c] = 0.0f;
+    return values;
+}
+// Nothing drawn at a pixel, as gbufferSkyAt tells it (shaders/common/gbuffer.glsl): the depth at the
+// far plane in the layouts that rebuild position from it (compact; its Info is not cleared), Info's
+// SKY flag in the others.
+inline bool nothingDrawn(const GBufferLayout& layout, glm::vec4 info, float depth, float farPlaneWindowDepth) {
+    if (layout.positionFromDepth()) return depth == farPlaneWindowDepth;
+    return (layout.storedFlags(info) & OASIS_SURFACE_SKY) != 0u;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Frame geometry on the CPU, in double, from the frame's own matrices.
 

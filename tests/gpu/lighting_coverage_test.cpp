@@ -51,7 +51,9 @@ CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool read
     });
     if (counted) glDeleteQueries(1, &query);
     run.radiance = renderer.readTarget(Target::Radiance);
-    run.reflection = renderer.readTarget(Target::Reflection);
+    // Where the frame wrote it: nothing clears Reflection outside the water (fresh NaNs on zink).
+    run.reflection = writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection, renderer.readStencil(),
+                                   renderer.lastFrame().reflectionsActive);
     renderer.renderView("final");
     run.final = renderer.readDisplay();
     return run;
@@ -129,12 +131,12 @@ TEST_F(LightingCoverage, AFrameStoppedBeforeTheSkyShowsItBlack) {
     std::vector<float> whole = renderer.readTarget(Target::Radiance);
     renderer.renderFrame(scene, "SkyPass.deferred");
     std::vector<float> stopped = renderer.readTarget(Target::Radiance);
-    std::vector<float> info = renderer.readTarget(Target::Info);
-    const GBufferLayout& layout = renderer.targets().layout();
+    // The compact layout tells the sky by depth at the far plane (its Info is not cleared).
+    std::vector<float> depth = renderer.readDepth();
+    const float farPlane = renderer.targets().depth().farPlaneWindowDepth;
     int sky = 0, skyBefore = 0, litSurfaces = 0, wrong = 0;
     for (size_t pixel = 0; pixel < size_t(kPixels); ++pixel) {
-        glm::vec4 infoTexel(info[pixel * 4], info[pixel * 4 + 1], info[pixel * 4 + 2], info[pixel * 4 + 3]);
-        bool isSky = (layout.storedFlags(infoTexel) & OASIS_SURFACE_SKY) != 0u;
+        bool isSky = depth[pixel] == farPlane;
         glm::vec3 stoppedRgb(stopped[pixel * 4], stopped[pixel * 4 + 1], stopped[pixel * 4 + 2]);
         glm::vec3 wholeRgb(whole[pixel * 4], whole[pixel * 4 + 1], whole[pixel * 4 + 2]);
         bool finite = std::isfinite(stoppedRgb.r) && std::isfinite(stoppedRgb.g) && std::isfinite(stoppedRgb.b);

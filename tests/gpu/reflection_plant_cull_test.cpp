@@ -43,12 +43,17 @@ TEST_F(ReflectionPlantCull, SameFramesBitForBitWithFewerMirroredPlants) {
             SCOPED_TRACE(pose.name + (kind == PipelineKind::Forward ? " forward" : " deferred"));
             const Image without = renderFinal(renderer, withCull(pose.scene, false), kind);
             ASSERT_TRUE(hasContent(without));
-            const std::vector<float> reflectionWithout = renderer.readTarget(Target::Reflection);
+            // Where the frame wrote it (writtenTexels: nothing clears Reflection outside the water).
+            auto reflection = [&] {
+                return writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection,
+                                     renderer.readStencil(), renderer.lastFrame().reflectionsActive);
+            };
+            const std::vector<float> reflectionWithout = reflection();
             const VegetationStats statsWithout = renderer.vegetationStats();
             EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
 
             const Image with = renderFinal(renderer, withCull(pose.scene, true), kind);
-            const std::vector<float> reflectionWith = renderer.readTarget(Target::Reflection);
+            const std::vector<float> reflectionWith = reflection();
             const VegetationStats stats = renderer.vegetationStats();
             EXPECT_EQ(renderer.lastFrame().mirroredPlantsCulled, renderer.lastFrame().reflectionsActive);
 

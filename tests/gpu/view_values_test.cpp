@@ -39,7 +39,7 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             size_t i = size_t(y) * kWidth + size_t(x);
-            bool sky = layout.storedFlags(texel(info, kWidth, x, y)) & kSurfaceSky;
+            bool sky = nothingDrawn(layout, texel(info, kWidth, x, y), depth[i], renderer.targets().depth().farPlaneWindowDepth);
             glm::vec4 p = texel(positions, kWidth, x, y), pv = texel(positionValues, kWidth, x, y);
             if (sky ? pv != glm::vec4(0.0f)
                     : glm::distance(glm::vec3(p), glm::vec3(pv)) > 1e-5f * (1.0f + glm::length(glm::vec3(p))) ||
