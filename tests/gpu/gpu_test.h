@@ -398,6 +398,16 @@ inline std::vector<float> writtenTexels(std::vector<float> values, Target target
             for (size_t c = 0; c < 4; ++c) values[i * 4 + c] = 0.0f;
     return values;
 }
+// Sets a colour target to 0 everywhere before a frame, so that a test can tell the texels the
+// frame writes from those it leaves (which nothing clears: fresh memory holds NaNs on zink).
+inline void zeroTarget(const FrameTargets& targets, Target target) {
+    bindFramebufferOf(targets, {{target, Use::Write}});
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearBufferfv(GL_COLOR, 0, zero);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
 // Nothing drawn at a pixel, as gbufferSkyAt tells it (shaders/common/gbuffer.glsl): the depth at the
 // far plane in the layouts that rebuild position from it (compact; its Info is not cleared), Info's
 // SKY flag in the others.
