@@ -2,7 +2,10 @@
 // ".tmp-" (oasis's temporaries, render/file_output.h) is created in a watched directory or in a
 // directory made inside one (compare --driver's staging directory). With --after SECONDS instead, at
 // that time after the start. Prints how the command ended; exit 0 if the signal ended it, 3 if the
-// command ended first (no write was seen: not a failure of oasis, the caller decides), 1 otherwise.
+// command ended first (no write was seen: not a failure of oasis, the caller decides), 4 if the
+// signal was sent and the command still exited 0 (it came too late to matter: after the work, e.g.
+// during a sanitizer's exit-time leak check, which runs with signals blocked; the caller decides),
+// 1 otherwise.
 //
 // usage: oasis_signal_at_write SIGNAL (--at-temporary | --after SECONDS) DIR... -- COMMAND ARGS...
 #include <signal.h>
@@ -99,5 +102,6 @@ int main(int argc, char** argv) {
     }
     std::printf("signal_at_write: %s %s; the command exited with %d\n", args[0].c_str(),
                 sent ? ("sent " + sentAt).c_str() : "not sent (no write seen before the end)", WEXITSTATUS(status));
-    return sent ? 1 : 3;
+    if (!sent) return 3;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 4 : 1;
 }
