@@ -54,41 +54,41 @@ struct ValidatedFrames {
     ~ValidatedFrames() { setFrameValidation(was); }
 };
 
-TEST_F(GpuTest, APassDrawingOutsideItsDeclarationFailsValidation) {
-    ValidatedFrames validated;
-    FrameTargets targets(layoutNamed("compact"), standardDepthConvention(), 32, 18);
-    SceneGeometry geometry(SceneSettings{}.grid);
+// A small compact frame's targets and context for running one pass validated; the error it
+// throws must name `expected`.
+struct OnePassFrame {
+    explicit OnePassFrame(ShaderLibrary& shaders) : context{targets, shaders, geometry, frame, vegetation} {}
+    ~OnePassFrame() { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+    void expectRejected(Pass& pass, const std::string& expected, const char* why) {
+        try {
+            runValidated(pass, context);
+            ADD_FAILURE() << why;
+        } catch (const std::logic_error& error) {
+            EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+        }
+    }
+    FrameTargets targets{layoutNamed("compact"), standardDepthConvention(), 32, 18};
+    SceneGeometry geometry{SceneSettings{}.grid};
     VegetationBuffers vegetation;
     FrameSetup frame;
-    PassContext context{targets, *shaders_, geometry, frame, vegetation};
+    PassContext context;
+};
+
+TEST_F(GpuTest, APassDrawingOutsideItsDeclarationFailsValidation) {
+    ValidatedFrames validated;
+    OnePassFrame one(*shaders_);
     ClearsOneTarget declared(true), misdeclared(false);
-    EXPECT_NO_THROW(runValidated(declared, context));
-    try {
-        runValidated(misdeclared, context);
-        ADD_FAILURE() << "a pass that cleared Final while declaring Radiance passed validation";
-    } catch (const std::logic_error& error) {
-        EXPECT_NE(std::string(error.what()).find("MisdeclaredPass draws into final"), std::string::npos) << error.what();
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    EXPECT_NO_THROW(runValidated(declared, one.context));
+    one.expectRejected(misdeclared, "MisdeclaredPass draws into final",
+                       "a pass that cleared Final while declaring Radiance passed validation");
 }
 
 TEST_F(GpuTest, APassDeclaringAWriteItNeverMakesFailsValidation) {
     ValidatedFrames validated;
-    FrameTargets targets(layoutNamed("compact"), standardDepthConvention(), 32, 18);
-    SceneGeometry geometry(SceneSettings{}.grid);
-    VegetationBuffers vegetation;
-    FrameSetup frame;
-    PassContext context{targets, *shaders_, geometry, frame, vegetation};
+    OnePassFrame one(*shaders_);
     DeclaresAWriteItNeverMakes overdeclared;
-    try {
-        runValidated(overdeclared, context);
-        ADD_FAILURE() << "a pass that declared Final and never bound it passed validation";
-    } catch (const std::logic_error& error) {
-        EXPECT_NE(std::string(error.what()).find("OverdeclaredPass declares it writes final but never binds it"),
-                  std::string::npos)
-            << error.what();
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    one.expectRejected(overdeclared, "OverdeclaredPass declares it writes final but never binds it",
+                       "a pass that declared Final and never bound it passed validation");
 }
 
 TEST_F(GpuTest, TheFramesOfBothPipelinesPassValidation) {
