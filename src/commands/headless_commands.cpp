@@ -440,13 +440,9 @@ int runProbeCommand(const Options& options) {
         if (renderer.targets().layout().name != "full")
             error = measureEncodingError(renderer, session.scene, renderer.targets().layout());
         renderer.setPipeline(options.pipeline);
-        // The history's frames first: its last one scissors a pass, so the probe's frame follows.
-        ProbeReport probed;
-        if (options.probeHistory) probed.history = pixelHistory(renderer, session.scene, options.probeAt->first, options.probeAt->second);
-        renderer.renderFrame(session.scene, options.stopBefore);
-        probed.probe = probePixel(renderer, options.probeAt->first, options.probeAt->second);
+        ProbeReport probed = probeInDepth(renderer, session.scene, options.probeAt->first, options.probeAt->second,
+                                          {options.probeShading, options.probeHistory, options.stopBefore});
         if (error) addEncodingError(probed.probe, *error);
-        if (options.probeShading) probed.shading = probeShading(renderer, probed.probe);
         std::string report = options.json ? reportJson(probed) : reportText(probed);
         std::fputs((report + (options.json ? "\n" : "")).c_str(), stdout);
         return 0;

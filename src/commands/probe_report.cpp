@@ -5,13 +5,12 @@
 
 namespace oasis {
 
-ProbeReport probeInDepth(Renderer& renderer, const SceneSettings& scene, int x, int y) {
+ProbeReport probeInDepth(Renderer& renderer, const SceneSettings& scene, int x, int y, const ProbeAsked& asked) {
     ProbeReport report;
-    // The history's frames first: its last one scissors a pass, so the probe's frame follows.
-    report.history = pixelHistory(renderer, scene, x, y);
-    renderer.renderFrame(scene);
+    if (asked.history) report.history = pixelHistory(renderer, scene, x, y);
+    renderer.renderFrame(scene, asked.stopBefore);
     report.probe = probePixel(renderer, x, y);
-    report.shading = probeShading(renderer, report.probe);
+    if (asked.shading) report.shading = probeShading(renderer, report.probe);
     return report;
 }
 

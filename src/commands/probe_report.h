@@ -20,10 +20,17 @@ struct ProbeReport {
     std::optional<std::vector<PassAtPixel>> history;
 };
 
-// The probe of (x, y) (0,0 top left) with its shading and history, of the frame `scene` renders
-// with the renderer's pipeline: the history's frames first, then the frame the probe and the
-// shading read. Leaves that frame rendered.
-ProbeReport probeInDepth(Renderer& renderer, const SceneSettings& scene, int x, int y);
+// What a probe reports besides the pixel's values, and of which frame.
+struct ProbeAsked {
+    bool shading = true;
+    bool history = true;
+    std::string stopBefore;  // the frame the probe and the shading read ends before this pass
+};
+
+// The probe of (x, y) (0,0 top left), with what `asked` adds, of the frame `scene` renders with the
+// renderer's pipeline: the history's frames first (its last one scissors a pass), then the frame
+// the probe and the shading read. Leaves that frame rendered.
+ProbeReport probeInDepth(Renderer& renderer, const SceneSettings& scene, int x, int y, const ProbeAsked& asked = {});
 
 std::string reportJson(const ProbeReport& report);  // one JSON object: the probe's, with "shading" and "history"
 std::string reportText(const ProbeReport& report);  // lines for people
