@@ -81,5 +81,6 @@ for setup in "${setups[@]}"; do
     "$stencil" "$summary" "$(field forward_ms "$cmp")" "$(field deferred_ms "$cmp")" "$psnr"
 done
 echo "| NVIDIA H100 (EGL headless) | not on this machine: measured on a lent one, see [the NVIDIA section](#nvidia-h100-a-lent-machine) | | | | | | | | |"
+echo "| NVIDIA H200 (EGL headless) | not on this machine: measured on a lent one, see [the H200 section](#nvidia-h200-a-second-loan-the-frame-before-and-after-issue-30s-clears) | | | | | | | | |"
 echo
 echo "ms: median of $frames frames (softpipe: 1) at 640x360, wall time around glFinish, $(nproc) cores, load average at the end $(cut -d' ' -f1-3 /proc/loadavg); tests: the set-up's ctest label (or tests); PSNR vs llvmpipe: the default frame at 320x180, deferred, over 8-bit RGB (\`oasis compare --driver llvmpipe --driver SET-UP\`)"

@@ -1,5 +1,5 @@
 // The frame's memory traffic counted by the driver (render/frame_traffic.h): the same counts from
-// run to run (exactly, unlike times), a full-screen draw is one fragment per pixel, and a clear's
+// run to run (exactly on a CPU rasteriser, unlike times; a GPU's invocations within 3%), a full-screen draw is one fragment per pixel, and a clear's
 // bytes are its attachments' bytes.
 #include "gpu_test.h"
 
@@ -19,18 +19,28 @@ protected:
     }
 };
 
+// Samples passed, clears and the bytes written follow from the depth test and are exact on every
+// driver. Fragment invocations (and the bytes read, counted per invocation) are exact on a CPU
+// rasteriser; a GPU's early depth culling races between the fragments of one draw, so an
+// alpha-tested pass's invocations move between two draws of the same frame (NVIDIA H200, 96x54:
+// VegetationPass 31 of 6409, 0.5%; H100: 2.3% at most). There within 3% a pass and 1% the frame.
 void expectSameCounts(const FrameTraffic& a, const FrameTraffic& b) {
+    const bool exact = cpuRasteriser();
+    auto expectNear = [exact](double x, double y, double fraction, const std::string& what) {
+        if (exact) EXPECT_EQ(x, y) << what;
+        else EXPECT_LE(std::fabs(x - y), fraction * std::max(x, y) + 16.0) << what;
+    };
     ASSERT_EQ(a.passes.size(), b.passes.size());
     for (size_t i = 0; i < a.passes.size(); ++i) {
         const PassTraffic &x = a.passes[i], &y = b.passes[i];
         EXPECT_EQ(x.name, y.name);
         EXPECT_EQ(x.samples, y.samples) << x.name;
-        EXPECT_EQ(x.invocations, y.invocations) << x.name;
         EXPECT_EQ(x.clearedBytes, y.clearedBytes) << x.name;
         EXPECT_EQ(x.bytesWritten, y.bytesWritten) << x.name;
-        EXPECT_EQ(x.bytesRead, y.bytesRead) << x.name;
+        expectNear(double(x.invocations), double(y.invocations), 0.03, x.name);
+        expectNear(double(x.bytesRead), double(y.bytesRead), 0.03, x.name);
     }
-    EXPECT_EQ(a.bytesPerPixel(), b.bytesPerPixel());
+    expectNear(a.bytesPerPixel(), b.bytesPerPixel(), 0.01, "the frame's bytes per pixel");
 }
 
 TEST_P(FrameTrafficTest, TheCountsAreTheSameFromRunToRun) {
