@@ -44,7 +44,7 @@ inline const char* kOverviewName = "overview";
 // True when the view reads a G-buffer colour target (which only the deferred pipeline fills).
 bool readsGBuffer(const DebugView& view);
 // True when the view reads the frame's surfaces (the G-buffer, depth or stencil), which the
-// renderer fills with one water scene before the view (render/view_fill.h).
+// renderer fills with one water scene before the view (frame/view_fill.h).
 bool readsSceneSurfaces(const DebugView& view);
 // What the view shows at water pixels, one line for its legend and the panel; `surfaces` is what
 // the G-buffer and depth hold there (Renderer::viewScene().description). "" for the atlas.

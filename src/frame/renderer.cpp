@@ -1,5 +1,5 @@
 // Frame orchestration: upload the frame's uniforms, run the active pipeline, draw debug views.
-#include "render/renderer.h"
+#include "frame/renderer.h"
 
 #include "gl/frame_capture.h"
 
