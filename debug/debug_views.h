@@ -51,5 +51,9 @@ bool readsSceneSurfaces(const DebugView& view);
 std::string waterNote(const DebugView& view, const std::string& surfaces);
 std::string debugProgramName(const DebugView& view);        // "debug.<name>"
 std::string debugValuesProgramName(const DebugView& view);  // "debug.values.<name>": viewValue() as floats
+// Adds the views' programs to the shader variant table (render/shader_variants.h), the two above
+// per view, once however often it is called: the renderer calls it as it is made, and so does
+// whatever asks the table for them without a renderer (the shader and table tests).
+void registerDebugViewPrograms();
 
 }  // namespace oasis

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "debug/debug_views.h"
 #include "gl/capabilities.h"
 #include "gl/frame_capture.h"
 #include "passes/pass.h"
@@ -17,6 +18,7 @@ namespace oasis {
 
 Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     : shaders_(shaders), geometry_(scene.grid) {
+    registerDebugViewPrograms();  // the debug views' programs, which debug/ adds to the variant table
     const std::vector<std::string>& dialectDefines = shaders.dialect().defines;
     setWaterClipByClipDistance(std::find(dialectDefines.begin(), dialectDefines.end(), "OASIS_NO_CLIP_DISTANCE 1") ==
                                dialectDefines.end());
