@@ -1,6 +1,7 @@
 // The renderer: owns the shader library, the scene's GPU data, the frame targets, both pipelines
 // (built once; switching only changes which runs) and the debug views. The window app, the
-// headless commands and the tests all drive this same object.
+// headless commands and the tests all drive this same object. Its choices from what the context
+// offers (depth convention, lights path, water bounds, light method) are in renderer_choices.cpp.
 #pragma once
 #include <memory>
 #include <optional>

@@ -45,7 +45,7 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) {
 INSTANTIATE_TEST_SUITE_P(Shaders, EveryVariant, ::testing::ValuesIn(variantNames()), testName);
 
 // The variants that record or clip to the visible water, with the context define that turns it on
-// where storage blocks exist (frame/renderer.cpp, common/water_bounds.glsl).
+// where storage blocks exist (frame/renderer_choices.cpp, common/water_bounds.glsl).
 class WaterBoundedVariant : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(WaterBoundedVariant, CompilesAndLinksWithGlslang) {
