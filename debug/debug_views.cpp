@@ -1,6 +1,8 @@
 // The debug view table.
 #include "debug/debug_views.h"
 
+#include "render/shader_variants.h"
+
 namespace oasis {
 namespace {
 
@@ -91,5 +93,19 @@ std::string waterNote(const DebugView& view, const std::string& surfaces) {
 
 std::string debugProgramName(const DebugView& view) { return "debug." + view.name; }
 std::string debugValuesProgramName(const DebugView& view) { return "debug.values." + view.name; }
+
+void registerDebugViewPrograms() {
+    static const bool registered = [] {
+        std::vector<ProgramVariant> variants;
+        for (const DebugView& view : debugViews()) {
+            variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});
+            variants.push_back({debugValuesProgramName(view), "fullscreen.vert", "debug_view.frag",
+                                {view.remapDefine, "VIEW_VALUES"}});
+        }
+        addProgramVariants(variants);
+        return true;
+    }();
+    (void)registered;
+}
 
 }  // namespace oasis

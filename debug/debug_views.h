@@ -44,12 +44,16 @@ inline const char* kOverviewName = "overview";
 // True when the view reads a G-buffer colour target (which only the deferred pipeline fills).
 bool readsGBuffer(const DebugView& view);
 // True when the view reads the frame's surfaces (the G-buffer, depth or stencil), which the
-// renderer fills with one water scene before the view (render/view_fill.h).
+// renderer fills with one water scene before the view (frame/view_fill.h).
 bool readsSceneSurfaces(const DebugView& view);
 // What the view shows at water pixels, one line for its legend and the panel; `surfaces` is what
 // the G-buffer and depth hold there (Renderer::viewScene().description). "" for the atlas.
 std::string waterNote(const DebugView& view, const std::string& surfaces);
 std::string debugProgramName(const DebugView& view);        // "debug.<name>"
 std::string debugValuesProgramName(const DebugView& view);  // "debug.values.<name>": viewValue() as floats
+// Adds the views' programs to the shader variant table (render/shader_variants.h), the two above
+// per view, once however often it is called: the renderer calls it as it is made, and so does
+// whatever asks the table for them without a renderer (the shader and table tests).
+void registerDebugViewPrograms();
 
 }  // namespace oasis

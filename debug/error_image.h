@@ -1,4 +1,4 @@
-// The picture of an encoding-error view (render/encoding_error.h): each pixel's error on the
+// The picture of an encoding-error view (frame/encoding_error.h): each pixel's error on the
 // depth view's ramp from `low` to `high`, dark grey where the two frames share no surface. The
 // render command adds its legend strip; the window shows it as the frame.
 #pragma once

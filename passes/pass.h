@@ -87,7 +87,7 @@ public:
     std::vector<Resource> writes(const FrameSetup& frame) const;
     bool writes(const FrameSetup& frame, Target target) const;
     // Whether the pass has work this frame by the frame's own settings (the mirrored passes only
-    // with reflections on). Whether anyone needs its work is the frame graph's (render/frame_graph.h).
+    // with reflections on). Whether anyone needs its work is the frame graph's (frame/frame_graph.h).
     virtual bool active(const FrameSetup&) const { return true; }
     // The step of drawing the scene this pass does, named the same in both pipelines ("clear",
     // "TerrainPass", "TerrainPass.mirrored"): the link between a forward pass and its G-buffer
@@ -146,7 +146,7 @@ private:
 // tested or written) and sets the viewport to the whole target.
 void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& accesses);
 // While `into` is set, bindFramebufferOf adds each target it attaches there: the frame's
-// validation (render/frame_graph.h) holds what a pass bound against what it declared.
+// validation (frame/frame_graph.h) holds what a pass bound against what it declared.
 void recordBoundTargets(std::vector<Target>* into);
 // Whether a pass shading into `output` writes Final too this frame (the fused tone map).
 bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring);

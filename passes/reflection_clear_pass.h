@@ -11,7 +11,7 @@ class ReflectionClearPass : public Pass {
 public:
     // Where it runs: in the frame, whose reflection drawn at a reduced resolution has targets of its
     // own, cleared and marked here (their Reflection among them); or in the views' fill of the
-    // mirrored scene (render/view_fill.h), always drawn into the frame's targets.
+    // mirrored scene (frame/view_fill.h), always drawn into the frame's targets.
     enum class RunsIn { Frame, ViewFill };
     explicit ReflectionClearPass(SurfaceOutput output, RunsIn runsIn = RunsIn::Frame)
         : output_(output), runsIn_(runsIn) {}

@@ -1,7 +1,7 @@
 // WaterMaskPass: marks kStencilWater wherever the water plane is the nearest surface (depth
 // tested against what is already drawn) and leaves the water's depth there; writes no colour.
 // Depth is then the visible surface's at every later stage, with reflections on or off.
-// The views' fill of the direct scene (render/view_fill.h) marks the water without its depth, so
+// The views' fill of the direct scene (frame/view_fill.h) marks the water without its depth, so
 // depth keeps the lakebed the G-buffer holds there.
 #pragma once
 #include "passes/pass.h"

@@ -1,6 +1,6 @@
 // The pixel probe (`oasis probe`, the window's inspector): decodes one G-buffer pixel through the
 // same common/gbuffer.glsl the lighting pass reads it with, and writes each quantity to one texel
-// of a small float target (src/render/pixel_probe.cpp reads them back by these slots).
+// of a small float target (src/frame/pixel_probe.cpp reads them back by these slots).
 #include "common/frame_block.glsl"
 #include "common/gbuffer.glsl"
 #define LIGHTS_UBO

@@ -1,7 +1,7 @@
 // `oasis probe --shading`: how one pixel was shaded, by the frame's own GLSL. Its SHADING_RECORD
 // variant turns common/shading_terms.glsl's RECORD_TERM into stores, so shadeSurface, the lights
 // and the water's surface record their terms while they compute what the frame computed there;
-// fragment i of this 1-row draw writes term i (src/render/shading_probe.cpp reads them back).
+// fragment i of this 1-row draw writes term i (src/frame/shading_probe.cpp reads them back).
 #include "common/frame_block.glsl"
 #include "common/gbuffer.glsl"
 #include "common/output.glsl"

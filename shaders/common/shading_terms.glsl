@@ -1,6 +1,6 @@
 // The slots of `oasis probe --shading`: each term shadeSurface (common/lighting.glsl), the water's
 // surface (common/water_surface.glsl) and the probe (probe_shading.frag) record, one RGBA float
-// texel each. Macros, so one file serves GLSL and C++ (src/render/shading_probe.cpp names them).
+// texel each. Macros, so one file serves GLSL and C++ (src/frame/shading_probe.cpp names them).
 // RECORD_TERM is a no-op outside the probe's SHADING_RECORD variant: the frame's shaders are the same code.
 #ifndef OASIS_SHADING_TERMS_GLSL
 #define OASIS_SHADING_TERMS_GLSL

@@ -4,7 +4,7 @@
 // seen, and nothing at all when none is. Clipping a full-screen triangle changes no pixel; the
 // mirrored geometry and the water quad are not clipped: new vertices at the clip edges would move
 // their interpolated attributes and depth by rounding, and the frame would no longer be the one
-// every fallback draws bit for bit (they stay stencil-masked). WATER_BOUNDS is a context define (render/renderer.cpp: where
+// every fallback draws bit for bit (they stay stencil-masked). WATER_BOUNDS is a context define (frame/renderer_choices.cpp: where
 // vertex and fragment shaders have storage blocks); without it nothing is recorded or clipped.
 // The water mask's fragment shader defines WATER_BOUNDS_RECORDER before including this (it
 // records); fullscreen.vert clips with it, the mirrored billboards (vegetation.vert) cull with it.

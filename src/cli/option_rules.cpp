@@ -8,7 +8,7 @@
 #include "cli/options.h"
 #include "debug/debug_view_pass.h"
 #include "debug/debug_views.h"
-#include "render/encoding_error.h"
+#include "frame/encoding_error.h"
 
 namespace oasis {
 namespace {

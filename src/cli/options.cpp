@@ -10,8 +10,8 @@
 #include "cli/option_table.h"
 #include "cli/scene_arguments.h"
 #include "debug/debug_views.h"
+#include "frame/encoding_error.h"
 #include "render/depth_convention.h"
-#include "render/encoding_error.h"
 #include "render/file_output.h"
 #include "render/gbuffer_layout.h"
 

@@ -7,11 +7,11 @@
 
 #include "debug/debug_view_pass.h"
 #include "debug/view_controls.h"
+#include "frame/pipeline.h"
+#include "frame/view_fill.h"
 #include "gl/capabilities.h"
-#include "render/gbuffer_layout.h"
 #include "render/frame_setup.h"
-#include "render/pipeline.h"
-#include "render/view_fill.h"
+#include "render/gbuffer_layout.h"
 #include "scene/camera.h"
 
 namespace oasis {

@@ -6,8 +6,8 @@
 #include "cli/input_domains.h"
 #include "cli/option_table.h"
 #include "debug/debug_views.h"
+#include "frame/encoding_error.h"
 #include "render/depth_convention.h"
-#include "render/encoding_error.h"
 #include "render/file_output.h"
 #include "render/gbuffer_layout.h"
 

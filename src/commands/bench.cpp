@@ -18,10 +18,10 @@
 #include "commands/bench_report.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "frame/frame_traffic.h"
 #include "gl/frame_capture.h"
-#include "render/frame_traffic.h"
-#include "render/gbuffer_layout.h"
 #include "render/file_output.h"
+#include "render/gbuffer_layout.h"
 #include "render/image.h"
 
 namespace oasis {

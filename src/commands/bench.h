@@ -4,8 +4,8 @@
 #include <utility>
 #include <vector>
 
-#include "render/gpu_timer.h"
 #include "cli/options.h"
+#include "frame/gpu_timer.h"
 
 namespace oasis {
 

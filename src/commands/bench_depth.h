@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "commands/bench_report.h"
-#include "render/renderer.h"
+#include "frame/renderer.h"
 
 namespace oasis {
 

@@ -7,7 +7,7 @@
 #include "commands/bench.h"
 #include "commands/bench_depth.h"
 #include "commands/bench_report.h"
-#include "render/gpu_timer.h"
+#include "frame/gpu_timer.h"
 #include "scene/camera.h"
 
 namespace oasis {

@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "frame/pipeline.h"
 #include "render/frame_setup.h"
-#include "render/pipeline.h"
 
 namespace oasis {
 
@@ -103,7 +103,7 @@ struct BenchResult {
     int gbufferBytesPerPixel = 0;  // of those, the G-buffer colour targets and depth-stencil (0 forward)
     double targetMiB = 0.0;        // bytesPerPixel x width x height
     std::vector<std::pair<std::string, double>> passesMs;  // median ms of each pass, in order
-    // Memory traffic per pixel of the first frame, counted by the driver (render/frame_traffic.h;
+    // Memory traffic per pixel of the first frame, counted by the driver (frame/frame_traffic.h;
     // -1: this context cannot count it), its clears' share, and the floor's counted the same way.
     double trafficBytesPerPixel = -1.0, clearedBytesPerPixel = -1.0, floorTrafficBytesPerPixel = -1.0;
     bool pareto = false;            // on the frontier of every configuration of its size and light count

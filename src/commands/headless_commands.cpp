@@ -18,13 +18,13 @@
 #include "commands/traffic_report.h"
 #include "commands/view_mask.h"
 #include "context/gl_context.h"
-#include "gl/frame_capture.h"
-#include "render/file_output.h"
-#include "render/encoding_error.h"
-#include "render/frame_graph.h"
-#include "render/pixel_probe.h"
 #include "debug/error_image.h"
 #include "debug/view_legend.h"
+#include "frame/encoding_error.h"
+#include "frame/frame_graph.h"
+#include "frame/pixel_probe.h"
+#include "gl/frame_capture.h"
+#include "render/file_output.h"
 
 namespace oasis {
 namespace {
@@ -37,7 +37,7 @@ struct Comparison {
     using PassTimes = std::vector<std::pair<std::string, double>>;
     PassTimes forwardPasses, deferredPasses;  // only with --passes
     TimingClock clock;                        // how the passes were timed (measured with --passes)
-    std::string forwardGraph, deferredGraph;  // each frame's graph as JSON (render/frame_graph.h)
+    std::string forwardGraph, deferredGraph;  // each frame's graph as JSON (frame/frame_graph.h)
     FrameTraffic forwardTraffic, deferredTraffic, floorTraffic;  // counted with --passes
 };
 

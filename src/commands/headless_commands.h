@@ -5,15 +5,15 @@
 #include <string>
 
 #include "cli/options.h"
+#include "frame/renderer.h"
 #include "render/image.h"
-#include "render/renderer.h"
 
 namespace oasis {
 
 int runRenderCommand(const Options& options);
 int runCompareCommand(const Options& options);
 int runMainJob(const Options& options);
-// Prints every target's value at --at X,Y of the frame (render/pixel_probe.h).
+// Prints every target's value at --at X,Y of the frame (frame/pixel_probe.h).
 int runProbeCommand(const Options& options);
 
 // The image `render` writes for its options: the view (or its values through the controls), the

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "frame/renderer.h"
 #include "render/image.h"
-#include "render/renderer.h"
 
 namespace oasis {
 

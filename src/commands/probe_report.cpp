@@ -1,7 +1,7 @@
 // The probe's report: the pixel's values, its shading and its history, in one text or JSON object.
 #include "commands/probe_report.h"
 
-#include "render/renderer.h"
+#include "frame/renderer.h"
 
 namespace oasis {
 

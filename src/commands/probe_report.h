@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "render/pixel_history.h"
-#include "render/pixel_probe.h"
-#include "render/shading_probe.h"
+#include "frame/pixel_history.h"
+#include "frame/pixel_probe.h"
+#include "frame/shading_probe.h"
 
 namespace oasis {
 

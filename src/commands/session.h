@@ -9,9 +9,9 @@
 #include "context/gl_context.h"
 
 #include "cli/options.h"
+#include "frame/gpu_timer.h"
+#include "frame/renderer.h"
 #include "gl/capabilities.h"
-#include "render/gpu_timer.h"
-#include "render/renderer.h"
 
 namespace oasis {
 
@@ -69,7 +69,7 @@ struct RenderSession {
     std::unique_ptr<Renderer> makeRenderer() const;
 
     // Whether per-pass times come from GPU timer queries here: measured once, on first use, with
-    // the renderer's active pipeline at its size (render/gpu_timer.h).
+    // the renderer's active pipeline at its size (frame/gpu_timer.h).
     const TimingClock& timingClock();
 
     // Every feature oasis can use: used here or not, and why (what `oasis caps` prints).
@@ -129,7 +129,7 @@ PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::v
 // Median milliseconds of each pass of each of `pipelines` over `frames` frames of each, their
 // frames in turn (one of each per round, so drift reaches all alike), in pass order: by GPU timer
 // queries where `clock` trusts them (no glFinish between passes), else wall time with a glFinish
-// after each pass (render/gpu_timer.h). One list per pipeline, in their order; leaves the
+// after each pass (frame/gpu_timer.h). One list per pipeline, in their order; leaves the
 // renderer on the pipeline it was on.
 std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSettings& scene, int frames,
                                           const TimingClock& clock, const std::vector<PipelineKind>& pipelines);

@@ -1,9 +1,9 @@
-// The frame's memory traffic (render/frame_traffic.h) as compare --passes prints it: columns beside
+// The frame's memory traffic (frame/frame_traffic.h) as compare --passes prints it: columns beside
 // each pass's time, a per-frame summary against the floor's, and the JSON keys scripts read.
 #pragma once
 #include <string>
 
-#include "render/frame_traffic.h"
+#include "frame/frame_traffic.h"
 
 namespace oasis {
 

@@ -3,7 +3,7 @@
 #include "commands/view_mask.h"
 
 #include "common/shared_constants.glsl"
-#include "render/renderer.h"
+#include "frame/renderer.h"
 
 namespace oasis {
 

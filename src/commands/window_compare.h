@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "render/gpu_timer.h"
+#include "frame/gpu_timer.h"
+#include "frame/renderer.h"
 #include "render/image.h"
-#include "render/renderer.h"
 
 namespace oasis {
 

@@ -10,7 +10,7 @@
 #include "commands/overview_overlay.h"
 #include "commands/view_mask.h"
 #include "debug/error_image.h"
-#include "render/encoding_error.h"
+#include "frame/encoding_error.h"
 
 namespace oasis {
 namespace window {

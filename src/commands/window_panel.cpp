@@ -10,7 +10,7 @@
 #include <map>
 
 #include "cli/option_table.h"
-#include "render/encoding_error.h"
+#include "frame/encoding_error.h"
 
 namespace oasis {
 namespace window {
@@ -98,7 +98,7 @@ void drawDepthCombo(const Renderer& renderer, WindowState& state) {
     if (renderer.depthFellBack()) ImGui::TextWrapped("depth: %s", renderer.depthConventionReason().c_str());
 }
 
-// Which scene the views show under the water (render/view_fill.h), and what the view shows there.
+// Which scene the views show under the water (frame/view_fill.h), and what the view shows there.
 void drawWaterSceneControl(const Renderer& renderer, Configuration& chosen) {
     int scene = chosen.waterScene == WaterScene::Direct ? 0 : 1;
     ImGui::TextUnformatted("under the water (M):");

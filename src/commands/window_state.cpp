@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "frame/encoding_error.h"
 #include "gl/frame_capture.h"
-#include "render/encoding_error.h"
 
 namespace oasis {
 namespace window {

@@ -12,7 +12,7 @@
 #include "commands/window_compare.h"
 #include "debug/debug_views.h"
 #include "debug/view_controls.h"
-#include "render/pixel_probe.h"
+#include "frame/pixel_probe.h"
 
 struct GLFWwindow;
 

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 
-#include "debug/debug_views.h"
 #include "render/gbuffer_layout.h"
 #include "render/light_paths.h"
 
@@ -11,7 +10,8 @@ namespace oasis {
 namespace {
 
 // Programs that write or read the G-buffer, so need a variant per encoding: the surface writers,
-// the clear, the floor, the lighting and light-volume shading, and the debug views.
+// the clear, the floor, the lighting and light-volume shading, and the debug views (debug_view.frag,
+// also the present pass's).
 bool touchesGBuffer(const ProgramVariant& variant) {
     const auto& d = variant.defines;
     bool writes = std::find(d.begin(), d.end(), "OUTPUT_GBUFFER") != d.end();
@@ -24,7 +24,27 @@ bool touchesGBuffer(const ProgramVariant& variant) {
                                         std::end(readers));
 }
 
-std::vector<ProgramVariant> buildVariants() {
+// The variants with, after them, their variant per encoding other than the plain one: "<name>.compact"
+// with GBUFFER_COMPACT, and so on, for each variant that touches the G-buffer.
+std::vector<ProgramVariant> withEncodings(std::vector<ProgramVariant> variants) {
+    std::vector<GBufferEncoding> encodings;
+    for (const GBufferLayout& layout : gbufferLayouts())
+        if (*gbufferEncodingDefine(layout.encoding) &&
+            std::find(encodings.begin(), encodings.end(), layout.encoding) == encodings.end())
+            encodings.push_back(layout.encoding);
+    size_t plain = variants.size();
+    for (GBufferEncoding encoding : encodings)
+        for (size_t i = 0; i < plain; ++i) {
+            if (!touchesGBuffer(variants[i])) continue;
+            ProgramVariant variant = variants[i];
+            variant.name += gbufferEncodingSuffix(encoding);
+            variant.defines.push_back(gbufferEncodingDefine(encoding));
+            variants.push_back(variant);
+        }
+    return variants;
+}
+
+std::vector<ProgramVariant> fixedVariants() {
     std::vector<ProgramVariant> variants = {
         // Each grid vertex's place and height, once a frame, for every terrain draw after it
         // (passes/terrain_heights_pass.h): captured by transform feedback, nothing rasterised.
@@ -103,34 +123,23 @@ std::vector<ProgramVariant> buildVariants() {
         variants.push_back({"probe.shading.lights" + suffix, "fullscreen.vert", "probe_shading.frag",
                             {"SHADING_RECORD", "SHADING_LIGHTS", define}});
     }
-    for (const DebugView& view : debugViews()) {
-        variants.push_back({debugProgramName(view), "fullscreen.vert", "debug_view.frag", {view.remapDefine}});
-        variants.push_back({debugValuesProgramName(view), "fullscreen.vert", "debug_view.frag",
-                            {view.remapDefine, "VIEW_VALUES"}});
-    }
-    // Encodings other than the plain one: "<name>.compact" with GBUFFER_COMPACT, and so on.
-    std::vector<GBufferEncoding> encodings;
-    for (const GBufferLayout& layout : gbufferLayouts())
-        if (*gbufferEncodingDefine(layout.encoding) &&
-            std::find(encodings.begin(), encodings.end(), layout.encoding) == encodings.end())
-            encodings.push_back(layout.encoding);
-    size_t plain = variants.size();
-    for (GBufferEncoding encoding : encodings)
-        for (size_t i = 0; i < plain; ++i) {
-            if (!touchesGBuffer(variants[i])) continue;
-            ProgramVariant variant = variants[i];
-            variant.name += gbufferEncodingSuffix(encoding);
-            variant.defines.push_back(gbufferEncodingDefine(encoding));
-            variants.push_back(variant);
-        }
+    return withEncodings(variants);
+}
+
+std::deque<ProgramVariant>& table() {
+    static std::deque<ProgramVariant> variants = [] {
+        std::vector<ProgramVariant> fixed = fixedVariants();
+        return std::deque<ProgramVariant>(fixed.begin(), fixed.end());
+    }();
     return variants;
 }
 
 }  // namespace
 
-const std::vector<ProgramVariant>& programVariants() {
-    static const std::vector<ProgramVariant> variants = buildVariants();
-    return variants;
+const std::deque<ProgramVariant>& programVariants() { return table(); }
+
+void addProgramVariants(const std::vector<ProgramVariant>& variants) {
+    for (ProgramVariant& variant : withEncodings(variants)) table().push_back(std::move(variant));
 }
 
 const ProgramVariant* findProgramVariant(const std::string& name) {

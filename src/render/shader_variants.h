@@ -2,6 +2,7 @@
 // Passes ask the shader library for a program by name; the shader tests compile every entry.
 // A program is either vertex + fragment, or (computeFile set, the others empty) one compute stage.
 #pragma once
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,14 @@ struct ProgramVariant {
     }
 };
 
-// Every program: the fixed ones plus one per debug view (generated from the debug view table).
-const std::vector<ProgramVariant>& programVariants();
+// Every program: the fixed ones, then those a higher layer added (addProgramVariants), each with
+// its G-buffer encoding variants. A deque, so a variant found stays where it is when more are added.
+const std::deque<ProgramVariant>& programVariants();
 const ProgramVariant* findProgramVariant(const std::string& name);
+
+// A higher layer's programs, added to the table with their encoding variants: debug/ adds one pair
+// per debug view (registerDebugViewPrograms in debug/debug_views.h), which the renderer calls, so
+// this layer names nothing of debug/. Not thread-safe: add before other threads read the table.
+void addProgramVariants(const std::vector<ProgramVariant>& variants);
 
 }  // namespace oasis

@@ -160,7 +160,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
                 }
             }
         } else if (view && readsGBuffer(*view)) {
-            // Both pipelines show the water scene asked for (render/view_fill.h): the direct one by
+            // Both pipelines show the water scene asked for (frame/view_fill.h): the direct one by
             // default, as deferred without reflections shows it; the mirrored one differs from it in
             // the water only, and is the same in both pipelines too.
             EXPECT_EQ(difference.maxAbs, 0) << "forward and deferred show different " << name;

@@ -5,8 +5,8 @@
 // The probe reports the same numbers at a pixel.
 #include "gpu_test.h"
 
-#include "render/encoding_error.h"
-#include "render/pixel_probe.h"
+#include "frame/encoding_error.h"
+#include "frame/pixel_probe.h"
 
 namespace oasis::gputest {
 namespace {

@@ -1,10 +1,10 @@
-// The frame's memory traffic counted by the driver (render/frame_traffic.h): the same counts from
+// The frame's memory traffic counted by the driver (frame/frame_traffic.h): the same counts from
 // run to run (exactly on a CPU rasteriser, unlike times; a GPU's invocations within 3%), a full-screen draw is one fragment per pixel, and a clear's
 // bytes are its attachments' bytes.
 #include "gpu_test.h"
 
+#include "frame/frame_traffic.h"
 #include "render/depth_convention.h"
-#include "render/frame_traffic.h"
 
 namespace oasis::gputest {
 namespace {

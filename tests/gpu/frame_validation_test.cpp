@@ -1,4 +1,4 @@
-// The frame's validation (render/frame_graph.h): a pass that draws into a target it does not
+// The frame's validation (frame/frame_graph.h): a pass that draws into a target it does not
 // declare fails it, so does one that declares a write it never binds, one that binds its declared
 // outputs passes, and the real frames of both
 // pipelines pass it in the settings that change their declarations.
@@ -6,8 +6,8 @@
 
 #include <stdexcept>
 
-#include "render/frame_graph.h"
-#include "render/pipeline.h"
+#include "frame/frame_graph.h"
+#include "frame/pipeline.h"
 
 namespace oasis::gputest {
 namespace {

@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "context/gl_context.h"
 #include "common/shared_constants.glsl"
+#include "context/gl_context.h"
+#include "frame/renderer.h"
 #include "render/image.h"
 #include "render/plant_atlas.h"
-#include "render/renderer.h"
-#include "render/texture_units.h"
 #include "render/shader_library.h"
+#include "render/texture_units.h"
 #include "scene/terrain.h"
 
 namespace oasis::gputest {

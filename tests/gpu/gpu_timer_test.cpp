@@ -1,9 +1,9 @@
-// The per-pass timer queries (render/gpu_timer.h) on the driver under test: one query per pass
+// The per-pass timer queries (frame/gpu_timer.h) on the driver under test: one query per pass
 // that ran, named and ordered as the wall-clock timing names them, finite; a ring of one frame
 // reads or drops every frame; the start-up check gives a clock and says why.
 #include "gpu_test.h"
 
-#include "render/gpu_timer.h"
+#include "frame/gpu_timer.h"
 
 namespace oasis::gputest {
 namespace {

@@ -5,7 +5,7 @@
 // readSurfacePositions, readDepth, readStencil), and its stored bytes are the targets' own.
 #include "gpu_test.h"
 
-#include "render/pixel_probe.h"
+#include "frame/pixel_probe.h"
 
 namespace oasis::gputest {
 namespace {

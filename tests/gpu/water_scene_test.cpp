@@ -1,4 +1,4 @@
-// The views' water scene (render/view_fill.h): at water pixels every view of one frame shows the
+// The views' water scene (frame/view_fill.h): at water pixels every view of one frame shows the
 // same scene, the one asked for, in both pipelines and every layout. Direct is the deferred
 // frame's own G-buffer and depth before the water is marked (stopped before LightingPass), mirrored
 // is the deferred frame's state before the reflection is lit (stopped before LightingPass.mirrored),

@@ -31,7 +31,7 @@ TEST_P(EveryVariant, CompilesAndLinksWithGlslang) {
 
 std::vector<std::string> variantNames() {
     std::vector<std::string> names;
-    for (const ProgramVariant& variant : programVariants()) names.push_back(variant.name);
+    for (const ProgramVariant& variant : everyProgramVariant()) names.push_back(variant.name);
     return names;
 }
 
@@ -45,7 +45,7 @@ std::string testName(const ::testing::TestParamInfo<std::string>& info) {
 INSTANTIATE_TEST_SUITE_P(Shaders, EveryVariant, ::testing::ValuesIn(variantNames()), testName);
 
 // The variants that record or clip to the visible water, with the context define that turns it on
-// where storage blocks exist (render/renderer.cpp, common/water_bounds.glsl).
+// where storage blocks exist (frame/renderer_choices.cpp, common/water_bounds.glsl).
 class WaterBoundedVariant : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(WaterBoundedVariant, CompilesAndLinksWithGlslang) {
@@ -61,7 +61,7 @@ TEST_P(WaterBoundedVariant, CompilesAndLinksWithGlslang) {
 
 std::vector<std::string> waterBoundedVariantNames() {
     std::vector<std::string> names;
-    for (const ProgramVariant& variant : programVariants()) {
+    for (const ProgramVariant& variant : everyProgramVariant()) {
         const auto& d = variant.defines;
         bool bounded = std::find(d.begin(), d.end(), "MIRRORED") != d.end() ||
                        std::find(d.begin(), d.end(), "WATER_BOUNDED") != d.end() || variant.name == "water.mask";
@@ -110,7 +110,7 @@ bool usesStorageBlocks(const ProgramVariant& variant) {
 
 std::vector<EsCase> esCases() {
     std::vector<EsCase> cases;
-    for (const ProgramVariant& variant : programVariants()) {
+    for (const ProgramVariant& variant : everyProgramVariant()) {
         cases.push_back({variant.name, 2});
         cases.push_back({variant.name, 1});
         if (!usesStorageBlocks(variant)) cases.push_back({variant.name, 0});
@@ -174,7 +174,7 @@ TEST(EsDialect, Es31InterpreterNeedsGpuShader5) {
 TEST(ShaderVariants, TableCoversEveryShaderFile) {
     // Every .vert/.frag/.comp in shaders/ is used by some variant: no shader escapes compilation.
     std::set<std::string> used;
-    for (const ProgramVariant& variant : programVariants())
+    for (const ProgramVariant& variant : everyProgramVariant())
         for (const std::string& file : variant.stageFiles()) used.insert(file);
     for (const auto& entry : std::filesystem::directory_iterator(findShaderDirectory())) {
         std::string ext = entry.path().extension().string();
@@ -185,7 +185,7 @@ TEST(ShaderVariants, TableCoversEveryShaderFile) {
 
 TEST(ShaderVariants, ComputeVariantsHaveOnlyAComputeStage) {
     int computePrograms = 0;
-    for (const ProgramVariant& variant : programVariants()) {
+    for (const ProgramVariant& variant : everyProgramVariant()) {
         if (!variant.isCompute()) continue;
         ++computePrograms;
         EXPECT_TRUE(variant.vertexFile.empty() && variant.fragmentFile.empty()) << variant.name;

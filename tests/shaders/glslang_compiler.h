@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "debug/debug_views.h"
 #include "render/shader_library.h"
 #include "render/shader_variants.h"
 
@@ -27,5 +28,11 @@ inline bool compileAndLink(const ShaderLibrary& library, const std::string& vert
 }
 
 EShLanguage stageOfFile(const std::string& file);  // by extension: .vert .frag .comp
+
+// The whole program table: the fixed programs and the debug views' (which debug/ adds).
+inline const std::deque<ProgramVariant>& everyProgramVariant() {
+    registerDebugViewPrograms();
+    return programVariants();
+}
 
 }  // namespace oasis::glslang_test

@@ -192,7 +192,7 @@ TEST_P(GlslangLineProbe, ErrorOnTheLastLineOfEachStageIsReportedThere) {
 
 std::vector<std::string> allVariantNames() {
     std::vector<std::string> names;
-    for (const ProgramVariant& variant : programVariants()) names.push_back(variant.name);
+    for (const ProgramVariant& variant : everyProgramVariant()) names.push_back(variant.name);
     return names;
 }
 

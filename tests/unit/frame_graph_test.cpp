@@ -1,12 +1,12 @@
 // The frame graph from the passes' declarations, without GL: which passes it culls and why, and
-// that a read with no writer before it is reported (render/frame_graph.h).
+// that a read with no writer before it is reported (frame/frame_graph.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "render/frame_graph.h"
-#include "render/pipeline.h"
+#include "frame/frame_graph.h"
+#include "frame/pipeline.h"
 
 namespace oasis {
 namespace {

@@ -1,7 +1,7 @@
-// The timer-query trust decision (render/gpu_timer.h): agreement per pass, not per frame.
+// The timer-query trust decision (frame/gpu_timer.h): agreement per pass, not per frame.
 #include <gtest/gtest.h>
 
-#include "render/gpu_timer.h"
+#include "frame/gpu_timer.h"
 
 namespace oasis {
 namespace {

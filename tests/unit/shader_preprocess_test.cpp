@@ -12,11 +12,18 @@
 #include <string>
 #include <vector>
 
+#include "debug/debug_views.h"
 #include "render/shader_library.h"
 #include "render/shader_variants.h"
 
 namespace oasis {
 namespace {
+
+// The whole program table: the fixed programs and the debug views' (which debug/ adds).
+const std::deque<ProgramVariant>& everyProgramVariant() {
+    registerDebugViewPrograms();
+    return programVariants();
+}
 
 std::vector<std::string> splitLines(const std::string& text) {
     std::vector<std::string> lines;
@@ -259,7 +266,7 @@ TEST(ShaderPreprocess, EveryVariantOfTheRealShadersPreprocessesWithCorrectLines)
     std::string directory = findShaderDirectory();
     ASSERT_FALSE(directory.empty());
     ShaderLibrary library(directory);
-    for (const ProgramVariant& variant : programVariants()) {
+    for (const ProgramVariant& variant : everyProgramVariant()) {
         for (const std::string& file : variant.stageFiles()) {
             PreprocessedShader out;
             std::string error;

@@ -30,7 +30,7 @@ struct ShadedSurface {
 
 // The pixel's shading after the last frame (`probe` was taken of the same frame: its stencil says
 // whether the pixel shows water). Deferred: fills the G-buffer with the direct scene, and the
-// mirrored one at water pixels (render/view_fill.h), leaving the views' water scene as it was.
+// mirrored one at water pixels (frame/view_fill.h), leaving the views' water scene as it was.
 // Forward (a whole frame): the same fills into float targets of its own, so the record shades the
 // surfaces the forward shaders built, unrounded by the G-buffer's encoding; the G-buffer is untouched.
 std::vector<ShadedSurface> probeShading(Renderer& renderer, const PixelProbe& probe);

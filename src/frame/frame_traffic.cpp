@@ -1,7 +1,7 @@
 // Counting a frame's traffic: per-pass queries, and the clears seen by swapping libepoxy's
 // dispatch pointers for glClearBuffer* (and glBegin/EndQuery, so the frame's own occlusion query
 // never meets ours on the binding they share) for the counted frame only.
-#include "render/frame_traffic.h"
+#include "frame/frame_traffic.h"
 
 #include <epoxy/gl.h>
 
@@ -10,9 +10,9 @@
 #include <functional>
 #include <stdexcept>
 
+#include "frame/renderer.h"
 #include "passes/floor_pass.h"
 #include "render/depth_convention.h"
-#include "render/renderer.h"
 
 namespace oasis {
 namespace {

@@ -1,10 +1,10 @@
-// The two pipelines: their frames assembled (render/frame_assembly.h), run as the graph decides.
-#include "render/pipeline.h"
+// The two pipelines: their frames assembled (frame/frame_assembly.h), run as the graph decides.
+#include "frame/pipeline.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "render/frame_assembly.h"
+#include "frame/frame_assembly.h"
 
 namespace oasis {
 

@@ -1,5 +1,5 @@
-// The pass lists of every output, from one set of scene steps (render/frame_assembly.h).
-#include "render/frame_assembly.h"
+// The pass lists of every output, from one set of scene steps (frame/frame_assembly.h).
+#include "frame/frame_assembly.h"
 
 #include "passes/clear_pass.h"
 #include "passes/depth_copy_pass.h"

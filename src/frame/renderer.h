@@ -1,6 +1,7 @@
 // The renderer: owns the shader library, the scene's GPU data, the frame targets, both pipelines
 // (built once; switching only changes which runs) and the debug views. The window app, the
-// headless commands and the tests all drive this same object.
+// headless commands and the tests all drive this same object. Its choices from what the context
+// offers (depth convention, lights path, water bounds, light method) are in renderer_choices.cpp.
 #pragma once
 #include <memory>
 #include <optional>
@@ -8,20 +9,20 @@
 #include <vector>
 
 #include "debug/debug_view_pass.h"
+#include "frame/pipeline.h"
+#include "frame/view_fill.h"
 #include "passes/floor_pass.h"
 #include "passes/present_pass.h"
 #include "passes/water_composite_pass.h"
-#include "render/frame_setup.h"
 #include "render/float_readback.h"
+#include "render/frame_setup.h"
 #include "render/frame_targets.h"
 #include "render/image.h"
-#include "render/pipeline.h"
 #include "render/plant_atlas.h"
 #include "render/scene_geometry.h"
 #include "render/shader_library.h"
 #include "render/shadow_maps.h"
 #include "render/vegetation_buffers.h"
-#include "render/view_fill.h"
 #include "scene/vegetation.h"
 
 namespace oasis {
@@ -105,7 +106,7 @@ public:
     // The same frame with glFinish after every pass: wall milliseconds per pass, in order. The
     // synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
     std::vector<std::pair<std::string, double>> renderFrameTimingPasses(const SceneSettings& scene);
-    // The frame, calling `afterEach` after every pass that ran (render/gpu_timer.h's queries).
+    // The frame, calling `afterEach` after every pass that ran (frame/gpu_timer.h's queries).
     void renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach);
     // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
     // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
@@ -114,13 +115,13 @@ public:
     // RGBA floats, bottom row first; the table's `values` name the channels.
     std::vector<float> readViewValues(const std::string& viewName);
     // Makes the G-buffer, depth and stencil hold the last frame's surfaces with the water scene the
-    // views ask for (render/view_fill.h): what the views, the probe and the encoding error read.
+    // views ask for (frame/view_fill.h): what the views, the probe and the encoding error read.
     // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
     // that ran). viewScene() says what the views show at water pixels and why.
     void ensureGBuffer();
     // The last whole frame's surfaces drawn unrounded: the view fill of `scene` run into `exact`
     // (targets of the frame's size, depth convention and a float layout) instead of the G-buffer.
-    // `probe --shading` reads a forward frame's surfaces there (render/shading_probe.h).
+    // `probe --shading` reads a forward frame's surfaces there (frame/shading_probe.h).
     void fillExactSurfaces(const FrameTargets& exact, WaterScene scene);
     // With the tone map fused the water composite writes Final only, so Radiance holds what lies
     // under the water there; this lays the water onto Radiance as the separate pass would have

@@ -1,18 +1,18 @@
 // The pixel history: one observed frame reads the pixel of every target a pass writes after that
 // pass; a pass that left those values unchanged is asked again, in a frame of its own, with its
 // draws scissored to the pixel inside an occlusion query (did any sample pass there?).
-#include "render/pixel_history.h"
+#include "frame/pixel_history.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <map>
 
+#include "frame/frame_graph.h"
+#include "frame/renderer.h"
 #include "gl/objects.h"
 #include "passes/pass.h"
-#include "render/frame_graph.h"
 #include "render/frame_setup.h"
 #include "render/json_text.h"
-#include "render/renderer.h"
 
 namespace oasis {
 namespace {
@@ -165,7 +165,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
                                      : "a sample passed at the pixel (no earlier pass of the frame wrote these targets)";
     }
 
-    // Every pass of the frame's graph in order; one that did not run says why (render/frame_graph.h).
+    // Every pass of the frame's graph in order; one that did not run says why (frame/frame_graph.h).
     std::vector<PassAtPixel> history;
     for (const GraphStep& step : renderer.frameGraph().steps) {
         auto found = seen.find(step.pass);

@@ -1,20 +1,20 @@
 // Runs the shading record (shaders/probe_shading.frag) at one pixel over the surfaces the frame
 // shaded there (the G-buffer, or a forward frame's drawn again unrounded) and names what it
 // recorded: one row of kTerms per slot of common/shading_terms.glsl.
-#include "render/shading_probe.h"
+#include "frame/shading_probe.h"
 
 #include <cstdio>
 #include <memory>
 
 #include "common/shading_terms.glsl"
 #include "common/shared_constants.glsl"
+#include "frame/pixel_probe.h"
+#include "frame/renderer.h"
 #include "passes/pass.h"
 #include "render/float_readback.h"
 #include "render/gbuffer_layout.h"
 #include "render/json_text.h"
 #include "render/light_paths.h"
-#include "render/pixel_probe.h"
-#include "render/renderer.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -144,7 +144,7 @@ ShadedSurface groupTerms(const Slots& slots, Group group, const std::string& nam
 
 // The surfaces the frame shaded at the pixel, `scene` under the water. Deferred: its G-buffer,
 // which its lighting read; a forward frame stopped early: the views' fill of the steps it ran
-// (render/view_fill.h), as the other views show it. A whole forward frame shaded
+// (frame/view_fill.h), as the other views show it. A whole forward frame shaded
 // each surface as its fragment built it and stored none: the views' G-buffer would round it (8-bit
 // albedo, compact normals: up to 6 % off the frame), so the same surface shaders (terrain.frag,
 // vegetation.frag, the G-buffer variants of the forward ones: the same Surface, only emitted

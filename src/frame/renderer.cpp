@@ -1,5 +1,5 @@
 // Frame orchestration: upload the frame's uniforms, run the active pipeline, draw debug views.
-#include "render/renderer.h"
+#include "frame/renderer.h"
 
 #include "gl/frame_capture.h"
 
@@ -7,6 +7,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "debug/debug_views.h"
 #include "gl/capabilities.h"
 #include "gl/frame_capture.h"
 #include "passes/pass.h"
@@ -17,6 +18,7 @@ namespace oasis {
 
 Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     : shaders_(shaders), geometry_(scene.grid) {
+    registerDebugViewPrograms();  // the debug views' programs, which debug/ adds to the variant table
     const std::vector<std::string>& dialectDefines = shaders.dialect().defines;
     setWaterClipByClipDistance(std::find(dialectDefines.begin(), dialectDefines.end(), "OASIS_NO_CLIP_DISTANCE 1") ==
                                dialectDefines.end());
@@ -54,86 +56,6 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     setDepthConvention(standardDepthConvention());
 }
 
-void Renderer::setReadOnlyDepthAvailable(bool available, const std::string& reason) {
-    readOnlyDepthAvailable_ = available;
-    readOnlyDepthReason_ = reason;
-}
-
-void Renderer::setClipControlAvailable(bool available, const std::string& reason) {
-    clipControlAvailable_ = available;
-    clipControlReason_ = reason;
-    setDepthConvention(*depthRequested_);
-}
-
-void Renderer::setDepthConvention(const DepthConvention& requested) {
-    const DepthConvention* use = &requested;
-    std::string reason;
-    if (!requested.needsClipControl())
-        reason = requested.name + " (OpenGL's default clip control)";
-    else if (clipControlAvailable_)
-        reason = requested.name + " (" + clipControlReason_ + ")";
-    else {
-        use = &standardDepthConvention();
-        reason = use->name + " (" + requested.name + " was asked for but " + clipControlReason_ + ")";
-    }
-    if (use != depthInUse_ && targets_) {
-        // Built before anything changes: a failed allocation throws and keeps the old targets,
-        // convention and reason.
-        targets_ = std::make_unique<FrameTargets>(targets_->layout(), *use, targets_->width(), targets_->height());
-        forgetGBuffer();
-    }
-    depthRequested_ = &requested;
-    depthReason_ = std::move(reason);
-    depthInUse_ = use;
-}
-
-void Renderer::setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced) {
-    ssboAvailable_ = available;
-    if (!available) ssboMissingReason_ = reason;
-    lightsChoice_ = chooseLightsPath(ssboAvailable_, forced, ssboMissingReason_);
-    chooseWaterBounds();
-}
-
-void Renderer::chooseWaterBounds() {
-    GLint vertexBlocks = 0, fragmentBlocks = 0, clipDistances = 0;
-    if (ssboAvailable_) {
-        glGetIntegerv(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, &vertexBlocks);
-        glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
-    }
-    glGetIntegerv(GL_MAX_CLIP_DISTANCES, &clipDistances);
-    // GLSL 4.30's own storage blocks, atomics on them and early fragment tests: the extensions that
-    // bring them to older GLSL (softpipe's 3.30) are not worth a second spelling of the shader.
-    const bool glsl430 = epoxy_gl_version() >= 43;
-    waterBoundsAvailable_ = ssboAvailable_ && glsl430 && vertexBlocks >= 1 && fragmentBlocks >= 1 && clipDistances >= 5;
-    if (waterBoundsAvailable_)
-        waterBoundsReason_ = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances; "
-                             "skipped where no water is seen: the water mask's occlusion query, conditional rendering)";
-    else if (!ssboAvailable_)
-        waterBoundsReason_ = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
-    else if (!epoxy_is_desktop_gl())
-        waterBoundsReason_ = "whole screen, stencil-masked (not on OpenGL ES yet: the bounds' storage block is "
-                             "bound by name, which ES cannot do)";
-    else if (!glsl430)
-        waterBoundsReason_ = "whole screen, stencil-masked (needs GL 4.3: storage blocks, their atomics and early "
-                             "fragment tests in GLSL 4.30; this context is " + std::to_string(epoxy_gl_version() / 10) +
-                             "." + std::to_string(epoxy_gl_version() % 10) + ")";
-    else
-        waterBoundsReason_ = "whole screen, stencil-masked (storage blocks in vertex/fragment shaders " +
-                             std::to_string(vertexBlocks) + "/" + std::to_string(fragmentBlocks) +
-                             ", clip distances " + std::to_string(clipDistances) + "; need 1/1 and 5)";
-    if (waterBoundsAvailable_ && !waterBounds_.name()) {
-        waterBounds_ = gl::createBuffer("visible water rectangle");
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
-        glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * sizeof(GLint), nullptr, GL_DYNAMIC_DRAW);
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-        waterSeen_ = gl::createQuery(GL_ANY_SAMPLES_PASSED, "water seen (water mask's samples)");
-    }
-    std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(uboLights_.capacity),
-                                        "LIGHTS_UBO_BLOCKS " + std::to_string(uboLights_.blocks)};
-    if (waterBoundsAvailable_) defines.push_back("WATER_BOUNDS 1");
-    if (defines != shaders_.contextDefines()) shaders_.setContextDefines(defines);
-}
-
 glm::ivec4 Renderer::readWaterBounds() const {
     glm::ivec4 bounds(1, 1, 0, 0);
     if (!waterBoundsAvailable_) return bounds;
@@ -141,12 +63,6 @@ glm::ivec4 Renderer::readWaterBounds() const {
     gl::readBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(bounds), &bounds);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return bounds;
-}
-
-void Renderer::setComputeAvailable(bool available, const std::string& reason, const std::optional<LightMethod>& forced) {
-    computeAvailable_ = available;
-    computeReason_ = reason;
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, forced, computeReason_, lightsChoice_.path);
 }
 
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the

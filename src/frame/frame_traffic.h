@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "render/pipeline.h"
+#include "frame/pipeline.h"
 
 namespace oasis {
 

@@ -1,6 +1,6 @@
 // The pixel probe: read every target's texel at one pixel as stored, and decode the G-buffer there
 // on the GPU (shaders/probe.frag) into a small float target, one quantity per texel.
-#include "render/pixel_probe.h"
+#include "frame/pixel_probe.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -11,10 +11,10 @@
 #include <stdexcept>
 
 #include "common/shared_constants.glsl"
+#include "frame/encoding_error.h"
+#include "frame/renderer.h"
 #include "passes/pass.h"
-#include "render/encoding_error.h"
 #include "render/float_readback.h"
-#include "render/renderer.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -124,7 +124,7 @@ double srgbEncode(double linear) {
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
 
-// Which scene the G-buffer and depth hold at a water pixel, and why (render/view_fill.h).
+// Which scene the G-buffer and depth hold at a water pixel, and why (frame/view_fill.h).
 std::string waterSceneAt(const PixelProbe& probe, const Renderer& renderer) {
     if ((probe.stencil & 0x7f) != kStencilWater) return {};
     const ViewScene& shown = renderer.viewScene();

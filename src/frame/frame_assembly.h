@@ -1,6 +1,6 @@
 // The one place a frame's passes are put in order, for every output that draws the scene: the
 // frame of either pipeline, the views' fills of the direct or mirrored scene, and the fill of a
-// stopped forward frame's G-buffer. Which of them run is the frame graph's (render/frame_graph.h).
+// stopped forward frame's G-buffer. Which of them run is the frame graph's (frame/frame_graph.h).
 #pragma once
 #include <memory>
 #include <vector>

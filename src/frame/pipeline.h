@@ -1,5 +1,5 @@
-// A pipeline: the passes of a forward or deferred frame in order (render/frame_assembly.cpp puts
-// them there), run as the frame graph decides (render/frame_graph.h). `oasis render --graph`
+// A pipeline: the passes of a forward or deferred frame in order (frame/frame_assembly.cpp puts
+// them there), run as the frame graph decides (frame/frame_graph.h). `oasis render --graph`
 // prints them with what each reads and writes.
 #pragma once
 #include <functional>
@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "frame/frame_graph.h"
 #include "passes/pass.h"
-#include "render/frame_graph.h"
 
 namespace oasis {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/pixel_probe.h"
+#include "frame/pixel_probe.h"
 
 namespace oasis {
 

@@ -1,12 +1,12 @@
 // The timer-query check and the non-stalling per-pass timer.
-#include "render/gpu_timer.h"
+#include "frame/gpu_timer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
 
-#include "render/renderer.h"
+#include "frame/renderer.h"
 
 namespace oasis {
 namespace {

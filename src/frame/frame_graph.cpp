@@ -1,5 +1,5 @@
-// Culling, validation and printing of the frame graph (render/frame_graph.h).
-#include "render/frame_graph.h"
+// Culling, validation and printing of the frame graph (frame/frame_graph.h).
+#include "frame/frame_graph.h"
 
 #include <algorithm>
 #include <cstdlib>

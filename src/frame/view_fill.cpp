@@ -1,8 +1,8 @@
 // The views' two fills, as lists of the deferred geometry passes (no shading passes).
-#include "render/view_fill.h"
+#include "frame/view_fill.h"
 
-#include "render/frame_assembly.h"
-#include "render/pipeline.h"
+#include "frame/frame_assembly.h"
+#include "frame/pipeline.h"
 
 namespace oasis {
 

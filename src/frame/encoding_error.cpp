@@ -1,6 +1,6 @@
 // Encoding error against the full layout: two deferred frames, their decoded normals and
 // positions (the views' values), compared where both hold the same surface.
-#include "render/encoding_error.h"
+#include "frame/encoding_error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "common/shared_constants.glsl"
-#include "render/renderer.h"
+#include "frame/renderer.h"
 
 namespace oasis {
 namespace {
