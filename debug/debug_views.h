@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "passes/pass.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {
@@ -34,12 +35,20 @@ struct DebugView {
     // b, a that the view fills: what --channel may pick, the probe of a view, the range's unit.
     std::vector<std::string> values;
     LegendScale scale = LegendScale::None;
+    // What its shader samples of the frame (debug_view.frag, common/gbuffer.glsl), Position
+    // standing for the surface's position as the layout keeps it (viewReads): a frame drawn to
+    // show this view alone is culled to what these need (Renderer::setFrameSink).
+    std::vector<Resource> reads = {};
 };
 
 const std::vector<DebugView>& debugViews();
 const DebugView* findDebugView(const std::string& name);
 std::string debugViewNames();  // "final, albedo, ..., overview" for help and errors
 inline const char* kOverviewName = "overview";
+
+// The view's reads in `layout`: Position becomes the depth-stencil target where the layout
+// rebuilds position from depth (compact, which also tells the sky by depth there).
+std::vector<Resource> viewReads(const DebugView& view, const GBufferLayout& layout);
 
 // True when the view reads a G-buffer colour target (which only the deferred pipeline fills).
 bool readsGBuffer(const DebugView& view);

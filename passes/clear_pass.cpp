@@ -17,7 +17,8 @@ namespace oasis {
 static std::vector<Access> clearedTargets(const FrameSetup& frame, SurfaceOutput output) {
     std::vector<Access> cleared;
     if (output == SurfaceOutput::GBuffer && !frame.positionFromDepth) cleared.push_back({Target::Info, Use::Write});
-    appendDepthStencil(cleared, {Use::DepthWrite, Use::StencilWrite});
+    // The whole depth-stencil anew (the scissor off): what an earlier pass left there is dead.
+    appendDepthStencil(cleared, {Use::DepthWrite, Use::StencilWrite, Use::Replace});
     return cleared;
 }
 

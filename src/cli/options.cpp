@@ -296,7 +296,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                     "passes are the history's first ones)");
     if (options.graph) {
         // The pass list replaces the picture: an option that only shapes the picture would be idle.
-        for (const char* idle : {"--out", "--view", "--channel", "--range", "--overlay", "--legend", "--view-exposure",
+        // --view is not idle: the frame is culled for the view asked for (its sink).
+        for (const char* idle : {"--out", "--channel", "--range", "--overlay", "--legend", "--view-exposure",
                                  "--capture"})
             if (std::find(options.givenFlags.begin(), options.givenFlags.end(), idle) != options.givenFlags.end())
                 return fail(std::string("--graph prints the frame's passes and writes no picture: ") + idle +

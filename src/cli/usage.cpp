@@ -38,7 +38,8 @@ std::string usage(Command command) {
                    "  --capture                 under RenderDoc: capture the rendered frame (set-up and shader\n"
                    "                            builds outside it) and print where; without RenderDoc, exit 1\n"
                    "  --graph                   print the frame's passes in order with what each reads and\n"
-                   "                            writes, and why each culled pass was culled; no image\n" + scene;
+                   "                            writes, and why each culled pass was culled (the frame is\n"
+                   "                            built for the --view asked for); no image\n" + scene;
         case Command::Compare:
             return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N] [--passes]\n"
                    "  renders the frame in both pipelines; prints PSNR, max abs and RMSE over 8-bit RGB and the\n"

@@ -58,6 +58,9 @@ Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind k
 Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes, bool capture = false) {
     Renderer& renderer = *session.renderer;
     Comparison result;
+    // Its frames are looked at through the final view (the images, the times, the traffic; a
+    // capture keeps the whole frame); the last, left for what follows (the main job's overview), is whole.
+    renderer.setFrameSink(capture ? std::vector<std::string>{} : std::vector<std::string>{"final"});
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {  // shader builds: frames of their own
         renderer.setPipeline(kind);
         renderer.buildPrograms(session.scene, "final");
@@ -82,6 +85,7 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
         result.deferredTraffic = measureFrameTraffic(renderer, session.scene);
         result.floorTraffic = measureFloorTraffic(renderer);
     }
+    renderer.setFrameSink({});
     renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
     return result;
 }
@@ -358,6 +362,14 @@ int runRenderCommand(const Options& options) {
         Renderer& renderer = *session.renderer;
         renderer.setPipeline(options.pipeline);
         const EncodingErrorView* errorView = findEncodingErrorView(options.view);
+        // The frame is built for what is written (its sink): the view, and the info view whose
+        // SKY flags mask the sky out of its values. A capture keeps the whole frame to inspect;
+        // the encoding-error views and a stopped frame read more and keep it too.
+        if (!errorView && !options.capture) {
+            std::vector<std::string> sink = {options.view};
+            if (const DebugView* view = findDebugView(options.view); view && masksUndrawn(*view)) sink.push_back("info");
+            renderer.setFrameSink(sink);
+        }
         // Shader builds in a frame of their own; the frame after it (captured with --capture) only draws.
         if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
         if (options.capture) gl::armCaptures(1);

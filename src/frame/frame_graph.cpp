@@ -67,12 +67,11 @@ std::vector<Resource> everyResource() {
     return all;
 }
 
-FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
-                           const std::vector<Resource>& sinks, const std::vector<Resource>& inputs) {
-    FrameGraph graph;
-    for (const Pass* pass : passes) graph.steps.push_back({pass, pass->reads(frame), pass->writes(frame), false, ""});
-    // Back from the sinks: a pass is needed when a later pass (or the sink) reads what it writes.
-    std::set<Resource> live(sinks.begin(), sinks.end());
+namespace {
+
+// Back from what is `live` after the steps: a pass is needed when a later pass (or the sink) reads
+// what it writes. Leaves in `live` what is read before the first step.
+void cullBackFrom(FrameGraph& graph, const FrameSetup& frame, std::set<Resource>& live) {
     for (auto step = graph.steps.rbegin(); step != graph.steps.rend(); ++step) {
         if (!step->pass->active(frame)) {
             step->culled = "off in this frame's settings";
@@ -90,6 +89,29 @@ FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSe
             if (access.use == Use::Replace) live.erase(access.resource);
         for (const Resource& read : step->reads) live.insert(read);
     }
+}
+
+FrameGraph stepsOf(const std::vector<const Pass*>& passes, const FrameSetup& frame) {
+    FrameGraph graph;
+    for (const Pass* pass : passes) graph.steps.push_back({pass, pass->reads(frame), pass->writes(frame), false, ""});
+    return graph;
+}
+
+}  // namespace
+
+std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
+                                  const std::vector<Resource>& sinks) {
+    FrameGraph graph = stepsOf(passes, frame);
+    std::set<Resource> live(sinks.begin(), sinks.end());
+    cullBackFrom(graph, frame, live);
+    return std::vector<Resource>(live.begin(), live.end());
+}
+
+FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
+                           const std::vector<Resource>& sinks, const std::vector<Resource>& inputs) {
+    FrameGraph graph = stepsOf(passes, frame);
+    std::set<Resource> live(sinks.begin(), sinks.end());
+    cullBackFrom(graph, frame, live);
     // Forward: every read of a running pass has a writer before it or is an input.
     std::vector<Resource> written = inputs;
     for (const GraphStep& step : graph.steps) {

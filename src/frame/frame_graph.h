@@ -23,7 +23,8 @@ struct FrameGraph {
     bool runs(const std::string& passName) const;
 };
 
-// What a finished frame is looked at through afterwards (the sink): every frame target the
+// What a finished frame is looked at through afterwards when anything may be (the window, the
+// probe, a capture, a stopped frame): the sink of a whole frame. Every frame target the
 // outputs, views and probe show, the shadow maps and terrain heights they sample; not the depth
 // copy or the tile lists, which only passes of the frame read.
 std::vector<Resource> frameOutputs();
@@ -35,6 +36,12 @@ std::vector<Resource> everyResource();
 // was written earlier or is one of `inputs`.
 FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                            const std::vector<Resource>& sinks, const std::vector<Resource>& inputs = {});
+
+// What `passes`, run after a frame to make `sinks` (the views' fill, the composite onto Radiance),
+// need the frame to leave: walking back through them by the same rule, the reads that reach
+// before the first of them. A view's frame is built for that (Renderer::setFrameSink).
+std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
+                                  const std::vector<Resource>& sinks);
 
 // The graph in order, one pass a line with its reads and writes, culled passes with their reason.
 std::string frameGraphText(const FrameGraph& graph);

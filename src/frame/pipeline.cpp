@@ -20,19 +20,19 @@ Pipeline::Pipeline(PipelineKind kind)
     : kind_(kind), passes_(assembleFrame(kind == PipelineKind::Forward ? FrameOutput::ForwardFrame
                                                                       : FrameOutput::DeferredFrame)) {}
 
-FrameGraph Pipeline::graph(const FrameSetup& frame) const {
+FrameGraph Pipeline::graph(const FrameSetup& frame, const std::vector<Resource>& sinks) const {
     std::vector<const Pass*> passes;
     for (const auto& pass : passes_) passes.push_back(pass.get());
-    return buildFrameGraph(passes, frame, frameOutputs());
+    return buildFrameGraph(passes, frame, sinks);
 }
 
 bool Pipeline::run(PassContext& context, const std::string& stopBefore,
-                   const std::function<void(const Pass&)>& afterEach) const {
+                   const std::function<void(const Pass&)>& afterEach, const std::vector<Resource>& sinks) const {
     if (!stopBefore.empty() && !hasPass(stopBefore)) return false;
     gl::DebugGroup group(pipelineName(kind_));
     // The whole frame's graph decides what runs, also when it stops early: a stopped frame is the
     // whole frame's first passes.
-    FrameGraph frameGraph = graph(context.frame);
+    FrameGraph frameGraph = graph(context.frame, sinks);
     if (frameValidation() && !frameGraph.problems.empty())
         throw std::logic_error("the " + std::string(pipelineName(kind_)) + " frame is invalid: " +
                                frameGraph.problems.front());

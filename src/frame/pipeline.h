@@ -23,13 +23,15 @@ public:
     // Runs the active passes in order; stops before the pass named `stopBefore` (empty: run all).
     // Returns false if `stopBefore` names no pass of this pipeline.
     // `afterEach` is called after every pass that ran (to record or time it).
+    // `sinks`: what is read of the frame after it (frameOutputs(), or a view's reads).
     bool run(PassContext& context, const std::string& stopBefore = {},
-             const std::function<void(const Pass&)>& afterEach = {}) const;
+             const std::function<void(const Pass&)>& afterEach = {},
+             const std::vector<Resource>& sinks = frameOutputs()) const;
     bool hasPass(const std::string& name) const;
     std::string passNames() const;
     bool writes(const FrameSetup& frame, Target target) const;
-    // The frame's graph: which passes run for `frame`, which are culled and why.
-    FrameGraph graph(const FrameSetup& frame) const;
+    // The frame's graph: which passes run for `frame` and `sinks`, which are culled and why.
+    FrameGraph graph(const FrameSetup& frame, const std::vector<Resource>& sinks = frameOutputs()) const;
     const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }
 
 private:

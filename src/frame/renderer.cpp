@@ -258,18 +258,61 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         reflectionTargets_.reset();  // back at full resolution: the reduced set's memory goes back too
     }
     stepsRan_.clear();
+    frameSinks_ = sinkOfFrame(!stopBefore.empty());
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) stepsRan_.push_back(pass.sceneStep());
         if (afterEach) afterEach(pass);
-    });
+    }, frameSinks_);
     gbufferHolds_.reset();
-    radianceAwaitsWater_ = frame_.toneMapFused && waterComposite_.active(frame_);
+    // A view's frame may cull the composite (nothing it shows reads the water): then nothing awaits.
+    radianceAwaitsWater_ = frame_.toneMapFused && waterComposite_.active(frame_) &&
+                           pipeline.graph(frame_, frameSinks_).runs(waterComposite_.name());
     stoppedBefore_ = stopBefore;
     stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(frame_, Target::Albedo);
 }
 
-FrameGraph Renderer::frameGraph() const { return pipelineOf(active_).graph(frame_); }
+FrameGraph Renderer::frameGraph() const { return pipelineOf(active_).graph(frame_, frameSinks_); }
+
+void Renderer::setFrameSink(const std::vector<std::string>& views) {
+    for (const std::string& name : views)
+        if (name != kOverviewName && !findDebugView(name))
+            throw std::invalid_argument("no debug view named '" + name + "' (views: " + debugViewNames() + ")");
+    sinkViews_ = views;
+}
+
+std::vector<Resource> Renderer::sinkOfFrame(bool stopped) const {
+    if (sinkViews_.empty() || stopped) return frameOutputs();
+    // What the views read, walked back through what runs for them after the frame, last first:
+    // the views' fill (ensureGBuffer), then the water laid onto Radiance (ensureRadiance).
+    std::vector<Resource> reads;
+    bool surfaces = false, radiance = false;
+    for (const DebugView& view : debugViews()) {
+        if (std::find(sinkViews_.begin(), sinkViews_.end(), view.name) == sinkViews_.end() &&
+            std::find(sinkViews_.begin(), sinkViews_.end(), kOverviewName) == sinkViews_.end())
+            continue;
+        for (const Resource& read : viewReads(view, targets_->layout())) reads.push_back(read);
+        surfaces = surfaces || readsSceneSurfaces(view);
+        radiance = radiance || view.source == ViewSource::Radiance;
+    }
+    if (surfaces) reads = readsBefore(viewFill_.passes(viewWaterScene_, frame_), frame_, reads);
+    if (radiance && frame_.toneMapFused) {
+        FrameSetup separate = frame_;  // ensureRadiance runs the composite as the separate pass
+        separate.toneMapFused = false;
+        reads = readsBefore({&waterComposite_}, separate, reads);
+    }
+    return reads;
+}
+
+void Renderer::requireInSink(const std::string& viewName) const {
+    if (sinkViews_.empty() || std::find(sinkViews_.begin(), sinkViews_.end(), viewName) != sinkViews_.end() ||
+        std::find(sinkViews_.begin(), sinkViews_.end(), kOverviewName) != sinkViews_.end())
+        return;
+    std::string names;
+    for (const std::string& name : sinkViews_) names += (names.empty() ? "" : ", ") + name;
+    throw std::logic_error("the view " + viewName + " was not asked for: the frame was culled for " + names +
+                           " (Renderer::setFrameSink)");
+}
 
 void Renderer::prepareReducedReflection() {
     const int divisor = frame_.reflectionDivisor;
@@ -380,6 +423,7 @@ void Renderer::renderView(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view && viewName != kOverviewName)
         throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
+    requireInSink(viewName);
     // Only the views of Radiance ask for the water laid on: the final view (the window's every
     // frame) keeps the fused frame's saving.
     if (viewName == kOverviewName || view->source == ViewSource::Radiance) ensureRadiance();
@@ -394,6 +438,7 @@ std::vector<float> Renderer::readViewValues(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
                                            debugViewNames() + ")");
+    requireInSink(viewName);
     if (view->source == ViewSource::Radiance) ensureRadiance();
     if (readsSceneSurfaces(*view)) ensureGBuffer();
     PassContext passContext = context();

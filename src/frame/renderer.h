@@ -48,6 +48,14 @@ public:
     PipelineKind pipeline() const { return active_; }
     // The last frame's graph: its pipeline's passes, which ran and why the others were culled.
     FrameGraph frameGraph() const;
+    // What the frames after this are looked at through (their sink): the views named (table
+    // names or "overview"), and nothing else of them; empty (the default): anything, the whole
+    // frame (frameOutputs()). A view's frame runs only the passes whose writes reach what the
+    // view reads, through what runs after the frame for it (the composite onto Radiance, the
+    // views' fill). A frame stopped early keeps the whole frame's sink. renderView and
+    // readViewValues of a view not named throw std::logic_error.
+    void setFrameSink(const std::vector<std::string>& views);
+    const std::vector<std::string>& frameSink() const { return sinkViews_; }
     void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
     StencilViewPath stencilViewPath() const { return stencilPath_; }
     // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).
@@ -166,6 +174,8 @@ private:
     // its frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.
     void prepareReducedReflection();
     void uploadLights();
+    std::vector<Resource> sinkOfFrame(bool stopped) const;
+    void requireInSink(const std::string& viewName) const;
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
@@ -224,6 +234,8 @@ private:
     bool stoppedGBufferCurrent_ = false;  // a stopped frame's G-buffer already holds what it reached
     std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
     bool radianceAwaitsWater_ = false;  // a fused frame's composite has not been laid onto Radiance
+    std::vector<std::string> sinkViews_;  // setFrameSink's views; empty: the whole frame
+    std::vector<Resource> frameSinks_ = frameOutputs();  // the last frame's sink
 };
 
 }  // namespace oasis

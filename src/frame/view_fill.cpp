@@ -19,6 +19,13 @@ ViewFill::ViewFill()
       mirrored_(assembleFrame(FrameOutput::ViewFillMirrored)),
       stoppedFrame_(assembleFrame(FrameOutput::StoppedFrameFill)) {}
 
+std::vector<const Pass*> ViewFill::passes(WaterScene scene, const FrameSetup& frame) const {
+    std::vector<const Pass*> list;
+    for (const auto& pass : scene == WaterScene::Mirrored && frame.reflectionsActive ? mirrored_ : direct_)
+        list.push_back(pass.get());
+    return list;
+}
+
 ViewScene ViewFill::run(PassContext& context, WaterScene scene) const {
     ViewScene shown;
     if (scene == WaterScene::Mirrored && !context.frame.reflectionsActive) {

@@ -36,6 +36,13 @@ def check_order(oasis, out_dir):
             print(f"{pipeline}: a culled pass without a reason: {culled}")
             return 1
         print(f"{pipeline}: {len(ran)} passes in the order they ran, {len(culled)} culled with reasons")
+    # The frame is built for the view asked for: the albedo view's runs no shading.
+    albedo = run(oasis, "render", "--size", "160x90", "--graph", "--view", "albedo", "--pipeline", "deferred")
+    for shading in ("LightingPass", "SkyPass.deferred", "WaterCompositePass"):
+        if shading in running(albedo) or f"{shading} (culled: nothing later reads" not in albedo:
+            print(f"render --graph --view albedo: {shading} is not culled for the view:\n{albedo}")
+            return 1
+    print("render --graph --view albedo: the lighting, sky and water composite culled with reasons")
     return 0
 
 

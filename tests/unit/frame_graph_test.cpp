@@ -7,6 +7,7 @@
 
 #include "frame/frame_graph.h"
 #include "frame/pipeline.h"
+#include "frame/view_fill.h"
 
 namespace oasis {
 namespace {
@@ -78,6 +79,32 @@ TEST(FrameGraph, EveryReadOfBothPipelinesHasAWriterBeforeIt) {
                         EXPECT_TRUE(graph.problems.empty()) << pipelineName(kind) << ": " << graph.problems.front();
                     }
     }
+}
+
+// A view's sink (Renderer::setFrameSink): what the albedo view reads, walked back through the
+// views' fill, which clears the depth-stencil whole (ClearPass's Replace) and draws the G-buffer
+// over what the frame left, reaches the frame as the G-buffer's colour targets alone; the frame
+// built for them runs the geometry and none of the shading.
+TEST(FrameGraph, AViewOfTheGBufferCullsTheShading) {
+    FrameSetup frame = compactFrame(LightMethod::Tiled, true);
+    frame.reflectionsActive = true;
+    ViewFill fill;
+    std::vector<Resource> frameSink = readsBefore(fill.passes(WaterScene::Direct, frame), frame,
+                                                  {Target::Albedo, Target::Normal, Target::Info, Target::DepthStencil});
+    std::sort(frameSink.begin(), frameSink.end());
+    EXPECT_EQ(frameSink, (std::vector<Resource>{Target::Albedo, Target::Normal, Target::Info}));
+    Pipeline deferred(PipelineKind::Deferred);
+    FrameGraph graph = deferred.graph(frame, frameSink);
+    for (const char* runs : {"ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer",
+                             "TerrainPass.gbuffer.mirrored"})
+        EXPECT_TRUE(stepNamed(graph, runs).runs) << runs;
+    for (const char* culled : {"LightingPass", "SkyPass.deferred", "LightingPass.mirrored", "WaterCompositePass",
+                               "LightTilingPass", "DepthCopyPass.mirrored"})
+        EXPECT_FALSE(stepNamed(graph, culled).runs) << culled;
+    EXPECT_EQ(stepNamed(graph, "LightingPass").culled, "nothing later reads what it writes (radiance)");
+    EXPECT_TRUE(graph.problems.empty());
+    // Nothing of the frame reaches the depth view: the fill draws all of its depth.
+    EXPECT_TRUE(readsBefore(fill.passes(WaterScene::Mirrored, frame), frame, {Target::DepthStencil}).empty());
 }
 
 // A pass that samples the depth copy with nothing before it to make it.

@@ -1,0 +1,211 @@
+// A frame built for the view asked for (Renderer::setFrameSink, issue 30 item 1): it runs only
+// the passes whose writes reach what the view reads (the views table's `reads`, walked back through
+// the views' fill and the composite onto Radiance), and every view's picture and values are then the
+// same, bit for bit, as after a whole frame: a read missing from the table would cull its writer
+// and change the picture.
+#include "gpu_test.h"
+
+#include <stdexcept>
+
+#include "debug/debug_views.h"
+#include "frame/frame_traffic.h"
+
+namespace oasis::gputest {
+namespace {
+
+constexpr int kWidth = 96, kHeight = 54;
+
+std::vector<std::string> allViewNames() {
+    std::vector<std::string> names;
+    for (const DebugView& view : debugViews()) names.push_back(view.name);
+    names.push_back(kOverviewName);
+    return names;
+}
+
+// Water, terrain, plants and sky from the lake's shore; `night`: 21:00 with four point lights
+// added by volumes (LightVolumePass, the separate ToneMapPass), else 10:00 with the tone map fused.
+SceneSettings lakeScene(bool night) {
+    SceneSettings scene = sceneAtHeight(435.0, 4.0, 140.0, 30.0f, -3.0f);
+    if (night) {
+        scene.hour = 21.0;
+        scene.lights.count = 4;
+        scene.lights.method = LightMethod::Volumes;
+    }
+    return scene;
+}
+
+class FrameSink : public GpuTest {
+protected:
+    // The view drawn after a frame built for `sink` (empty: the whole frame); its values too.
+    struct Shown {
+        Image image;
+        std::vector<float> values;
+    };
+    Shown show(Renderer& renderer, const SceneSettings& scene, const std::string& view,
+               const std::vector<std::string>& sink) {
+        renderer.setFrameSink(sink);
+        renderer.renderFrame(scene);
+        renderer.renderView(view);
+        Shown shown{renderer.readDisplay(), {}};
+        if (view != kOverviewName) shown.values = renderer.readViewValues(view);
+        return shown;
+    }
+};
+
+// The passes that ran for each view's sink, and the view's picture and values against a whole
+// frame's, in both pipelines, a layout that rebuilds position from depth and one that stores it,
+// day (fused tone map) and night (light volumes), the views' direct and mirrored water scenes.
+TEST_F(FrameSink, EveryViewIsTheSameAfterItsOwnFrameAsAfterAWholeFrame) {
+    struct Case {
+        const char* layout;
+        bool night;
+        WaterScene water;
+    };
+    for (const Case& c : {Case{"compact", false, WaterScene::Direct}, Case{"compact", true, WaterScene::Direct},
+                          Case{"standard", false, WaterScene::Direct}, Case{"compact", false, WaterScene::Mirrored}}) {
+        const SceneSettings scene = lakeScene(c.night);
+        SceneSettings decoy = sceneAtHeight(580.0, 12.0, 120.0, -80.0f, -4.0f);
+        decoy.hour = c.night ? 20.0 : 17.5;
+        decoy.lights = scene.lights;
+        Renderer renderer(*shaders_, scene);
+        auto atlas = attachPlantAtlas(*shaders_, renderer);
+        renderer.configure(kWidth, kHeight, layoutNamed(c.layout));
+        renderer.setViewWaterScene(c.water);
+        for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+            renderer.setPipeline(kind);
+            for (const std::string& view : allViewNames()) {
+                SCOPED_TRACE(std::string(c.layout) + (c.night ? " night " : " day ") + waterSceneName(c.water) + " " +
+                             pipelineName(kind) + " " + view);
+                // Another place and hour first: what a culled pass should have written is then
+                // wrong in the targets, not the same frame's.
+                show(renderer, decoy, kOverviewName, {});
+                const Shown own = show(renderer, scene, view, {view});
+                const Shown whole = show(renderer, scene, view, {});
+                ASSERT_EQ(whole.image.rgba.size(), own.image.rgba.size());
+                EXPECT_TRUE(whole.image.rgba == own.image.rgba)
+                    << "the view's own frame culled a pass it reads: max abs "
+                    << compareImages(whole.image, own.image).maxAbs;
+                EXPECT_TRUE(whole.values == own.values) << "the view's values differ after its own frame";
+            }
+        }
+    }
+}
+
+std::vector<std::string> passesRun(const FrameGraph& graph) {
+    std::vector<std::string> names;
+    for (const GraphStep& step : graph.steps)
+        if (step.runs) names.push_back(step.pass->name());
+    return names;
+}
+
+std::string joinedNames(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
+    return text;
+}
+
+bool has(const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// Which passes each view's frame runs: the G-buffer views no shading, the depth, stencil and
+// atlas views nothing of the frame (the views' fill draws what they show), the final view the
+// whole frame's shading, the radiance view not the tone map.
+TEST_F(FrameSink, EachViewRunsThePassesItsReadsNeed) {
+    const std::vector<std::string> shading = {"LightingPass", "SkyPass.deferred", "LightingPass.mirrored",
+                                              "SkyPass.deferred.mirrored", "WaterCompositePass", "ToneMapPass",
+                                              "LightVolumePass", "LightVolumePass.mirrored"};
+    for (bool night : {false, true}) {
+        SCOPED_TRACE(night ? "night, light volumes" : "day, tone map fused");
+        const SceneSettings scene = lakeScene(night);
+        Renderer renderer(*shaders_, scene);
+        auto atlas = attachPlantAtlas(*shaders_, renderer);
+        renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+        auto runsFor = [&](PipelineKind kind, const std::string& view) {
+            renderer.setPipeline(kind);
+            renderer.setFrameSink(view.empty() ? std::vector<std::string>{} : std::vector<std::string>{view});
+            renderer.renderFrame(scene);
+            std::vector<std::string> ran = passesRun(renderer.frameGraph());
+            std::printf("[ sink ] %s %s %s: %s\n", night ? "night" : "day", pipelineName(kind),
+                        view.empty() ? "(whole frame)" : view.c_str(), joinedNames(ran).c_str());
+            return ran;
+        };
+        const std::vector<std::string> whole = runsFor(PipelineKind::Deferred, "");
+        for (const char* view : {"albedo", "normal", "position", "info", "light-volumes", "shadow"}) {
+            std::vector<std::string> ran = runsFor(PipelineKind::Deferred, view);
+            EXPECT_TRUE(has(ran, "TerrainPass.gbuffer")) << view;
+            for (const std::string& pass : {"LightingPass", "SkyPass.deferred", "LightingPass.mirrored",
+                                            "SkyPass.deferred.mirrored", "WaterCompositePass", "ToneMapPass"})
+                EXPECT_FALSE(has(ran, pass)) << view << " runs " << pass;
+            EXPECT_EQ(has(ran, "ShadowPass"), std::string(view) == "shadow" && has(whole, "ShadowPass")) << view;
+        }
+        for (const char* view : {"depth", "stencil", "atlas"}) {
+            EXPECT_TRUE(runsFor(PipelineKind::Deferred, view).empty()) << view;
+            EXPECT_TRUE(runsFor(PipelineKind::Forward, view).empty()) << view;
+        }
+        EXPECT_TRUE(runsFor(PipelineKind::Forward, "albedo").empty()) << "forward draws no G-buffer: the fill does";
+        const std::vector<std::string> final = runsFor(PipelineKind::Deferred, "final");
+        for (const std::string& pass : {"LightingPass", "SkyPass.deferred", "LightingPass.mirrored", "WaterCompositePass"})
+            EXPECT_TRUE(has(final, pass)) << pass;
+        EXPECT_EQ(has(final, "ToneMapPass"), night) << "the separate tone map only with the light volumes";
+        EXPECT_EQ(final, whole) << "every pass of the whole frame reaches Final here";
+        const std::vector<std::string> radiance = runsFor(PipelineKind::Deferred, "radiance");
+        EXPECT_TRUE(has(radiance, "LightingPass"));
+        EXPECT_FALSE(has(radiance, "ToneMapPass"));
+        // The culled passes say why.
+        renderer.setFrameSink({"albedo"});
+        renderer.setPipeline(PipelineKind::Deferred);
+        renderer.renderFrame(scene);
+        for (const GraphStep& step : renderer.frameGraph().steps)
+            if (step.pass->name() == "LightingPass")
+                EXPECT_EQ(step.culled.rfind("nothing later reads what it writes (radiance", 0), 0u) << step.culled;
+    }
+}
+
+// A frame built for one view shows no other: asking for one throws rather than showing targets
+// the frame did not draw.
+TEST_F(FrameSink, AViewTheFrameWasNotBuiltForIsRefused) {
+    const SceneSettings scene = lakeScene(false);
+    Renderer renderer(*shaders_, scene);
+    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.setFrameSink({"albedo"});
+    renderer.renderFrame(scene);
+    EXPECT_NO_THROW(renderer.renderView("albedo"));
+    EXPECT_THROW(renderer.renderView("final"), std::logic_error);
+    EXPECT_THROW(renderer.readViewValues("radiance"), std::logic_error);
+    EXPECT_THROW(renderer.setFrameSink({"no-such-view"}), std::invalid_argument);
+    renderer.setFrameSink({});
+    renderer.renderFrame(scene);
+    EXPECT_NO_THROW(renderer.renderView("final"));
+}
+
+// What a view's frame saves, in fragment invocations counted by the driver (frame/frame_traffic.h):
+// printed, not asserted beyond "not more".
+TEST_F(FrameSink, AViewsFrameCostsNoMoreFragmentsThanAWholeFrame) {
+    std::string whyNot;
+    if (!trafficCountable(&whyNot)) GTEST_SKIP() << whyNot;
+    const SceneSettings scene = lakeScene(false);
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(320, 180, layoutNamed("compact"));
+    for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
+        renderer.setPipeline(kind);
+        auto invocations = [&](const std::vector<std::string>& sink) {
+            renderer.setFrameSink(sink);
+            uint64_t total = 0;
+            for (const PassTraffic& pass : measureFrameTraffic(renderer, scene).passes) total += pass.invocations;
+            return total;
+        };
+        const uint64_t whole = invocations({});
+        for (const char* view : {"final", "albedo", "radiance", "depth"}) {
+            const uint64_t own = invocations({view});
+            EXPECT_LE(own, whole) << view;
+            std::printf("[ sink ] %s 320x180 compact, --view %s: %llu fragment invocations, whole frame %llu (%.0f%%)\n",
+                        pipelineName(kind), view, (unsigned long long)own, (unsigned long long)whole,
+                        whole ? 100.0 * double(own) / double(whole) : 0.0);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace oasis::gputest
