@@ -127,12 +127,18 @@ FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSe
 }
 
 std::string frameGraphText(const FrameGraph& graph) {
+    // One pass a line, its name in a column: "NAME  reads -> writes", or "NAME  culled: why".
+    size_t column = 0;
+    for (const GraphStep& step : graph.steps) column = std::max(column, step.pass->name().size());
+    auto listed = [](const std::vector<Resource>& resources) {
+        return resources.empty() ? std::string("-") : joined(resources);
+    };
     std::string text;
     for (const GraphStep& step : graph.steps) {
-        text += step.pass->name() + (step.runs ? "" : " (culled: " + step.culled + ")") + "\n";
-        if (!step.runs) continue;
-        text += "    reads:  " + (step.reads.empty() ? std::string("-") : joined(step.reads)) + "\n";
-        text += "    writes: " + (step.writes.empty() ? std::string("-") : joined(step.writes)) + "\n";
+        const std::string& name = step.pass->name();
+        text += name + std::string(column + 2 - name.size(), ' ');
+        text += step.runs ? listed(step.reads) + " -> " + listed(step.writes) : "culled: " + step.culled;
+        text += "\n";
     }
     for (const std::string& problem : graph.problems) text += "invalid: " + problem + "\n";
     return text;
