@@ -65,7 +65,7 @@ std::vector<ProgramVariant> fixedVariants() {
         {"water.mask.plane", "water.vert", "water_mask.frag", {"WATER_PLANE_ONLY"}},
         {"reflection.upsample", "fullscreen.vert", "reflection_upsample.frag", {"WATER_BOUNDED"}},
         {"water.composite", "water.vert", "water_composite.frag", {}},
-        // The tone map fused into the pass that writes a pixel's colour last (README: the
+        // The tone map fused into the pass that writes a pixel's colour last (docs/architecture.md: the
         // full-screen passes): ".tonemapped" variants also write Final; "tonemap" is the separate pass.
         {"water.composite.tonemapped", "water.vert", "water_composite.frag", {"TONE_MAP_FUSED"}},
         {"lighting.tonemapped", "fullscreen.vert", "lighting.frag", {"FULLSCREEN_AT_FAR_PLANE", "TONE_MAP_FUSED"}},
