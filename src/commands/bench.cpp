@@ -201,14 +201,15 @@ std::vector<DepthPrecision> compareDepthPrecision(const RenderSession& session, 
     for (const BenchFrame& frame : frames) scenes.push_back(frameScene(session.scene, knobs, defaultLevels(knobs), defaultLightCount(), frame));
     Renderer renderer(*session.shaders, session.scene);
     renderer.setPlantAtlas(session.plantAtlas.get());
-    std::string why;
-    renderer.setClipControlAvailable(session.caps.clipControlAvailable(&why), why);
+    RendererCapabilities clipControl = renderer.paths().capabilities;
+    clipControl.clipControl.available = session.caps.clipControlAvailable(&clipControl.clipControl.reason);
+    renderer.setCapabilities(clipControl);
     std::vector<DepthPrecision> rows;
     for (const DepthConvention& depth : depthConventions()) {
         renderer.setDepthConvention(depth);
-        if (renderer.depthFellBack()) {
+        if (renderer.paths().depthFellBack) {
             std::fprintf(stderr, "oasis bench: depth precision: %s not measured (%s)\n", depth.name.c_str(),
-                         renderer.depthConventionReason().c_str());
+                         renderer.paths().depthReason.c_str());
             continue;
         }
         renderer.configure(width, height, *findGBufferLayout("full"));
@@ -290,7 +291,9 @@ int runBenchCommand(const Options& options) {
             extraRenderers.push_back(std::make_unique<Renderer>(*session.shaders, session.scene));
             extraRenderers.back()->setPlantAtlas(session.plantAtlas.get());
             extraRenderers.back()->setStencilViewPath(renderer.stencilViewPath());
-            extraRenderers.back()->setClipControlAvailable(true, clipControlWhy);
+            RendererCapabilities withClipControl = extraRenderers.back()->paths().capabilities;
+            withClipControl.clipControl = {true, clipControlWhy};
+            extraRenderers.back()->setCapabilities(withClipControl);
             extraRenderers.back()->setDepthConvention(*findDepthConvention(depth));
             renderers[{layout, depth}] = extraRenderers.back().get();
         };

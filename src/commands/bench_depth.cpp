@@ -95,7 +95,7 @@ std::vector<DepthPrecision> measureDepthPrecision(Renderer& renderer, const std:
     std::vector<DepthPrecision> rows;
     for (size_t b = 0; b < bands.size(); ++b) {
         DepthPrecision row;
-        row.depth = renderer.depthConvention().name;
+        row.depth = renderer.paths().depth->name;
         row.band = bands[b];
         row.pixels = absolute[b].size();
         row.medianAbs = median(absolute[b]);

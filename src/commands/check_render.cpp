@@ -73,14 +73,14 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
     const Renderer& renderer = *session.renderer;
     const SceneOptions& scene = options.scene;
     const gl::Capabilities& caps = session.caps;
-    if (scene.lightsPath && renderer.lightsPath() != *scene.lightsPath) {
+    if (scene.lightsPath && renderer.paths().lights.path != *scene.lightsPath) {
         limitedBy = limitOf(caps.driverHasSsbo());
-        return "lights path " + std::string(lightsPathName(*scene.lightsPath)) + " not taken: " + renderer.lightsPathReason();
+        return "lights path " + std::string(lightsPathName(*scene.lightsPath)) + " not taken: " + renderer.paths().lights.reason;
     }
-    if (scene.lightMethod && options.pipeline == PipelineKind::Deferred && renderer.lightMethod() != *scene.lightMethod) {
+    if (scene.lightMethod && options.pipeline == PipelineKind::Deferred && renderer.paths().lightMethod.method != *scene.lightMethod) {
         limitedBy = limitOf(caps.driverHasCompute() && caps.driverHasSsbo());
         return "light method " + std::string(lightMethodName(*scene.lightMethod)) + " not taken: " +
-               renderer.lightMethodReason();
+               renderer.paths().lightMethod.reason;
     }
     if (gpuPlants && session.plantPath != PlantInterpretation::Gpu) {
         limitedBy = limitOf(caps.driverHasCompute() && caps.driverHasSsbo());
@@ -91,9 +91,9 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
         return std::string("stencil view ") + stencilViewPathName(*options.stencilView) + " not taken: " +
                session.stencilPathReason;
     }
-    if (scene.depth == "reversed-z" && renderer.depthFellBack()) {
+    if (scene.depth == "reversed-z" && renderer.paths().depthFellBack) {
         limitedBy = limitOf(caps.driverHasClipControl());
-        return "reversed-z depth not taken: " + renderer.depthConventionReason();
+        return "reversed-z depth not taken: " + renderer.paths().depthReason;
     }
     return {};
 }

@@ -61,7 +61,7 @@ EncodingError measureEncodingError(Renderer& renderer, const SceneSettings& scen
         error.normalDegrees[i] = float(glm::degrees(angle));
         double distance = glm::length(pFull - pLayout);
         error.positionUnits[i] = float(distance);
-        error.positionSteps[i] = float(distance / depthStepAt(renderer.depthConvention(), glm::length(pFull), nearPlane, farPlane));
+        error.positionSteps[i] = float(distance / depthStepAt(*renderer.paths().depth, glm::length(pFull), nearPlane, farPlane));
         ++error.surfaces;
     }
     return error;

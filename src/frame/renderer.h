@@ -10,6 +10,7 @@
 
 #include "debug/debug_view_pass.h"
 #include "frame/pipeline.h"
+#include "frame/render_paths.h"
 #include "frame/view_fill.h"
 #include "passes/floor_pass.h"
 #include "passes/present_pass.h"
@@ -34,16 +35,17 @@ public:
     // Reallocates the targets when the size or layout changes; scene data is kept. Throws
     // std::runtime_error (naming the size) when the targets cannot be made, keeping the old ones.
     void configure(int width, int height, const GBufferLayout& layout);
+    // What the context offers (frame/render_paths.h), given once and whole: replaces the
+    // constructor's own measure (a session's report honours --force). Rechooses the paths in
+    // order: the lights' path and the water's bounds, the light method, the depth convention
+    // (reallocating the targets when the one in use changes), the read-only depth.
+    void setCapabilities(const RendererCapabilities& capabilities);
     // The depth convention (render/depth_convention.h) asked for; reversed-z needs glClipControl
-    // (GL 4.5 / GL_ARB_clip_control) and falls back to standard without it. Reallocates the targets
-    // when the convention in use changes. depthConvention() is the one in use, the reason says why.
+    // and falls back to standard without it. Reallocates the targets when the convention in use
+    // changes; paths() says which is in use and why.
     void setDepthConvention(const DepthConvention& requested);
-    const DepthConvention& depthConvention() const { return *depthInUse_; }
-    const std::string& depthConventionReason() const { return depthReason_; }
-    bool depthFellBack() const { return depthInUse_ != depthRequested_; }
-    // The session's capability report decides (it honours --force no-clip-control); the
-    // constructor's default asks the context directly.
-    void setClipControlAvailable(bool available, const std::string& reason);
+    // The paths chosen from the capabilities and the last frame's scene, with their reasons.
+    const RenderPaths& paths() const { return paths_; }
     void setPipeline(PipelineKind kind) { active_ = kind; }
     PipelineKind pipeline() const { return active_; }
     // The last frame's graph: its pipeline's passes, which ran and why the others were culled.
@@ -67,41 +69,10 @@ public:
     // The plants placed around the last frame's camera and what that frame drew of them.
     const VegetationField& vegetation() const { return vegetationField_; }
     const VegetationStats& vegetationStats() const { return vegetationField_.stats(); }
-    // How shaders read the point lights, decided each frame from SceneSettings::lights.path (forced)
-    // or else the context (SSBOs present or not); a forced SSBO path the context lacks falls back
-    // to ubo. The path and the reason of the last frame (of construction before any frame).
-    LightsPath lightsPath() const { return lightsChoice_.path; }
-    const std::string& lightsPathReason() const { return lightsChoice_.reason; }
-    bool ssboAvailable() const { return ssboAvailable_; }
-    // The session's capability report decides (it honours --force no-ssbo); the constructor's
-    // default asks the context directly.
-    void setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced);
-    const UboLightLayout& uboLights() const { return uboLights_; }
-    // Whether the reflection's passes can be bounded to the visible water (storage blocks in vertex
-    // and fragment shaders, five clip distances: follows setSsboAvailable), and why (not).
-    bool waterBoundsAvailable() const { return waterBoundsAvailable_; }
-    const std::string& waterBoundsReason() const { return waterBoundsReason_; }
+
     // The last frame's rectangle of visible water in pixels (x0, y0, x1, y1 inclusive, rows bottom-up;
     // empty: x0 > x1) as the GPU recorded it; reads it back (a stall: for tests and tools).
     glm::ivec4 readWaterBounds() const;
-    // How the deferred pipeline adds the lights (render/light_method.h), decided each frame from
-    // SceneSettings::lights.method and whether compute shaders (with SSBOs) exist; tiled asked for
-    // without them falls back to volumes. The method and the reason of the last frame.
-    LightMethod lightMethod() const { return lightMethodChoice_.method; }
-    const std::string& lightMethodReason() const { return lightMethodChoice_.reason; }
-    bool computeAvailable() const { return computeAvailable_; }
-    // Whether the compact lighting that samples depth in place may test against that target too
-    // (Capabilities::readOnlyDepthAvailable; the session's report replaces the context's answer).
-    bool readOnlyDepthAvailable() const { return readOnlyDepthAvailable_; }
-    const std::string& readOnlyDepthReason() const { return readOnlyDepthReason_; }
-    void setReadOnlyDepthAvailable(bool available, const std::string& reason);
-    // The session's capability report decides (it honours --force no-compute, no-ssbo, gl33).
-    void setComputeAvailable(bool available, const std::string& reason,
-                             const std::optional<LightMethod>& forced = std::nullopt);
-    // Lights the last frame drew, and how many the UBO path had to drop (0 on the SSBO paths).
-    int lightsDrawn() const { return int(frame_.lights.size()); }
-    int lightsDropped() const { return lightsDropped_; }
-
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
     // A scene whose terrain grid density differs from the last frame's rebuilds the grid first.
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
@@ -205,27 +176,13 @@ private:
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
     std::optional<LightsPath> labelledLightsPath_;  // the path lightList_'s label names
-    bool ssboAvailable_ = false;
     std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
     gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)
     gl::Query waterSeen_;     // did the water mask pass a sample? (the reflection renders only then)
-    bool waterBoundsAvailable_ = false;
-    std::string waterBoundsReason_;
-    void chooseWaterBounds();  // from ssboAvailable_ and the context's limits; sets the context defines
-    UboLightLayout uboLights_;
-    LightsPathChoice lightsChoice_;
-    bool computeAvailable_ = false;
-    std::string computeReason_;
-    LightMethodChoice lightMethodChoice_;
-    int lightsDropped_ = 0;
+    void chooseWaterBounds();  // from the SSBOs and the context's limits; sets the context defines
+    RenderPaths paths_;
     FrameSetup frame_;
     const DepthConvention* depthRequested_ = &standardDepthConvention();
-    const DepthConvention* depthInUse_ = &standardDepthConvention();
-    bool clipControlAvailable_ = false;
-    std::string clipControlReason_;
-    bool readOnlyDepthAvailable_ = false;
-    std::string readOnlyDepthReason_;
-    std::string depthReason_;
     ViewFill viewFill_;
     WaterScene viewWaterScene_ = WaterScene::Direct;
     std::optional<WaterScene> gbufferHolds_;  // the fill the G-buffer holds for the last frame, if any

@@ -14,7 +14,7 @@ namespace oasis {
 
 glm::ivec4 Renderer::readWaterBounds() const {
     glm::ivec4 bounds(1, 1, 0, 0);
-    if (!waterBoundsAvailable_) return bounds;
+    if (!paths_.waterBoundsAvailable) return bounds;
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
     gl::readBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(bounds), &bounds);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);

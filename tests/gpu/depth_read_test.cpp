@@ -123,7 +123,7 @@ TEST_F(DepthReadInPlace, LightsTiledReadInPlaceAndTheVolumesKeepTheCopy) {
     renderer.setPipeline(PipelineKind::Deferred);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     std::vector<LightMethod> methods = {LightMethod::Volumes};
-    if (renderer.computeAvailable()) methods.push_back(LightMethod::Tiled);
+    if (renderer.paths().capabilities.compute.available) methods.push_back(LightMethod::Tiled);
     for (LightMethod method : methods) {
         SCOPED_TRACE(lightMethodName(method));
         SceneSettings scene = pose.scene;

@@ -24,7 +24,9 @@ struct CoverageRun {
 };
 
 CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool readOnlyDepth) {
-    renderer.setReadOnlyDepthAvailable(readOnlyDepth, readOnlyDepth ? "test: on" : "test: off");
+    RendererCapabilities caps = renderer.paths().capabilities;
+    caps.readOnlyDepth = {readOnlyDepth, readOnlyDepth ? "test: on" : "test: off"};
+    renderer.setCapabilities(caps);
     CoverageRun run;
     // The samples LightingPass and SkyPass.deferred let through their tests (llvmpipe's
     // fragment-shader statistics count whole 4x4 blocks before the depth test, so they cannot
@@ -76,7 +78,7 @@ TEST_F(LightingCoverage, SurfacesOnlyEqualsEveryPixelAndTheSkyShadesTheRest) {
         Renderer renderer(*shaders_, defaultPose().scene);
         renderer.setDepthConvention(*findDepthConvention(depth));
         renderer.configure(kWidth, kHeight, layoutNamed(layout));
-        if (renderer.depthConvention().name != depth) GTEST_SKIP() << renderer.depthConventionReason();
+        if (renderer.paths().depth->name != depth) GTEST_SKIP() << renderer.paths().depthReason;
         renderer.setPipeline(PipelineKind::Deferred);
         auto atlas = attachPlantAtlas(*shaders_, renderer);
         for (const NamedPose& pose : allPoses()) {
@@ -126,7 +128,9 @@ TEST_F(LightingCoverage, AFrameStoppedBeforeTheSkyShowsItBlack) {
     SceneSettings scene = defaultPose().scene;
     for (bool readOnlyDepth : {true, false}) {
     SCOPED_TRACE(readOnlyDepth ? "surfaces only" : "every pixel");
-    renderer.setReadOnlyDepthAvailable(readOnlyDepth, "test");
+    RendererCapabilities caps = renderer.paths().capabilities;
+    caps.readOnlyDepth = {readOnlyDepth, "test"};
+    renderer.setCapabilities(caps);
     renderer.renderFrame(scene);
     std::vector<float> whole = renderer.readTarget(Target::Radiance);
     renderer.renderFrame(scene, "SkyPass.deferred");

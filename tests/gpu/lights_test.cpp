@@ -70,9 +70,9 @@ TEST_F(Lights, ThreePathsAreBitIdenticalInEachPipeline) {
     Renderer renderer(*shaders_, base);
     auto atlas = attachPlantAtlas(*shaders_, renderer);  // plants are lit by the point lights too
     renderer.configure(width, height, layoutNamed("standard"));
-    ASSERT_TRUE(renderer.ssboAvailable()) << "this test needs SSBOs (GL 4.3) to compare the paths";
-    const int capacity = renderer.uboLights().capacity;
-    std::printf("[lights] ubo capacity %d lights per block, %d blocks\n", capacity, renderer.uboLights().blocks);
+    ASSERT_TRUE(renderer.paths().capabilities.ssbo.available) << "this test needs SSBOs (GL 4.3) to compare the paths";
+    const int capacity = renderer.paths().uboLights.capacity;
+    std::printf("[lights] ubo capacity %d lights per block, %d blocks\n", capacity, renderer.paths().uboLights.blocks);
     ASSERT_GE(capacity, 8);
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         Image unlit;
@@ -84,9 +84,9 @@ TEST_F(Lights, ThreePathsAreBitIdenticalInEachPipeline) {
                 SCOPED_TRACE(lightsPathName(path));
                 SceneSettings scene = withLights(base, lightsInView(base, count), path);
                 Image image = renderFinal(renderer, scene, kind);
-                EXPECT_EQ(renderer.lightsPath(), path);
-                EXPECT_EQ(renderer.lightsDrawn(), count);
-                EXPECT_EQ(renderer.lightsDropped(), 0);
+                EXPECT_EQ(renderer.paths().lights.path, path);
+                EXPECT_EQ(renderer.paths().lightsDrawn, count);
+                EXPECT_EQ(renderer.paths().lightsDropped, 0);
                 std::vector<float> radiance = renderer.readTarget(Target::Radiance);
                 if (first.width == 0) {
                     first = image;
@@ -126,7 +126,7 @@ TEST_F(Lights, ForwardAndDeferredAgreeWith64Lights) {
         dumpImage(std::string("lights-64-deferred-") + layout, deferred);
         ImageDifference difference = compareImages(forward, deferred);
         std::printf("[lights] 64 lights, %s, %s depth: forward vs deferred PSNR %.2f dB, max %d\n", layout,
-                    renderer.depthConvention().name.c_str(), difference.psnrDb, difference.maxAbs);
+                    renderer.paths().depth->name.c_str(), difference.psnrDb, difference.maxAbs);
         EXPECT_GE(difference.psnrDb, minPsnr);
         EXPECT_GT(brighterPixels(deferred, unlit), 320 * 180 / 10) << "the lights barely show";
     }
@@ -165,7 +165,7 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
     for (const Case& c : cases) {
         renderer.setDepthConvention(depth);
         for (LightsPath path : kPaths) {
-            SCOPED_TRACE(c.name + ", " + lightsPathName(path) + ", depth " + renderer.depthConvention().name);
+            SCOPED_TRACE(c.name + ", " + lightsPathName(path) + ", depth " + renderer.paths().depth->name);
             SceneSettings scene = withLights(base, {c.light}, path);
             SceneSettings dark = withLights(base, {}, path);
             Image forward = renderFinal(renderer, scene, PipelineKind::Forward);
@@ -186,7 +186,7 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
                     holes += forwardLit && !deferredLit;
                 }
             std::printf("[lights] %s, %s depth: %d pixels lit forward, %d holes in deferred\n", c.name.c_str(),
-                        renderer.depthConvention().name.c_str(), litForward, holes);
+                        renderer.paths().depth->name.c_str(), litForward, holes);
             EXPECT_GT(litForward, width * height / 20) << "the light should light much of the view";
             EXPECT_EQ(holes, 0) << "deferred misses pixels the forward pipeline lights";
             EXPECT_GE(compareImages(forward, deferred).psnrDb, 45.0);

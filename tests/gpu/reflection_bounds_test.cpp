@@ -57,7 +57,7 @@ TEST_F(ReflectionBounds, FrameWithoutWaterInViewPaysNothingForTheReflection) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     if (reflectionWorkInvocations(renderer, pose.scene, GL_VERTEX_SHADER_INVOCATIONS_ARB) < 0)
         GTEST_SKIP() << "no pipeline statistics queries";
     SceneSettings dry = pose.scene;
@@ -102,7 +102,7 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
         Renderer renderer(*shaders_, defaultPose().scene);
         renderer.configure(kWidth, kHeight, layoutNamed(layout));
         auto atlas = attachPlantAtlas(*shaders_, renderer);
-        if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+        if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
         for (const NamedPose& pose : poses)
             for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
                 SCOPED_TRACE(pose.name + ", " + pipelineName(kind) + ", " + layout);
@@ -174,7 +174,7 @@ TEST_F(ReflectionBounds, MirroredBillboardsMissingTheWaterAreDropped) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     auto mirroredPlants = [](const Pass& pass) {
         return pass.name().rfind("VegetationPass", 0) == 0 && pass.reflectionWork();
     };
@@ -207,17 +207,20 @@ TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
     renderer.renderView("final");
     const Image bounded = renderer.readDisplay();
     EXPECT_TRUE(hasContent(bounded));
 
-    renderer.setSsboAvailable(false, "switched off by the test", std::nullopt);
-    EXPECT_FALSE(renderer.waterBoundsAvailable());
-    EXPECT_NE(renderer.waterBoundsReason().find("switched off by the test"), std::string::npos)
-        << renderer.waterBoundsReason();
+    RendererCapabilities caps = renderer.paths().capabilities;
+    caps.ssbo = {false, "switched off by the test"};
+    caps.forcedLightsPath = std::nullopt;
+    renderer.setCapabilities(caps);
+    EXPECT_FALSE(renderer.paths().waterBoundsAvailable);
+    EXPECT_NE(renderer.paths().waterBoundsReason.find("switched off by the test"), std::string::npos)
+        << renderer.paths().waterBoundsReason;
     renderer.renderFrame(pose.scene);
     renderer.renderView("final");
     const Image whole = renderer.readDisplay();

@@ -141,7 +141,7 @@ TEST_F(ReflectionResolution, BoundedFrameIsTheUnboundedOne) {
     Renderer renderer(*shaders_, defaultPose().scene);
     renderer.configure(kWidth, kHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     for (const NamedPose& pose : poses)
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred})
             for (int divisor : {2, 4}) {

@@ -213,7 +213,7 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
                 "%.2f dB, plants drawn %zu, lights %d\n",
                 hard.name.c_str(), renderer.lastFrame().view.pose.position.x, renderer.lastFrame().view.pose.position.y,
                 renderer.lastFrame().view.pose.position.z, surfaces, worst, difference.psnrDb,
-                renderer.vegetationStats().plantsDrawn, renderer.lightsDrawn());
+                renderer.vegetationStats().plantsDrawn, renderer.paths().lightsDrawn);
     EXPECT_GT(surfaces, 0);
     EXPECT_EQ(notUnit, 0) << "normals off unit length by more than 1e-3 (worst " << worst << ")";
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";
@@ -222,7 +222,7 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
     if (hard.check) {
         const std::vector<float> position = renderer.readTarget(Target::Position);
         hard.check(CaseFrame{renderer.lastFrame(), hard.width, hard.height, position, info, stencil, forward,
-                             deferred, renderer.lightsDrawn()});
+                             deferred, renderer.paths().lightsDrawn});
     }
 }
 

@@ -109,7 +109,7 @@ TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
     };
     std::vector<Case> cases = {{PipelineKind::Forward, LightMethod::Volumes, true},
                                {PipelineKind::Deferred, LightMethod::Volumes, false}};
-    if (renderer.computeAvailable()) cases.push_back({PipelineKind::Deferred, LightMethod::Tiled, true});
+    if (renderer.paths().capabilities.compute.available) cases.push_back({PipelineKind::Deferred, LightMethod::Tiled, true});
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(pipelineName(c.kind)) + ", " + lightMethodName(c.method));
         SceneSettings scene = pose.scene;
