@@ -18,6 +18,7 @@
 #include "commands/bench_report.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "frame/frame_readback.h"
 #include "frame/frame_traffic.h"
 #include "gl/frame_capture.h"
 #include "render/file_output.h"
@@ -55,7 +56,7 @@ SceneSettings frameScene(const SceneSettings& base, const std::vector<QualityKno
 Image renderFinalImage(Renderer& renderer, const SceneSettings& scene) {
     renderer.renderFrame(scene);
     renderer.renderView("final");
-    return renderer.readDisplay();
+    return readDisplay(renderer);
 }
 
 double pooledPsnr(double meanSquaredError) {

@@ -22,6 +22,7 @@
 #include "debug/view_legend.h"
 #include "frame/encoding_error.h"
 #include "frame/frame_graph.h"
+#include "frame/frame_readback.h"
 #include "frame/pixel_probe.h"
 #include "gl/frame_capture.h"
 #include "render/file_output.h"
@@ -51,7 +52,7 @@ Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind k
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
     renderer.renderView("final");
-    return renderer.readDisplay();
+    return readDisplay(renderer);
 }
 
 // With `capture`, RenderDoc captures the forward and the deferred frame whose images are written.
@@ -320,7 +321,7 @@ Image encodingErrorImage(const Options& options, RenderSession& session, const E
 Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* report) {
     renderer.setViewExposure(options.viewExposure);
     renderer.renderView(options.view);
-    Image image = renderer.readDisplay();
+    Image image = readDisplay(renderer);
     const DebugView* view = findDebugView(options.view);
     const ViewControls& controls = options.viewControls;
     if (!view) {  // the overview: every tile labelled, each with its own overlay and counts
@@ -429,7 +430,7 @@ int runMainJob(const Options& options) {
                      session.stencilPathReason.c_str());
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
         session.renderer->renderView(kOverviewName);
-        Image overview = session.renderer->readDisplay();
+        Image overview = readDisplay(*session.renderer);
         Image heat = differenceImage(c.forward, "forward", c.deferred, "deferred");
         std::vector<ImageFile> files = comparisonFiles(options, c, heat);
         files.push_back({"overview.png", &overview,

@@ -11,6 +11,7 @@
 #include "commands/view_mask.h"
 #include "debug/error_image.h"
 #include "frame/encoding_error.h"
+#include "frame/frame_readback.h"
 
 namespace oasis {
 namespace window {
@@ -35,7 +36,7 @@ void showEncodingError(Renderer& renderer, const SceneSettings& scene, const Enc
     std::snprintf(line, sizeof(line), "%s against full: median %.4g, 99%% %.4g, max %.4g over %ld surface pixels",
                   error.layout.c_str(), summary.median, summary.p99, summary.max, summary.count);
     state.errorViewSummary = line;
-    renderer.showImage(encodingErrorPicture(values, error.width, error.height, 0.0, summary.max > 0.0 ? summary.max : 1.0));
+    showImage(renderer, encodingErrorPicture(values, error.width, error.height, 0.0, summary.max > 0.0 ? summary.max : 1.0));
 }
 
 void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector, const WindowComparison& off) {
@@ -52,23 +53,23 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
         ValueStatistics statistics = valueStatistics(values, channel, &drawn);
         const FrameTargets& targets = renderer.targets();
         if (controls.showValues()) {
-            renderer.showImage(mapViewValues(values, targets.width(), targets.height(), channel,
+            showImage(renderer, mapViewValues(values, targets.width(), targets.height(), channel,
                                              rangeInUse(controls, statistics), controls.overlay, &drawn));
         } else if (((controls.overlay & kOverlayNan) && statistics.nan) ||
                    ((controls.overlay & kOverlayInfinity) && (statistics.positiveInfinity || statistics.negativeInfinity)) ||
                    ((controls.overlay & kOverlayNegative) && statistics.negative)) {
-            Image image = renderer.readDisplay();
+            Image image = readDisplay(renderer);
             paintOverlay(image, values, channel, controls.overlay, &drawn);
-            renderer.showImage(image);
+            showImage(renderer, image);
         }
         inspector.statistics = statistics;
     }
     // The overview's tiles get their overlays too, while the inspector section is open (13 reads).
     inspector.overviewCounts.clear();
     if (config.view == kOverviewName && inspector.sectionOpen && controls.overlay) {
-        Image image = renderer.readDisplay();
+        Image image = readDisplay(renderer);
         inspector.overviewCounts = overlayOverviewTiles(image, renderer, controls.overlay);
-        renderer.showImage(image);
+        showImage(renderer, image);
     }
     probeShownPixels(inspector, {{&renderer, ""}}, off, renderer.targets().width(), renderer.targets().height());
 }
@@ -128,7 +129,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         state.frameMs += ms;
         // The comparison shows the table's views; an encoding-error view is a comparison of its own.
         renderer.renderView(findEncodingErrorView(config.view) ? std::string("final") : config.view);
-        images[s] = renderer.readDisplay();
+        images[s] = readDisplay(renderer);
     }
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
     c.difference = compareImages(images[0], images[1]);
@@ -136,7 +137,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
     std::vector<DrawnSide> drawn = {{renderers[0], "A: " + c.a.label}, {renderers[1], "B: " + c.b.label}};
     probeInDepthWhenAsked(state.inspector, scene, drawn, c, width, height);
     Renderer& shown = *renderers[0];
-    shown.showImage(showsDifference(c.mode) ? differenceHeatmap(images[0], images[1])
+    showImage(shown, showsDifference(c.mode) ? differenceHeatmap(images[0], images[1])
                                             : splitImage(images[0], images[1], int(std::lround(c.divider * float(width)))));
     Inspector& inspector = state.inspector;
     inspector.statistics.reset();

@@ -373,6 +373,18 @@ void Renderer::ensureGBuffer() {
     gbufferHolds_ = viewWaterScene_;
 }
 
+void Renderer::fillSurfacesWithTheirDepth() {
+    // After a whole frame the water composite has written the water's depth over the mirrored
+    // scene the G-buffer holds there. A layout that rebuilds positions from depth reads them from
+    // those surfaces refilled with their own depth: the mirrored view fill, what the frame left.
+    if (targets_->layout().positionFromDepth() && stoppedBefore_.empty() && !gbufferHolds_) {
+        WaterScene asked = viewWaterScene_;
+        viewWaterScene_ = WaterScene::Mirrored;
+        ensureGBuffer();
+        viewWaterScene_ = asked;
+    }
+}
+
 void Renderer::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
     ensureRadiance();  // the frame's Radiance complete, as ensureGBuffer leaves it
     // The frame, but the passes declare (and bind) the targets of `exact`'s layout.

@@ -1,7 +1,8 @@
 // The renderer: owns the shader library, the scene's GPU data, the frame targets, both pipelines
 // (built once; switching only changes which runs) and the debug views. The window app, the
 // headless commands and the tests all drive this same object. Its choices from what the context
-// offers (depth convention, lights path, water bounds, light method) are in renderer_choices.cpp.
+// offers (depth convention, lights path, water bounds, light method) are in renderer_choices.cpp;
+// what its frames leave is read back with frame/frame_readback.h.
 #pragma once
 #include <memory>
 #include <optional>
@@ -70,9 +71,6 @@ public:
     const VegetationField& vegetation() const { return vegetationField_; }
     const VegetationStats& vegetationStats() const { return vegetationField_.stats(); }
 
-    // The last frame's rectangle of visible water in pixels (x0, y0, x1, y1 inclusive, rows bottom-up;
-    // empty: x0 > x1) as the GPU recorded it; reads it back (a stall: for tests and tools).
-    glm::ivec4 readWaterBounds() const;
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
     // A scene whose terrain grid density differs from the last frame's rebuilds the grid first.
     // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
@@ -122,22 +120,14 @@ public:
     const SceneGeometry& geometry() const { return geometry_; }
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
 
-    Image readDisplay() const;
-    // Puts an image of the frame's size (top row first) into Display, e.g. a view's values mapped
-    // by the view controls on the CPU, for present() to show.
-    void showImage(const Image& image);
-    // A colour target as RGBA floats, bottom row first (GL order); throws std::invalid_argument
-    // for a target the layout does not store.
-    std::vector<float> readTarget(Target target);
-    // The G-buffer's surface positions as lighting reads them (stored, or reconstructed from the
-    // depth-stencil target's depth, refilled where the water's depth covers the mirrored scene:
-    // after a whole frame, the G-buffer's own surfaces):
-    // camera-relative xyz, w 1; 0 where the SKY flag is set. RGBA floats, bottom row first.
-    std::vector<float> readSurfacePositions();
-    std::vector<float> readDepth() const;
-    std::vector<uint8_t> readStencil() const;
 
 private:
+    // frame/frame_readback.cpp's way in (defined there alone): the water's bounds buffer, the
+    // surfaces' float target and their refill with their own depth.
+    friend struct ReadbackAccess;
+    // After a whole frame, a layout that rebuilds positions from depth gets the mirrored view fill
+    // (the water's depth covers the mirrored scene there): the G-buffer's own surfaces.
+    void fillSurfacesWithTheirDepth();
     PassContext context();
     PassContext contextOver(const FrameTargets& targets, const FrameSetup& frame);
     void prepareVegetation(const SceneSettings& scene);
@@ -172,7 +162,7 @@ private:
     WaterCompositePass waterComposite_;  // ensureRadiance's separate composite
     PresentPass present_;
     ShadowMaps shadowMaps_;  // the sun's cascades, bound to their unit in every pass context
-    FloatReadback positionsReadback_;  // readSurfacePositions' float target
+    FloatReadback positionsReadback_;  // readSurfacePositions' float target (frame/frame_readback.h)
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
     std::optional<LightsPath> labelledLightsPath_;  // the path lightList_'s label names

@@ -2,6 +2,7 @@
 // kMaxTargetBytes, throw naming the size before anything is allocated (and the renderer recovers),
 // a 1x1 frame renders in both pipelines without NaN, and a shader reload with a broken file keeps
 // the previous programs (same image) and names the file; restoring it reloads cleanly.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 #include "shader_dir_copy.h"
 
@@ -95,13 +96,13 @@ TEST_F(BadInput, OneByOneFrameRendersInBothPipelinesWithoutNaN) {
             SCOPED_TRACE(pose.name + " " + layout);
             renderer.configure(1, 1, layoutNamed(layout));
             Image forward = renderFinal(renderer, pose.scene, PipelineKind::Forward);
-            EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Final)), 0);
-            EXPECT_EQ(countNonFinite(renderer.readDepth()), 0);
+            EXPECT_EQ(countNonFinite(readTarget(renderer, Target::Final)), 0);
+            EXPECT_EQ(countNonFinite(readDepth(renderer)), 0);
             Image deferred = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
-            const std::vector<uint8_t> stencil = renderer.readStencil();
+            const std::vector<uint8_t> stencil = readStencil(renderer);
             for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::Final})
-                EXPECT_EQ(countNonFiniteWritten(renderer.readTarget(target), target, stencil, false), 0) << targetName(target);
-            EXPECT_EQ(countNonFinite(renderer.readDepth()), 0);
+                EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, stencil, false), 0) << targetName(target);
+            EXPECT_EQ(countNonFinite(readDepth(renderer)), 0);
             ASSERT_EQ(forward.width, 1);
             ASSERT_EQ(deferred.height, 1);
             // The one pixel is a real colour (opaque, not black) and the pipelines agree on it.

@@ -1,6 +1,7 @@
 // Debug views: every view and the overview have content in both pipelines (forward's G-buffer
 // views equal deferred's), each view's colours follow its remapping, the two stencil paths agree
 // bit for bit, and every overview tile shows its view under its label.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "debug/debug_views.h"
@@ -112,7 +113,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
-    const std::vector<uint8_t> stencil = renderer.readStencil();
+    const std::vector<uint8_t> stencil = readStencil(renderer);
     auto inWater = [&](int x, int yUp) { return stencil[size_t(yUp) * kWidth + size_t(x)] == kStencilWater; };
     const int waterPixels = int(std::count(stencil.begin(), stencil.end(), kStencilWater));
     ASSERT_GT(waterPixels, kWidth * kHeight / 20) << "the default frame should show the lake";
@@ -124,7 +125,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
         Image deferred = renderView(renderer, pose.scene, PipelineKind::Deferred, name);
         renderer.renderFrame(other.scene);  // leave a different deferred frame in the G-buffer
         Image forward = renderView(renderer, pose.scene, PipelineKind::Forward, name);
-        EXPECT_TRUE(renderer.readStencil() == stencil) << "forward stencil differs from deferred";
+        EXPECT_TRUE(readStencil(renderer) == stencil) << "forward stencil differs from deferred";
         dumpImage("view-" + name + "-deferred", deferred);
         dumpImage("view-" + name + "-forward", forward);
         EXPECT_TRUE(hasContent(deferred)) << "deferred";
@@ -190,16 +191,16 @@ TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
     Image before = renderView(renderer, pose.scene, PipelineKind::Forward, "final");
-    std::vector<float> depthBefore = renderer.readDepth();
-    std::vector<uint8_t> stencilBefore = renderer.readStencil();
+    std::vector<float> depthBefore = readDepth(renderer);
+    std::vector<uint8_t> stencilBefore = readStencil(renderer);
     ASSERT_TRUE(hasContent(before));
     renderer.renderView("albedo");
-    ASSERT_TRUE(hasContent(renderer.readDisplay()));
+    ASSERT_TRUE(hasContent(readDisplay(renderer)));
     renderer.renderView("final");
-    Image after = renderer.readDisplay();
+    Image after = readDisplay(renderer);
     EXPECT_EQ(compareImages(before, after).maxAbs, 0) << "the forward frame's Final changed";
-    EXPECT_TRUE(renderer.readStencil() == stencilBefore) << "the forward frame's stencil changed";
-    const std::vector<float> depthAfter = renderer.readDepth();
+    EXPECT_TRUE(readStencil(renderer) == stencilBefore) << "the forward frame's stencil changed";
+    const std::vector<float> depthAfter = readDepth(renderer);
     long changedOutsideWater = 0, changedInWater = 0;
     for (size_t i = 0; i < depthAfter.size(); ++i)
         if (depthAfter[i] != depthBefore[i]) ++(stencilBefore[i] == kStencilWater ? changedInWater : changedOutsideWater);
@@ -219,12 +220,12 @@ TEST_F(DebugViews, GBufferViewOfStoppedForwardFrameKeepsDepthAndStencil) {
     for (const std::string& stop : {std::string("WaterMaskPass"), std::string("TerrainPass.forward")}) {
         SCOPED_TRACE("forward frame stopped before " + stop);
         renderer.renderFrame(pose.scene, stop);
-        std::vector<float> depthBefore = renderer.readDepth();
-        std::vector<uint8_t> stencilBefore = renderer.readStencil();
+        std::vector<float> depthBefore = readDepth(renderer);
+        std::vector<uint8_t> stencilBefore = readStencil(renderer);
         EXPECT_EQ(std::count(stencilBefore.begin(), stencilBefore.end(), kStencilWater), 0);
         renderer.renderView("albedo");
-        std::vector<float> depthAfter = renderer.readDepth();
-        std::vector<uint8_t> stencilAfter = renderer.readStencil();
+        std::vector<float> depthAfter = readDepth(renderer);
+        std::vector<uint8_t> stencilAfter = readStencil(renderer);
         size_t depthChanged = 0, stencilChanged = 0;
         for (size_t i = 0; i < depthBefore.size(); ++i) {
             depthChanged += depthBefore[i] != depthAfter[i] ? 1 : 0;
@@ -256,16 +257,16 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     renderer.renderFrame(poseNamed("down").scene);
     renderer.renderFrame(pose.scene);
     renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
-    const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
-    const std::vector<float> normal = renderer.readTarget(Target::Normal);
+    const std::vector<float> albedo = readTarget(renderer, Target::Albedo);
+    const std::vector<float> normal = readTarget(renderer, Target::Normal);
     // Stored, or reconstructed from depth by the GPU as lighting does (the compact layout).
-    const std::vector<float> position = renderer.readSurfacePositions();
-    const std::vector<float> info = renderer.readTarget(Target::Info);
-    const std::vector<float> final = renderer.readTarget(Target::Final);
-    const std::vector<float> reflection = renderer.readTarget(Target::Reflection);
-    const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
-    const std::vector<float> depth = renderer.readDepth();
-    const std::vector<uint8_t> stencil = renderer.readStencil();
+    const std::vector<float> position = readSurfacePositions(renderer);
+    const std::vector<float> info = readTarget(renderer, Target::Info);
+    const std::vector<float> final = readTarget(renderer, Target::Final);
+    const std::vector<float> reflection = readTarget(renderer, Target::Reflection);
+    const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
+    const std::vector<float> depth = readDepth(renderer);
+    const std::vector<uint8_t> stencil = readStencil(renderer);
     const FrameData& frame = renderer.lastFrame().data;
     const float exposure = frame.depthRange.w;
     const float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
@@ -282,7 +283,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     std::map<std::string, Image> images;
     for (const DebugView& view : debugViews()) {
         renderer.renderView(view.name);
-        images[view.name] = renderer.readDisplay();
+        images[view.name] = readDisplay(renderer);
         ASSERT_TRUE(hasContent(images[view.name])) << view.name;
     }
 
@@ -424,7 +425,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     // The exposure control: +2 stops shows Radiance four times as bright (before the clip at 1).
     renderer.setViewExposure(2.0f);
     renderer.renderView("radiance");
-    Image brighter = renderer.readDisplay();
+    Image brighter = readDisplay(renderer);
     renderer.setViewExposure(0.0f);
     int exposureOff = 0;
     for (int y = 0; y < kHeight; ++y)
@@ -439,10 +440,10 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     for (const std::string& name : {std::string("stencil"), std::string(kOverviewName)}) {
         renderer.setStencilViewPath(StencilViewPath::Texturing);
         renderer.renderView(name);
-        Image texturing = renderer.readDisplay();
+        Image texturing = readDisplay(renderer);
         renderer.setStencilViewPath(StencilViewPath::ReadBack);
         renderer.renderView(name);
-        Image readBack = renderer.readDisplay();
+        Image readBack = readDisplay(renderer);
         EXPECT_TRUE(texturing.rgba == readBack.rgba) << name << ": stencil texturing and read-back differ (max "
                                                      << compareImages(texturing, readBack).maxAbs << ")";
         EXPECT_TRUE(hasContent(readBack)) << name;
@@ -466,10 +467,10 @@ TEST_F(DebugViews, OverviewTilesShowEveryViewWithLabels) {
     std::vector<Image> views;
     for (const DebugView& view : debugViews()) {
         renderer.renderView(view.name);
-        views.push_back(view.source == ViewSource::PlantAtlas ? atlas->read() : renderer.readDisplay());
+        views.push_back(view.source == ViewSource::PlantAtlas ? atlas->read() : readDisplay(renderer));
     }
     renderer.renderView(kOverviewName);
-    Image overview = renderer.readDisplay();
+    Image overview = readDisplay(renderer);
     dumpImage("overview", overview);
     std::vector<OverviewTile> tiles = overviewTiles(kWidth, kHeight);
     ASSERT_EQ(tiles.size(), views.size());

@@ -7,6 +7,7 @@
 #include "cli/options.h"
 #include "commands/session.h"
 #include "debug/debug_views.h"
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -38,7 +39,7 @@ Frames renderFrames(RenderSession& session) {
     frames.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
     frames.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
     renderer.renderView(kOverviewName);  // every view, the stencil and the plant atlas included
-    frames.overview = renderer.readDisplay();
+    frames.overview = readDisplay(renderer);
     return frames;
 }
 
@@ -57,17 +58,17 @@ TEST_F(DriverTiers, BothPipelinesEveryViewAndAgreementAtTheSetUpsSize) {
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree on this driver";
     for (const DebugView& view : debugViews()) {
         renderer.renderView(view.name);
-        Image image = renderer.readDisplay();
+        Image image = readDisplay(renderer);
         EXPECT_GT(rgbStats(image, wholeImage(image)).distinctColours, 1u) << "view " << view.name << " is flat";
     }
     // Both stencil-view paths, where this context has stencil texturing, give the same picture.
     if (session->caps.stencilTexturingAvailable()) {
         renderer.setStencilViewPath(StencilViewPath::Texturing);
         renderer.renderView("stencil");
-        Image texturing = renderer.readDisplay();
+        Image texturing = readDisplay(renderer);
         renderer.setStencilViewPath(StencilViewPath::ReadBack);
         renderer.renderView("stencil");
-        EXPECT_TRUE(texturing.rgba == renderer.readDisplay().rgba) << "stencil texturing and read-back differ";
+        EXPECT_TRUE(texturing.rgba == readDisplay(renderer).rgba) << "stencil texturing and read-back differ";
     }
 }
 

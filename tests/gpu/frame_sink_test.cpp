@@ -3,6 +3,7 @@
 // the views' fill and the composite onto Radiance), and every view's picture and values are then the
 // same, bit for bit, as after a whole frame: a read missing from the table would cull its writer
 // and change the picture.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <stdexcept>
@@ -46,7 +47,7 @@ protected:
         renderer.setFrameSink(sink);
         renderer.renderFrame(scene);
         renderer.renderView(view);
-        Shown shown{renderer.readDisplay(), {}};
+        Shown shown{readDisplay(renderer), {}};
         if (view != kOverviewName) shown.values = renderer.readViewValues(view);
         return shown;
     }

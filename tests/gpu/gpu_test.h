@@ -19,6 +19,7 @@
 
 #include "common/shared_constants.glsl"
 #include "context/gl_context.h"
+#include "frame/frame_readback.h"
 #include "frame/renderer.h"
 #include "render/image.h"
 #include "render/plant_atlas.h"
@@ -183,14 +184,14 @@ inline Image renderFinal(Renderer& renderer, const SceneSettings& scene, Pipelin
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
     renderer.renderView("final");
-    return renderer.readDisplay();
+    return readDisplay(renderer);
 }
 
 inline Image renderView(Renderer& renderer, const SceneSettings& scene, PipelineKind kind, const std::string& view) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
     renderer.renderView(view);
-    return renderer.readDisplay();
+    return readDisplay(renderer);
 }
 
 // The plant atlas the app would build on this context, attached to a renderer made in a test (so

@@ -3,6 +3,7 @@
 // the near plane or holds the camera lights without holes and leaves the stencil as it was (these
 // two under each depth convention: the volumes' stencil marking compares depth both ways); edits
 // to the lights take effect the next frame in every path; the light-volumes view counts lights.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <cstring>
@@ -87,7 +88,7 @@ TEST_F(Lights, ThreePathsAreBitIdenticalInEachPipeline) {
                 EXPECT_EQ(renderer.paths().lights.path, path);
                 EXPECT_EQ(renderer.paths().lightsDrawn, count);
                 EXPECT_EQ(renderer.paths().lightsDropped, 0);
-                std::vector<float> radiance = renderer.readTarget(Target::Radiance);
+                std::vector<float> radiance = readTarget(renderer, Target::Radiance);
                 if (first.width == 0) {
                     first = image;
                     firstRadiance = radiance;
@@ -171,7 +172,7 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
             Image forward = renderFinal(renderer, scene, PipelineKind::Forward);
             Image forwardUnlit = renderFinal(renderer, dark, PipelineKind::Forward);
             Image deferredUnlit = renderFinal(renderer, dark, PipelineKind::Deferred);
-            std::vector<uint8_t> stencilUnlit = renderer.readStencil();
+            std::vector<uint8_t> stencilUnlit = readStencil(renderer);
             Image deferred = renderFinal(renderer, scene, PipelineKind::Deferred);
             dumpImage("lights-near-" + std::to_string(&c - cases.data()) + "-deferred", deferred);
             int litForward = brighterPixels(forward, forwardUnlit);
@@ -190,7 +191,7 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
             EXPECT_GT(litForward, width * height / 20) << "the light should light much of the view";
             EXPECT_EQ(holes, 0) << "deferred misses pixels the forward pipeline lights";
             EXPECT_GE(compareImages(forward, deferred).psnrDb, 45.0);
-            EXPECT_TRUE(renderer.readStencil() == stencilUnlit) << "the light volumes left marks in the stencil";
+            EXPECT_TRUE(readStencil(renderer) == stencilUnlit) << "the light volumes left marks in the stencil";
         }
     }
 }
@@ -233,8 +234,8 @@ TEST_F(Lights, LightVolumesViewCountsTheLightsAtEachPixel) {
     renderer.configure(width, height, layoutNamed("full"));
     Image view = renderView(renderer, scene, PipelineKind::Deferred, "light-volumes");
     dumpImage("lights-volumes-view", view);
-    std::vector<float> position = renderer.readTarget(Target::Position);
-    std::vector<float> info = renderer.readTarget(Target::Info);
+    std::vector<float> position = readTarget(renderer, Target::Position);
+    std::vector<float> info = readTarget(renderer, Target::Info);
     const glm::dvec3 eye = renderer.lastFrame().view.pose.position;
     int counted[3] = {0, 0, 0}, wrong = 0;
     for (int y = 0; y < height; ++y)

@@ -4,6 +4,7 @@
 // a frame with no water in view runs no vertex or fragment of any reflection pass (conditional
 // rendering on the water mask's occlusion query), and where storage blocks are missing the passes
 // fall back to the whole screen and say why.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -70,15 +71,15 @@ TEST_F(ReflectionBounds, FrameWithoutWaterInViewPaysNothingForTheReflection) {
         unbounded.water.reflectionBounds = false;
         renderer.renderFrame(unbounded);
         renderer.renderView("final");
-        const Image reference = renderer.readDisplay();
+        const Image reference = readDisplay(renderer);
         ASSERT_TRUE(hasContent(reference));
         const long long verticesUnbounded =
             reflectionWorkInvocations(renderer, unbounded, GL_VERTEX_SHADER_INVOCATIONS_ARB);
 
         renderer.renderFrame(dry);
         renderer.renderView("final");
-        EXPECT_EQ(compareImages(reference, renderer.readDisplay()).maxAbs, 0);
-        std::vector<uint8_t> stencil = renderer.readStencil();
+        EXPECT_EQ(compareImages(reference, readDisplay(renderer)).maxAbs, 0);
+        std::vector<uint8_t> stencil = readStencil(renderer);
         ASSERT_EQ(std::count(stencil.begin(), stencil.end(), uint8_t(kStencilWater)), 0) << "water in view";
         const long long vertices = reflectionWorkInvocations(renderer, dry, GL_VERTEX_SHADER_INVOCATIONS_ARB);
         const long long fragments = reflectionWorkInvocations(renderer, dry, GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
@@ -111,15 +112,15 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
                 unbounded.water.reflectionBounds = false;
                 renderer.renderFrame(unbounded);
                 renderer.renderView("final");
-                const Image reference = renderer.readDisplay();
+                const Image reference = readDisplay(renderer);
                 const long long fragmentsUnbounded = reflectionFragments(renderer, unbounded);
 
                 renderer.renderFrame(pose.scene);
                 renderer.renderView("final");
-                const Image bounded = renderer.readDisplay();
+                const Image bounded = readDisplay(renderer);
                 EXPECT_TRUE(hasContent(bounded));
-                const glm::ivec4 rect = renderer.readWaterBounds();  // x0, y0, x1, y1, rows bottom-up
-                const std::vector<uint8_t> stencil = renderer.readStencil();  // rows bottom-up
+                const glm::ivec4 rect = readWaterBounds(renderer);  // x0, y0, x1, y1, rows bottom-up
+                const std::vector<uint8_t> stencil = readStencil(renderer);  // rows bottom-up
                 const long long fragmentsBounded = reflectionFragments(renderer, pose.scene);
 
                 // Every water pixel inside, and each edge of the rectangle on a water pixel.
@@ -186,10 +187,10 @@ TEST_F(ReflectionBounds, MirroredBillboardsMissingTheWaterAreDropped) {
         const long long whole = reflectionWorkInvocations(renderer, unbounded, GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mirroredPlants);
         if (whole < 0) GTEST_SKIP() << "no pipeline statistics queries";
         renderer.renderView("final");
-        const Image reference = renderer.readDisplay();
+        const Image reference = readDisplay(renderer);
         const long long bounded = reflectionWorkInvocations(renderer, pose.scene, GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mirroredPlants);
         renderer.renderView("final");
-        const Image frame = renderer.readDisplay();
+        const Image frame = readDisplay(renderer);
         EXPECT_TRUE(hasContent(frame));
         EXPECT_EQ(compareImages(reference, frame).maxAbs, 0);
         std::printf("[reflection bounds] %s %s: mirrored plant fragments %lld bounded, %lld whole screen\n",
@@ -211,7 +212,7 @@ TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
     renderer.renderView("final");
-    const Image bounded = renderer.readDisplay();
+    const Image bounded = readDisplay(renderer);
     EXPECT_TRUE(hasContent(bounded));
 
     RendererCapabilities caps = renderer.paths().capabilities;
@@ -223,7 +224,7 @@ TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
         << renderer.paths().waterBoundsReason;
     renderer.renderFrame(pose.scene);
     renderer.renderView("final");
-    const Image whole = renderer.readDisplay();
+    const Image whole = readDisplay(renderer);
     EXPECT_EQ(compareImages(bounded, whole).maxAbs, 0);
 }
 

@@ -4,6 +4,7 @@
 // far, low and grazing, along the flight and far from the origin; and the cull does cull (the
 // default frame loses more than a third of its mirrored plants). At a reduced reflection
 // resolution it stands aside; by default (auto) it culls only while the camera stands still.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -45,8 +46,8 @@ TEST_F(ReflectionPlantCull, SameFramesBitForBitWithFewerMirroredPlants) {
             ASSERT_TRUE(hasContent(without));
             // Where the frame wrote it (writtenTexels: nothing clears Reflection outside the water).
             auto reflection = [&] {
-                return writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection,
-                                     renderer.readStencil(), renderer.lastFrame().reflectionsActive);
+                return writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection,
+                                     readStencil(renderer), renderer.lastFrame().reflectionsActive);
             };
             const std::vector<float> reflectionWithout = reflection();
             const VegetationStats statsWithout = renderer.vegetationStats();

@@ -1,5 +1,6 @@
 // GL resources: 100 pipeline switches and 20 size/layout round trips leave both the wrappers' live
 // object counts and an independent glIs* probe of the driver's names unchanged (no leaked GL objects).
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <filesystem>
@@ -51,7 +52,7 @@ TEST_F(Resources, HundredPipelineSwitchesLeakNothing) {
         ASSERT_EQ(renderer.pipeline(), kind);
         renderer.renderFrame(pose.scene);
         renderer.renderView(i % 4 < 2 ? "final" : (i % 4 == 2 ? "normal" : kOverviewName));
-        if (i == 99) lastImage = renderer.readDisplay();
+        if (i == 99) lastImage = readDisplay(renderer);
     }
     glFinish();
     EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over 100 pipeline switches";

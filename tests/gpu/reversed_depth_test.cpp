@@ -4,6 +4,7 @@
 // precise in the far band than standard's 24-bit depth; without clip control it falls back to the
 // standard frame and says why; its clip control does not outlive the frame. (The light volumes
 // under reversed-z: lights_test.cpp.)
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "commands/bench_depth.h"
@@ -55,9 +56,9 @@ TEST_F(ReversedDepth, SkyIsAtTheFarPlaneAndBlackInTheDepthView) {
     renderer.configure(width, height, layoutNamed("full"));
     Image depthView = renderView(renderer, pose.scene, PipelineKind::Deferred, "depth");
     dumpImage("reversed-z-depth-view", depthView);
-    std::vector<float> depth = renderer.readDepth();
-    std::vector<float> info = renderer.readTarget(Target::Info);
-    std::vector<uint8_t> stencil = renderer.readStencil();
+    std::vector<float> depth = readDepth(renderer);
+    std::vector<float> info = readTarget(renderer, Target::Info);
+    std::vector<uint8_t> stencil = readStencil(renderer);
     int sky = 0, ground = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {

@@ -4,6 +4,7 @@
 // than the stated bound the GPU must say shadowed (no peter-panning beyond it). With the sun low
 // (long grazing shadows), near the horizon, 1e5 units out; night runs no shadow pass; the eye
 // at the water plane; forward and deferred agree with shadows on (agreement_test.cpp too).
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 #include "shader_dir_copy.h"
 
@@ -59,13 +60,13 @@ protected:
         const FrameSetup& frame = renderer.lastFrame();
         EXPECT_TRUE(frame.shadowsActive) << name;
         renderer.renderView("shadow");
-        dumpImage("shadows-" + name, renderer.readDisplay());
+        dumpImage("shadows-" + name, readDisplay(renderer));
         renderer.renderView("final");
-        Image final = renderer.readDisplay();
+        Image final = readDisplay(renderer);
         dumpImage("shadows-" + name + "-final", final);
         EXPECT_TRUE(hasContent(final)) << name;
         std::vector<float> values = renderer.readViewValues("shadow");
-        std::vector<float> positions = renderer.readSurfacePositions();
+        std::vector<float> positions = readSurfacePositions(renderer);
         glm::dvec3 camera = frame.view.pose.position;
         glm::dvec3 toSun = glm::normalize(glm::dvec3(frame.sky.sunDirection));
         ShadowCheck check;
@@ -240,7 +241,7 @@ TEST_F(Shadows, PlantsCastShadowsOnTheGround) {
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(scene);
     std::vector<float> with = renderer.readViewValues("shadow");
-    std::vector<uint8_t> stencil = renderer.readStencil();
+    std::vector<uint8_t> stencil = readStencil(renderer);
     EXPECT_GT(renderer.vegetationStats().plantsDrawn, 100u);
     SceneSettings bare = scene;
     bare.vegetation.enabled = false;

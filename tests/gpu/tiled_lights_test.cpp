@@ -3,6 +3,7 @@
 // lights around and holding the camera, in every G-buffer layout and both depth conventions, direct
 // and mirrored (Reflection); a tile reached by more lights than its list holds still gets them all;
 // without compute shaders the renderer falls back to volumes and says why.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -91,13 +92,13 @@ Agreement compareMethods(Renderer& renderer, const SceneSettings& scene, const I
     EXPECT_EQ(renderer.paths().lightMethod.method, LightMethod::Volumes);
     // Reflection where the frame wrote it (writtenTexels: nothing clears it outside the water).
     auto writtenReflection = [&] {
-        return writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection, renderer.readStencil(),
+        return writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection, readStencil(renderer),
                              renderer.lastFrame().reflectionsActive);
     };
-    std::vector<float> radiance = renderer.readTarget(Target::Radiance), reflection = writtenReflection();
+    std::vector<float> radiance = readTarget(renderer, Target::Radiance), reflection = writtenReflection();
     Image image = renderFinal(renderer, tiled, PipelineKind::Deferred);
     EXPECT_EQ(renderer.paths().lightMethod.method, LightMethod::Tiled) << renderer.paths().lightMethod.reason;
-    std::vector<float> tiledRadiance = renderer.readTarget(Target::Radiance);
+    std::vector<float> tiledRadiance = readTarget(renderer, Target::Radiance);
     result.radiance = maxRelativeDifference(radiance, tiledRadiance);
     result.radianceTotal = totalRelativeDifference(radiance, tiledRadiance);
     result.reflection = maxRelativeDifference(reflection, writtenReflection());

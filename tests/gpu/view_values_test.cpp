@@ -1,6 +1,7 @@
 // The numbers behind the views (VIEW_VALUES passes) against the targets read back on the CPU, in
 // every layout; a NaN written into Radiance is counted and painted by the overlay; the legend
 // strip draws the depth view's ramp with the frame's near and far planes.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "debug/view_controls.h"
@@ -21,12 +22,12 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.renderFrame(pose.scene);
     renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
-    const std::vector<float> positions = renderer.readSurfacePositions();
-    const std::vector<float> normal = renderer.readTarget(Target::Normal);
-    const std::vector<float> info = renderer.readTarget(Target::Info);
-    const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
-    const std::vector<float> depth = renderer.readDepth();
-    const std::vector<uint8_t> stencil = renderer.readStencil();
+    const std::vector<float> positions = readSurfacePositions(renderer);
+    const std::vector<float> normal = readTarget(renderer, Target::Normal);
+    const std::vector<float> info = readTarget(renderer, Target::Info);
+    const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
+    const std::vector<float> depth = readDepth(renderer);
+    const std::vector<uint8_t> stencil = readStencil(renderer);
     const FrameData& frame = renderer.lastFrame().data;
     const double nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
 
@@ -91,7 +92,7 @@ TEST_F(GpuTest, NanInRadianceIsCountedAndOverlaid) {
     EXPECT_EQ(rgb.nan, 64 * 36 * 2);
     EXPECT_EQ(valueStatistics(values, ViewChannel::G).nan, 0);
     renderer.renderView("radiance");
-    Image view = renderer.readDisplay();
+    Image view = readDisplay(renderer);
     paintOverlay(view, values, ViewChannel::Rgb, kOverlayNan);
     for (int y = 0; y < 36; ++y)
         for (int x = 0; x < 64; ++x) {
@@ -99,7 +100,7 @@ TEST_F(GpuTest, NanInRadianceIsCountedAndOverlaid) {
             bool magenta = p[0] == 255 && p[1] == 0 && p[2] == 255, black = p[0] == 0 && p[1] == 0 && p[2] == 0;
             ASSERT_TRUE(magenta || black) << x << "," << y;
         }
-    Image unpainted = renderer.readDisplay();
+    Image unpainted = readDisplay(renderer);
     Image copy = unpainted;
     paintOverlay(copy, values, ViewChannel::G, kOverlayNan);  // g has no NaN
     EXPECT_TRUE(copy.rgba == unpainted.rgba);

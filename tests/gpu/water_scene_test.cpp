@@ -4,6 +4,7 @@
 // is the deferred frame's state before the reflection is lit (stopped before LightingPass.mirrored),
 // bit for bit; the depth and the G-buffer agree on where nothing was drawn; a mirrored scene
 // asked for without reflections falls back to the direct one and says why.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "passes/pass.h"
@@ -30,8 +31,8 @@ struct Surfaces {
 // and Info's the SKY flag where the layout tells the sky by depth (compact); the layouts that store
 // position keep Info's clear, read as stored.
 Surfaces readSurfaces(Renderer& renderer) {
-    Surfaces read{renderer.readTarget(Target::Albedo), renderer.readTarget(Target::Info), renderer.readDepth(),
-                  renderer.readStencil()};
+    Surfaces read{readTarget(renderer, Target::Albedo), readTarget(renderer, Target::Info), readDepth(renderer),
+                  readStencil(renderer)};
     const GBufferLayout& layout = renderer.targets().layout();
     const float cleared = renderer.targets().depth().farPlaneWindowDepth;
     for (size_t i = 0; i < read.depth.size(); ++i) {

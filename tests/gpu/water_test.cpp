@@ -4,6 +4,7 @@
 // the water, and hard camera poses (at, just above and under the water, straight down, grazing).
 #include <cstring>
 
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "debug/debug_views.h"
@@ -32,16 +33,16 @@ FrameReadback readBack(Renderer& renderer, bool gbuffer) {
     r.height = renderer.targets().height();
     r.frame = renderer.lastFrame();
     if (gbuffer) {
-        r.albedo = renderer.readTarget(Target::Albedo);
-        r.normal = renderer.readTarget(Target::Normal);
-        r.position = renderer.readTarget(Target::Position);
-        r.info = renderer.readTarget(Target::Info);
+        r.albedo = readTarget(renderer, Target::Albedo);
+        r.normal = readTarget(renderer, Target::Normal);
+        r.position = readTarget(renderer, Target::Position);
+        r.info = readTarget(renderer, Target::Info);
     }
-    r.radiance = renderer.readTarget(Target::Radiance);
-    r.reflection = renderer.readTarget(Target::Reflection);
-    r.final = renderer.readTarget(Target::Final);
-    r.depth = renderer.readDepth();
-    r.stencil = renderer.readStencil();
+    r.radiance = readTarget(renderer, Target::Radiance);
+    r.reflection = readTarget(renderer, Target::Reflection);
+    r.final = readTarget(renderer, Target::Final);
+    r.depth = readDepth(renderer);
+    r.stencil = readStencil(renderer);
     return r;
 }
 
@@ -504,7 +505,7 @@ TEST_F(Water, ReflectionIsNotShownWhenReflectionsAreInactive) {
             ASSERT_FALSE(r.frame.reflectionsActive);
             for (const char* name : {"reflection", "reflection-raw"}) {
                 renderer.renderView(name);
-                Image view = renderer.readDisplay();
+                Image view = readDisplay(renderer);
                 EXPECT_EQ(rgbStats(view, wholeImage(view)).maxMean(), 0.0) << "the " << name << " view is not black";
             }
             const std::vector<float> values = renderer.readViewValues("reflection");
@@ -590,11 +591,11 @@ TEST_P(WaterHardCase, FiniteReflectionOnlyInWaterAndPipelinesAgree) {
         zeroTarget(renderer.targets(), Target::Reflection);
         FrameReadback forward = renderAndRead(renderer, hard.scene, PipelineKind::Forward);
         renderer.renderView("final");
-        Image forwardImage = renderer.readDisplay();
+        Image forwardImage = readDisplay(renderer);
         zeroTarget(renderer.targets(), Target::Reflection);
         FrameReadback deferred = renderAndRead(renderer, hard.scene, PipelineKind::Deferred);
         renderer.renderView("final");
-        Image deferredImage = renderer.readDisplay();
+        Image deferredImage = readDisplay(renderer);
         dumpImage("water-" + hard.name + "-" + layout + "-forward", forwardImage);
         dumpImage("water-" + hard.name + "-" + layout + "-deferred", deferredImage);
         const FrameSetup& frame = deferred.frame;
@@ -677,7 +678,7 @@ TEST_F(Water, UnderWaterTheViewIsTintedAndNothingIsReflected) {
         SCOPED_TRACE(pipelineName(kind));
         Renderer renderer(*shaders_, below);
         renderer.configure(kW, kH, layoutNamed("standard"));
-        const std::vector<float> fresh = renderer.readTarget(Target::Reflection);
+        const std::vector<float> fresh = readTarget(renderer, Target::Reflection);
         FrameReadback under = renderAndRead(renderer, below, kind);
         EXPECT_FALSE(under.frame.reflectionsActive);
         ASSERT_EQ(fresh.size(), under.reflection.size());
