@@ -86,7 +86,7 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
         limitedBy = limitOf(caps.driverHasCompute() && caps.driverHasSsbo());
         return "plants on the GPU not taken: " + session.plantPathReason;
     }
-    if (options.stencilView && renderer.stencilViewPath() != *options.stencilView) {
+    if (options.stencilView && renderer.views().stencilPath() != *options.stencilView) {
         limitedBy = limitOf(caps.driverHasStencilTexturing());
         return std::string("stencil view ") + stencilViewPathName(*options.stencilView) + " not taken: " +
                session.stencilPathReason;
@@ -148,7 +148,7 @@ std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& argum
             if (const Target* target = std::get_if<Target>(&resource)) written.insert(*target);
         PassSnapshot snapshot{passes[k]->name(), {}};
         for (const TargetView& target : kTargetViews)
-            if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.readViewValues(target.view)});
+            if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.views().readValues(target.view)});
         snapshots.push_back(std::move(snapshot));
     }
     return snapshots;

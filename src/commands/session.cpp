@@ -91,9 +91,9 @@ std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     second->setCapabilities(same);
     second->setDepthConvention(*renderer->paths().depth);
     second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
-    second->setStencilViewPath(renderer->stencilViewPath());
-    second->setViewWaterScene(renderer->viewWaterScene());
-    second->setPlantAtlas(plantAtlas.get());
+    second->views().setStencilPath(renderer->views().stencilPath());
+    second->views().setWaterScene(renderer->views().waterScene());
+    second->views().setPlantAtlas(plantAtlas.get());
     return second;
 }
 
@@ -115,8 +115,8 @@ RenderSession::RenderSession(const Options& options, Shaders need)
     renderer->setCapabilities(rendererCaps);
     renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
-    renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
-    renderer->setViewWaterScene(options.waterScene);
+    renderer->views().setStencilPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
+    renderer->views().setWaterScene(options.waterScene);
     plantPath = choosePlantInterpretation(caps, options.scene.noCompute, plantPathReason);
     if (directory.empty()) {
         plantPathReason += "; not built: no shader directory (looked in: " + searched + ")";
@@ -132,7 +132,7 @@ RenderSession::RenderSession(const Options& options, Shaders need)
         plantPathReason = std::string("cpu (the compute path failed: ") + error.what() + ")";
         plantAtlas = std::make_unique<PlantAtlas>(*shaders, PlantInterpretation::Cpu);
     }
-    renderer->setPlantAtlas(plantAtlas.get());
+    renderer->views().setPlantAtlas(plantAtlas.get());
     for (const std::string& line : fallbacks()) std::fprintf(stderr, "oasis: fallback: %s\n", line.c_str());
 }
 
@@ -162,7 +162,7 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     if (!gpuPlants && plantPath == PlantInterpretation::Gpu) plants.driver = false;
     list.push_back(reportOf("compute-plant-interpretation", gpuPlants,
                             gpuPlants ? plantPathReason : "fallback: " + plantPathReason, plants));
-    bool texturing = renderer->stencilViewPath() == StencilViewPath::Texturing;
+    bool texturing = renderer->views().stencilPath() == StencilViewPath::Texturing;
     list.push_back(reportOf("stencil-texturing", texturing,
                             texturing ? "stencil view by " + stencilPathReason : "fallback: stencil view by " + stencilPathReason,
                             caps.availability(&Capabilities::stencilTexturingAvailable)));
@@ -239,7 +239,7 @@ std::string describePlantAtlas(const RenderSession& session) {
 }
 
 std::string describeVegetation(const Renderer& renderer) {
-    const VegetationStats& stats = renderer.vegetationStats();
+    const VegetationStats& stats = renderer.vegetation().stats();
     if (!renderer.lastFrame().vegetationEnabled) return "vegetation: off";
     char text[256];
     std::snprintf(text, sizeof(text),
@@ -321,7 +321,7 @@ std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSetting
         for (int i = 0; i < frames; ++i)
             for (size_t k = 0; k < count; ++k) {
                 renderer.setPipeline(pipelines[k]);
-                timed[k].push_back(renderer.renderFrameTimingPasses(scene));
+                timed[k].push_back(renderFrameTimingPasses(renderer, scene));
             }
     }
     renderer.setPipeline(active);

@@ -12,6 +12,7 @@
 #include "debug/error_image.h"
 #include "frame/encoding_error.h"
 #include "frame/frame_readback.h"
+#include "frame/gpu_timer.h"
 
 namespace oasis {
 namespace window {
@@ -26,7 +27,7 @@ void showEncodingError(Renderer& renderer, const SceneSettings& scene, const Enc
                        WindowState& state) {
     if (renderer.targets().layout().name == "full") {
         state.errorViewSummary = view.name + " compares a layout against full: choose standard or compact (G)";
-        renderer.renderView("final");
+        renderer.views().render("final");
         return;
     }
     EncodingError error = measureEncodingError(renderer, scene, renderer.targets().layout());
@@ -46,7 +47,7 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
     // The values pass and its full-frame float read-back cost a frame's worth of bandwidth: only
     // while someone looks at the counts or asks for the values.
     if (view && (inspector.sectionOpen || controls.showValues())) {
-        std::vector<float> values = renderer.readViewValues(view->name);
+        std::vector<float> values = renderer.views().readValues(view->name);
         ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
         // As `oasis render` counts them: the sky's undrawn texels are not values (commands/view_mask.h).
         const DrawnPixels drawn = drawnPixels(renderer, *view);
@@ -109,8 +110,8 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         renderer.setPipeline(sides[s]->pipeline);
         renderer.setDepthConvention(depthConventions()[config.depthIndex]);
         renderer.configure(width, height, gbufferLayouts()[sides[s]->layoutIndex]);
-        renderer.setViewExposure(state.inspector.exposureStops);
-        renderer.setViewWaterScene(config.waterScene);
+        renderer.views().setExposure(state.inspector.exposureStops);
+        renderer.views().setWaterScene(config.waterScene);
         glFinish();
         auto start = std::chrono::steady_clock::now();
         if (c.passTimes && c.clock->gpuTimers) {
@@ -119,7 +120,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
             glFinish();
             *passes[s] = queries[s]->latest();
         } else if (c.passTimes) {
-            *passes[s] = renderer.renderFrameTimingPasses(scene);
+            *passes[s] = renderFrameTimingPasses(renderer, scene);
         } else {
             renderer.renderFrame(scene);
             glFinish();
@@ -128,7 +129,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         medians[s]->add(ms);
         state.frameMs += ms;
         // The comparison shows the table's views; an encoding-error view is a comparison of its own.
-        renderer.renderView(findEncodingErrorView(config.view) ? std::string("final") : config.view);
+        renderer.views().render(findEncodingErrorView(config.view) ? std::string("final") : config.view);
         images[s] = readDisplay(renderer);
     }
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
@@ -161,12 +162,12 @@ void drawConfiguration(RenderSession& session, const Configuration& config, cons
     glFinish();
     state.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
-    renderer.setViewExposure(state.inspector.exposureStops);
-    renderer.setViewWaterScene(config.waterScene);
+    renderer.views().setExposure(state.inspector.exposureStops);
+    renderer.views().setWaterScene(config.waterScene);
     if (const EncodingErrorView* errorView = findEncodingErrorView(config.view))
         showEncodingError(renderer, scene, *errorView, state);
     else
-        renderer.renderView(config.view);
+        renderer.views().render(config.view);
     inspectFrame(renderer, config, state.inspector, state.comparison);
     renderer.present(width, height);
 }

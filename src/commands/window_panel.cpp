@@ -106,7 +106,7 @@ void drawWaterSceneControl(const Renderer& renderer, Configuration& chosen) {
     if (ImGui::RadioButton("direct", &scene, 0)) chosen.waterScene = WaterScene::Direct;
     ImGui::SameLine();
     if (ImGui::RadioButton("mirrored", &scene, 1)) chosen.waterScene = WaterScene::Mirrored;
-    const ViewScene& shown = renderer.viewScene();
+    const ViewScene& shown = renderer.views().scene();
     if (const DebugView* view = findDebugView(chosen.view))
         ImGui::TextWrapped("%s", waterNote(*view, shown.description).c_str());
     else if (!shown.description.empty())

@@ -21,7 +21,7 @@ DecodedFrame decodedFrame(Renderer& renderer, const SceneSettings& scene, const 
     renderer.configure(renderer.targets().width(), renderer.targets().height(), layout);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(scene);
-    return {renderer.readViewValues("normal"), renderer.readViewValues("position"), renderer.readViewValues("info")};
+    return {renderer.views().readValues("normal"), renderer.views().readValues("position"), renderer.views().readValues("info")};
 }
 
 }  // namespace

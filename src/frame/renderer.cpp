@@ -104,15 +104,6 @@ void Renderer::configure(int width, int height, const GBufferLayout& layout) {
     forgetGBuffer();
 }
 
-void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
-    plantAtlas_ = atlas;
-    debugViews_.setPlantAtlasTexture(atlas ? atlas->texture() : 0);
-    if (atlas)
-        vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows());
-    else
-        vegetationBuffers_.setAtlas(0, 1, 1);
-}
-
 PassContext Renderer::context() { return contextOver(*targets_, frame_); }
 
 PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup& frame) {
@@ -187,23 +178,8 @@ void Renderer::buildPrograms(const SceneSettings& scene, const std::string& view
                              marker);
     glEnable(GL_RASTERIZER_DISCARD);
     runFrame(scene, {}, {});
-    if (!view.empty()) renderView(view);
+    if (!view.empty()) views_.render(view);
     glDisable(GL_RASTERIZER_DISCARD);
-}
-
-std::vector<std::pair<std::string, double>> Renderer::renderFrameTimingPasses(const SceneSettings& scene) {
-    using Clock = std::chrono::steady_clock;
-    std::vector<std::pair<std::string, double>> times;
-    gl::beginFrame();
-    glFinish();
-    Clock::time_point start = Clock::now();
-    runFrame(scene, {}, [&](const Pass& pass) {
-        glFinish();
-        Clock::time_point now = Clock::now();
-        times.emplace_back(pass.name(), std::chrono::duration<double, std::milli>(now - start).count());
-        start = now;
-    });
-    return times;
 }
 
 void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefore,
@@ -269,44 +245,27 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
 
 FrameGraph Renderer::frameGraph() const { return pipelineOf(active_).graph(frame_, frameSinks_); }
 
-void Renderer::setFrameSink(const std::vector<std::string>& views) {
-    for (const std::string& name : views)
-        if (name != kOverviewName && !findDebugView(name))
-            throw std::invalid_argument("no debug view named '" + name + "' (views: " + debugViewNames() + ")");
-    sinkViews_ = views;
-}
-
 std::vector<Resource> Renderer::sinkOfFrame(bool stopped) const {
-    if (sinkViews_.empty() || stopped) return frameOutputs();
+    if (views_.sink_.empty() || stopped) return frameOutputs();
     // What the views read, walked back through what runs for them after the frame, last first:
     // the views' fill (ensureGBuffer), then the water laid onto Radiance (ensureRadiance).
     std::vector<Resource> reads;
     bool surfaces = false, radiance = false;
     for (const DebugView& view : debugViews()) {
-        if (std::find(sinkViews_.begin(), sinkViews_.end(), view.name) == sinkViews_.end() &&
-            std::find(sinkViews_.begin(), sinkViews_.end(), kOverviewName) == sinkViews_.end())
+        if (std::find(views_.sink_.begin(), views_.sink_.end(), view.name) == views_.sink_.end() &&
+            std::find(views_.sink_.begin(), views_.sink_.end(), kOverviewName) == views_.sink_.end())
             continue;
         for (const Resource& read : viewReads(view, targets_->layout())) reads.push_back(read);
         surfaces = surfaces || readsSceneSurfaces(view);
         radiance = radiance || view.source == ViewSource::Radiance;
     }
-    if (surfaces) reads = readsBefore(viewFill_.passes(viewWaterScene_, frame_), frame_, reads);
+    if (surfaces) reads = readsBefore(viewFill_.passes(views_.waterScene_, frame_), frame_, reads);
     if (radiance && frame_.toneMapFused) {
         FrameSetup separate = frame_;  // ensureRadiance runs the composite as the separate pass
         separate.toneMapFused = false;
         reads = readsBefore({&waterComposite_}, separate, reads);
     }
     return reads;
-}
-
-void Renderer::requireInSink(const std::string& viewName) const {
-    if (sinkViews_.empty() || std::find(sinkViews_.begin(), sinkViews_.end(), viewName) != sinkViews_.end() ||
-        std::find(sinkViews_.begin(), sinkViews_.end(), kOverviewName) != sinkViews_.end())
-        return;
-    std::string names;
-    for (const std::string& name : sinkViews_) names += (names.empty() ? "" : ", ") + name;
-    throw std::logic_error("the view " + viewName + " was not asked for: the frame was culled for " + names +
-                           " (Renderer::setFrameSink)");
 }
 
 void Renderer::prepareReducedReflection() {
@@ -366,11 +325,11 @@ void Renderer::ensureGBuffer() {
         fillStoppedFrame();
         return;
     }
-    if (gbufferHolds_ == viewWaterScene_) return;
+    if (gbufferHolds_ == views_.waterScene_) return;
     PassContext passContext = context();
     FrameClipControl clipControl(targets_->depth());
-    viewScene_ = viewFill_.run(passContext, viewWaterScene_);
-    gbufferHolds_ = viewWaterScene_;
+    views_.scene_ = viewFill_.run(passContext, views_.waterScene_);
+    gbufferHolds_ = views_.waterScene_;
 }
 
 void Renderer::fillSurfacesWithTheirDepth() {
@@ -378,10 +337,10 @@ void Renderer::fillSurfacesWithTheirDepth() {
     // scene the G-buffer holds there. A layout that rebuilds positions from depth reads them from
     // those surfaces refilled with their own depth: the mirrored view fill, what the frame left.
     if (targets_->layout().positionFromDepth() && stoppedBefore_.empty() && !gbufferHolds_) {
-        WaterScene asked = viewWaterScene_;
-        viewWaterScene_ = WaterScene::Mirrored;
+        WaterScene asked = views_.waterScene_;
+        views_.waterScene_ = WaterScene::Mirrored;
         ensureGBuffer();
-        viewWaterScene_ = asked;
+        views_.waterScene_ = asked;
     }
 }
 
@@ -396,7 +355,7 @@ void Renderer::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
 }
 
 void Renderer::fillStoppedFrame() {
-    viewScene_ = ViewScene{std::nullopt,
+    views_.scene_ = ViewScene{std::nullopt,
                            active_ == PipelineKind::Forward
                                ? "the direct scene's steps that ran before " + stoppedBefore_
                                : "what the frame left there before " + stoppedBefore_,
@@ -423,33 +382,6 @@ void Renderer::fillStoppedFrame() {
         }
     }
     stoppedGBufferCurrent_ = true;
-}
-
-void Renderer::renderView(const std::string& viewName) {
-    PassContext passContext = context();
-    const DebugView* view = findDebugView(viewName);
-    if (!view && viewName != kOverviewName)
-        throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
-    requireInSink(viewName);
-    // Only the views of Radiance ask for the water laid on: the final view (the window's every
-    // frame) keeps the fused frame's saving.
-    if (viewName == kOverviewName || view->source == ViewSource::Radiance) ensureRadiance();
-    if (viewName == kOverviewName || (view && readsSceneSurfaces(*view))) ensureGBuffer();
-    if (viewName == kOverviewName)
-        debugViews_.drawOverview(passContext, stencilPath_, viewScene_.scene ? waterSceneName(*viewScene_.scene) : "as left");
-    else
-        debugViews_.drawView(passContext, *view, stencilPath_);
-}
-
-std::vector<float> Renderer::readViewValues(const std::string& viewName) {
-    const DebugView* view = findDebugView(viewName);
-    if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
-                                           debugViewNames() + ")");
-    requireInSink(viewName);
-    if (view->source == ViewSource::Radiance) ensureRadiance();
-    if (readsSceneSurfaces(*view)) ensureGBuffer();
-    PassContext passContext = context();
-    return debugViews_.readValues(passContext, *view, stencilPath_);
 }
 
 void Renderer::renderFloor() {

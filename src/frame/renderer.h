@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "debug/debug_view_pass.h"
+#include "frame/frame_views.h"
 #include "frame/pipeline.h"
 #include "frame/render_paths.h"
 #include "frame/view_fill.h"
@@ -51,25 +52,12 @@ public:
     PipelineKind pipeline() const { return active_; }
     // The last frame's graph: its pipeline's passes, which ran and why the others were culled.
     FrameGraph frameGraph() const;
-    // What the frames after this are looked at through (their sink): the views named (table
-    // names or "overview"), and nothing else of them; empty (the default): anything, the whole
-    // frame (frameOutputs()). A view's frame runs only the passes whose writes reach what the
-    // view reads, through what runs after the frame for it (the composite onto Radiance, the
-    // views' fill). A frame stopped early keeps the whole frame's sink. renderView and
-    // readViewValues of a view not named throw std::logic_error.
-    void setFrameSink(const std::vector<std::string>& views);
-    const std::vector<std::string>& frameSink() const { return sinkViews_; }
-    void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
-    StencilViewPath stencilViewPath() const { return stencilPath_; }
-    // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).
-    void setPlantAtlas(const PlantAtlas* atlas);
-    // The HDR views' (radiance, reflection-raw) exposure, in stops.
-    void setViewExposure(float stops) { debugViews_.setExposureStops(stops); }
-    float viewExposure() const { return debugViews_.exposureStops(); }
-    const PlantAtlas* plantAtlas() const { return plantAtlas_; }
+    // The debug views of the last frame (frame/frame_views.h): what they are drawn with, which the
+    // frames are culled for, drawing and reading one.
+    FrameViews& views() { return views_; }
+    const FrameViews& views() const { return views_; }
     // The plants placed around the last frame's camera and what that frame drew of them.
     const VegetationField& vegetation() const { return vegetationField_; }
-    const VegetationStats& vegetationStats() const { return vegetationField_.stats(); }
 
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
     // A scene whose terrain grid density differs from the last frame's rebuilds the grid first.
@@ -80,21 +68,12 @@ public:
     // by running them with GL_RASTERIZER_DISCARD: a frame of its own for capture tools, so the
     // frames after it hold drawing and no shader compiles. Costs the frame's vertex work.
     void buildPrograms(const SceneSettings& scene, const std::string& view);
-    // The same frame with glFinish after every pass: wall milliseconds per pass, in order. The
-    // synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
-    std::vector<std::pair<std::string, double>> renderFrameTimingPasses(const SceneSettings& scene);
     // The frame, calling `afterEach` after every pass that ran (frame/gpu_timer.h's queries).
     void renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach);
-    // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
-    // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
-    void renderView(const std::string& viewName);
-    // The numbers behind a view (not the overview) of the last frame: its viewValue() per pixel,
-    // RGBA floats, bottom row first; the table's `values` name the channels.
-    std::vector<float> readViewValues(const std::string& viewName);
     // Makes the G-buffer, depth and stencil hold the last frame's surfaces with the water scene the
     // views ask for (frame/view_fill.h): what the views, the probe and the encoding error read.
     // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
-    // that ran). viewScene() says what the views show at water pixels and why.
+    // that ran). views().scene() says what the views show at water pixels and why.
     void ensureGBuffer();
     // The last whole frame's surfaces drawn unrounded: the view fill of `scene` run into `exact`
     // (targets of the frame's size, depth convention and a float layout) instead of the G-buffer.
@@ -104,9 +83,6 @@ public:
     // under the water there; this lays the water onto Radiance as the separate pass would have
     // (the radiance view, the probe, readTarget). Once per frame, and only when something asks.
     void ensureRadiance();
-    void setViewWaterScene(WaterScene scene) { viewWaterScene_ = scene; }
-    WaterScene viewWaterScene() const { return viewWaterScene_; }
-    const ViewScene& viewScene() const { return viewScene_; }
     // The timing floor (passes/floor_pass.h) at the current size and layout; overwrites the targets.
     void renderFloor();
     // Shows the Display target in the bound window's framebuffer of the given size.
@@ -125,6 +101,7 @@ private:
     // frame/frame_readback.cpp's way in (defined there alone): the water's bounds buffer, the
     // surfaces' float target and their refill with their own depth.
     friend struct ReadbackAccess;
+    friend class FrameViews;  // its views draw from the frame's targets, context and fill
     // After a whole frame, a layout that rebuilds positions from depth gets the mirrored view fill
     // (the water's depth covers the mirrored scene there): the G-buffer's own surfaces.
     void fillSurfacesWithTheirDepth();
@@ -136,7 +113,6 @@ private:
     void prepareReducedReflection();
     void uploadLights();
     std::vector<Resource> sinkOfFrame(bool stopped) const;
-    void requireInSink(const std::string& viewName) const;
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
@@ -150,14 +126,13 @@ private:
     gl::Buffer reflectionUniforms_;                     // frame data for those targets' size
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
-    StencilViewPath stencilPath_ = StencilViewPath::Texturing;
     const PlantAtlas* plantAtlas_ = nullptr;
     VegetationField vegetationField_;
     VisibleWaterBound visibleWater_;  // the dry land the reflection's plant chunks are culled against
     std::optional<TerrainGridPlacement> lastGrid_;  // the last frame's grid: is the camera standing still?
     VegetationDrawList vegetationList_;
     VegetationBuffers vegetationBuffers_;
-    DebugViewPass debugViews_;
+    FrameViews views_{*this};  // where the debug views' pass was: GL objects made in the same order
     FloorPass floor_;
     WaterCompositePass waterComposite_;  // ensureRadiance's separate composite
     PresentPass present_;
@@ -174,14 +149,11 @@ private:
     FrameSetup frame_;
     const DepthConvention* depthRequested_ = &standardDepthConvention();
     ViewFill viewFill_;
-    WaterScene viewWaterScene_ = WaterScene::Direct;
     std::optional<WaterScene> gbufferHolds_;  // the fill the G-buffer holds for the last frame, if any
-    ViewScene viewScene_;
     std::string stoppedBefore_;  // the pass the last frame stopped before, "" for a whole frame
     bool stoppedGBufferCurrent_ = false;  // a stopped frame's G-buffer already holds what it reached
     std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
     bool radianceAwaitsWater_ = false;  // a fused frame's composite has not been laid onto Radiance
-    std::vector<std::string> sinkViews_;  // setFrameSink's views; empty: the whole frame
     std::vector<Resource> frameSinks_ = frameOutputs();  // the last frame's sink
 };
 

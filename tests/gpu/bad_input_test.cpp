@@ -110,8 +110,8 @@ TEST_F(BadInput, OneByOneFrameRendersInBothPipelinesWithoutNaN) {
             EXPECT_GT(int(forward.rgba[0]) + forward.rgba[1] + forward.rgba[2], 30) << "black 1x1 frame";
             EXPECT_LE(compareImages(forward, deferred).maxAbs, 3);
             // Views and the overview (tiles smaller than a pixel) must not fail either.
-            for (const DebugView& view : debugViews()) renderer.renderView(view.name);
-            renderer.renderView(kOverviewName);
+            for (const DebugView& view : debugViews()) renderer.views().render(view.name);
+            renderer.views().render(kOverviewName);
             EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
         }
     }
@@ -137,8 +137,8 @@ TEST_F(BadInput, UnknownViewAndPassNamesThrowInvalidArgument) {
             ADD_FAILURE() << what << " threw something other than std::invalid_argument: " << error.what();
         }
     };
-    expectInvalid([&] { renderer.renderView("no-such-view"); }, "reflection", "renderView(\"no-such-view\")");
-    expectInvalid([&] { renderer.renderView(""); }, "final", "renderView(\"\")");
+    expectInvalid([&] { renderer.views().render("no-such-view"); }, "reflection", "renderView(\"no-such-view\")");
+    expectInvalid([&] { renderer.views().render(""); }, "final", "renderView(\"\")");
     expectInvalid([&] { renderer.renderFrame(pose.scene, "NoSuchPass"); }, "WaterCompositePass",
                   "renderFrame(stopBefore \"NoSuchPass\")");
     expectInvalid([&] { renderer.renderFrame(pose.scene, "SkyPass.forward"); }, "LightingPass",

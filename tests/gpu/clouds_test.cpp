@@ -24,7 +24,7 @@ class Clouds : public GpuTest {
 protected:
     SkyPixels sky(Renderer& renderer, const SceneSettings& scene, Image* out = nullptr) {
         renderer.renderFrame(scene);
-        renderer.renderView("final");
+        renderer.views().render("final");
         Image image = readDisplay(renderer);  // rows top first
         EXPECT_TRUE(hasContent(image));
         const std::vector<uint8_t> stencil = readStencil(renderer);  // rows bottom first

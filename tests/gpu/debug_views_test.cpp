@@ -167,10 +167,10 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
             EXPECT_EQ(difference.maxAbs, 0) << "forward and deferred show different " << name;
             EXPECT_EQ(compareImages(deferredOff, forward).maxAbs, 0)
                 << "forward " << name << " differs from deferred with reflections off";
-            renderer.setViewWaterScene(WaterScene::Mirrored);
+            renderer.views().setWaterScene(WaterScene::Mirrored);
             Image mirrored = renderView(renderer, pose.scene, PipelineKind::Deferred, name);
             Image mirroredForward = renderView(renderer, pose.scene, PipelineKind::Forward, name);
-            renderer.setViewWaterScene(WaterScene::Direct);
+            renderer.views().setWaterScene(WaterScene::Direct);
             DifferingPixels versusDirect = differingPixels(mirrored, deferred, inWater);
             EXPECT_EQ(versusDirect.elsewhere, 0) << "the mirrored scene changed " << name << " outside the water";
             EXPECT_GT(versusDirect.where, 0) << "the mirrored scene shows the direct one in the water";
@@ -194,9 +194,9 @@ TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
     std::vector<float> depthBefore = readDepth(renderer);
     std::vector<uint8_t> stencilBefore = readStencil(renderer);
     ASSERT_TRUE(hasContent(before));
-    renderer.renderView("albedo");
+    renderer.views().render("albedo");
     ASSERT_TRUE(hasContent(readDisplay(renderer)));
-    renderer.renderView("final");
+    renderer.views().render("final");
     Image after = readDisplay(renderer);
     EXPECT_EQ(compareImages(before, after).maxAbs, 0) << "the forward frame's Final changed";
     EXPECT_TRUE(readStencil(renderer) == stencilBefore) << "the forward frame's stencil changed";
@@ -223,7 +223,7 @@ TEST_F(DebugViews, GBufferViewOfStoppedForwardFrameKeepsDepthAndStencil) {
         std::vector<float> depthBefore = readDepth(renderer);
         std::vector<uint8_t> stencilBefore = readStencil(renderer);
         EXPECT_EQ(std::count(stencilBefore.begin(), stencilBefore.end(), kStencilWater), 0);
-        renderer.renderView("albedo");
+        renderer.views().render("albedo");
         std::vector<float> depthAfter = readDepth(renderer);
         std::vector<uint8_t> stencilAfter = readStencil(renderer);
         size_t depthChanged = 0, stencilChanged = 0;
@@ -282,7 +282,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
 
     std::map<std::string, Image> images;
     for (const DebugView& view : debugViews()) {
-        renderer.renderView(view.name);
+        renderer.views().render(view.name);
         images[view.name] = readDisplay(renderer);
         ASSERT_TRUE(hasContent(images[view.name])) << view.name;
     }
@@ -351,7 +351,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     };
     // The sun's shadow: a hue per cascade (grey for none) darkened by the lit fraction, from the
     // view's own numbers, which must be in range and whose n.l is the G-buffer normal's.
-    const std::vector<float> shadowValues = renderer.readViewValues("shadow");
+    const std::vector<float> shadowValues = renderer.views().readValues("shadow");
     const glm::vec3 toSun(frame.sunDirection);
     int shadowValuesWrong = 0;
     expected["shadow"] = [&](int x, int y) {
@@ -423,10 +423,10 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     EXPECT_EQ(shadowValuesWrong, 0) << "shadow view values out of range, or n.l not the G-buffer normal's";
 
     // The exposure control: +2 stops shows Radiance four times as bright (before the clip at 1).
-    renderer.setViewExposure(2.0f);
-    renderer.renderView("radiance");
+    renderer.views().setExposure(2.0f);
+    renderer.views().render("radiance");
     Image brighter = readDisplay(renderer);
-    renderer.setViewExposure(0.0f);
+    renderer.views().setExposure(0.0f);
     int exposureOff = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x)
@@ -438,11 +438,11 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     // The stencil view through stencil texturing equals the CPU read-back path bit for bit,
     // alone and inside the overview.
     for (const std::string& name : {std::string("stencil"), std::string(kOverviewName)}) {
-        renderer.setStencilViewPath(StencilViewPath::Texturing);
-        renderer.renderView(name);
+        renderer.views().setStencilPath(StencilViewPath::Texturing);
+        renderer.views().render(name);
         Image texturing = readDisplay(renderer);
-        renderer.setStencilViewPath(StencilViewPath::ReadBack);
-        renderer.renderView(name);
+        renderer.views().setStencilPath(StencilViewPath::ReadBack);
+        renderer.views().render(name);
         Image readBack = readDisplay(renderer);
         EXPECT_TRUE(texturing.rgba == readBack.rgba) << name << ": stencil texturing and read-back differ (max "
                                                      << compareImages(texturing, readBack).maxAbs << ")";
@@ -466,10 +466,10 @@ TEST_F(DebugViews, OverviewTilesShowEveryViewWithLabels) {
     // What each tile samples: the view at frame size, except the atlas view, which samples the atlas.
     std::vector<Image> views;
     for (const DebugView& view : debugViews()) {
-        renderer.renderView(view.name);
+        renderer.views().render(view.name);
         views.push_back(view.source == ViewSource::PlantAtlas ? atlas->read() : readDisplay(renderer));
     }
-    renderer.renderView(kOverviewName);
+    renderer.views().render(kOverviewName);
     Image overview = readDisplay(renderer);
     dumpImage("overview", overview);
     std::vector<OverviewTile> tiles = overviewTiles(kWidth, kHeight);

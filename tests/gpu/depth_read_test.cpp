@@ -47,7 +47,7 @@ DepthReadRun renderWith(Renderer& renderer, SceneSettings scene, bool inPlace) {
     EXPECT_EQ(renderer.lastFrame().work.depthReadInPlace, inPlace);
     run.radiance = readTarget(renderer, Target::Radiance);
     run.positions = readSurfacePositions(renderer);
-    renderer.renderView("final");
+    renderer.views().render("final");
     run.final = readDisplay(renderer);
     return run;
 }

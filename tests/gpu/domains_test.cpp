@@ -131,8 +131,8 @@ TEST_P(DomainEnds, FiniteAgreeingAndPlantsOnTheTerrain) {
     ImageDifference difference = compareImages(forward, deferred);
     const glm::dvec3 camera = renderer.lastFrame().view.pose.position;
     std::printf("[domains] %s: camera (%.6g, %.2f, %.6g), forward vs deferred %.2f dB, plants placed %zu drawn %zu\n",
-                c.name.c_str(), camera.x, camera.y, camera.z, difference.psnrDb, renderer.vegetationStats().plantsPlaced,
-                renderer.vegetationStats().plantsDrawn);
+                c.name.c_str(), camera.x, camera.y, camera.z, difference.psnrDb, renderer.vegetation().stats().plantsPlaced,
+                renderer.vegetation().stats().plantsDrawn);
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";
     if (c.expectContent) EXPECT_TRUE(hasContent(deferred));
     if (!c.checkBases) return;

@@ -183,14 +183,14 @@ inline const GBufferLayout& layoutNamed(const std::string& name) {
 inline Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    renderer.renderView("final");
+    renderer.views().render("final");
     return readDisplay(renderer);
 }
 
 inline Image renderView(Renderer& renderer, const SceneSettings& scene, PipelineKind kind, const std::string& view) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    renderer.renderView(view);
+    renderer.views().render(view);
     return readDisplay(renderer);
 }
 
@@ -199,7 +199,7 @@ inline Image renderView(Renderer& renderer, const SceneSettings& scene, Pipeline
 inline std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Renderer& renderer) {
     std::string reason;
     auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(gl::measureCapabilities(), false, reason));
-    renderer.setPlantAtlas(atlas.get());
+    renderer.views().setPlantAtlas(atlas.get());
     return atlas;
 }
 

@@ -57,7 +57,7 @@ CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool read
     // Where the frame wrote it: nothing clears Reflection outside the water (fresh NaNs on zink).
     run.reflection = writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection, readStencil(renderer),
                                    renderer.lastFrame().reflectionsActive);
-    renderer.renderView("final");
+    renderer.views().render("final");
     run.final = readDisplay(renderer);
     return run;
 }

@@ -71,7 +71,7 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     renderer.configure(kWidth, kHeight, layout);
     renderer.setPipeline(pipeline);
     // Both water scenes are checked: the mirrored one in deferred, the direct one (the lakebed) in forward.
-    renderer.setViewWaterScene(pipeline == PipelineKind::Deferred ? WaterScene::Mirrored : WaterScene::Direct);
+    renderer.views().setWaterScene(pipeline == PipelineKind::Deferred ? WaterScene::Mirrored : WaterScene::Direct);
     renderer.renderFrame(scene);
     renderer.ensureGBuffer();  // the views' fill of the water scene, as the probe and the views read it
 

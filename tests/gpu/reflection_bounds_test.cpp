@@ -70,14 +70,14 @@ TEST_F(ReflectionBounds, FrameWithoutWaterInViewPaysNothingForTheReflection) {
         SceneSettings unbounded = dry;
         unbounded.water.reflectionBounds = false;
         renderer.renderFrame(unbounded);
-        renderer.renderView("final");
+        renderer.views().render("final");
         const Image reference = readDisplay(renderer);
         ASSERT_TRUE(hasContent(reference));
         const long long verticesUnbounded =
             reflectionWorkInvocations(renderer, unbounded, GL_VERTEX_SHADER_INVOCATIONS_ARB);
 
         renderer.renderFrame(dry);
-        renderer.renderView("final");
+        renderer.views().render("final");
         EXPECT_EQ(compareImages(reference, readDisplay(renderer)).maxAbs, 0);
         std::vector<uint8_t> stencil = readStencil(renderer);
         ASSERT_EQ(std::count(stencil.begin(), stencil.end(), uint8_t(kStencilWater)), 0) << "water in view";
@@ -111,12 +111,12 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
                 SceneSettings unbounded = pose.scene;
                 unbounded.water.reflectionBounds = false;
                 renderer.renderFrame(unbounded);
-                renderer.renderView("final");
+                renderer.views().render("final");
                 const Image reference = readDisplay(renderer);
                 const long long fragmentsUnbounded = reflectionFragments(renderer, unbounded);
 
                 renderer.renderFrame(pose.scene);
-                renderer.renderView("final");
+                renderer.views().render("final");
                 const Image bounded = readDisplay(renderer);
                 EXPECT_TRUE(hasContent(bounded));
                 const glm::ivec4 rect = readWaterBounds(renderer);  // x0, y0, x1, y1, rows bottom-up
@@ -186,10 +186,10 @@ TEST_F(ReflectionBounds, MirroredBillboardsMissingTheWaterAreDropped) {
         renderer.setPipeline(kind);
         const long long whole = reflectionWorkInvocations(renderer, unbounded, GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mirroredPlants);
         if (whole < 0) GTEST_SKIP() << "no pipeline statistics queries";
-        renderer.renderView("final");
+        renderer.views().render("final");
         const Image reference = readDisplay(renderer);
         const long long bounded = reflectionWorkInvocations(renderer, pose.scene, GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mirroredPlants);
-        renderer.renderView("final");
+        renderer.views().render("final");
         const Image frame = readDisplay(renderer);
         EXPECT_TRUE(hasContent(frame));
         EXPECT_EQ(compareImages(reference, frame).maxAbs, 0);
@@ -211,7 +211,7 @@ TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
     if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
-    renderer.renderView("final");
+    renderer.views().render("final");
     const Image bounded = readDisplay(renderer);
     EXPECT_TRUE(hasContent(bounded));
 
@@ -223,7 +223,7 @@ TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
     EXPECT_NE(renderer.paths().waterBoundsReason.find("switched off by the test"), std::string::npos)
         << renderer.paths().waterBoundsReason;
     renderer.renderFrame(pose.scene);
-    renderer.renderView("final");
+    renderer.views().render("final");
     const Image whole = readDisplay(renderer);
     EXPECT_EQ(compareImages(bounded, whole).maxAbs, 0);
 }

@@ -20,11 +20,11 @@ protected:
         for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
             renderer.setPipeline(kind);
             renderer.renderFrame(scene);
-            for (const DebugView& view : debugViews()) renderer.renderView(view.name);
+            for (const DebugView& view : debugViews()) renderer.views().render(view.name);
             for (StencilViewPath path : {StencilViewPath::ReadBack, StencilViewPath::Texturing}) {
-                renderer.setStencilViewPath(path);
-                renderer.renderView("stencil");
-                renderer.renderView(kOverviewName);
+                renderer.views().setStencilPath(path);
+                renderer.views().render("stencil");
+                renderer.views().render(kOverviewName);
             }
         }
         glFinish();
@@ -51,7 +51,7 @@ TEST_F(Resources, HundredPipelineSwitchesLeakNothing) {
         renderer.setPipeline(kind);
         ASSERT_EQ(renderer.pipeline(), kind);
         renderer.renderFrame(pose.scene);
-        renderer.renderView(i % 4 < 2 ? "final" : (i % 4 == 2 ? "normal" : kOverviewName));
+        renderer.views().render(i % 4 < 2 ? "final" : (i % 4 == 2 ? "normal" : kOverviewName));
         if (i == 99) lastImage = readDisplay(renderer);
     }
     glFinish();
@@ -76,15 +76,15 @@ TEST_F(Resources, TwentySizeAndLayoutRoundTripsLeakNothing) {
         ASSERT_EQ(renderer.targets().layout().name, "full");  // configure() keeps a copy of the layout
         renderer.setPipeline(i % 2 ? PipelineKind::Forward : PipelineKind::Deferred);
         renderer.renderFrame(pose.scene);
-        renderer.setStencilViewPath(StencilViewPath::ReadBack);  // re-creates its copy at each size
-        renderer.renderView("stencil");
-        renderer.renderView("position");
+        renderer.views().setStencilPath(StencilViewPath::ReadBack);  // re-creates its copy at each size
+        renderer.views().render("stencil");
+        renderer.views().render("position");
         renderer.configure(64, 36, layoutNamed("standard"));
         ASSERT_EQ(renderer.targets().height(), 36);
         renderer.renderFrame(pose.scene);
-        renderer.renderView(kOverviewName);
-        renderer.setStencilViewPath(StencilViewPath::Texturing);
-        renderer.renderView("stencil");
+        renderer.views().render(kOverviewName);
+        renderer.views().setStencilPath(StencilViewPath::Texturing);
+        renderer.views().render("stencil");
     }
     glFinish();
     EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over 20 reconfigure round trips";

@@ -163,7 +163,7 @@ TEST_F(ReversedDepth, ClipControlIsRestoredAfterEachFrame) {
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         renderer.setPipeline(kind);
         renderer.renderFrame(scene);
-        renderer.renderView("overview");  // forward fills the G-buffer for the views inside its own scope
+        renderer.views().render("overview");  // forward fills the G-buffer for the views inside its own scope
         GLint origin = 0, mode = 0;
         glGetIntegerv(GL_CLIP_ORIGIN, &origin);
         glGetIntegerv(GL_CLIP_DEPTH_MODE, &mode);

@@ -214,7 +214,7 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
                 "%.2f dB, plants drawn %zu, lights %d\n",
                 hard.name.c_str(), renderer.lastFrame().view.pose.position.x, renderer.lastFrame().view.pose.position.y,
                 renderer.lastFrame().view.pose.position.z, surfaces, worst, difference.psnrDb,
-                renderer.vegetationStats().plantsDrawn, renderer.paths().lightsDrawn);
+                renderer.vegetation().stats().plantsDrawn, renderer.paths().lightsDrawn);
     EXPECT_GT(surfaces, 0);
     EXPECT_EQ(notUnit, 0) << "normals off unit length by more than 1e-3 (worst " << worst << ")";
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";

@@ -69,12 +69,12 @@ TEST_F(ToneMapFusion, FusedFrameEqualsTheSeparatePassAndRadianceStaysWhole) {
                 renderer.setPipeline(kind);
                 renderer.renderFrame(withToneMap(pose.scene, false));
                 const std::vector<float> separateRadiance = readTarget(renderer, Target::Radiance);
-                renderer.renderView("final");
+                renderer.views().render("final");
                 const Image separate = readDisplay(renderer);
 
                 renderer.renderFrame(withToneMap(pose.scene, true));
                 EXPECT_TRUE(renderer.lastFrame().toneMapFused);
-                renderer.renderView("final");
+                renderer.views().render("final");
                 const Image fused = readDisplay(renderer);
                 EXPECT_TRUE(hasContent(fused));
                 ImageDifference difference = compareImages(separate, fused);
@@ -117,12 +117,12 @@ TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
         scene.lights.method = c.method;
         renderer.setPipeline(c.kind);
         FrameRun separateRun = observe(renderer, withToneMap(scene, false));
-        renderer.renderView("final");
+        renderer.views().render("final");
         const Image separate = readDisplay(renderer);
         EXPECT_TRUE(ran(separateRun, "ToneMapPass"));
 
         FrameRun fusedRun = observe(renderer, withToneMap(scene, true));
-        renderer.renderView("final");
+        renderer.views().render("final");
         EXPECT_EQ(renderer.lastFrame().toneMapFused, c.fused);
         EXPECT_EQ(ran(fusedRun, "ToneMapPass"), !c.fused);
         EXPECT_LE(compareImages(separate, readDisplay(renderer)).maxAbs, 1);

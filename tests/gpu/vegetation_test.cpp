@@ -68,14 +68,14 @@ TEST_F(Vegetation, ToggleChangesOnlyPlantAndWaterPixels) {
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         SCOPED_TRACE(pipelineName(kind));
         std::vector<uint8_t> stencilOn = stencilOf(renderer, pose.scene, kind);
-        renderer.renderView("final");
+        renderer.views().render("final");
         Image on = readDisplay(renderer);
-        EXPECT_GT(renderer.vegetationStats().plantsDrawn, 1000u);
-        EXPECT_GT(renderer.vegetationStats().plantsDrawnMirrored, 0u);
+        EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 1000u);
+        EXPECT_GT(renderer.vegetation().stats().plantsDrawnMirrored, 0u);
         std::vector<uint8_t> stencilOff = stencilOf(renderer, off, kind);
-        renderer.renderView("final");
+        renderer.views().render("final");
         Image offImage = readDisplay(renderer);
-        EXPECT_EQ(renderer.vegetationStats().plantsDrawn, 0u) << "plants drawn with vegetation off";
+        EXPECT_EQ(renderer.vegetation().stats().plantsDrawn, 0u) << "plants drawn with vegetation off";
         EXPECT_EQ(countValue(stencilOff, kStencilPlant), 0u) << "plant stencil marks with vegetation off";
         size_t plantPixels = countValue(stencilOn, kStencilPlant);
         EXPECT_GT(plantPixels, size_t(kWidth * kHeight / 20)) << "the meadow shows few plants";
@@ -157,12 +157,12 @@ TEST_F(Vegetation, CpuAtlasDrawsTheSameFrame) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
     PlantAtlas gpuAtlas(*shaders_, PlantInterpretation::Gpu), cpuAtlas(*shaders_, PlantInterpretation::Cpu);
-    renderer.setPlantAtlas(&gpuAtlas);
+    renderer.views().setPlantAtlas(&gpuAtlas);
     Image gpu = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
-    renderer.setPlantAtlas(&cpuAtlas);
+    renderer.views().setPlantAtlas(&cpuAtlas);
     Image cpu = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
     EXPECT_EQ(compareImages(gpu, cpu).maxAbs, 0) << "the CPU-interpreted atlas draws a different frame";
-    EXPECT_GT(renderer.vegetationStats().plantsDrawn, 0u);
+    EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 0u);
 }
 
 // Fragment shader invocations of one frame, where the context counts them (GL 4.6 or
@@ -221,12 +221,12 @@ TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
         none.vegetation.enabled = false;
         long long trimmedCount = fragmentInvocations(renderer, pose.scene);
         renderer.renderFrame(pose.scene);
-        renderer.renderView("final");
+        renderer.views().render("final");
         Image trimmed = readDisplay(renderer);
         EXPECT_TRUE(hasContent(trimmed));
         long long wholeCount = fragmentInvocations(renderer, whole);
         renderer.renderFrame(whole);
-        renderer.renderView("final");
+        renderer.views().render("final");
         Image reference = readDisplay(renderer);
         long long noneCount = fragmentInvocations(renderer, none);
 

@@ -31,11 +31,11 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     const FrameData& frame = renderer.lastFrame().data;
     const double nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
 
-    const std::vector<float> positionValues = renderer.readViewValues("position");
-    const std::vector<float> normalValues = renderer.readViewValues("normal");
-    const std::vector<float> depthValues = renderer.readViewValues("depth");
-    const std::vector<float> stencilValues = renderer.readViewValues("stencil");
-    const std::vector<float> radianceValues = renderer.readViewValues("radiance");
+    const std::vector<float> positionValues = renderer.views().readValues("position");
+    const std::vector<float> normalValues = renderer.views().readValues("normal");
+    const std::vector<float> depthValues = renderer.views().readValues("depth");
+    const std::vector<float> stencilValues = renderer.views().readValues("stencil");
+    const std::vector<float> radianceValues = renderer.views().readValues("radiance");
     int positionOff = 0, normalOff = 0, depthOff = 0, stencilOff = 0, radianceOff = 0, surfaces = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
@@ -67,7 +67,7 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     EXPECT_EQ(radianceOff, 0);
     // Every view fills the channels its table row names and leaves the frame's numbers finite.
     for (const DebugView& view : debugViews()) {
-        ValueStatistics s = valueStatistics(renderer.readViewValues(view.name), defaultChannel(view));
+        ValueStatistics s = valueStatistics(renderer.views().readValues(view.name), defaultChannel(view));
         EXPECT_EQ(s.nan + s.positiveInfinity + s.negativeInfinity, 0) << view.name;
         EXPECT_TRUE(s.anyFinite) << view.name;
     }
@@ -87,11 +87,11 @@ TEST_F(GpuTest, NanInRadianceIsCountedAndOverlaid) {
     const GLfloat poisoned[4] = {nan, 0.5f, nan, 1.0f};
     glBindFramebuffer(GL_FRAMEBUFFER, renderer.targets().framebuffer({Target::Radiance}, Target::DepthStencil));
     glClearBufferfv(GL_COLOR, 0, poisoned);
-    std::vector<float> values = renderer.readViewValues("radiance");
+    std::vector<float> values = renderer.views().readValues("radiance");
     ValueStatistics rgb = valueStatistics(values, ViewChannel::Rgb);
     EXPECT_EQ(rgb.nan, 64 * 36 * 2);
     EXPECT_EQ(valueStatistics(values, ViewChannel::G).nan, 0);
-    renderer.renderView("radiance");
+    renderer.views().render("radiance");
     Image view = readDisplay(renderer);
     paintOverlay(view, values, ViewChannel::Rgb, kOverlayNan);
     for (int y = 0; y < 36; ++y)

@@ -504,11 +504,11 @@ TEST_F(Water, ReflectionIsNotShownWhenReflectionsAreInactive) {
             FrameReadback r = renderAndRead(renderer, scene, kind);
             ASSERT_FALSE(r.frame.reflectionsActive);
             for (const char* name : {"reflection", "reflection-raw"}) {
-                renderer.renderView(name);
+                renderer.views().render(name);
                 Image view = readDisplay(renderer);
                 EXPECT_EQ(rgbStats(view, wholeImage(view)).maxMean(), 0.0) << "the " << name << " view is not black";
             }
-            const std::vector<float> values = renderer.readViewValues("reflection");
+            const std::vector<float> values = renderer.views().readValues("reflection");
             EXPECT_EQ(size_t(std::count(values.begin(), values.end(), 0.0f)), values.size())
                 << "the reflection view's values are not zero";
         }
@@ -590,11 +590,11 @@ TEST_P(WaterHardCase, FiniteReflectionOnlyInWaterAndPipelinesAgree) {
         // frame outside the water was written there.
         zeroTarget(renderer.targets(), Target::Reflection);
         FrameReadback forward = renderAndRead(renderer, hard.scene, PipelineKind::Forward);
-        renderer.renderView("final");
+        renderer.views().render("final");
         Image forwardImage = readDisplay(renderer);
         zeroTarget(renderer.targets(), Target::Reflection);
         FrameReadback deferred = renderAndRead(renderer, hard.scene, PipelineKind::Deferred);
-        renderer.renderView("final");
+        renderer.views().render("final");
         Image deferredImage = readDisplay(renderer);
         dumpImage("water-" + hard.name + "-" + layout + "-forward", forwardImage);
         dumpImage("water-" + hard.name + "-" + layout + "-deferred", deferredImage);
