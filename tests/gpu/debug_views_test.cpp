@@ -1,7 +1,6 @@
 // Debug views: every view and the overview have content in both pipelines (forward's G-buffer
 // views equal deferred's), each view's colours follow its remapping, the two stencil paths agree
 // bit for bit, and every overview tile shows its view under its label.
-#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "debug/debug_views.h"

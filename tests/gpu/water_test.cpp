@@ -4,7 +4,6 @@
 // the water, and hard camera poses (at, just above and under the water, straight down, grazing).
 #include <cstring>
 
-#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "debug/debug_views.h"
