@@ -37,7 +37,7 @@ struct DebugView {
     LegendScale scale = LegendScale::None;
     // What its shader samples of the frame (debug_view.frag, common/gbuffer.glsl), Position
     // standing for the surface's position as the layout keeps it (viewReads): a frame drawn to
-    // show this view alone is culled to what these need (Renderer::setFrameSink).
+    // show this view alone is culled to what these need (FrameViews::setSink).
     std::vector<Resource> reads = {};
 };
 
@@ -56,7 +56,7 @@ bool readsGBuffer(const DebugView& view);
 // renderer fills with one water scene before the view (frame/view_fill.h).
 bool readsSceneSurfaces(const DebugView& view);
 // What the view shows at water pixels, one line for its legend and the panel; `surfaces` is what
-// the G-buffer and depth hold there (Renderer::viewScene().description). "" for the atlas.
+// the G-buffer and depth hold there (FrameViews::scene().description). "" for the atlas.
 std::string waterNote(const DebugView& view, const std::string& surfaces);
 std::string debugProgramName(const DebugView& view);        // "debug.<name>"
 std::string debugValuesProgramName(const DebugView& view);  // "debug.values.<name>": viewValue() as floats

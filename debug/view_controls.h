@@ -1,7 +1,7 @@
 // The view controls, GL-free: which channel of a view's values to show (rgb, r, g, b, a,
 // luminance), the range mapped to black..white (fitted to the frame's finite values, or given),
 // and the overlay that paints NaN, infinities and (on request) negative values in checker
-// patterns no view draws. The values come from the view's VIEW_VALUES pass (Renderer::readViewValues).
+// patterns no view draws. The values come from the view's VIEW_VALUES pass (FrameViews::readValues).
 #pragma once
 #include <cstdint>
 #include <optional>

@@ -18,7 +18,9 @@
 #include "commands/bench_report.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "frame/frame_readback.h"
 #include "frame/frame_traffic.h"
+#include "frame/gpu_timer.h"
 #include "gl/frame_capture.h"
 #include "render/file_output.h"
 #include "render/gbuffer_layout.h"
@@ -54,8 +56,8 @@ SceneSettings frameScene(const SceneSettings& base, const std::vector<QualityKno
 
 Image renderFinalImage(Renderer& renderer, const SceneSettings& scene) {
     renderer.renderFrame(scene);
-    renderer.renderView("final");
-    return renderer.readDisplay();
+    renderer.views().render("final");
+    return readDisplay(renderer);
 }
 
 double pooledPsnr(double meanSquaredError) {
@@ -173,7 +175,7 @@ void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, c
                 for (int i = 0; i < plan.passFrames; ++i) queries.timeFrame(*group[c].renderer, scenes[c]);
                 timed = queries.drain();
             } else {
-                for (int i = 0; i < plan.passFrames; ++i) timed.push_back(group[c].renderer->renderFrameTimingPasses(scenes[c]));
+                for (int i = 0; i < plan.passFrames; ++i) timed.push_back(renderFrameTimingPasses(*group[c].renderer, scenes[c]));
             }
             for (const PassTimes& frameTimes : timed)
                 for (const auto& [name, ms] : frameTimes) {
@@ -200,15 +202,16 @@ std::vector<DepthPrecision> compareDepthPrecision(const RenderSession& session, 
     std::vector<SceneSettings> scenes;
     for (const BenchFrame& frame : frames) scenes.push_back(frameScene(session.scene, knobs, defaultLevels(knobs), defaultLightCount(), frame));
     Renderer renderer(*session.shaders, session.scene);
-    renderer.setPlantAtlas(session.plantAtlas.get());
-    std::string why;
-    renderer.setClipControlAvailable(session.caps.clipControlAvailable(&why), why);
+    renderer.views().setPlantAtlas(session.plantAtlas.get());
+    RendererCapabilities clipControl = renderer.paths().capabilities;
+    clipControl.clipControl.available = session.caps.clipControlAvailable(&clipControl.clipControl.reason);
+    renderer.setCapabilities(clipControl);
     std::vector<DepthPrecision> rows;
     for (const DepthConvention& depth : depthConventions()) {
         renderer.setDepthConvention(depth);
-        if (renderer.depthFellBack()) {
+        if (renderer.paths().depthFellBack) {
             std::fprintf(stderr, "oasis bench: depth precision: %s not measured (%s)\n", depth.name.c_str(),
-                         renderer.depthConventionReason().c_str());
+                         renderer.paths().depthReason.c_str());
             continue;
         }
         renderer.configure(width, height, *findGBufferLayout("full"));
@@ -288,9 +291,11 @@ int runBenchCommand(const Options& options) {
         std::vector<std::unique_ptr<Renderer>> extraRenderers;
         auto addRenderer = [&](const std::string& layout, const std::string& depth) {
             extraRenderers.push_back(std::make_unique<Renderer>(*session.shaders, session.scene));
-            extraRenderers.back()->setPlantAtlas(session.plantAtlas.get());
-            extraRenderers.back()->setStencilViewPath(renderer.stencilViewPath());
-            extraRenderers.back()->setClipControlAvailable(true, clipControlWhy);
+            extraRenderers.back()->views().setPlantAtlas(session.plantAtlas.get());
+            extraRenderers.back()->views().setStencilPath(renderer.views().stencilPath());
+            RendererCapabilities withClipControl = extraRenderers.back()->paths().capabilities;
+            withClipControl.clipControl = {true, clipControlWhy};
+            extraRenderers.back()->setCapabilities(withClipControl);
             extraRenderers.back()->setDepthConvention(*findDepthConvention(depth));
             renderers[{layout, depth}] = extraRenderers.back().get();
         };

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "common/shared_constants.glsl"
+#include "frame/frame_readback.h"
 #include "passes/pass.h"
 
 namespace oasis {
@@ -73,9 +74,9 @@ std::vector<DepthPrecision> measureDepthPrecision(Renderer& renderer, const std:
     for (const SceneSettings& scene : scenes) {
         renderer.renderFrame(scene);
         const FrameData& frame = renderer.lastFrame().data;
-        std::vector<float> stored = renderer.readTarget(Target::Position);
-        std::vector<float> depth = renderer.readDepth();
-        std::vector<uint8_t> stencil = renderer.readStencil();
+        std::vector<float> stored = readTarget(renderer, Target::Position);
+        std::vector<float> depth = readDepth(renderer);
+        std::vector<uint8_t> stencil = readStencil(renderer);
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
                 size_t i = size_t(y) * size_t(width) + size_t(x);
@@ -95,7 +96,7 @@ std::vector<DepthPrecision> measureDepthPrecision(Renderer& renderer, const std:
     std::vector<DepthPrecision> rows;
     for (size_t b = 0; b < bands.size(); ++b) {
         DepthPrecision row;
-        row.depth = renderer.depthConvention().name;
+        row.depth = renderer.paths().depth->name;
         row.band = bands[b];
         row.pixels = absolute[b].size();
         row.medianAbs = median(absolute[b]);

@@ -73,27 +73,27 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
     const Renderer& renderer = *session.renderer;
     const SceneOptions& scene = options.scene;
     const gl::Capabilities& caps = session.caps;
-    if (scene.lightsPath && renderer.lightsPath() != *scene.lightsPath) {
+    if (scene.lightsPath && renderer.paths().lights.path != *scene.lightsPath) {
         limitedBy = limitOf(caps.driverHasSsbo());
-        return "lights path " + std::string(lightsPathName(*scene.lightsPath)) + " not taken: " + renderer.lightsPathReason();
+        return "lights path " + std::string(lightsPathName(*scene.lightsPath)) + " not taken: " + renderer.paths().lights.reason;
     }
-    if (scene.lightMethod && options.pipeline == PipelineKind::Deferred && renderer.lightMethod() != *scene.lightMethod) {
+    if (scene.lightMethod && options.pipeline == PipelineKind::Deferred && renderer.paths().lightMethod.method != *scene.lightMethod) {
         limitedBy = limitOf(caps.driverHasCompute() && caps.driverHasSsbo());
         return "light method " + std::string(lightMethodName(*scene.lightMethod)) + " not taken: " +
-               renderer.lightMethodReason();
+               renderer.paths().lightMethod.reason;
     }
     if (gpuPlants && session.plantPath != PlantInterpretation::Gpu) {
         limitedBy = limitOf(caps.driverHasCompute() && caps.driverHasSsbo());
         return "plants on the GPU not taken: " + session.plantPathReason;
     }
-    if (options.stencilView && renderer.stencilViewPath() != *options.stencilView) {
+    if (options.stencilView && renderer.views().stencilPath() != *options.stencilView) {
         limitedBy = limitOf(caps.driverHasStencilTexturing());
         return std::string("stencil view ") + stencilViewPathName(*options.stencilView) + " not taken: " +
                session.stencilPathReason;
     }
-    if (scene.depth == "reversed-z" && renderer.depthFellBack()) {
+    if (scene.depth == "reversed-z" && renderer.paths().depthFellBack) {
         limitedBy = limitOf(caps.driverHasClipControl());
-        return "reversed-z depth not taken: " + renderer.depthConventionReason();
+        return "reversed-z depth not taken: " + renderer.paths().depthReason;
     }
     return {};
 }
@@ -148,7 +148,7 @@ std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& argum
             if (const Target* target = std::get_if<Target>(&resource)) written.insert(*target);
         PassSnapshot snapshot{passes[k]->name(), {}};
         for (const TargetView& target : kTargetViews)
-            if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.readViewValues(target.view)});
+            if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.views().readValues(target.view)});
         snapshots.push_back(std::move(snapshot));
     }
     return snapshots;

@@ -22,6 +22,7 @@
 #include "debug/view_legend.h"
 #include "frame/encoding_error.h"
 #include "frame/frame_graph.h"
+#include "frame/frame_readback.h"
 #include "frame/pixel_probe.h"
 #include "gl/frame_capture.h"
 #include "render/file_output.h"
@@ -50,8 +51,8 @@ bool ensureDirectory(const std::string& path, std::string& error) {
 Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    renderer.renderView("final");
-    return renderer.readDisplay();
+    renderer.views().render("final");
+    return readDisplay(renderer);
 }
 
 // With `capture`, RenderDoc captures the forward and the deferred frame whose images are written.
@@ -60,7 +61,7 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     Comparison result;
     // Its frames are looked at through the final view (the images, the times, the traffic; a
     // capture keeps the whole frame); the last, left for what follows (the main job's overview), is whole.
-    renderer.setFrameSink(capture ? std::vector<std::string>{} : std::vector<std::string>{"final"});
+    renderer.views().setSink(capture ? std::vector<std::string>{} : std::vector<std::string>{"final"});
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {  // shader builds: frames of their own
         renderer.setPipeline(kind);
         renderer.buildPrograms(session.scene, "final");
@@ -85,7 +86,7 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
         result.deferredTraffic = measureFrameTraffic(renderer, session.scene);
         result.floorTraffic = measureFloorTraffic(renderer);
     }
-    renderer.setFrameSink({});
+    renderer.views().setSink({});
     renderer.renderFrame(session.scene);  // leave the frame, not the floor, in the targets
     return result;
 }
@@ -132,7 +133,7 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel with its depth), depth %s, time %.2f s (%.2f h), on %s\n",
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()),
-                session.renderer->depthConventionReason().c_str(), options.scene.timeSeconds, frame.hour,
+                session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, frame.hour,
                 queryContextInfo().summary().c_str());
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
@@ -211,7 +212,7 @@ std::string graphJson(const Comparison& c) {
 void printJson(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
     ContextInfo info = queryContextInfo();
-    const VegetationStats& plants = session.renderer->vegetationStats();
+    const VegetationStats& plants = session.renderer->vegetation().stats();
     std::printf("{\"vegetation\": %s, \"vegetation_density\": %.3f, \"plants_placed\": %zu, \"plants_drawn\": %zu, "
                 "\"plants_drawn_mirrored\": %zu, ",
                 session.renderer->lastFrame().vegetationEnabled ? "true" : "false", session.scene.vegetation.density,
@@ -231,12 +232,12 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(),
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
-                session.renderer->depthConventionReason().c_str(), options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
-                stencilViewPathName(session.renderer->stencilViewPath()), session.shaders->directory().c_str(),
+                session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
+                stencilViewPathName(session.renderer->views().stencilPath()), session.shaders->directory().c_str(),
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
-                session.renderer->lightsDrawn(), lightsPathName(session.renderer->lightsPath()),
-                session.renderer->lightsPathReason().c_str(), session.renderer->lightsDropped(),
-                lightMethodName(session.renderer->lightMethod()), session.renderer->lightMethodReason().c_str(),
+                session.renderer->paths().lightsDrawn, lightsPathName(session.renderer->paths().lights.path),
+                session.renderer->paths().lights.reason.c_str(), session.renderer->paths().lightsDropped,
+                lightMethodName(session.renderer->paths().lightMethod.method), session.renderer->paths().lightMethod.reason.c_str(),
                 passClockJson(c).c_str(), passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
                 passTimesJson("deferred_passes_ms", c.deferredPasses).c_str(),
                 pipelineTrafficJson("forward", c.forwardTraffic).c_str(),
@@ -310,7 +311,7 @@ Image encodingErrorImage(const Options& options, RenderSession& session, const E
     legend.low = low;
     legend.high = high;
     legend.notes = {line, "dark grey: no common surface (sky, or the two frames' flags differ)",
-                    "under the water: " + renderer.viewScene().description};
+                    "under the water: " + renderer.views().scene().description};
     LegendRenderer legends;
     return stackImages(image, legends.draw(legend, image.width));
 }
@@ -318,9 +319,9 @@ Image encodingErrorImage(const Options& options, RenderSession& session, const E
 // The image `render` writes: the view (or its values through the controls), the overlay, and
 // under a single view its legend; `report` gets the value counts.
 Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* report) {
-    renderer.setViewExposure(options.viewExposure);
-    renderer.renderView(options.view);
-    Image image = renderer.readDisplay();
+    renderer.views().setExposure(options.viewExposure);
+    renderer.views().render(options.view);
+    Image image = readDisplay(renderer);
     const DebugView* view = findDebugView(options.view);
     const ViewControls& controls = options.viewControls;
     if (!view) {  // the overview: every tile labelled, each with its own overlay and counts
@@ -328,10 +329,10 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
             std::fprintf(report, "oasis: %s\n", line.c_str());
         std::fprintf(report, "oasis: overview overlay: %s\n", overlayNames(controls.overlay).c_str());
         std::fprintf(report, "oasis: overview: under the water its G-buffer, depth and light tiles show %s\n",
-                     renderer.viewScene().description.c_str());
+                     renderer.views().scene().description.c_str());
         return image;
     }
-    std::vector<float> values = renderer.readViewValues(options.view);
+    std::vector<float> values = renderer.views().readValues(options.view);
     ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
     const DrawnPixels drawn = drawnPixels(renderer, *view);  // the sky left out (issue 31, defect 1)
     ValueStatistics statistics = valueStatistics(values, channel, &drawn);
@@ -351,7 +352,7 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     const FrameData& frame = renderer.lastFrame().data;
     LegendRenderer legends;
     Legend legend = viewLegend(*view, controls, statistics, frame.depthRange.x, frame.depthRange.y,
-                               frame.terrainGridCounts.w, waterNote(*view, renderer.viewScene().description));
+                               frame.terrainGridCounts.w, waterNote(*view, renderer.views().scene().description));
     std::string undrawn = undrawnNote(*view, statistics.undrawn, controls.showValues());
     if (!undrawn.empty()) legend.notes.push_back(undrawn);
     return stackImages(image, legends.draw(legend, image.width));
@@ -368,7 +369,7 @@ int runRenderCommand(const Options& options) {
         if (!errorView && !options.capture) {
             std::vector<std::string> sink = {options.view};
             if (const DebugView* view = findDebugView(options.view); view && masksUndrawn(*view)) sink.push_back("info");
-            renderer.setFrameSink(sink);
+            renderer.views().setSink(sink);
         }
         // Shader builds in a frame of their own; the frame after it (captured with --capture) only draws.
         if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
@@ -428,8 +429,8 @@ int runMainJob(const Options& options) {
         std::fprintf(report, "oasis: no display, running the headless main job (stencil view: %s)\n",
                      session.stencilPathReason.c_str());
         Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
-        session.renderer->renderView(kOverviewName);
-        Image overview = session.renderer->readDisplay();
+        session.renderer->views().render(kOverviewName);
+        Image overview = readDisplay(*session.renderer);
         Image heat = differenceImage(c.forward, "forward", c.deferred, "deferred");
         std::vector<ImageFile> files = comparisonFiles(options, c, heat);
         files.push_back({"overview.png", &overview,

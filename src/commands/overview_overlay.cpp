@@ -13,7 +13,7 @@ std::vector<std::string> overlayOverviewTiles(Image& image, Renderer& renderer, 
     std::vector<std::string> counts;
     const int width = renderer.targets().width(), height = renderer.targets().height();
     for (const OverviewTile& tile : overviewTiles(width, height)) {
-        std::vector<float> values = renderer.readViewValues(tile.view->name);
+        std::vector<float> values = renderer.views().readValues(tile.view->name);
         ViewChannel channel = defaultChannel(*tile.view);
         const DrawnPixels drawn = drawnPixels(renderer, *tile.view);
         ValueStatistics statistics = valueStatistics(values, channel, &drawn);

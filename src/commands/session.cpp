@@ -31,13 +31,6 @@ RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const Sc
     return c;
 }
 
-void giveCapabilities(Renderer& renderer, const RendererCapabilities& c) {
-    renderer.setSsboAvailable(c.ssbo.available, c.ssbo.reason, c.forcedLightsPath);
-    renderer.setComputeAvailable(c.compute.available, c.compute.reason, c.forcedLightMethod);
-    renderer.setClipControlAvailable(c.clipControl.available, c.clipControl.reason);
-    renderer.setReadOnlyDepthAvailable(c.readOnlyDepth.available, c.readOnlyDepth.reason);
-}
-
 StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optional<StencilViewPath> forced,
                                       std::string& reason) {
     std::string why;
@@ -65,15 +58,15 @@ gl::FeatureReport reportOf(std::string name, bool used, std::string reason, cons
 gl::FeatureReport clipControlFeature(const gl::Capabilities& caps, const Renderer& renderer) {
     gl::Availability can = caps.availability(&gl::Capabilities::clipControlAvailable);
     const std::string& why = can.reason;
-    if (renderer.depthConvention().needsClipControl())
-        return reportOf("clip-control", true, "depth " + renderer.depthConventionReason(), can);
-    if (renderer.depthFellBack())
-        return reportOf("clip-control", false, "fallback: depth " + renderer.depthConventionReason(), can);
+    if (renderer.paths().depth->needsClipControl())
+        return reportOf("clip-control", true, "depth " + renderer.paths().depthReason, can);
+    if (renderer.paths().depthFellBack)
+        return reportOf("clip-control", false, "fallback: depth " + renderer.paths().depthReason, can);
     if (caps.forced.noClipControl)
         return reportOf("clip-control", false, "fallback: " + why + " (--depth reversed-z would draw standard depth)", can);
     // `why` names a forced tier itself where one hides what the driver has.
     return reportOf("clip-control", false,
-                    "not used: depth " + renderer.depthConventionReason() +
+                    "not used: depth " + renderer.paths().depthReason +
                         (can.tier ? "; " + why + " for --depth reversed-z" : can.driver ? "; " + why : "; the driver has " + why),
                     can);
 }
@@ -92,15 +85,15 @@ const TimingClock& RenderSession::timingClock() {
 std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     auto second = std::make_unique<Renderer>(*shaders, scene);
     RendererCapabilities same = rendererCaps;
-    same.readOnlyDepth = {renderer->readOnlyDepthAvailable(), renderer->readOnlyDepthReason()};  // as the first took it
+    same.readOnlyDepth = renderer->paths().capabilities.readOnlyDepth;  // as the first took it
     same.forcedLightsPath = scene.lights.path;  // the scene's now: the window's panel may have changed it
     same.forcedLightMethod = scene.lights.method;
-    giveCapabilities(*second, same);
-    second->setDepthConvention(renderer->depthConvention());
+    second->setCapabilities(same);
+    second->setDepthConvention(*renderer->paths().depth);
     second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
-    second->setStencilViewPath(renderer->stencilViewPath());
-    second->setViewWaterScene(renderer->viewWaterScene());
-    second->setPlantAtlas(plantAtlas.get());
+    second->views().setStencilPath(renderer->views().stencilPath());
+    second->views().setWaterScene(renderer->views().waterScene());
+    second->views().setPlantAtlas(plantAtlas.get());
     return second;
 }
 
@@ -119,11 +112,11 @@ RenderSession::RenderSession(const Options& options, Shaders need)
     shaders = std::make_unique<ShaderLibrary>(directory, dialect);
     renderer = std::make_unique<Renderer>(*shaders, scene);
     rendererCaps = rendererCapabilities(caps, scene);
-    giveCapabilities(*renderer, rendererCaps);
+    renderer->setCapabilities(rendererCaps);
     renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));
-    renderer->setStencilViewPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
-    renderer->setViewWaterScene(options.waterScene);
+    renderer->views().setStencilPath(chooseStencilViewPath(caps, options.stencilView, stencilPathReason));
+    renderer->views().setWaterScene(options.waterScene);
     plantPath = choosePlantInterpretation(caps, options.scene.noCompute, plantPathReason);
     if (directory.empty()) {
         plantPathReason += "; not built: no shader directory (looked in: " + searched + ")";
@@ -139,7 +132,7 @@ RenderSession::RenderSession(const Options& options, Shaders need)
         plantPathReason = std::string("cpu (the compute path failed: ") + error.what() + ")";
         plantAtlas = std::make_unique<PlantAtlas>(*shaders, PlantInterpretation::Cpu);
     }
-    renderer->setPlantAtlas(plantAtlas.get());
+    renderer->views().setPlantAtlas(plantAtlas.get());
     for (const std::string& line : fallbacks()) std::fprintf(stderr, "oasis: fallback: %s\n", line.c_str());
 }
 
@@ -147,20 +140,20 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     using gl::Capabilities;
     std::vector<gl::FeatureReport> list;
     // The light list: the renderer's path choice (from the capabilities above and --lights-path).
-    bool ssbo = renderer->lightsPath() != LightsPath::Ubo;
+    bool ssbo = renderer->paths().lights.path != LightsPath::Ubo;
     list.push_back(reportOf("ssbo-light-list", ssbo,
-                            ssbo ? "SSBO light list, path " + renderer->lightsPathReason()
-                                 : "fallback: UBO light list, path " + renderer->lightsPathReason(),
+                            ssbo ? "SSBO light list, path " + renderer->paths().lights.reason
+                                 : "fallback: UBO light list, path " + renderer->paths().lights.reason,
                             caps.availability(&Capabilities::ssboAvailable)));
     // The deferred light method (--light-method): tiled where asked for and compute exists.
-    bool tiled = renderer->lightMethod() == LightMethod::Tiled;
+    bool tiled = renderer->paths().lightMethod.method == LightMethod::Tiled;
     bool tiledRefused = !tiled && scene.lights.method == LightMethod::Tiled;
     gl::Availability compute = caps.availability(&Capabilities::computeAvailable);
     // Not asked for, it still says why --light-method tiled would fall back where it would.
     list.push_back(reportOf("tiled-light-culling", tiled,
-                            tiled ? "deferred lights by " + renderer->lightMethodReason()
+                            tiled ? "deferred lights by " + renderer->paths().lightMethod.reason
                                   : (tiledRefused ? "fallback: deferred lights by " : "not used: deferred lights by ") +
-                                        renderer->lightMethodReason() +
+                                        renderer->paths().lightMethod.reason +
                                         (tiledRefused || compute.tier ? "" : "; tiled needs compute: " + compute.reason),
                             compute));
     bool gpuPlants = plantAtlas ? plantAtlas->path() == PlantInterpretation::Gpu : plantPath == PlantInterpretation::Gpu;
@@ -169,7 +162,7 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     if (!gpuPlants && plantPath == PlantInterpretation::Gpu) plants.driver = false;
     list.push_back(reportOf("compute-plant-interpretation", gpuPlants,
                             gpuPlants ? plantPathReason : "fallback: " + plantPathReason, plants));
-    bool texturing = renderer->stencilViewPath() == StencilViewPath::Texturing;
+    bool texturing = renderer->views().stencilPath() == StencilViewPath::Texturing;
     list.push_back(reportOf("stencil-texturing", texturing,
                             texturing ? "stencil view by " + stencilPathReason : "fallback: stencil view by " + stencilPathReason,
                             caps.availability(&Capabilities::stencilTexturingAvailable)));
@@ -197,12 +190,12 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
                                   "write stencil or may not read what they test (light volumes, the reflection's lighting)"
                                 : "not used: the " + layout.name + " layout stores position, no pass reads depth",
                             gl::Availability{true, true, {}}));
-    bool readOnlyDepth = renderer->readOnlyDepthAvailable();
+    bool readOnlyDepth = renderer->paths().capabilities.readOnlyDepth.available;
     list.push_back(reportOf("read-only-depth", readOnlyDepth,
                             readOnlyDepth ? "the deferred lighting shades only the surfaces (a far-plane triangle depth-tested "
                                             "against the depth-stencil target it samples, writes off; SkyPass draws the sky): " +
-                                                renderer->readOnlyDepthReason()
-                                          : renderer->readOnlyDepthReason(),
+                                                renderer->paths().capabilities.readOnlyDepth.reason
+                                          : renderer->paths().capabilities.readOnlyDepth.reason,
                             caps.availability(&Capabilities::readOnlyDepthAvailable)));
     gl::Availability clipDistances = caps.availability(&Capabilities::clipDistancesAvailable);
     list.push_back(reportOf("clip-distances", clipDistances.tier,
@@ -246,7 +239,7 @@ std::string describePlantAtlas(const RenderSession& session) {
 }
 
 std::string describeVegetation(const Renderer& renderer) {
-    const VegetationStats& stats = renderer.vegetationStats();
+    const VegetationStats& stats = renderer.vegetation().stats();
     if (!renderer.lastFrame().vegetationEnabled) return "vegetation: off";
     char text[256];
     std::snprintf(text, sizeof(text),
@@ -267,17 +260,17 @@ std::string describeReflectionBounds(const Renderer& renderer, const SceneSettin
         resolution = "; drawn at " + std::string(reflectionResolutionName(renderer.lastFrame().reflectionDivisor)) +
                      " resolution (" + std::to_string(reduced->width()) + "x" + std::to_string(reduced->height()) +
                      "), upsampled bilinearly at the water";
-    if (renderer.waterBoundsAvailable() && !scene.water.reflectionBounds)
+    if (renderer.paths().waterBoundsAvailable && !scene.water.reflectionBounds)
         return "reflection passes: whole screen, stencil-masked (--reflection-bounds off)" + resolution;
-    return "reflection passes: " + renderer.waterBoundsReason() + resolution;
+    return "reflection passes: " + renderer.paths().waterBoundsReason + resolution;
 }
 
 std::string describeLights(const Renderer& renderer) {
-    std::string text = "lights: " + std::to_string(renderer.lightsDrawn()) + ", path " + renderer.lightsPathReason() +
-                       ", method " + renderer.lightMethodReason();
-    if (renderer.lightsDropped() > 0)
-        text += "; WARNING: " + std::to_string(renderer.lightsDropped()) + " lights dropped (the ubo path holds " +
-                std::to_string(renderer.uboLights().maxLights()) + ")";
+    std::string text = "lights: " + std::to_string(renderer.paths().lightsDrawn) + ", path " + renderer.paths().lights.reason +
+                       ", method " + renderer.paths().lightMethod.reason;
+    if (renderer.paths().lightsDropped > 0)
+        text += "; WARNING: " + std::to_string(renderer.paths().lightsDropped) + " lights dropped (the ubo path holds " +
+                std::to_string(renderer.paths().uboLights.maxLights()) + ")";
     return text;
 }
 
@@ -328,7 +321,7 @@ std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSetting
         for (int i = 0; i < frames; ++i)
             for (size_t k = 0; k < count; ++k) {
                 renderer.setPipeline(pipelines[k]);
-                timed[k].push_back(renderer.renderFrameTimingPasses(scene));
+                timed[k].push_back(renderFrameTimingPasses(renderer, scene));
             }
     }
     renderer.setPipeline(active);

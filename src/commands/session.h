@@ -25,21 +25,8 @@ StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optiona
 // The context a command should make for these options: at most 3.3 with --force gl33.
 MaxGlVersion maxGlVersionFor(const SceneOptions& options);
 
-// What the context offers the renderer, measured once (with --force applied) and given to each
-// renderer whole: whether it has it and, where not, why; and the path and method the options force.
-struct RendererCapabilities {
-    struct Feature {
-        bool available = false;
-        std::string reason;
-    };
-    Feature ssbo, compute, clipControl, readOnlyDepth;
-    std::optional<LightsPath> forcedLightsPath;
-    std::optional<LightMethod> forcedLightMethod;
-};
+// What the context offers a renderer (frame/render_paths.h), measured once with --force applied.
 RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const SceneSettings& scene);
-// The one place the capabilities reach a renderer (the merge with a Renderer::setCapabilities
-// would move this into the renderer).
-void giveCapabilities(Renderer& renderer, const RendererCapabilities& capabilities);
 
 // Everything a command renders with, on the current context. Throws std::runtime_error with a
 // readable message when the shaders cannot be found (or OASIS_SHADER_DIR is bad) or the targets

@@ -15,7 +15,7 @@ bool masksUndrawn(const DebugView& view) {
 DrawnPixels drawnPixels(Renderer& renderer, const DebugView& view) {
     if (!masksUndrawn(view)) return {};
     // The info view's values: specular power, intensity, the flag bits (exact as a float).
-    const std::vector<float> info = renderer.readViewValues("info");
+    const std::vector<float> info = renderer.views().readValues("info");
     DrawnPixels drawn(info.size() / 4);
     for (size_t i = 0; i < drawn.size(); ++i) drawn[i] = (unsigned(info[i * 4 + 2]) & OASIS_SURFACE_SKY) == 0u;
     return drawn;

@@ -11,6 +11,8 @@
 #include "commands/view_mask.h"
 #include "debug/error_image.h"
 #include "frame/encoding_error.h"
+#include "frame/frame_readback.h"
+#include "frame/gpu_timer.h"
 
 namespace oasis {
 namespace window {
@@ -25,7 +27,7 @@ void showEncodingError(Renderer& renderer, const SceneSettings& scene, const Enc
                        WindowState& state) {
     if (renderer.targets().layout().name == "full") {
         state.errorViewSummary = view.name + " compares a layout against full: choose standard or compact (G)";
-        renderer.renderView("final");
+        renderer.views().render("final");
         return;
     }
     EncodingError error = measureEncodingError(renderer, scene, renderer.targets().layout());
@@ -35,7 +37,7 @@ void showEncodingError(Renderer& renderer, const SceneSettings& scene, const Enc
     std::snprintf(line, sizeof(line), "%s against full: median %.4g, 99%% %.4g, max %.4g over %ld surface pixels",
                   error.layout.c_str(), summary.median, summary.p99, summary.max, summary.count);
     state.errorViewSummary = line;
-    renderer.showImage(encodingErrorPicture(values, error.width, error.height, 0.0, summary.max > 0.0 ? summary.max : 1.0));
+    showImage(renderer, encodingErrorPicture(values, error.width, error.height, 0.0, summary.max > 0.0 ? summary.max : 1.0));
 }
 
 void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& inspector, const WindowComparison& off) {
@@ -45,30 +47,30 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
     // The values pass and its full-frame float read-back cost a frame's worth of bandwidth: only
     // while someone looks at the counts or asks for the values.
     if (view && (inspector.sectionOpen || controls.showValues())) {
-        std::vector<float> values = renderer.readViewValues(view->name);
+        std::vector<float> values = renderer.views().readValues(view->name);
         ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
         // As `oasis render` counts them: the sky's undrawn texels are not values (commands/view_mask.h).
         const DrawnPixels drawn = drawnPixels(renderer, *view);
         ValueStatistics statistics = valueStatistics(values, channel, &drawn);
         const FrameTargets& targets = renderer.targets();
         if (controls.showValues()) {
-            renderer.showImage(mapViewValues(values, targets.width(), targets.height(), channel,
+            showImage(renderer, mapViewValues(values, targets.width(), targets.height(), channel,
                                              rangeInUse(controls, statistics), controls.overlay, &drawn));
         } else if (((controls.overlay & kOverlayNan) && statistics.nan) ||
                    ((controls.overlay & kOverlayInfinity) && (statistics.positiveInfinity || statistics.negativeInfinity)) ||
                    ((controls.overlay & kOverlayNegative) && statistics.negative)) {
-            Image image = renderer.readDisplay();
+            Image image = readDisplay(renderer);
             paintOverlay(image, values, channel, controls.overlay, &drawn);
-            renderer.showImage(image);
+            showImage(renderer, image);
         }
         inspector.statistics = statistics;
     }
     // The overview's tiles get their overlays too, while the inspector section is open (13 reads).
     inspector.overviewCounts.clear();
     if (config.view == kOverviewName && inspector.sectionOpen && controls.overlay) {
-        Image image = renderer.readDisplay();
+        Image image = readDisplay(renderer);
         inspector.overviewCounts = overlayOverviewTiles(image, renderer, controls.overlay);
-        renderer.showImage(image);
+        showImage(renderer, image);
     }
     probeShownPixels(inspector, {{&renderer, ""}}, off, renderer.targets().width(), renderer.targets().height());
 }
@@ -108,8 +110,8 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         renderer.setPipeline(sides[s]->pipeline);
         renderer.setDepthConvention(depthConventions()[config.depthIndex]);
         renderer.configure(width, height, gbufferLayouts()[sides[s]->layoutIndex]);
-        renderer.setViewExposure(state.inspector.exposureStops);
-        renderer.setViewWaterScene(config.waterScene);
+        renderer.views().setExposure(state.inspector.exposureStops);
+        renderer.views().setWaterScene(config.waterScene);
         glFinish();
         auto start = std::chrono::steady_clock::now();
         if (c.passTimes && c.clock->gpuTimers) {
@@ -118,7 +120,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
             glFinish();
             *passes[s] = queries[s]->latest();
         } else if (c.passTimes) {
-            *passes[s] = renderer.renderFrameTimingPasses(scene);
+            *passes[s] = renderFrameTimingPasses(renderer, scene);
         } else {
             renderer.renderFrame(scene);
             glFinish();
@@ -127,8 +129,8 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         medians[s]->add(ms);
         state.frameMs += ms;
         // The comparison shows the table's views; an encoding-error view is a comparison of its own.
-        renderer.renderView(findEncodingErrorView(config.view) ? std::string("final") : config.view);
-        images[s] = renderer.readDisplay();
+        renderer.views().render(findEncodingErrorView(config.view) ? std::string("final") : config.view);
+        images[s] = readDisplay(renderer);
     }
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
     c.difference = compareImages(images[0], images[1]);
@@ -136,7 +138,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
     std::vector<DrawnSide> drawn = {{renderers[0], "A: " + c.a.label}, {renderers[1], "B: " + c.b.label}};
     probeInDepthWhenAsked(state.inspector, scene, drawn, c, width, height);
     Renderer& shown = *renderers[0];
-    shown.showImage(showsDifference(c.mode) ? differenceHeatmap(images[0], images[1])
+    showImage(shown, showsDifference(c.mode) ? differenceHeatmap(images[0], images[1])
                                             : splitImage(images[0], images[1], int(std::lround(c.divider * float(width)))));
     Inspector& inspector = state.inspector;
     inspector.statistics.reset();
@@ -160,12 +162,12 @@ void drawConfiguration(RenderSession& session, const Configuration& config, cons
     glFinish();
     state.frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     state.smoothedMs = state.smoothedMs == 0.0 ? state.frameMs : 0.9 * state.smoothedMs + 0.1 * state.frameMs;
-    renderer.setViewExposure(state.inspector.exposureStops);
-    renderer.setViewWaterScene(config.waterScene);
+    renderer.views().setExposure(state.inspector.exposureStops);
+    renderer.views().setWaterScene(config.waterScene);
     if (const EncodingErrorView* errorView = findEncodingErrorView(config.view))
         showEncodingError(renderer, scene, *errorView, state);
     else
-        renderer.renderView(config.view);
+        renderer.views().render(config.view);
     inspectFrame(renderer, config, state.inspector, state.comparison);
     renderer.present(width, height);
 }

@@ -77,11 +77,11 @@ void drawLightsPanel(const Renderer& renderer, SceneSettings& scene) {
     int choice = scene.lights.path ? 1 + int(*scene.lights.path) : 0;
     if (ImGui::Combo("light path", &choice, choices, 4))
         scene.lights.path = choice == 0 ? std::nullopt : std::optional<LightsPath>(LightsPath(choice - 1));
-    ImGui::TextWrapped("active: %s", renderer.lightsPathReason().c_str());
-    ImGui::TextWrapped("%d lights drawn; ubo holds %d x %d", renderer.lightsDrawn(), renderer.uboLights().blocks,
-                renderer.uboLights().capacity);
-    if (renderer.lightsDropped() > 0)
-        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.2f, 1.0f), "WARNING: %d lights dropped", renderer.lightsDropped());
+    ImGui::TextWrapped("active: %s", renderer.paths().lights.reason.c_str());
+    ImGui::TextWrapped("%d lights drawn; ubo holds %d x %d", renderer.paths().lightsDrawn, renderer.paths().uboLights.blocks,
+                renderer.paths().uboLights.capacity);
+    if (renderer.paths().lightsDropped > 0)
+        ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.2f, 1.0f), "WARNING: %d lights dropped", renderer.paths().lightsDropped);
 }
 
 // The depth convention asked for; the one in use and why when it differs (no clip control).
@@ -95,7 +95,7 @@ void drawDepthCombo(const Renderer& renderer, WindowState& state) {
         }
         ImGui::EndCombo();
     }
-    if (renderer.depthFellBack()) ImGui::TextWrapped("depth: %s", renderer.depthConventionReason().c_str());
+    if (renderer.paths().depthFellBack) ImGui::TextWrapped("depth: %s", renderer.paths().depthReason.c_str());
 }
 
 // Which scene the views show under the water (frame/view_fill.h), and what the view shows there.
@@ -106,7 +106,7 @@ void drawWaterSceneControl(const Renderer& renderer, Configuration& chosen) {
     if (ImGui::RadioButton("direct", &scene, 0)) chosen.waterScene = WaterScene::Direct;
     ImGui::SameLine();
     if (ImGui::RadioButton("mirrored", &scene, 1)) chosen.waterScene = WaterScene::Mirrored;
-    const ViewScene& shown = renderer.viewScene();
+    const ViewScene& shown = renderer.views().scene();
     if (const DebugView* view = findDebugView(chosen.view))
         ImGui::TextWrapped("%s", waterNote(*view, shown.description).c_str());
     else if (!shown.description.empty())

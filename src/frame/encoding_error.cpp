@@ -21,7 +21,7 @@ DecodedFrame decodedFrame(Renderer& renderer, const SceneSettings& scene, const 
     renderer.configure(renderer.targets().width(), renderer.targets().height(), layout);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(scene);
-    return {renderer.readViewValues("normal"), renderer.readViewValues("position"), renderer.readViewValues("info")};
+    return {renderer.views().readValues("normal"), renderer.views().readValues("position"), renderer.views().readValues("info")};
 }
 
 }  // namespace
@@ -61,7 +61,7 @@ EncodingError measureEncodingError(Renderer& renderer, const SceneSettings& scen
         error.normalDegrees[i] = float(glm::degrees(angle));
         double distance = glm::length(pFull - pLayout);
         error.positionUnits[i] = float(distance);
-        error.positionSteps[i] = float(distance / depthStepAt(renderer.depthConvention(), glm::length(pFull), nearPlane, farPlane));
+        error.positionSteps[i] = float(distance / depthStepAt(*renderer.paths().depth, glm::length(pFull), nearPlane, farPlane));
         ++error.surfaces;
     }
     return error;

@@ -39,7 +39,7 @@ FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSe
 
 // What `passes`, run after a frame to make `sinks` (the views' fill, the composite onto Radiance),
 // need the frame to leave: walking back through them by the same rule, the reads that reach
-// before the first of them. A view's frame is built for that (Renderer::setFrameSink).
+// before the first of them. A view's frame is built for that (FrameViews::setSink).
 std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                                   const std::vector<Resource>& sinks);
 

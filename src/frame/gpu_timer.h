@@ -38,6 +38,10 @@ struct TimingClock {
 // the wall times' sum (glFinish after each pass costs a little, so they never agree exactly; a
 // query that does not measure its pass moves whole passes' time about). Pure, for the unit tests.
 inline constexpr double kTimerDisagreement = 0.25;
+// The frame with glFinish after every pass: wall milliseconds per pass, in order. The
+// synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
+PassTimes renderFrameTimingPasses(Renderer& renderer, const SceneSettings& scene);
+
 TimingClock judgeTimerQueries(const PassTimes& queries, const PassTimes& wall);
 
 // The start-up check: without timer queries (GL_QUERY_COUNTER_BITS 0) the wall clock; else

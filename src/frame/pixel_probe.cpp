@@ -127,7 +127,7 @@ double srgbEncode(double linear) {
 // Which scene the G-buffer and depth hold at a water pixel, and why (frame/view_fill.h).
 std::string waterSceneAt(const PixelProbe& probe, const Renderer& renderer) {
     if ((probe.stencil & 0x7f) != kStencilWater) return {};
-    const ViewScene& shown = renderer.viewScene();
+    const ViewScene& shown = renderer.views().scene();
     std::string text = shown.description;
     if (shown.scene == WaterScene::Mirrored)
         text += probe.flags & OASIS_SURFACE_REFLECTED ? ": a mirrored surface (REFLECTED flag)"

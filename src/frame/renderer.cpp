@@ -27,40 +27,46 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 
     // Point lights: what the context offers decides the path and the UBO path's block size (a
-    // session replaces the availability with its --force-aware report: setSsboAvailable).
+    // session replaces the capabilities with its --force-aware report: setCapabilities).
     const gl::Capabilities caps = gl::measureCapabilities();
-    ssboAvailable_ = caps.ssboAvailable(&ssboMissingReason_);
+    RendererCapabilities& given = paths_.capabilities;
+    given.ssbo.available = caps.ssboAvailable(&ssboMissingReason_);
+    given.ssbo.reason = ssboMissingReason_;
+    given.forcedLightsPath = scene.lights.path;
+    given.forcedLightMethod = scene.lights.method;
     GLint maxBlockSize = 16384, maxVertexBlocks = 12, maxFragmentBlocks = 12;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
     glGetIntegerv(GL_MAX_VERTEX_UNIFORM_BLOCKS, &maxVertexBlocks);
     glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_BLOCKS, &maxFragmentBlocks);
-    uboLights_ = uboLightLayout(maxBlockSize, std::min(maxVertexBlocks, maxFragmentBlocks));
+    paths_.uboLights = uboLightLayout(maxBlockSize, std::min(maxVertexBlocks, maxFragmentBlocks));
     chooseWaterBounds();
     lightList_ = gl::createBuffer("point lights");  // named by its path once a frame picks one
     lightCount_ = gl::createBuffer("point light count");
     glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
-    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(std::max(kMaxLights, uboLights_.maxLights()) * sizeof(PointLight)),
+    glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(std::max(kMaxLights, paths_.uboLights.maxLights()) * sizeof(PointLight)),
                  nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, lightCount_.name());
     glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
-    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
-    computeAvailable_ = caps.computeAvailable(&computeReason_);
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
+    paths_.lights = chooseLightsPath(given.ssbo.available, scene.lights.path, ssboMissingReason_);
+    given.compute.available = caps.computeAvailable(&given.compute.reason);
+    paths_.lightMethod = chooseLightMethod(given.compute.available, scene.lights.method, given.compute.reason,
+                                          paths_.lights.path);
     // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
-    clipControlAvailable_ = caps.clipControlAvailable(&clipControlReason_);
-    readOnlyDepthAvailable_ = caps.readOnlyDepthAvailable(&readOnlyDepthReason_);
+    given.clipControl.available = caps.clipControlAvailable(&given.clipControl.reason);
+    given.readOnlyDepth.available = caps.readOnlyDepthAvailable(&given.readOnlyDepth.reason);
     setDepthConvention(standardDepthConvention());
 }
 
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
 // count, for .length()), as the UBO block array, and the count for the other two paths.
 void Renderer::uploadLights() {
-    lightsDropped_ = 0;
-    if (frame_.lightsPath == LightsPath::Ubo && int(frame_.lights.size()) > uboLights_.maxLights()) {
-        lightsDropped_ = int(frame_.lights.size()) - uboLights_.maxLights();
-        frame_.lights.resize(size_t(uboLights_.maxLights()));
+    paths_.lightsDropped = 0;
+    if (frame_.lightsPath == LightsPath::Ubo && int(frame_.lights.size()) > paths_.uboLights.maxLights()) {
+        paths_.lightsDropped = int(frame_.lights.size()) - paths_.uboLights.maxLights();
+        frame_.lights.resize(size_t(paths_.uboLights.maxLights()));
     }
+    paths_.lightsDrawn = int(frame_.lights.size());
     if (labelledLightsPath_ != frame_.lightsPath) {  // "point lights (ssbo)": what the shaders read it as
         gl::setLabel(lightList_, std::string("point lights (") + lightsPathName(frame_.lightsPath) + ")");
         labelledLightsPath_ = frame_.lightsPath;
@@ -72,12 +78,12 @@ void Renderer::uploadLights() {
     glBindBuffer(GL_UNIFORM_BUFFER, lightCount_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(count), count);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
-    GLsizeiptr blockBytes = GLsizeiptr(uboLights_.capacity) * GLsizeiptr(sizeof(PointLight));
-    for (int k = 0; k < uboLights_.blocks; ++k)
+    GLsizeiptr blockBytes = GLsizeiptr(paths_.uboLights.capacity) * GLsizeiptr(sizeof(PointLight));
+    for (int k = 0; k < paths_.uboLights.blocks; ++k)
         glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(kLightBlockFirstBinding + k), lightList_.name(), k * blockBytes,
                           blockBytes);
     glBindBufferBase(GL_UNIFORM_BUFFER, kLightCountBlockBinding, lightCount_.name());
-    if (ssboAvailable_) {
+    if (paths_.capabilities.ssbo.available) {
         // .length() is the bound range's size over 32 bytes; an empty list binds an empty range.
         if (bytes > 0)
             glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightStorageBinding, lightList_.name(), 0, bytes);
@@ -93,18 +99,9 @@ void Renderer::configure(int width, int height, const GBufferLayout& layout) {
         return;
     // Build the new targets before dropping the old: if allocation fails (too large, out of
     // memory) the renderer keeps working at its previous size.
-    auto replacement = std::make_unique<FrameTargets>(layout, *depthInUse_, width, height);
+    auto replacement = std::make_unique<FrameTargets>(layout, *paths_.depth, width, height);
     targets_ = std::move(replacement);
     forgetGBuffer();
-}
-
-void Renderer::setPlantAtlas(const PlantAtlas* atlas) {
-    plantAtlas_ = atlas;
-    debugViews_.setPlantAtlasTexture(atlas ? atlas->texture() : 0);
-    if (atlas)
-        vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows());
-    else
-        vegetationBuffers_.setAtlas(0, 1, 1);
 }
 
 PassContext Renderer::context() { return contextOver(*targets_, frame_); }
@@ -113,7 +110,7 @@ PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup&
     // Another renderer of the same context may have bound its own maps there since.
     shadowMaps_.bind();
     return PassContext{targets, shaders_, geometry_, frame, vegetationBuffers_,
-                       waterBoundsAvailable_ ? waterBounds_.name() : 0u, &shadowMaps_,
+                       paths_.waterBoundsAvailable ? waterBounds_.name() : 0u, &shadowMaps_,
                        frame_.waterBounded ? waterSeen_.name() : 0u};
 }
 
@@ -181,23 +178,8 @@ void Renderer::buildPrograms(const SceneSettings& scene, const std::string& view
                              marker);
     glEnable(GL_RASTERIZER_DISCARD);
     runFrame(scene, {}, {});
-    if (!view.empty()) renderView(view);
+    if (!view.empty()) views_.render(view);
     glDisable(GL_RASTERIZER_DISCARD);
-}
-
-std::vector<std::pair<std::string, double>> Renderer::renderFrameTimingPasses(const SceneSettings& scene) {
-    using Clock = std::chrono::steady_clock;
-    std::vector<std::pair<std::string, double>> times;
-    gl::beginFrame();
-    glFinish();
-    Clock::time_point start = Clock::now();
-    runFrame(scene, {}, [&](const Pass& pass) {
-        glFinish();
-        Clock::time_point now = Clock::now();
-        times.emplace_back(pass.name(), std::chrono::duration<double, std::milli>(now - start).count());
-        start = now;
-    });
-    return times;
 }
 
 void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefore,
@@ -210,14 +192,15 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     if (!sameGridDensity(scene.grid, geometry_.density())) geometry_ = SceneGeometry(scene.grid);
     frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth());
     frame_.positionFromDepth = targets_->layout().positionFromDepth();
-    frame_.waterBounded = waterBoundsAvailable_ && scene.water.reflectionBounds;
+    frame_.waterBounded = paths_.waterBoundsAvailable && scene.water.reflectionBounds;
     if (frame_.waterBounded)  // the shaders' copy of it: the mirrored billboards cull by the rectangle
         frame_.data.water.w = float(unsigned(frame_.data.water.w) | OASIS_WATER_BOUNDED_FLAG);
     prepareVegetation(scene);
-    lightsChoice_ = chooseLightsPath(ssboAvailable_, scene.lights.path, ssboMissingReason_);
-    frame_.lightsPath = lightsChoice_.path;
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, scene.lights.method, computeReason_, lightsChoice_.path);
-    frame_.lightMethod = lightMethodChoice_.method;
+    paths_.lights = chooseLightsPath(paths_.capabilities.ssbo.available, scene.lights.path, ssboMissingReason_);
+    frame_.lightsPath = paths_.lights.path;
+    paths_.lightMethod = chooseLightMethod(paths_.capabilities.compute.available, scene.lights.method,
+                                          paths_.capabilities.compute.reason, paths_.lights.path);
+    frame_.lightMethod = paths_.lightMethod.method;
     uploadLights();
     // The separate tone map stays for a frame stopped early (its targets shown as they were) and
     // when the deferred light volumes add to Radiance after LightingPass (it cannot write Final).
@@ -226,7 +209,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     frame_.toneMapFused = scene.work.fuseToneMap && stopBefore.empty() && !volumesAfterLighting;
     frame_.runsToEnd = stopBefore.empty();
     frame_.work = scene.work;
-    frame_.readOnlyDepth = readOnlyDepthAvailable_;
+    frame_.readOnlyDepth = paths_.capabilities.readOnlyDepth.available;
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());
@@ -262,44 +245,27 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
 
 FrameGraph Renderer::frameGraph() const { return pipelineOf(active_).graph(frame_, frameSinks_); }
 
-void Renderer::setFrameSink(const std::vector<std::string>& views) {
-    for (const std::string& name : views)
-        if (name != kOverviewName && !findDebugView(name))
-            throw std::invalid_argument("no debug view named '" + name + "' (views: " + debugViewNames() + ")");
-    sinkViews_ = views;
-}
-
 std::vector<Resource> Renderer::sinkOfFrame(bool stopped) const {
-    if (sinkViews_.empty() || stopped) return frameOutputs();
+    if (views_.sink_.empty() || stopped) return frameOutputs();
     // What the views read, walked back through what runs for them after the frame, last first:
     // the views' fill (ensureGBuffer), then the water laid onto Radiance (ensureRadiance).
     std::vector<Resource> reads;
     bool surfaces = false, radiance = false;
     for (const DebugView& view : debugViews()) {
-        if (std::find(sinkViews_.begin(), sinkViews_.end(), view.name) == sinkViews_.end() &&
-            std::find(sinkViews_.begin(), sinkViews_.end(), kOverviewName) == sinkViews_.end())
+        if (std::find(views_.sink_.begin(), views_.sink_.end(), view.name) == views_.sink_.end() &&
+            std::find(views_.sink_.begin(), views_.sink_.end(), kOverviewName) == views_.sink_.end())
             continue;
         for (const Resource& read : viewReads(view, targets_->layout())) reads.push_back(read);
         surfaces = surfaces || readsSceneSurfaces(view);
         radiance = radiance || view.source == ViewSource::Radiance;
     }
-    if (surfaces) reads = readsBefore(viewFill_.passes(viewWaterScene_, frame_), frame_, reads);
+    if (surfaces) reads = readsBefore(viewFill_.passes(views_.waterScene_, frame_), frame_, reads);
     if (radiance && frame_.toneMapFused) {
         FrameSetup separate = frame_;  // ensureRadiance runs the composite as the separate pass
         separate.toneMapFused = false;
         reads = readsBefore({&waterComposite_}, separate, reads);
     }
     return reads;
-}
-
-void Renderer::requireInSink(const std::string& viewName) const {
-    if (sinkViews_.empty() || std::find(sinkViews_.begin(), sinkViews_.end(), viewName) != sinkViews_.end() ||
-        std::find(sinkViews_.begin(), sinkViews_.end(), kOverviewName) != sinkViews_.end())
-        return;
-    std::string names;
-    for (const std::string& name : sinkViews_) names += (names.empty() ? "" : ", ") + name;
-    throw std::logic_error("the view " + viewName + " was not asked for: the frame was culled for " + names +
-                           " (Renderer::setFrameSink)");
 }
 
 void Renderer::prepareReducedReflection() {
@@ -359,11 +325,23 @@ void Renderer::ensureGBuffer() {
         fillStoppedFrame();
         return;
     }
-    if (gbufferHolds_ == viewWaterScene_) return;
+    if (gbufferHolds_ == views_.waterScene_) return;
     PassContext passContext = context();
     FrameClipControl clipControl(targets_->depth());
-    viewScene_ = viewFill_.run(passContext, viewWaterScene_);
-    gbufferHolds_ = viewWaterScene_;
+    views_.scene_ = viewFill_.run(passContext, views_.waterScene_);
+    gbufferHolds_ = views_.waterScene_;
+}
+
+void Renderer::fillSurfacesWithTheirDepth() {
+    // After a whole frame the water composite has written the water's depth over the mirrored
+    // scene the G-buffer holds there. A layout that rebuilds positions from depth reads them from
+    // those surfaces refilled with their own depth: the mirrored view fill, what the frame left.
+    if (targets_->layout().positionFromDepth() && stoppedBefore_.empty() && !gbufferHolds_) {
+        WaterScene asked = views_.waterScene_;
+        views_.waterScene_ = WaterScene::Mirrored;
+        ensureGBuffer();
+        views_.waterScene_ = asked;
+    }
 }
 
 void Renderer::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
@@ -377,7 +355,7 @@ void Renderer::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
 }
 
 void Renderer::fillStoppedFrame() {
-    viewScene_ = ViewScene{std::nullopt,
+    views_.scene_ = ViewScene{std::nullopt,
                            active_ == PipelineKind::Forward
                                ? "the direct scene's steps that ran before " + stoppedBefore_
                                : "what the frame left there before " + stoppedBefore_,
@@ -404,33 +382,6 @@ void Renderer::fillStoppedFrame() {
         }
     }
     stoppedGBufferCurrent_ = true;
-}
-
-void Renderer::renderView(const std::string& viewName) {
-    PassContext passContext = context();
-    const DebugView* view = findDebugView(viewName);
-    if (!view && viewName != kOverviewName)
-        throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
-    requireInSink(viewName);
-    // Only the views of Radiance ask for the water laid on: the final view (the window's every
-    // frame) keeps the fused frame's saving.
-    if (viewName == kOverviewName || view->source == ViewSource::Radiance) ensureRadiance();
-    if (viewName == kOverviewName || (view && readsSceneSurfaces(*view))) ensureGBuffer();
-    if (viewName == kOverviewName)
-        debugViews_.drawOverview(passContext, stencilPath_, viewScene_.scene ? waterSceneName(*viewScene_.scene) : "as left");
-    else
-        debugViews_.drawView(passContext, *view, stencilPath_);
-}
-
-std::vector<float> Renderer::readViewValues(const std::string& viewName) {
-    const DebugView* view = findDebugView(viewName);
-    if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
-                                           debugViewNames() + ")");
-    requireInSink(viewName);
-    if (view->source == ViewSource::Radiance) ensureRadiance();
-    if (readsSceneSurfaces(*view)) ensureGBuffer();
-    PassContext passContext = context();
-    return debugViews_.readValues(passContext, *view, stencilPath_);
 }
 
 void Renderer::renderFloor() {

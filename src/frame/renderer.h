@@ -1,7 +1,8 @@
 // The renderer: owns the shader library, the scene's GPU data, the frame targets, both pipelines
 // (built once; switching only changes which runs) and the debug views. The window app, the
 // headless commands and the tests all drive this same object. Its choices from what the context
-// offers (depth convention, lights path, water bounds, light method) are in renderer_choices.cpp.
+// offers (depth convention, lights path, water bounds, light method) are in renderer_choices.cpp;
+// what its frames leave is read back with frame/frame_readback.h.
 #pragma once
 #include <memory>
 #include <optional>
@@ -9,7 +10,9 @@
 #include <vector>
 
 #include "debug/debug_view_pass.h"
+#include "frame/frame_views.h"
 #include "frame/pipeline.h"
+#include "frame/render_paths.h"
 #include "frame/view_fill.h"
 #include "passes/floor_pass.h"
 #include "passes/present_pass.h"
@@ -34,73 +37,27 @@ public:
     // Reallocates the targets when the size or layout changes; scene data is kept. Throws
     // std::runtime_error (naming the size) when the targets cannot be made, keeping the old ones.
     void configure(int width, int height, const GBufferLayout& layout);
+    // What the context offers (frame/render_paths.h), given once and whole: replaces the
+    // constructor's own measure (a session's report honours --force). Rechooses the paths in
+    // order: the lights' path and the water's bounds, the light method, the depth convention
+    // (reallocating the targets when the one in use changes), the read-only depth.
+    void setCapabilities(const RendererCapabilities& capabilities);
     // The depth convention (render/depth_convention.h) asked for; reversed-z needs glClipControl
-    // (GL 4.5 / GL_ARB_clip_control) and falls back to standard without it. Reallocates the targets
-    // when the convention in use changes. depthConvention() is the one in use, the reason says why.
+    // and falls back to standard without it. Reallocates the targets when the convention in use
+    // changes; paths() says which is in use and why.
     void setDepthConvention(const DepthConvention& requested);
-    const DepthConvention& depthConvention() const { return *depthInUse_; }
-    const std::string& depthConventionReason() const { return depthReason_; }
-    bool depthFellBack() const { return depthInUse_ != depthRequested_; }
-    // The session's capability report decides (it honours --force no-clip-control); the
-    // constructor's default asks the context directly.
-    void setClipControlAvailable(bool available, const std::string& reason);
+    // The paths chosen from the capabilities and the last frame's scene, with their reasons.
+    const RenderPaths& paths() const { return paths_; }
     void setPipeline(PipelineKind kind) { active_ = kind; }
     PipelineKind pipeline() const { return active_; }
     // The last frame's graph: its pipeline's passes, which ran and why the others were culled.
     FrameGraph frameGraph() const;
-    // What the frames after this are looked at through (their sink): the views named (table
-    // names or "overview"), and nothing else of them; empty (the default): anything, the whole
-    // frame (frameOutputs()). A view's frame runs only the passes whose writes reach what the
-    // view reads, through what runs after the frame for it (the composite onto Radiance, the
-    // views' fill). A frame stopped early keeps the whole frame's sink. renderView and
-    // readViewValues of a view not named throw std::logic_error.
-    void setFrameSink(const std::vector<std::string>& views);
-    const std::vector<std::string>& frameSink() const { return sinkViews_; }
-    void setStencilViewPath(StencilViewPath path) { stencilPath_ = path; }
-    StencilViewPath stencilViewPath() const { return stencilPath_; }
-    // The plant atlas the atlas view shows; the caller keeps it alive (nullptr: the view is black).
-    void setPlantAtlas(const PlantAtlas* atlas);
-    // The HDR views' (radiance, reflection-raw) exposure, in stops.
-    void setViewExposure(float stops) { debugViews_.setExposureStops(stops); }
-    float viewExposure() const { return debugViews_.exposureStops(); }
-    const PlantAtlas* plantAtlas() const { return plantAtlas_; }
+    // The debug views of the last frame (frame/frame_views.h): what they are drawn with, which the
+    // frames are culled for, drawing and reading one.
+    FrameViews& views() { return views_; }
+    const FrameViews& views() const { return views_; }
     // The plants placed around the last frame's camera and what that frame drew of them.
     const VegetationField& vegetation() const { return vegetationField_; }
-    const VegetationStats& vegetationStats() const { return vegetationField_.stats(); }
-    // How shaders read the point lights, decided each frame from SceneSettings::lights.path (forced)
-    // or else the context (SSBOs present or not); a forced SSBO path the context lacks falls back
-    // to ubo. The path and the reason of the last frame (of construction before any frame).
-    LightsPath lightsPath() const { return lightsChoice_.path; }
-    const std::string& lightsPathReason() const { return lightsChoice_.reason; }
-    bool ssboAvailable() const { return ssboAvailable_; }
-    // The session's capability report decides (it honours --force no-ssbo); the constructor's
-    // default asks the context directly.
-    void setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced);
-    const UboLightLayout& uboLights() const { return uboLights_; }
-    // Whether the reflection's passes can be bounded to the visible water (storage blocks in vertex
-    // and fragment shaders, five clip distances: follows setSsboAvailable), and why (not).
-    bool waterBoundsAvailable() const { return waterBoundsAvailable_; }
-    const std::string& waterBoundsReason() const { return waterBoundsReason_; }
-    // The last frame's rectangle of visible water in pixels (x0, y0, x1, y1 inclusive, rows bottom-up;
-    // empty: x0 > x1) as the GPU recorded it; reads it back (a stall: for tests and tools).
-    glm::ivec4 readWaterBounds() const;
-    // How the deferred pipeline adds the lights (render/light_method.h), decided each frame from
-    // SceneSettings::lights.method and whether compute shaders (with SSBOs) exist; tiled asked for
-    // without them falls back to volumes. The method and the reason of the last frame.
-    LightMethod lightMethod() const { return lightMethodChoice_.method; }
-    const std::string& lightMethodReason() const { return lightMethodChoice_.reason; }
-    bool computeAvailable() const { return computeAvailable_; }
-    // Whether the compact lighting that samples depth in place may test against that target too
-    // (Capabilities::readOnlyDepthAvailable; the session's report replaces the context's answer).
-    bool readOnlyDepthAvailable() const { return readOnlyDepthAvailable_; }
-    const std::string& readOnlyDepthReason() const { return readOnlyDepthReason_; }
-    void setReadOnlyDepthAvailable(bool available, const std::string& reason);
-    // The session's capability report decides (it honours --force no-compute, no-ssbo, gl33).
-    void setComputeAvailable(bool available, const std::string& reason,
-                             const std::optional<LightMethod>& forced = std::nullopt);
-    // Lights the last frame drew, and how many the UBO path had to drop (0 on the SSBO paths).
-    int lightsDrawn() const { return int(frame_.lights.size()); }
-    int lightsDropped() const { return lightsDropped_; }
 
     // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
     // A scene whose terrain grid density differs from the last frame's rebuilds the grid first.
@@ -111,21 +68,12 @@ public:
     // by running them with GL_RASTERIZER_DISCARD: a frame of its own for capture tools, so the
     // frames after it hold drawing and no shader compiles. Costs the frame's vertex work.
     void buildPrograms(const SceneSettings& scene, const std::string& view);
-    // The same frame with glFinish after every pass: wall milliseconds per pass, in order. The
-    // synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
-    std::vector<std::pair<std::string, double>> renderFrameTimingPasses(const SceneSettings& scene);
     // The frame, calling `afterEach` after every pass that ran (frame/gpu_timer.h's queries).
     void renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach);
-    // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
-    // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
-    void renderView(const std::string& viewName);
-    // The numbers behind a view (not the overview) of the last frame: its viewValue() per pixel,
-    // RGBA floats, bottom row first; the table's `values` name the channels.
-    std::vector<float> readViewValues(const std::string& viewName);
     // Makes the G-buffer, depth and stencil hold the last frame's surfaces with the water scene the
     // views ask for (frame/view_fill.h): what the views, the probe and the encoding error read.
     // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
-    // that ran). viewScene() says what the views show at water pixels and why.
+    // that ran). views().scene() says what the views show at water pixels and why.
     void ensureGBuffer();
     // The last whole frame's surfaces drawn unrounded: the view fill of `scene` run into `exact`
     // (targets of the frame's size, depth convention and a float layout) instead of the G-buffer.
@@ -135,9 +83,6 @@ public:
     // under the water there; this lays the water onto Radiance as the separate pass would have
     // (the radiance view, the probe, readTarget). Once per frame, and only when something asks.
     void ensureRadiance();
-    void setViewWaterScene(WaterScene scene) { viewWaterScene_ = scene; }
-    WaterScene viewWaterScene() const { return viewWaterScene_; }
-    const ViewScene& viewScene() const { return viewScene_; }
     // The timing floor (passes/floor_pass.h) at the current size and layout; overwrites the targets.
     void renderFloor();
     // Shows the Display target in the bound window's framebuffer of the given size.
@@ -151,22 +96,15 @@ public:
     const SceneGeometry& geometry() const { return geometry_; }
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
 
-    Image readDisplay() const;
-    // Puts an image of the frame's size (top row first) into Display, e.g. a view's values mapped
-    // by the view controls on the CPU, for present() to show.
-    void showImage(const Image& image);
-    // A colour target as RGBA floats, bottom row first (GL order); throws std::invalid_argument
-    // for a target the layout does not store.
-    std::vector<float> readTarget(Target target);
-    // The G-buffer's surface positions as lighting reads them (stored, or reconstructed from the
-    // depth-stencil target's depth, refilled where the water's depth covers the mirrored scene:
-    // after a whole frame, the G-buffer's own surfaces):
-    // camera-relative xyz, w 1; 0 where the SKY flag is set. RGBA floats, bottom row first.
-    std::vector<float> readSurfacePositions();
-    std::vector<float> readDepth() const;
-    std::vector<uint8_t> readStencil() const;
 
 private:
+    // frame/frame_readback.cpp's way in (defined there alone): the water's bounds buffer, the
+    // surfaces' float target and their refill with their own depth.
+    friend struct ReadbackAccess;
+    friend class FrameViews;  // its views draw from the frame's targets, context and fill
+    // After a whole frame, a layout that rebuilds positions from depth gets the mirrored view fill
+    // (the water's depth covers the mirrored scene there): the G-buffer's own surfaces.
+    void fillSurfacesWithTheirDepth();
     PassContext context();
     PassContext contextOver(const FrameTargets& targets, const FrameSetup& frame);
     void prepareVegetation(const SceneSettings& scene);
@@ -175,7 +113,6 @@ private:
     void prepareReducedReflection();
     void uploadLights();
     std::vector<Resource> sinkOfFrame(bool stopped) const;
-    void requireInSink(const std::string& viewName) const;
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
@@ -189,52 +126,34 @@ private:
     gl::Buffer reflectionUniforms_;                     // frame data for those targets' size
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
-    StencilViewPath stencilPath_ = StencilViewPath::Texturing;
     const PlantAtlas* plantAtlas_ = nullptr;
     VegetationField vegetationField_;
     VisibleWaterBound visibleWater_;  // the dry land the reflection's plant chunks are culled against
     std::optional<TerrainGridPlacement> lastGrid_;  // the last frame's grid: is the camera standing still?
     VegetationDrawList vegetationList_;
     VegetationBuffers vegetationBuffers_;
-    DebugViewPass debugViews_;
+    FrameViews views_{*this};  // where the debug views' pass was: GL objects made in the same order
     FloorPass floor_;
     WaterCompositePass waterComposite_;  // ensureRadiance's separate composite
     PresentPass present_;
     ShadowMaps shadowMaps_;  // the sun's cascades, bound to their unit in every pass context
-    FloatReadback positionsReadback_;  // readSurfacePositions' float target
+    FloatReadback positionsReadback_;  // readSurfacePositions' float target (frame/frame_readback.h)
     gl::Buffer frameUniforms_;
     gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
     std::optional<LightsPath> labelledLightsPath_;  // the path lightList_'s label names
-    bool ssboAvailable_ = false;
     std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
     gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)
     gl::Query waterSeen_;     // did the water mask pass a sample? (the reflection renders only then)
-    bool waterBoundsAvailable_ = false;
-    std::string waterBoundsReason_;
-    void chooseWaterBounds();  // from ssboAvailable_ and the context's limits; sets the context defines
-    UboLightLayout uboLights_;
-    LightsPathChoice lightsChoice_;
-    bool computeAvailable_ = false;
-    std::string computeReason_;
-    LightMethodChoice lightMethodChoice_;
-    int lightsDropped_ = 0;
+    void chooseWaterBounds();  // from the SSBOs and the context's limits; sets the context defines
+    RenderPaths paths_;
     FrameSetup frame_;
     const DepthConvention* depthRequested_ = &standardDepthConvention();
-    const DepthConvention* depthInUse_ = &standardDepthConvention();
-    bool clipControlAvailable_ = false;
-    std::string clipControlReason_;
-    bool readOnlyDepthAvailable_ = false;
-    std::string readOnlyDepthReason_;
-    std::string depthReason_;
     ViewFill viewFill_;
-    WaterScene viewWaterScene_ = WaterScene::Direct;
     std::optional<WaterScene> gbufferHolds_;  // the fill the G-buffer holds for the last frame, if any
-    ViewScene viewScene_;
     std::string stoppedBefore_;  // the pass the last frame stopped before, "" for a whole frame
     bool stoppedGBufferCurrent_ = false;  // a stopped frame's G-buffer already holds what it reached
     std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
     bool radianceAwaitsWater_ = false;  // a fused frame's composite has not been laid onto Radiance
-    std::vector<std::string> sinkViews_;  // setFrameSink's views; empty: the whole frame
     std::vector<Resource> frameSinks_ = frameOutputs();  // the last frame's sink
 };
 

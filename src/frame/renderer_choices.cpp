@@ -1,5 +1,6 @@
-// The renderer's choices from what the context offers (frame/renderer.h): the depth convention,
-// the lights' path, the water's bounds and the light method, each with the reason it was made.
+// The renderer's choices from what the context offers (frame/renderer.h, frame/render_paths.h):
+// the depth convention, the lights' path, the water's bounds and the light method, each with the
+// reason it was made.
 #include "frame/renderer.h"
 
 #include <epoxy/gl.h>
@@ -9,14 +10,15 @@
 
 namespace oasis {
 
-void Renderer::setReadOnlyDepthAvailable(bool available, const std::string& reason) {
-    readOnlyDepthAvailable_ = available;
-    readOnlyDepthReason_ = reason;
-}
-
-void Renderer::setClipControlAvailable(bool available, const std::string& reason) {
-    clipControlAvailable_ = available;
-    clipControlReason_ = reason;
+void Renderer::setCapabilities(const RendererCapabilities& capabilities) {
+    // In the order the session gave them one by one: the light method follows the lights' path.
+    RendererCapabilities& given = paths_.capabilities;
+    given = capabilities;
+    if (!given.ssbo.available) ssboMissingReason_ = given.ssbo.reason;
+    paths_.lights = chooseLightsPath(given.ssbo.available, given.forcedLightsPath, ssboMissingReason_);
+    chooseWaterBounds();
+    paths_.lightMethod = chooseLightMethod(given.compute.available, given.forcedLightMethod, given.compute.reason,
+                                          paths_.lights.path);
     setDepthConvention(*depthRequested_);
 }
 
@@ -25,33 +27,28 @@ void Renderer::setDepthConvention(const DepthConvention& requested) {
     std::string reason;
     if (!requested.needsClipControl())
         reason = requested.name + " (OpenGL's default clip control)";
-    else if (clipControlAvailable_)
-        reason = requested.name + " (" + clipControlReason_ + ")";
+    else if (paths_.capabilities.clipControl.available)
+        reason = requested.name + " (" + paths_.capabilities.clipControl.reason + ")";
     else {
         use = &standardDepthConvention();
-        reason = use->name + " (" + requested.name + " was asked for but " + clipControlReason_ + ")";
+        reason = use->name + " (" + requested.name + " was asked for but " + paths_.capabilities.clipControl.reason + ")";
     }
-    if (use != depthInUse_ && targets_) {
+    if (use != paths_.depth && targets_) {
         // Built before anything changes: a failed allocation throws and keeps the old targets,
         // convention and reason.
         targets_ = std::make_unique<FrameTargets>(targets_->layout(), *use, targets_->width(), targets_->height());
         forgetGBuffer();
     }
     depthRequested_ = &requested;
-    depthReason_ = std::move(reason);
-    depthInUse_ = use;
-}
-
-void Renderer::setSsboAvailable(bool available, const std::string& reason, const std::optional<LightsPath>& forced) {
-    ssboAvailable_ = available;
-    if (!available) ssboMissingReason_ = reason;
-    lightsChoice_ = chooseLightsPath(ssboAvailable_, forced, ssboMissingReason_);
-    chooseWaterBounds();
+    paths_.depthReason = std::move(reason);
+    paths_.depth = use;
+    paths_.depthFellBack = use != &requested;
 }
 
 void Renderer::chooseWaterBounds() {
+    const bool ssbo = paths_.capabilities.ssbo.available;
     GLint vertexBlocks = 0, fragmentBlocks = 0, clipDistances = 0;
-    if (ssboAvailable_) {
+    if (ssbo) {
         glGetIntegerv(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, &vertexBlocks);
         glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
     }
@@ -59,40 +56,34 @@ void Renderer::chooseWaterBounds() {
     // GLSL 4.30's own storage blocks, atomics on them and early fragment tests: the extensions that
     // bring them to older GLSL (softpipe's 3.30) are not worth a second spelling of the shader.
     const bool glsl430 = epoxy_gl_version() >= 43;
-    waterBoundsAvailable_ = ssboAvailable_ && glsl430 && vertexBlocks >= 1 && fragmentBlocks >= 1 && clipDistances >= 5;
-    if (waterBoundsAvailable_)
-        waterBoundsReason_ = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances; "
+    paths_.waterBoundsAvailable = ssbo && glsl430 && vertexBlocks >= 1 && fragmentBlocks >= 1 && clipDistances >= 5;
+    if (paths_.waterBoundsAvailable)
+        paths_.waterBoundsReason = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances; "
                              "skipped where no water is seen: the water mask's occlusion query, conditional rendering)";
-    else if (!ssboAvailable_)
-        waterBoundsReason_ = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
+    else if (!ssbo)
+        paths_.waterBoundsReason = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
     else if (!epoxy_is_desktop_gl())
-        waterBoundsReason_ = "whole screen, stencil-masked (not on OpenGL ES yet: the bounds' storage block is "
+        paths_.waterBoundsReason = "whole screen, stencil-masked (not on OpenGL ES yet: the bounds' storage block is "
                              "bound by name, which ES cannot do)";
     else if (!glsl430)
-        waterBoundsReason_ = "whole screen, stencil-masked (needs GL 4.3: storage blocks, their atomics and early "
+        paths_.waterBoundsReason = "whole screen, stencil-masked (needs GL 4.3: storage blocks, their atomics and early "
                              "fragment tests in GLSL 4.30; this context is " + std::to_string(epoxy_gl_version() / 10) +
                              "." + std::to_string(epoxy_gl_version() % 10) + ")";
     else
-        waterBoundsReason_ = "whole screen, stencil-masked (storage blocks in vertex/fragment shaders " +
+        paths_.waterBoundsReason = "whole screen, stencil-masked (storage blocks in vertex/fragment shaders " +
                              std::to_string(vertexBlocks) + "/" + std::to_string(fragmentBlocks) +
                              ", clip distances " + std::to_string(clipDistances) + "; need 1/1 and 5)";
-    if (waterBoundsAvailable_ && !waterBounds_.name()) {
+    if (paths_.waterBoundsAvailable && !waterBounds_.name()) {
         waterBounds_ = gl::createBuffer("visible water rectangle");
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
         glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * sizeof(GLint), nullptr, GL_DYNAMIC_DRAW);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
         waterSeen_ = gl::createQuery(GL_ANY_SAMPLES_PASSED, "water seen (water mask's samples)");
     }
-    std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(uboLights_.capacity),
-                                        "LIGHTS_UBO_BLOCKS " + std::to_string(uboLights_.blocks)};
-    if (waterBoundsAvailable_) defines.push_back("WATER_BOUNDS 1");
+    std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(paths_.uboLights.capacity),
+                                        "LIGHTS_UBO_BLOCKS " + std::to_string(paths_.uboLights.blocks)};
+    if (paths_.waterBoundsAvailable) defines.push_back("WATER_BOUNDS 1");
     if (defines != shaders_.contextDefines()) shaders_.setContextDefines(defines);
-}
-
-void Renderer::setComputeAvailable(bool available, const std::string& reason, const std::optional<LightMethod>& forced) {
-    computeAvailable_ = available;
-    computeReason_ = reason;
-    lightMethodChoice_ = chooseLightMethod(computeAvailable_, forced, computeReason_, lightsChoice_.path);
 }
 
 }  // namespace oasis

@@ -162,7 +162,7 @@ public:
             renderer_.fillExactSurfaces(*exact_, scene);
             return *exact_;
         }
-        renderer_.setViewWaterScene(scene);
+        renderer_.views().setWaterScene(scene);
         renderer_.ensureGBuffer();
         return renderer_.targets();
     }
@@ -184,7 +184,7 @@ std::vector<ShadedSurface> probeShading(Renderer& renderer, const PixelProbe& pr
     const int glX = probe.x, glY = renderer.targets().height() - 1 - probe.y;
     const bool water = (probe.stencil & 0x7f) == kStencilWater;
     const bool mirrored = water && renderer.lastFrame().reflectionsActive;
-    const WaterScene viewScene = renderer.viewWaterScene();
+    const WaterScene viewScene = renderer.views().waterScene();
     std::vector<ShadedSurface> shading;
 
     ShadedSurfaces surfaces(renderer);
@@ -202,7 +202,7 @@ std::vector<ShadedSurface> probeShading(Renderer& renderer, const PixelProbe& pr
         shading.push_back(groupTerms(direct, Group::Water, "water",
                                      "the water's surface over the direct scene (the frame's Radiance after the composite)"));
     shading.push_back(groupTerms(direct, Group::ToneMap, "tone_map", "Radiance to the displayed colour (Final)"));
-    renderer.setViewWaterScene(viewScene);
+    renderer.views().setWaterScene(viewScene);
     return shading;
 }
 

@@ -41,7 +41,7 @@ public:
     // reflections; without them the direct scene is filled and the result says so).
     ViewScene run(PassContext& context, WaterScene scene) const;
     // The passes run() runs for `scene` in `frame` (the direct ones where the frame has no
-    // mirrored scene): what a view's frame is culled against (Renderer::setFrameSink).
+    // mirrored scene): what a view's frame is culled against (FrameViews::setSink).
     std::vector<const Pass*> passes(WaterScene scene, const FrameSetup& frame) const;
     // The deferred steps of the direct scene that fill a stopped forward frame's G-buffer
     // (Renderer::fillStoppedFrame runs those whose forward step ran).

@@ -1,6 +1,7 @@
 // Forward and deferred agree: PSNR of the final images (full layout >= 55 dB, standard and compact >= 45 dB)
 // for the default frame at 1280x720 (it shows the lake and plants), five hard poses, three water
 // poses and a meadow at 320x180, all with vegetation, and every image has content.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -23,8 +24,8 @@ protected:
             renderer.configure(width, height, layoutNamed(threshold.layout));
             Image forward = renderFinal(renderer, pose.scene, PipelineKind::Forward);
             Image deferred = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
-            std::vector<float> albedo = renderer.readTarget(Target::Albedo);  // the deferred frame's
-            std::vector<uint8_t> stencil = renderer.readStencil();
+            std::vector<float> albedo = readTarget(renderer, Target::Albedo);  // the deferred frame's
+            std::vector<uint8_t> stencil = readStencil(renderer);
             double waterShare = double(std::count(stencil.begin(), stencil.end(), kStencilWater)) / double(stencil.size());
             double plantShare = double(std::count(stencil.begin(), stencil.end(), kStencilPlant)) / double(stencil.size());
             dumpImage("agreement-" + pose.name + "-" + threshold.layout + "-forward", forward);

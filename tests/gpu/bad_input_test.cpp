@@ -2,6 +2,7 @@
 // kMaxTargetBytes, throw naming the size before anything is allocated (and the renderer recovers),
 // a 1x1 frame renders in both pipelines without NaN, and a shader reload with a broken file keeps
 // the previous programs (same image) and names the file; restoring it reloads cleanly.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 #include "shader_dir_copy.h"
 
@@ -95,13 +96,13 @@ TEST_F(BadInput, OneByOneFrameRendersInBothPipelinesWithoutNaN) {
             SCOPED_TRACE(pose.name + " " + layout);
             renderer.configure(1, 1, layoutNamed(layout));
             Image forward = renderFinal(renderer, pose.scene, PipelineKind::Forward);
-            EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Final)), 0);
-            EXPECT_EQ(countNonFinite(renderer.readDepth()), 0);
+            EXPECT_EQ(countNonFinite(readTarget(renderer, Target::Final)), 0);
+            EXPECT_EQ(countNonFinite(readDepth(renderer)), 0);
             Image deferred = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
-            const std::vector<uint8_t> stencil = renderer.readStencil();
+            const std::vector<uint8_t> stencil = readStencil(renderer);
             for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::Final})
-                EXPECT_EQ(countNonFiniteWritten(renderer.readTarget(target), target, stencil, false), 0) << targetName(target);
-            EXPECT_EQ(countNonFinite(renderer.readDepth()), 0);
+                EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, stencil, false), 0) << targetName(target);
+            EXPECT_EQ(countNonFinite(readDepth(renderer)), 0);
             ASSERT_EQ(forward.width, 1);
             ASSERT_EQ(deferred.height, 1);
             // The one pixel is a real colour (opaque, not black) and the pipelines agree on it.
@@ -109,8 +110,8 @@ TEST_F(BadInput, OneByOneFrameRendersInBothPipelinesWithoutNaN) {
             EXPECT_GT(int(forward.rgba[0]) + forward.rgba[1] + forward.rgba[2], 30) << "black 1x1 frame";
             EXPECT_LE(compareImages(forward, deferred).maxAbs, 3);
             // Views and the overview (tiles smaller than a pixel) must not fail either.
-            for (const DebugView& view : debugViews()) renderer.renderView(view.name);
-            renderer.renderView(kOverviewName);
+            for (const DebugView& view : debugViews()) renderer.views().render(view.name);
+            renderer.views().render(kOverviewName);
             EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
         }
     }
@@ -136,8 +137,8 @@ TEST_F(BadInput, UnknownViewAndPassNamesThrowInvalidArgument) {
             ADD_FAILURE() << what << " threw something other than std::invalid_argument: " << error.what();
         }
     };
-    expectInvalid([&] { renderer.renderView("no-such-view"); }, "reflection", "renderView(\"no-such-view\")");
-    expectInvalid([&] { renderer.renderView(""); }, "final", "renderView(\"\")");
+    expectInvalid([&] { renderer.views().render("no-such-view"); }, "reflection", "renderView(\"no-such-view\")");
+    expectInvalid([&] { renderer.views().render(""); }, "final", "renderView(\"\")");
     expectInvalid([&] { renderer.renderFrame(pose.scene, "NoSuchPass"); }, "WaterCompositePass",
                   "renderFrame(stopBefore \"NoSuchPass\")");
     expectInvalid([&] { renderer.renderFrame(pose.scene, "SkyPass.forward"); }, "LightingPass",

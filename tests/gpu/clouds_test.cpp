@@ -3,6 +3,7 @@
 // origin and after long run times (the cloud layers are detail noise around the camera's exact
 // coordinates). Where a test needs to know where the clouds are it asks the CPU twin of the sky
 // (sky_model.cpp), which Sky.DrawnSkyIsTheCpuTwinCloudsIncluded holds to the drawn sky.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 #include "sky_model.h"
 
@@ -23,10 +24,10 @@ class Clouds : public GpuTest {
 protected:
     SkyPixels sky(Renderer& renderer, const SceneSettings& scene, Image* out = nullptr) {
         renderer.renderFrame(scene);
-        renderer.renderView("final");
-        Image image = renderer.readDisplay();  // rows top first
+        renderer.views().render("final");
+        Image image = readDisplay(renderer);  // rows top first
         EXPECT_TRUE(hasContent(image));
-        const std::vector<uint8_t> stencil = renderer.readStencil();  // rows bottom first
+        const std::vector<uint8_t> stencil = readStencil(renderer);  // rows bottom first
         SkyPixels s;
         for (int y = 0; y < kHeight; ++y)
             for (int x = 0; x < kWidth; ++x) {
@@ -106,8 +107,8 @@ std::vector<glm::dvec3> skyRadianceWhere(Renderer& renderer, const SceneSettings
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
     const FrameData& f = renderer.lastFrame().data;
-    const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
-    const std::vector<uint8_t> stencil = renderer.readStencil();
+    const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
+    const std::vector<uint8_t> stencil = readStencil(renderer);
     std::vector<glm::dvec3> kept;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x)

@@ -112,7 +112,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
-    const std::vector<uint8_t> stencil = renderer.readStencil();
+    const std::vector<uint8_t> stencil = readStencil(renderer);
     auto inWater = [&](int x, int yUp) { return stencil[size_t(yUp) * kWidth + size_t(x)] == kStencilWater; };
     const int waterPixels = int(std::count(stencil.begin(), stencil.end(), kStencilWater));
     ASSERT_GT(waterPixels, kWidth * kHeight / 20) << "the default frame should show the lake";
@@ -124,7 +124,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
         Image deferred = renderView(renderer, pose.scene, PipelineKind::Deferred, name);
         renderer.renderFrame(other.scene);  // leave a different deferred frame in the G-buffer
         Image forward = renderView(renderer, pose.scene, PipelineKind::Forward, name);
-        EXPECT_TRUE(renderer.readStencil() == stencil) << "forward stencil differs from deferred";
+        EXPECT_TRUE(readStencil(renderer) == stencil) << "forward stencil differs from deferred";
         dumpImage("view-" + name + "-deferred", deferred);
         dumpImage("view-" + name + "-forward", forward);
         EXPECT_TRUE(hasContent(deferred)) << "deferred";
@@ -166,10 +166,10 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
             EXPECT_EQ(difference.maxAbs, 0) << "forward and deferred show different " << name;
             EXPECT_EQ(compareImages(deferredOff, forward).maxAbs, 0)
                 << "forward " << name << " differs from deferred with reflections off";
-            renderer.setViewWaterScene(WaterScene::Mirrored);
+            renderer.views().setWaterScene(WaterScene::Mirrored);
             Image mirrored = renderView(renderer, pose.scene, PipelineKind::Deferred, name);
             Image mirroredForward = renderView(renderer, pose.scene, PipelineKind::Forward, name);
-            renderer.setViewWaterScene(WaterScene::Direct);
+            renderer.views().setWaterScene(WaterScene::Direct);
             DifferingPixels versusDirect = differingPixels(mirrored, deferred, inWater);
             EXPECT_EQ(versusDirect.elsewhere, 0) << "the mirrored scene changed " << name << " outside the water";
             EXPECT_GT(versusDirect.where, 0) << "the mirrored scene shows the direct one in the water";
@@ -190,16 +190,16 @@ TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
     Image before = renderView(renderer, pose.scene, PipelineKind::Forward, "final");
-    std::vector<float> depthBefore = renderer.readDepth();
-    std::vector<uint8_t> stencilBefore = renderer.readStencil();
+    std::vector<float> depthBefore = readDepth(renderer);
+    std::vector<uint8_t> stencilBefore = readStencil(renderer);
     ASSERT_TRUE(hasContent(before));
-    renderer.renderView("albedo");
-    ASSERT_TRUE(hasContent(renderer.readDisplay()));
-    renderer.renderView("final");
-    Image after = renderer.readDisplay();
+    renderer.views().render("albedo");
+    ASSERT_TRUE(hasContent(readDisplay(renderer)));
+    renderer.views().render("final");
+    Image after = readDisplay(renderer);
     EXPECT_EQ(compareImages(before, after).maxAbs, 0) << "the forward frame's Final changed";
-    EXPECT_TRUE(renderer.readStencil() == stencilBefore) << "the forward frame's stencil changed";
-    const std::vector<float> depthAfter = renderer.readDepth();
+    EXPECT_TRUE(readStencil(renderer) == stencilBefore) << "the forward frame's stencil changed";
+    const std::vector<float> depthAfter = readDepth(renderer);
     long changedOutsideWater = 0, changedInWater = 0;
     for (size_t i = 0; i < depthAfter.size(); ++i)
         if (depthAfter[i] != depthBefore[i]) ++(stencilBefore[i] == kStencilWater ? changedInWater : changedOutsideWater);
@@ -219,12 +219,12 @@ TEST_F(DebugViews, GBufferViewOfStoppedForwardFrameKeepsDepthAndStencil) {
     for (const std::string& stop : {std::string("WaterMaskPass"), std::string("TerrainPass.forward")}) {
         SCOPED_TRACE("forward frame stopped before " + stop);
         renderer.renderFrame(pose.scene, stop);
-        std::vector<float> depthBefore = renderer.readDepth();
-        std::vector<uint8_t> stencilBefore = renderer.readStencil();
+        std::vector<float> depthBefore = readDepth(renderer);
+        std::vector<uint8_t> stencilBefore = readStencil(renderer);
         EXPECT_EQ(std::count(stencilBefore.begin(), stencilBefore.end(), kStencilWater), 0);
-        renderer.renderView("albedo");
-        std::vector<float> depthAfter = renderer.readDepth();
-        std::vector<uint8_t> stencilAfter = renderer.readStencil();
+        renderer.views().render("albedo");
+        std::vector<float> depthAfter = readDepth(renderer);
+        std::vector<uint8_t> stencilAfter = readStencil(renderer);
         size_t depthChanged = 0, stencilChanged = 0;
         for (size_t i = 0; i < depthBefore.size(); ++i) {
             depthChanged += depthBefore[i] != depthAfter[i] ? 1 : 0;
@@ -256,16 +256,16 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     renderer.renderFrame(poseNamed("down").scene);
     renderer.renderFrame(pose.scene);
     renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
-    const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
-    const std::vector<float> normal = renderer.readTarget(Target::Normal);
+    const std::vector<float> albedo = readTarget(renderer, Target::Albedo);
+    const std::vector<float> normal = readTarget(renderer, Target::Normal);
     // Stored, or reconstructed from depth by the GPU as lighting does (the compact layout).
-    const std::vector<float> position = renderer.readSurfacePositions();
-    const std::vector<float> info = renderer.readTarget(Target::Info);
-    const std::vector<float> final = renderer.readTarget(Target::Final);
-    const std::vector<float> reflection = renderer.readTarget(Target::Reflection);
-    const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
-    const std::vector<float> depth = renderer.readDepth();
-    const std::vector<uint8_t> stencil = renderer.readStencil();
+    const std::vector<float> position = readSurfacePositions(renderer);
+    const std::vector<float> info = readTarget(renderer, Target::Info);
+    const std::vector<float> final = readTarget(renderer, Target::Final);
+    const std::vector<float> reflection = readTarget(renderer, Target::Reflection);
+    const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
+    const std::vector<float> depth = readDepth(renderer);
+    const std::vector<uint8_t> stencil = readStencil(renderer);
     const FrameData& frame = renderer.lastFrame().data;
     const float exposure = frame.depthRange.w;
     const float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
@@ -281,8 +281,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
 
     std::map<std::string, Image> images;
     for (const DebugView& view : debugViews()) {
-        renderer.renderView(view.name);
-        images[view.name] = renderer.readDisplay();
+        renderer.views().render(view.name);
+        images[view.name] = readDisplay(renderer);
         ASSERT_TRUE(hasContent(images[view.name])) << view.name;
     }
 
@@ -350,7 +350,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     };
     // The sun's shadow: a hue per cascade (grey for none) darkened by the lit fraction, from the
     // view's own numbers, which must be in range and whose n.l is the G-buffer normal's.
-    const std::vector<float> shadowValues = renderer.readViewValues("shadow");
+    const std::vector<float> shadowValues = renderer.views().readValues("shadow");
     const glm::vec3 toSun(frame.sunDirection);
     int shadowValuesWrong = 0;
     expected["shadow"] = [&](int x, int y) {
@@ -422,10 +422,10 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     EXPECT_EQ(shadowValuesWrong, 0) << "shadow view values out of range, or n.l not the G-buffer normal's";
 
     // The exposure control: +2 stops shows Radiance four times as bright (before the clip at 1).
-    renderer.setViewExposure(2.0f);
-    renderer.renderView("radiance");
-    Image brighter = renderer.readDisplay();
-    renderer.setViewExposure(0.0f);
+    renderer.views().setExposure(2.0f);
+    renderer.views().render("radiance");
+    Image brighter = readDisplay(renderer);
+    renderer.views().setExposure(0.0f);
     int exposureOff = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x)
@@ -437,12 +437,12 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     // The stencil view through stencil texturing equals the CPU read-back path bit for bit,
     // alone and inside the overview.
     for (const std::string& name : {std::string("stencil"), std::string(kOverviewName)}) {
-        renderer.setStencilViewPath(StencilViewPath::Texturing);
-        renderer.renderView(name);
-        Image texturing = renderer.readDisplay();
-        renderer.setStencilViewPath(StencilViewPath::ReadBack);
-        renderer.renderView(name);
-        Image readBack = renderer.readDisplay();
+        renderer.views().setStencilPath(StencilViewPath::Texturing);
+        renderer.views().render(name);
+        Image texturing = readDisplay(renderer);
+        renderer.views().setStencilPath(StencilViewPath::ReadBack);
+        renderer.views().render(name);
+        Image readBack = readDisplay(renderer);
         EXPECT_TRUE(texturing.rgba == readBack.rgba) << name << ": stencil texturing and read-back differ (max "
                                                      << compareImages(texturing, readBack).maxAbs << ")";
         EXPECT_TRUE(hasContent(readBack)) << name;
@@ -465,11 +465,11 @@ TEST_F(DebugViews, OverviewTilesShowEveryViewWithLabels) {
     // What each tile samples: the view at frame size, except the atlas view, which samples the atlas.
     std::vector<Image> views;
     for (const DebugView& view : debugViews()) {
-        renderer.renderView(view.name);
-        views.push_back(view.source == ViewSource::PlantAtlas ? atlas->read() : renderer.readDisplay());
+        renderer.views().render(view.name);
+        views.push_back(view.source == ViewSource::PlantAtlas ? atlas->read() : readDisplay(renderer));
     }
-    renderer.renderView(kOverviewName);
-    Image overview = renderer.readDisplay();
+    renderer.views().render(kOverviewName);
+    Image overview = readDisplay(renderer);
     dumpImage("overview", overview);
     std::vector<OverviewTile> tiles = overviewTiles(kWidth, kHeight);
     ASSERT_EQ(tiles.size(), views.size());

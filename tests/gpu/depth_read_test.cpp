@@ -4,6 +4,7 @@
 // copies depth for every reader: the copy is not exact on llvmpipe (gl_FragDepth written back to
 // 24 bits moves a few texels by one step), so the in-place frame may differ where, and only
 // where, the copy was off; the displayed frame by at most one level of 255.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <algorithm>
@@ -44,10 +45,10 @@ DepthReadRun renderWith(Renderer& renderer, SceneSettings scene, bool inPlace) {
         for (size_t i = 0; i < target.size(); ++i) run.copyOff.push_back(int(copy[i]) - int(target[i]));
     });
     EXPECT_EQ(renderer.lastFrame().work.depthReadInPlace, inPlace);
-    run.radiance = renderer.readTarget(Target::Radiance);
-    run.positions = renderer.readSurfacePositions();
-    renderer.renderView("final");
-    run.final = renderer.readDisplay();
+    run.radiance = readTarget(renderer, Target::Radiance);
+    run.positions = readSurfacePositions(renderer);
+    renderer.views().render("final");
+    run.final = readDisplay(renderer);
     return run;
 }
 
@@ -123,7 +124,7 @@ TEST_F(DepthReadInPlace, LightsTiledReadInPlaceAndTheVolumesKeepTheCopy) {
     renderer.setPipeline(PipelineKind::Deferred);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     std::vector<LightMethod> methods = {LightMethod::Volumes};
-    if (renderer.computeAvailable()) methods.push_back(LightMethod::Tiled);
+    if (renderer.paths().capabilities.compute.available) methods.push_back(LightMethod::Tiled);
     for (LightMethod method : methods) {
         SCOPED_TRACE(lightMethodName(method));
         SceneSettings scene = pose.scene;

@@ -4,6 +4,7 @@
 // moves the camera far from the origin, the plants' bases (CPU heights) still lie on the terrain
 // the GPU draws, which is what breaks first beyond the horizontal domain (noise cells past 2^24).
 // The values come from the table, so moving a bound moves its test.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "cli/input_domains.h"
@@ -115,7 +116,7 @@ TEST_P(DomainEnds, FiniteAgreeingAndPlantsOnTheTerrain) {
     Image forward = renderFinal(renderer, c.scene, PipelineKind::Forward);
     // Where the frame wrote them (countNonFiniteWritten: nothing clears the rest).
     for (Target target : {Target::Radiance, Target::Reflection, Target::Final})
-        EXPECT_EQ(countNonFiniteWritten(renderer.readTarget(target), target, renderer.readStencil(),
+        EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
                                         renderer.lastFrame().reflectionsActive), 0)
             << "forward " << targetName(target);
     Image deferred = renderFinal(renderer, c.scene, PipelineKind::Deferred);
@@ -123,15 +124,15 @@ TEST_P(DomainEnds, FiniteAgreeingAndPlantsOnTheTerrain) {
     dumpImage("domain-" + c.name + "-deferred", deferred);
     for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::Radiance,
                           Target::Reflection, Target::Final})
-        EXPECT_EQ(countNonFiniteWritten(renderer.readTarget(target), target, renderer.readStencil(),
+        EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
                                         renderer.lastFrame().reflectionsActive), 0)
             << "deferred " << targetName(target);
-    EXPECT_EQ(countNonFinite(renderer.readDepth()), 0) << "depth";
+    EXPECT_EQ(countNonFinite(readDepth(renderer)), 0) << "depth";
     ImageDifference difference = compareImages(forward, deferred);
     const glm::dvec3 camera = renderer.lastFrame().view.pose.position;
     std::printf("[domains] %s: camera (%.6g, %.2f, %.6g), forward vs deferred %.2f dB, plants placed %zu drawn %zu\n",
-                c.name.c_str(), camera.x, camera.y, camera.z, difference.psnrDb, renderer.vegetationStats().plantsPlaced,
-                renderer.vegetationStats().plantsDrawn);
+                c.name.c_str(), camera.x, camera.y, camera.z, difference.psnrDb, renderer.vegetation().stats().plantsPlaced,
+                renderer.vegetation().stats().plantsDrawn);
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";
     if (c.expectContent) EXPECT_TRUE(hasContent(deferred));
     if (!c.checkBases) return;

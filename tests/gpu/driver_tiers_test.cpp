@@ -7,6 +7,7 @@
 #include "cli/options.h"
 #include "commands/session.h"
 #include "debug/debug_views.h"
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -37,8 +38,8 @@ Frames renderFrames(RenderSession& session) {
     Renderer& renderer = *session.renderer;
     frames.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
     frames.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
-    renderer.renderView(kOverviewName);  // every view, the stencil and the plant atlas included
-    frames.overview = renderer.readDisplay();
+    renderer.views().render(kOverviewName);  // every view, the stencil and the plant atlas included
+    frames.overview = readDisplay(renderer);
     return frames;
 }
 
@@ -47,7 +48,7 @@ TEST_F(DriverTiers, BothPipelinesEveryViewAndAgreementAtTheSetUpsSize) {
     Renderer& renderer = *session->renderer;
     std::printf("[tier] %s, %dx%d, stencil view %s, plants %s\n", gpuState().info.summary().c_str(),
                 renderer.targets().width(), renderer.targets().height(),
-                stencilViewPathName(renderer.stencilViewPath()), plantInterpretationName(session->plantAtlas->path()));
+                stencilViewPathName(renderer.views().stencilPath()), plantInterpretationName(session->plantAtlas->path()));
     Frames frames = renderFrames(*session);
     EXPECT_TRUE(hasContent(frames.forward)) << "forward";
     EXPECT_TRUE(hasContent(frames.deferred)) << "deferred";
@@ -56,18 +57,18 @@ TEST_F(DriverTiers, BothPipelinesEveryViewAndAgreementAtTheSetUpsSize) {
     std::printf("[tier] forward vs deferred PSNR %.2f dB, max abs %d\n", difference.psnrDb, difference.maxAbs);
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree on this driver";
     for (const DebugView& view : debugViews()) {
-        renderer.renderView(view.name);
-        Image image = renderer.readDisplay();
+        renderer.views().render(view.name);
+        Image image = readDisplay(renderer);
         EXPECT_GT(rgbStats(image, wholeImage(image)).distinctColours, 1u) << "view " << view.name << " is flat";
     }
     // Both stencil-view paths, where this context has stencil texturing, give the same picture.
     if (session->caps.stencilTexturingAvailable()) {
-        renderer.setStencilViewPath(StencilViewPath::Texturing);
-        renderer.renderView("stencil");
-        Image texturing = renderer.readDisplay();
-        renderer.setStencilViewPath(StencilViewPath::ReadBack);
-        renderer.renderView("stencil");
-        EXPECT_TRUE(texturing.rgba == renderer.readDisplay().rgba) << "stencil texturing and read-back differ";
+        renderer.views().setStencilPath(StencilViewPath::Texturing);
+        renderer.views().render("stencil");
+        Image texturing = readDisplay(renderer);
+        renderer.views().setStencilPath(StencilViewPath::ReadBack);
+        renderer.views().render("stencil");
+        EXPECT_TRUE(texturing.rgba == readDisplay(renderer).rgba) << "stencil texturing and read-back differ";
     }
 }
 
@@ -95,7 +96,7 @@ void expectForcedImagesEqualUnforced(const std::vector<gl::ForcedFallbacks>& cas
         auto session = sessionWith(forced);
         // The fallback is taken and reported.
         if (forced.noSsbo || forced.noCompute) EXPECT_EQ(session->plantAtlas->path(), PlantInterpretation::Cpu);
-        if (forced.noStencilTexturing) EXPECT_EQ(session->renderer->stencilViewPath(), StencilViewPath::ReadBack);
+        if (forced.noStencilTexturing) EXPECT_EQ(session->renderer->views().stencilPath(), StencilViewPath::ReadBack);
         std::string reported;
         for (const std::string& line : session->fallbacks()) reported += line + "\n";
         for (const char* flag : {"no-ssbo", "no-compute", "no-stencil-texturing", "no-dsa"}) {

@@ -3,6 +3,7 @@
 // CompactLayout tests' bound); standard stores full's float positions, so its position error is
 // exactly 0, and its half-float normals stay within 0.1 degrees; full against itself is refused.
 // The probe reports the same numbers at a pixel.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "frame/encoding_error.h"
@@ -31,7 +32,7 @@ TEST_F(GpuTest, EncodingErrorOfEachLayoutAgainstFull) {
     const FrameData& frame = renderer.lastFrame().data;
     int beyondTolerance = 0;
     // Every finite position error within the reconstruction tolerance at its distance.
-    std::vector<float> positions = renderer.readSurfacePositions();  // compact's, the last frame drawn
+    std::vector<float> positions = readSurfacePositions(renderer);  // compact's, the last frame drawn
     for (size_t i = 0; i < compact.positionUnits.size(); ++i) {
         if (!std::isfinite(compact.positionUnits[i])) continue;
         double distance = glm::length(glm::vec3(positions[i * 4], positions[i * 4 + 1], positions[i * 4 + 2]));

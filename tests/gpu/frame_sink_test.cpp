@@ -1,8 +1,9 @@
-// A frame built for the view asked for (Renderer::setFrameSink, issue 30 item 1): it runs only
+// A frame built for the view asked for (FrameViews::setSink, issue 30 item 1): it runs only
 // the passes whose writes reach what the view reads (the views table's `reads`, walked back through
 // the views' fill and the composite onto Radiance), and every view's picture and values are then the
 // same, bit for bit, as after a whole frame: a read missing from the table would cull its writer
 // and change the picture.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <stdexcept>
@@ -43,11 +44,11 @@ protected:
     };
     Shown show(Renderer& renderer, const SceneSettings& scene, const std::string& view,
                const std::vector<std::string>& sink) {
-        renderer.setFrameSink(sink);
+        renderer.views().setSink(sink);
         renderer.renderFrame(scene);
-        renderer.renderView(view);
-        Shown shown{renderer.readDisplay(), {}};
-        if (view != kOverviewName) shown.values = renderer.readViewValues(view);
+        renderer.views().render(view);
+        Shown shown{readDisplay(renderer), {}};
+        if (view != kOverviewName) shown.values = renderer.views().readValues(view);
         return shown;
     }
 };
@@ -70,7 +71,7 @@ TEST_F(FrameSink, EveryViewIsTheSameAfterItsOwnFrameAsAfterAWholeFrame) {
         Renderer renderer(*shaders_, scene);
         auto atlas = attachPlantAtlas(*shaders_, renderer);
         renderer.configure(kWidth, kHeight, layoutNamed(c.layout));
-        renderer.setViewWaterScene(c.water);
+        renderer.views().setWaterScene(c.water);
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
             renderer.setPipeline(kind);
             for (const std::string& view : allViewNames()) {
@@ -123,7 +124,7 @@ TEST_F(FrameSink, EachViewRunsThePassesItsReadsNeed) {
         renderer.configure(kWidth, kHeight, layoutNamed("compact"));
         auto runsFor = [&](PipelineKind kind, const std::string& view) {
             renderer.setPipeline(kind);
-            renderer.setFrameSink(view.empty() ? std::vector<std::string>{} : std::vector<std::string>{view});
+            renderer.views().setSink(view.empty() ? std::vector<std::string>{} : std::vector<std::string>{view});
             renderer.renderFrame(scene);
             std::vector<std::string> ran = passesRun(renderer.frameGraph());
             std::printf("[ sink ] %s %s %s: %s\n", night ? "night" : "day", pipelineName(kind),
@@ -153,7 +154,7 @@ TEST_F(FrameSink, EachViewRunsThePassesItsReadsNeed) {
         EXPECT_TRUE(has(radiance, "LightingPass"));
         EXPECT_FALSE(has(radiance, "ToneMapPass"));
         // The culled passes say why.
-        renderer.setFrameSink({"albedo"});
+        renderer.views().setSink({"albedo"});
         renderer.setPipeline(PipelineKind::Deferred);
         renderer.renderFrame(scene);
         for (const GraphStep& step : renderer.frameGraph().steps)
@@ -168,15 +169,15 @@ TEST_F(FrameSink, AViewTheFrameWasNotBuiltForIsRefused) {
     const SceneSettings scene = lakeScene(false);
     Renderer renderer(*shaders_, scene);
     renderer.configure(kWidth, kHeight, layoutNamed("compact"));
-    renderer.setFrameSink({"albedo"});
+    renderer.views().setSink({"albedo"});
     renderer.renderFrame(scene);
-    EXPECT_NO_THROW(renderer.renderView("albedo"));
-    EXPECT_THROW(renderer.renderView("final"), std::logic_error);
-    EXPECT_THROW(renderer.readViewValues("radiance"), std::logic_error);
-    EXPECT_THROW(renderer.setFrameSink({"no-such-view"}), std::invalid_argument);
-    renderer.setFrameSink({});
+    EXPECT_NO_THROW(renderer.views().render("albedo"));
+    EXPECT_THROW(renderer.views().render("final"), std::logic_error);
+    EXPECT_THROW(renderer.views().readValues("radiance"), std::logic_error);
+    EXPECT_THROW(renderer.views().setSink({"no-such-view"}), std::invalid_argument);
+    renderer.views().setSink({});
     renderer.renderFrame(scene);
-    EXPECT_NO_THROW(renderer.renderView("final"));
+    EXPECT_NO_THROW(renderer.views().render("final"));
 }
 
 // What a view's frame saves, in fragment invocations counted by the driver (frame/frame_traffic.h):
@@ -191,7 +192,7 @@ TEST_F(FrameSink, AViewsFrameCostsNoMoreFragmentsThanAWholeFrame) {
     for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
         renderer.setPipeline(kind);
         auto invocations = [&](const std::vector<std::string>& sink) {
-            renderer.setFrameSink(sink);
+            renderer.views().setSink(sink);
             uint64_t total = 0;
             for (const PassTraffic& pass : measureFrameTraffic(renderer, scene).passes) total += pass.invocations;
             return total;

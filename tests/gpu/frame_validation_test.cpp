@@ -106,7 +106,7 @@ TEST_F(GpuTest, TheFramesOfBothPipelinesPassValidation) {
                 for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
                     renderer.setPipeline(kind);
                     EXPECT_NO_THROW(renderer.renderFrame(scene)) << layout << " " << pipelineName(kind);
-                    EXPECT_NO_THROW(renderer.renderView("albedo")) << layout << " " << pipelineName(kind);
+                    EXPECT_NO_THROW(renderer.views().render("albedo")) << layout << " " << pipelineName(kind);
                 }
             }
         }

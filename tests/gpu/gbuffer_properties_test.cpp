@@ -5,6 +5,7 @@
 // mirrored scene (REFLECTED surfaces whose mirror image is above the water, or SKY) when
 // reflections are active, else the direct scene behind the surface; no NaN/Inf in any target. The
 // forward frame's depth and stencil are the deferred frame's, bit for bit.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <map>
@@ -49,15 +50,15 @@ protected:
         renderer.configure(kWidth, kHeight, layoutNamed(layout));
         renderer.setPipeline(PipelineKind::Deferred);
         renderer.renderFrame(scene);
-        const std::vector<float> albedo = renderer.readTarget(Target::Albedo);
-        const std::vector<float> normal = renderer.readTarget(Target::Normal);
-        const std::vector<float> position = renderer.readTarget(Target::Position);
-        const std::vector<float> info = renderer.readTarget(Target::Info);
-        const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
-        const std::vector<float> reflection = renderer.readTarget(Target::Reflection);
-        const std::vector<float> final = renderer.readTarget(Target::Final);
-        const std::vector<float> depth = renderer.readDepth();
-        const std::vector<uint8_t> stencil = renderer.readStencil();
+        const std::vector<float> albedo = readTarget(renderer, Target::Albedo);
+        const std::vector<float> normal = readTarget(renderer, Target::Normal);
+        const std::vector<float> position = readTarget(renderer, Target::Position);
+        const std::vector<float> info = readTarget(renderer, Target::Info);
+        const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
+        const std::vector<float> reflection = readTarget(renderer, Target::Reflection);
+        const std::vector<float> final = readTarget(renderer, Target::Final);
+        const std::vector<float> depth = readDepth(renderer);
+        const std::vector<uint8_t> stencil = readStencil(renderer);
         deferredDepth_ = depth;
         deferredStencil_ = stencil;
 
@@ -212,13 +213,13 @@ protected:
         SCOPED_TRACE(pose.name + " forward");
         renderer.setPipeline(PipelineKind::Forward);
         renderer.renderFrame(pose.scene);
-        const std::vector<float> depth = renderer.readDepth();
-        const std::vector<uint8_t> stencil = renderer.readStencil();
+        const std::vector<float> depth = readDepth(renderer);
+        const std::vector<uint8_t> stencil = readStencil(renderer);
         EXPECT_EQ(countNonFinite(depth), 0);
-        EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Radiance)), 0);
-        EXPECT_EQ(countNonFiniteWritten(renderer.readTarget(Target::Reflection), Target::Reflection, stencil,
+        EXPECT_EQ(countNonFinite(readTarget(renderer, Target::Radiance)), 0);
+        EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, Target::Reflection), Target::Reflection, stencil,
                                         renderer.lastFrame().reflectionsActive), 0);
-        EXPECT_EQ(countNonFinite(renderer.readTarget(Target::Final)), 0);
+        EXPECT_EQ(countNonFinite(readTarget(renderer, Target::Final)), 0);
         int mismatches = 0, firstMismatch = -1;
         for (size_t i = 0; i < depth.size(); ++i) {
             bool ok = (depth[i] == 1.0f) == (stencil[i] == kStencilSky) && stencil[i] <= kStencilPlant;

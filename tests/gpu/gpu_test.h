@@ -19,6 +19,7 @@
 
 #include "common/shared_constants.glsl"
 #include "context/gl_context.h"
+#include "frame/frame_readback.h"
 #include "frame/renderer.h"
 #include "render/image.h"
 #include "render/plant_atlas.h"
@@ -182,15 +183,15 @@ inline const GBufferLayout& layoutNamed(const std::string& name) {
 inline Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    renderer.renderView("final");
-    return renderer.readDisplay();
+    renderer.views().render("final");
+    return readDisplay(renderer);
 }
 
 inline Image renderView(Renderer& renderer, const SceneSettings& scene, PipelineKind kind, const std::string& view) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    renderer.renderView(view);
-    return renderer.readDisplay();
+    renderer.views().render(view);
+    return readDisplay(renderer);
 }
 
 // The plant atlas the app would build on this context, attached to a renderer made in a test (so
@@ -198,7 +199,7 @@ inline Image renderView(Renderer& renderer, const SceneSettings& scene, Pipeline
 inline std::unique_ptr<PlantAtlas> attachPlantAtlas(ShaderLibrary& shaders, Renderer& renderer) {
     std::string reason;
     auto atlas = std::make_unique<PlantAtlas>(shaders, choosePlantInterpretation(gl::measureCapabilities(), false, reason));
-    renderer.setPlantAtlas(atlas.get());
+    renderer.views().setPlantAtlas(atlas.get());
     return atlas;
 }
 

@@ -22,7 +22,7 @@ TEST_P(GpuTimerTest, OneQueryPerPassThatRanInPassOrder) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.configure(96, 54, layoutNamed("compact"));
     renderer.setPipeline(GetParam());
-    const PassTimes wall = renderer.renderFrameTimingPasses(scene);
+    const PassTimes wall = renderFrameTimingPasses(renderer, scene);
     PassTimerQueries queries(4);
     for (int i = 0; i < 3; ++i) queries.timeFrame(renderer, scene);
     const std::vector<PassTimes> frames = queries.drain();

@@ -43,7 +43,7 @@ TEST_F(GpuTest, DISABLED_LightMethodsTable) {
     Renderer renderer(*shaders_, scene);
     renderer.configure(1280, 720, layoutNamed("standard"));
     renderer.setPipeline(PipelineKind::Deferred);
-    ASSERT_TRUE(renderer.computeAvailable()) << "the tiled method needs compute shaders";
+    ASSERT_TRUE(renderer.paths().capabilities.compute.available) << "the tiled method needs compute shaders";
     // [method][count] samples: light ms, whole-frame ms, the LightingPasses' ms.
     std::map<std::pair<int, int>, std::vector<double>> lightMs, frameMs, lightingMs, tilingMs;
     for (int round = 0; round < rounds; ++round)
@@ -59,7 +59,7 @@ TEST_F(GpuTest, DISABLED_LightMethodsTable) {
                     if (name.rfind("LightingPass", 0) == 0) lighting += ms;
                     if (name.rfind("LightTilingPass", 0) == 0) tiling += ms;
                 }
-                EXPECT_EQ(renderer.lightMethod(), method);
+                EXPECT_EQ(renderer.paths().lightMethod.method, method);
                 auto key = std::make_pair(int(method), count);
                 lightMs[key].push_back(lights);
                 lightingMs[key].push_back(lighting);

@@ -3,6 +3,7 @@
 // drawing exactly the rest; where it cannot (the compact layout reading depth in place on a
 // context without read-only depth), every pixel, the sky's black until SkyPass draws over them.
 // Both give the same frame bit for bit, and a frame stopped between the two shows black sky.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <algorithm>
@@ -24,7 +25,9 @@ struct CoverageRun {
 };
 
 CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool readOnlyDepth) {
-    renderer.setReadOnlyDepthAvailable(readOnlyDepth, readOnlyDepth ? "test: on" : "test: off");
+    RendererCapabilities caps = renderer.paths().capabilities;
+    caps.readOnlyDepth = {readOnlyDepth, readOnlyDepth ? "test: on" : "test: off"};
+    renderer.setCapabilities(caps);
     CoverageRun run;
     // The samples LightingPass and SkyPass.deferred let through their tests (llvmpipe's
     // fragment-shader statistics count whole 4x4 blocks before the depth test, so they cannot
@@ -50,12 +53,12 @@ CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool read
         }
     });
     if (counted) glDeleteQueries(1, &query);
-    run.radiance = renderer.readTarget(Target::Radiance);
+    run.radiance = readTarget(renderer, Target::Radiance);
     // Where the frame wrote it: nothing clears Reflection outside the water (fresh NaNs on zink).
-    run.reflection = writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection, renderer.readStencil(),
+    run.reflection = writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection, readStencil(renderer),
                                    renderer.lastFrame().reflectionsActive);
-    renderer.renderView("final");
-    run.final = renderer.readDisplay();
+    renderer.views().render("final");
+    run.final = readDisplay(renderer);
     return run;
 }
 
@@ -76,7 +79,7 @@ TEST_F(LightingCoverage, SurfacesOnlyEqualsEveryPixelAndTheSkyShadesTheRest) {
         Renderer renderer(*shaders_, defaultPose().scene);
         renderer.setDepthConvention(*findDepthConvention(depth));
         renderer.configure(kWidth, kHeight, layoutNamed(layout));
-        if (renderer.depthConvention().name != depth) GTEST_SKIP() << renderer.depthConventionReason();
+        if (renderer.paths().depth->name != depth) GTEST_SKIP() << renderer.paths().depthReason;
         renderer.setPipeline(PipelineKind::Deferred);
         auto atlas = attachPlantAtlas(*shaders_, renderer);
         for (const NamedPose& pose : allPoses()) {
@@ -126,13 +129,15 @@ TEST_F(LightingCoverage, AFrameStoppedBeforeTheSkyShowsItBlack) {
     SceneSettings scene = defaultPose().scene;
     for (bool readOnlyDepth : {true, false}) {
     SCOPED_TRACE(readOnlyDepth ? "surfaces only" : "every pixel");
-    renderer.setReadOnlyDepthAvailable(readOnlyDepth, "test");
+    RendererCapabilities caps = renderer.paths().capabilities;
+    caps.readOnlyDepth = {readOnlyDepth, "test"};
+    renderer.setCapabilities(caps);
     renderer.renderFrame(scene);
-    std::vector<float> whole = renderer.readTarget(Target::Radiance);
+    std::vector<float> whole = readTarget(renderer, Target::Radiance);
     renderer.renderFrame(scene, "SkyPass.deferred");
-    std::vector<float> stopped = renderer.readTarget(Target::Radiance);
+    std::vector<float> stopped = readTarget(renderer, Target::Radiance);
     // The compact layout tells the sky by depth at the far plane (its Info is not cleared).
-    std::vector<float> depth = renderer.readDepth();
+    std::vector<float> depth = readDepth(renderer);
     const float farPlane = renderer.targets().depth().farPlaneWindowDepth;
     int sky = 0, skyBefore = 0, litSurfaces = 0, wrong = 0;
     for (size_t pixel = 0; pixel < size_t(kPixels); ++pixel) {

@@ -3,6 +3,7 @@
 // the near plane or holds the camera lights without holes and leaves the stencil as it was (these
 // two under each depth convention: the volumes' stencil marking compares depth both ways); edits
 // to the lights take effect the next frame in every path; the light-volumes view counts lights.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <cstring>
@@ -70,9 +71,9 @@ TEST_F(Lights, ThreePathsAreBitIdenticalInEachPipeline) {
     Renderer renderer(*shaders_, base);
     auto atlas = attachPlantAtlas(*shaders_, renderer);  // plants are lit by the point lights too
     renderer.configure(width, height, layoutNamed("standard"));
-    ASSERT_TRUE(renderer.ssboAvailable()) << "this test needs SSBOs (GL 4.3) to compare the paths";
-    const int capacity = renderer.uboLights().capacity;
-    std::printf("[lights] ubo capacity %d lights per block, %d blocks\n", capacity, renderer.uboLights().blocks);
+    ASSERT_TRUE(renderer.paths().capabilities.ssbo.available) << "this test needs SSBOs (GL 4.3) to compare the paths";
+    const int capacity = renderer.paths().uboLights.capacity;
+    std::printf("[lights] ubo capacity %d lights per block, %d blocks\n", capacity, renderer.paths().uboLights.blocks);
     ASSERT_GE(capacity, 8);
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         Image unlit;
@@ -84,10 +85,10 @@ TEST_F(Lights, ThreePathsAreBitIdenticalInEachPipeline) {
                 SCOPED_TRACE(lightsPathName(path));
                 SceneSettings scene = withLights(base, lightsInView(base, count), path);
                 Image image = renderFinal(renderer, scene, kind);
-                EXPECT_EQ(renderer.lightsPath(), path);
-                EXPECT_EQ(renderer.lightsDrawn(), count);
-                EXPECT_EQ(renderer.lightsDropped(), 0);
-                std::vector<float> radiance = renderer.readTarget(Target::Radiance);
+                EXPECT_EQ(renderer.paths().lights.path, path);
+                EXPECT_EQ(renderer.paths().lightsDrawn, count);
+                EXPECT_EQ(renderer.paths().lightsDropped, 0);
+                std::vector<float> radiance = readTarget(renderer, Target::Radiance);
                 if (first.width == 0) {
                     first = image;
                     firstRadiance = radiance;
@@ -126,7 +127,7 @@ TEST_F(Lights, ForwardAndDeferredAgreeWith64Lights) {
         dumpImage(std::string("lights-64-deferred-") + layout, deferred);
         ImageDifference difference = compareImages(forward, deferred);
         std::printf("[lights] 64 lights, %s, %s depth: forward vs deferred PSNR %.2f dB, max %d\n", layout,
-                    renderer.depthConvention().name.c_str(), difference.psnrDb, difference.maxAbs);
+                    renderer.paths().depth->name.c_str(), difference.psnrDb, difference.maxAbs);
         EXPECT_GE(difference.psnrDb, minPsnr);
         EXPECT_GT(brighterPixels(deferred, unlit), 320 * 180 / 10) << "the lights barely show";
     }
@@ -165,13 +166,13 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
     for (const Case& c : cases) {
         renderer.setDepthConvention(depth);
         for (LightsPath path : kPaths) {
-            SCOPED_TRACE(c.name + ", " + lightsPathName(path) + ", depth " + renderer.depthConvention().name);
+            SCOPED_TRACE(c.name + ", " + lightsPathName(path) + ", depth " + renderer.paths().depth->name);
             SceneSettings scene = withLights(base, {c.light}, path);
             SceneSettings dark = withLights(base, {}, path);
             Image forward = renderFinal(renderer, scene, PipelineKind::Forward);
             Image forwardUnlit = renderFinal(renderer, dark, PipelineKind::Forward);
             Image deferredUnlit = renderFinal(renderer, dark, PipelineKind::Deferred);
-            std::vector<uint8_t> stencilUnlit = renderer.readStencil();
+            std::vector<uint8_t> stencilUnlit = readStencil(renderer);
             Image deferred = renderFinal(renderer, scene, PipelineKind::Deferred);
             dumpImage("lights-near-" + std::to_string(&c - cases.data()) + "-deferred", deferred);
             int litForward = brighterPixels(forward, forwardUnlit);
@@ -186,11 +187,11 @@ TEST_F(Lights, VolumesThatHoldTheCameraOrCrossTheNearPlaneHaveNoHoles) {
                     holes += forwardLit && !deferredLit;
                 }
             std::printf("[lights] %s, %s depth: %d pixels lit forward, %d holes in deferred\n", c.name.c_str(),
-                        renderer.depthConvention().name.c_str(), litForward, holes);
+                        renderer.paths().depth->name.c_str(), litForward, holes);
             EXPECT_GT(litForward, width * height / 20) << "the light should light much of the view";
             EXPECT_EQ(holes, 0) << "deferred misses pixels the forward pipeline lights";
             EXPECT_GE(compareImages(forward, deferred).psnrDb, 45.0);
-            EXPECT_TRUE(renderer.readStencil() == stencilUnlit) << "the light volumes left marks in the stencil";
+            EXPECT_TRUE(readStencil(renderer) == stencilUnlit) << "the light volumes left marks in the stencil";
         }
     }
 }
@@ -233,8 +234,8 @@ TEST_F(Lights, LightVolumesViewCountsTheLightsAtEachPixel) {
     renderer.configure(width, height, layoutNamed("full"));
     Image view = renderView(renderer, scene, PipelineKind::Deferred, "light-volumes");
     dumpImage("lights-volumes-view", view);
-    std::vector<float> position = renderer.readTarget(Target::Position);
-    std::vector<float> info = renderer.readTarget(Target::Info);
+    std::vector<float> position = readTarget(renderer, Target::Position);
+    std::vector<float> info = readTarget(renderer, Target::Info);
     const glm::dvec3 eye = renderer.lastFrame().view.pose.position;
     int counted[3] = {0, 0, 0}, wrong = 0;
     for (int y = 0; y < height; ++y)

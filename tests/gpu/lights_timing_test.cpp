@@ -66,7 +66,7 @@ TEST_F(GpuTest, DISABLED_LightsTable) {
         std::fflush(stdout);
     }
     std::printf("\nrenderer: %s; %d lights drawn at most; path %s\n", queryContextInfo().renderer.c_str(),
-                renderer.lightsDrawn(), renderer.lightsPathReason().c_str());
+                renderer.paths().lightsDrawn, renderer.paths().lights.reason.c_str());
 }
 
 }  // namespace

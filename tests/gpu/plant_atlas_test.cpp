@@ -196,12 +196,12 @@ TEST_F(PlantAtlasTest, AtlasViewShowsTheAtlas) {
     PlantAtlas atlas(*shaders_, PlantInterpretation::Cpu);
     Renderer renderer(*shaders_, SceneSettings{});
     renderer.configure(atlas.width(), atlas.height(), layoutNamed("standard"));
-    renderer.setPlantAtlas(&atlas);
+    renderer.views().setPlantAtlas(&atlas);
     Image view = renderView(renderer, SceneSettings{}, PipelineKind::Deferred, "atlas");
     Image expected = atlas.read();
     for (size_t i = 0; i < expected.rgba.size(); i += 4) expected.rgba[i + 3] = 255;  // shown on black
     EXPECT_EQ(compareImages(view, expected).maxAbs, 0);
-    renderer.setPlantAtlas(nullptr);
+    renderer.views().setPlantAtlas(nullptr);
     EXPECT_EQ(rgbStats(renderView(renderer, SceneSettings{}, PipelineKind::Deferred, "atlas"), wholeImage(view)).maxMean(), 0.0)
         << "with no atlas the view is black";
 }

@@ -3,6 +3,7 @@
 // probe's values (decoded on the GPU by shaders/probe.frag through common/gbuffer.glsl) equal the
 // targets read back and decoded on the CPU (GBufferLayout::storedNormal / storedFlags,
 // readSurfacePositions, readDepth, readStencil), and its stored bytes are the targets' own.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "frame/pixel_probe.h"
@@ -70,14 +71,14 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     renderer.configure(kWidth, kHeight, layout);
     renderer.setPipeline(pipeline);
     // Both water scenes are checked: the mirrored one in deferred, the direct one (the lakebed) in forward.
-    renderer.setViewWaterScene(pipeline == PipelineKind::Deferred ? WaterScene::Mirrored : WaterScene::Direct);
+    renderer.views().setWaterScene(pipeline == PipelineKind::Deferred ? WaterScene::Mirrored : WaterScene::Direct);
     renderer.renderFrame(scene);
     renderer.ensureGBuffer();  // the views' fill of the water scene, as the probe and the views read it
 
-    CpuFrame cpu{renderer.readTarget(Target::Albedo), renderer.readTarget(Target::Normal),
-                 renderer.readTarget(Target::Info), renderer.readSurfacePositions(),
-                 renderer.readTarget(Target::Radiance), renderer.readTarget(Target::Reflection),
-                 renderer.readTarget(Target::Final), renderer.readDepth(), renderer.readStencil()};
+    CpuFrame cpu{readTarget(renderer, Target::Albedo), readTarget(renderer, Target::Normal),
+                 readTarget(renderer, Target::Info), readSurfacePositions(renderer),
+                 readTarget(renderer, Target::Radiance), readTarget(renderer, Target::Reflection),
+                 readTarget(renderer, Target::Final), readDepth(renderer), readStencil(renderer)};
     const FrameSetup& frame = renderer.lastFrame();
     // Nothing drawn (gbufferSkyAt): by depth at the far plane in the compact layout, whose colour
     // targets are not cleared there, by Info's SKY flag in the others. The probe shows the texels

@@ -4,6 +4,7 @@
 // a frame with no water in view runs no vertex or fragment of any reflection pass (conditional
 // rendering on the water mask's occlusion query), and where storage blocks are missing the passes
 // fall back to the whole screen and say why.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -57,7 +58,7 @@ TEST_F(ReflectionBounds, FrameWithoutWaterInViewPaysNothingForTheReflection) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     if (reflectionWorkInvocations(renderer, pose.scene, GL_VERTEX_SHADER_INVOCATIONS_ARB) < 0)
         GTEST_SKIP() << "no pipeline statistics queries";
     SceneSettings dry = pose.scene;
@@ -69,16 +70,16 @@ TEST_F(ReflectionBounds, FrameWithoutWaterInViewPaysNothingForTheReflection) {
         SceneSettings unbounded = dry;
         unbounded.water.reflectionBounds = false;
         renderer.renderFrame(unbounded);
-        renderer.renderView("final");
-        const Image reference = renderer.readDisplay();
+        renderer.views().render("final");
+        const Image reference = readDisplay(renderer);
         ASSERT_TRUE(hasContent(reference));
         const long long verticesUnbounded =
             reflectionWorkInvocations(renderer, unbounded, GL_VERTEX_SHADER_INVOCATIONS_ARB);
 
         renderer.renderFrame(dry);
-        renderer.renderView("final");
-        EXPECT_EQ(compareImages(reference, renderer.readDisplay()).maxAbs, 0);
-        std::vector<uint8_t> stencil = renderer.readStencil();
+        renderer.views().render("final");
+        EXPECT_EQ(compareImages(reference, readDisplay(renderer)).maxAbs, 0);
+        std::vector<uint8_t> stencil = readStencil(renderer);
         ASSERT_EQ(std::count(stencil.begin(), stencil.end(), uint8_t(kStencilWater)), 0) << "water in view";
         const long long vertices = reflectionWorkInvocations(renderer, dry, GL_VERTEX_SHADER_INVOCATIONS_ARB);
         const long long fragments = reflectionWorkInvocations(renderer, dry, GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
@@ -102,7 +103,7 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
         Renderer renderer(*shaders_, defaultPose().scene);
         renderer.configure(kWidth, kHeight, layoutNamed(layout));
         auto atlas = attachPlantAtlas(*shaders_, renderer);
-        if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+        if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
         for (const NamedPose& pose : poses)
             for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
                 SCOPED_TRACE(pose.name + ", " + pipelineName(kind) + ", " + layout);
@@ -110,16 +111,16 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
                 SceneSettings unbounded = pose.scene;
                 unbounded.water.reflectionBounds = false;
                 renderer.renderFrame(unbounded);
-                renderer.renderView("final");
-                const Image reference = renderer.readDisplay();
+                renderer.views().render("final");
+                const Image reference = readDisplay(renderer);
                 const long long fragmentsUnbounded = reflectionFragments(renderer, unbounded);
 
                 renderer.renderFrame(pose.scene);
-                renderer.renderView("final");
-                const Image bounded = renderer.readDisplay();
+                renderer.views().render("final");
+                const Image bounded = readDisplay(renderer);
                 EXPECT_TRUE(hasContent(bounded));
-                const glm::ivec4 rect = renderer.readWaterBounds();  // x0, y0, x1, y1, rows bottom-up
-                const std::vector<uint8_t> stencil = renderer.readStencil();  // rows bottom-up
+                const glm::ivec4 rect = readWaterBounds(renderer);  // x0, y0, x1, y1, rows bottom-up
+                const std::vector<uint8_t> stencil = readStencil(renderer);  // rows bottom-up
                 const long long fragmentsBounded = reflectionFragments(renderer, pose.scene);
 
                 // Every water pixel inside, and each edge of the rectangle on a water pixel.
@@ -174,7 +175,7 @@ TEST_F(ReflectionBounds, MirroredBillboardsMissingTheWaterAreDropped) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     auto mirroredPlants = [](const Pass& pass) {
         return pass.name().rfind("VegetationPass", 0) == 0 && pass.reflectionWork();
     };
@@ -185,11 +186,11 @@ TEST_F(ReflectionBounds, MirroredBillboardsMissingTheWaterAreDropped) {
         renderer.setPipeline(kind);
         const long long whole = reflectionWorkInvocations(renderer, unbounded, GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mirroredPlants);
         if (whole < 0) GTEST_SKIP() << "no pipeline statistics queries";
-        renderer.renderView("final");
-        const Image reference = renderer.readDisplay();
+        renderer.views().render("final");
+        const Image reference = readDisplay(renderer);
         const long long bounded = reflectionWorkInvocations(renderer, pose.scene, GL_FRAGMENT_SHADER_INVOCATIONS_ARB, mirroredPlants);
-        renderer.renderView("final");
-        const Image frame = renderer.readDisplay();
+        renderer.views().render("final");
+        const Image frame = readDisplay(renderer);
         EXPECT_TRUE(hasContent(frame));
         EXPECT_EQ(compareImages(reference, frame).maxAbs, 0);
         std::printf("[reflection bounds] %s %s: mirrored plant fragments %lld bounded, %lld whole screen\n",
@@ -207,20 +208,23 @@ TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
-    renderer.renderView("final");
-    const Image bounded = renderer.readDisplay();
+    renderer.views().render("final");
+    const Image bounded = readDisplay(renderer);
     EXPECT_TRUE(hasContent(bounded));
 
-    renderer.setSsboAvailable(false, "switched off by the test", std::nullopt);
-    EXPECT_FALSE(renderer.waterBoundsAvailable());
-    EXPECT_NE(renderer.waterBoundsReason().find("switched off by the test"), std::string::npos)
-        << renderer.waterBoundsReason();
+    RendererCapabilities caps = renderer.paths().capabilities;
+    caps.ssbo = {false, "switched off by the test"};
+    caps.forcedLightsPath = std::nullopt;
+    renderer.setCapabilities(caps);
+    EXPECT_FALSE(renderer.paths().waterBoundsAvailable);
+    EXPECT_NE(renderer.paths().waterBoundsReason.find("switched off by the test"), std::string::npos)
+        << renderer.paths().waterBoundsReason;
     renderer.renderFrame(pose.scene);
-    renderer.renderView("final");
-    const Image whole = renderer.readDisplay();
+    renderer.views().render("final");
+    const Image whole = readDisplay(renderer);
     EXPECT_EQ(compareImages(bounded, whole).maxAbs, 0);
 }
 

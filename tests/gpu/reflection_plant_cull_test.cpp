@@ -4,6 +4,7 @@
 // far, low and grazing, along the flight and far from the origin; and the cull does cull (the
 // default frame loses more than a third of its mirrored plants). At a reduced reflection
 // resolution it stands aside; by default (auto) it culls only while the camera stands still.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -45,16 +46,16 @@ TEST_F(ReflectionPlantCull, SameFramesBitForBitWithFewerMirroredPlants) {
             ASSERT_TRUE(hasContent(without));
             // Where the frame wrote it (writtenTexels: nothing clears Reflection outside the water).
             auto reflection = [&] {
-                return writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection,
-                                     renderer.readStencil(), renderer.lastFrame().reflectionsActive);
+                return writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection,
+                                     readStencil(renderer), renderer.lastFrame().reflectionsActive);
             };
             const std::vector<float> reflectionWithout = reflection();
-            const VegetationStats statsWithout = renderer.vegetationStats();
+            const VegetationStats statsWithout = renderer.vegetation().stats();
             EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
 
             const Image with = renderFinal(renderer, withCull(pose.scene, true), kind);
             const std::vector<float> reflectionWith = reflection();
-            const VegetationStats stats = renderer.vegetationStats();
+            const VegetationStats stats = renderer.vegetation().stats();
             EXPECT_EQ(renderer.lastFrame().mirroredPlantsCulled, renderer.lastFrame().reflectionsActive);
 
             ImageDifference difference = compareImages(without, with);
@@ -85,13 +86,13 @@ TEST_F(ReflectionPlantCull, StandsAsideAtReducedResolutionAndWithoutReflections)
     scene.water.reflectionDivisor = 2;
     renderFinal(renderer, scene, PipelineKind::Deferred);
     EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
-    EXPECT_EQ(renderer.vegetationStats().plantsMirroredOnLand, 0u);
-    EXPECT_EQ(renderer.vegetationStats().chunksMirroredOnLand, 0u);
+    EXPECT_EQ(renderer.vegetation().stats().plantsMirroredOnLand, 0u);
+    EXPECT_EQ(renderer.vegetation().stats().chunksMirroredOnLand, 0u);
     scene = defaultPose().scene;
     scene.water.reflections = false;
     renderFinal(renderer, scene, PipelineKind::Deferred);
     EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
-    EXPECT_EQ(renderer.vegetationStats().plantsDrawnMirrored, 0u);
+    EXPECT_EQ(renderer.vegetation().stats().plantsDrawnMirrored, 0u);
 }
 
 // Auto (the default) culls once the camera stands still: not on a frame whose grid moved, from
@@ -106,7 +107,7 @@ TEST_F(ReflectionPlantCull, AutoCullsWhileTheCameraStandsStill) {
     EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled) << "the first frame has no last grid";
     const Image still = renderFinal(renderer, scene, PipelineKind::Deferred);
     EXPECT_TRUE(renderer.lastFrame().mirroredPlantsCulled);
-    EXPECT_GT(renderer.vegetationStats().plantsMirroredOnLand, 0u);
+    EXPECT_GT(renderer.vegetation().stats().plantsMirroredOnLand, 0u);
     EXPECT_EQ(compareImages(first, still).maxAbs, 0);
     scene.timeSeconds = 0.5;  // the flight moves on
     renderFinal(renderer, scene, PipelineKind::Deferred);

@@ -3,6 +3,7 @@
 // target read bilinearly at each water pixel's centre (checked on the CPU from the reduced texels);
 // the water rectangle's widening covers the upsample's taps (bounded and unbounded frames are the
 // same bit for bit); forward and deferred still agree; odd frame sizes round the targets up.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "render/pixel_readback.h"
@@ -56,7 +57,7 @@ TEST_F(ReflectionResolution, OnlyTheWaterChangesWithinBoundedError) {
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
             const Image full = renderFinal(renderer, pose.scene, kind);
             ASSERT_TRUE(hasContent(full));
-            const std::vector<uint8_t> stencil = renderer.readStencil();
+            const std::vector<uint8_t> stencil = readStencil(renderer);
             const long long water = std::count(stencil.begin(), stencil.end(), uint8_t(kStencilWater));
             ASSERT_GT(water, 100) << pose.name << ": too little water in view to test the reflection";
             for (auto [divisor, minimumPsnr] : {std::pair{2, 30.0}, std::pair{4, 27.0}}) {
@@ -100,9 +101,9 @@ TEST_F(ReflectionResolution, ReflectionTargetIsTheReducedTargetReadBilinearly) {
                 const int reducedHeight = renderer.reflectionTargets()->height();
                 EXPECT_EQ(reducedWidth, kWidth / divisor);
                 EXPECT_EQ(reducedHeight, kHeight / divisor);
-                const std::vector<uint8_t> stencil = renderer.readStencil();
+                const std::vector<uint8_t> stencil = readStencil(renderer);
                 const std::vector<float> reduced = readReducedReflection(renderer);
-                const std::vector<float> frame = renderer.readTarget(Target::Reflection);
+                const std::vector<float> frame = readTarget(renderer, Target::Reflection);
                 EXPECT_EQ(countNonFinite(reduced), 0);
                 int water = 0, off = 0, lit = 0, outsideNotCleared = 0;
                 double worst = 0.0;
@@ -141,7 +142,7 @@ TEST_F(ReflectionResolution, BoundedFrameIsTheUnboundedOne) {
     Renderer renderer(*shaders_, defaultPose().scene);
     renderer.configure(kWidth, kHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    if (!renderer.waterBoundsAvailable()) GTEST_SKIP() << renderer.waterBoundsReason();
+    if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     for (const NamedPose& pose : poses)
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred})
             for (int divisor : {2, 4}) {
@@ -191,8 +192,8 @@ TEST_F(ReflectionResolution, OddSizesRoundTheTargetsUp) {
         ASSERT_NE(renderer.reflectionTargets(), nullptr);
         EXPECT_EQ(renderer.reflectionTargets()->width(), reducedWidth);
         EXPECT_EQ(renderer.reflectionTargets()->height(), reducedHeight);
-        EXPECT_EQ(countNonFiniteWritten(renderer.readTarget(Target::Reflection), Target::Reflection,
-                                        renderer.readStencil(), renderer.lastFrame().reflectionsActive),
+        EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, Target::Reflection), Target::Reflection,
+                                        readStencil(renderer), renderer.lastFrame().reflectionsActive),
                   0);
         EXPECT_GE(compareImages(full, reduced).psnrDb, 27.0);
     }

@@ -1,5 +1,6 @@
 // GL resources: 100 pipeline switches and 20 size/layout round trips leave both the wrappers' live
 // object counts and an independent glIs* probe of the driver's names unchanged (no leaked GL objects).
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <filesystem>
@@ -19,11 +20,11 @@ protected:
         for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
             renderer.setPipeline(kind);
             renderer.renderFrame(scene);
-            for (const DebugView& view : debugViews()) renderer.renderView(view.name);
+            for (const DebugView& view : debugViews()) renderer.views().render(view.name);
             for (StencilViewPath path : {StencilViewPath::ReadBack, StencilViewPath::Texturing}) {
-                renderer.setStencilViewPath(path);
-                renderer.renderView("stencil");
-                renderer.renderView(kOverviewName);
+                renderer.views().setStencilPath(path);
+                renderer.views().render("stencil");
+                renderer.views().render(kOverviewName);
             }
         }
         glFinish();
@@ -50,8 +51,8 @@ TEST_F(Resources, HundredPipelineSwitchesLeakNothing) {
         renderer.setPipeline(kind);
         ASSERT_EQ(renderer.pipeline(), kind);
         renderer.renderFrame(pose.scene);
-        renderer.renderView(i % 4 < 2 ? "final" : (i % 4 == 2 ? "normal" : kOverviewName));
-        if (i == 99) lastImage = renderer.readDisplay();
+        renderer.views().render(i % 4 < 2 ? "final" : (i % 4 == 2 ? "normal" : kOverviewName));
+        if (i == 99) lastImage = readDisplay(renderer);
     }
     glFinish();
     EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over 100 pipeline switches";
@@ -75,15 +76,15 @@ TEST_F(Resources, TwentySizeAndLayoutRoundTripsLeakNothing) {
         ASSERT_EQ(renderer.targets().layout().name, "full");  // configure() keeps a copy of the layout
         renderer.setPipeline(i % 2 ? PipelineKind::Forward : PipelineKind::Deferred);
         renderer.renderFrame(pose.scene);
-        renderer.setStencilViewPath(StencilViewPath::ReadBack);  // re-creates its copy at each size
-        renderer.renderView("stencil");
-        renderer.renderView("position");
+        renderer.views().setStencilPath(StencilViewPath::ReadBack);  // re-creates its copy at each size
+        renderer.views().render("stencil");
+        renderer.views().render("position");
         renderer.configure(64, 36, layoutNamed("standard"));
         ASSERT_EQ(renderer.targets().height(), 36);
         renderer.renderFrame(pose.scene);
-        renderer.renderView(kOverviewName);
-        renderer.setStencilViewPath(StencilViewPath::Texturing);
-        renderer.renderView("stencil");
+        renderer.views().render(kOverviewName);
+        renderer.views().setStencilPath(StencilViewPath::Texturing);
+        renderer.views().render("stencil");
     }
     glFinish();
     EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over 20 reconfigure round trips";

@@ -4,6 +4,7 @@
 // precise in the far band than standard's 24-bit depth; without clip control it falls back to the
 // standard frame and says why; its clip control does not outlive the frame. (The light volumes
 // under reversed-z: lights_test.cpp.)
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "commands/bench_depth.h"
@@ -30,7 +31,7 @@ TEST_F(ReversedDepth, FramesAgreeWithStandardInBothPipelines) {
         auto standardAtlas = attachPlantAtlas(*shaders_, standard);
         auto reversedAtlas = attachPlantAtlas(*shaders_, reversed);
         reversed.setDepthConvention(reversedZ());
-        ASSERT_EQ(reversed.depthConvention().name, "reversed-z") << reversed.depthConventionReason();
+        ASSERT_EQ(reversed.paths().depth->name, "reversed-z") << reversed.paths().depthReason;
         standard.configure(width, height, layoutNamed("standard"));
         reversed.configure(width, height, layoutNamed("standard"));
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
@@ -55,9 +56,9 @@ TEST_F(ReversedDepth, SkyIsAtTheFarPlaneAndBlackInTheDepthView) {
     renderer.configure(width, height, layoutNamed("full"));
     Image depthView = renderView(renderer, pose.scene, PipelineKind::Deferred, "depth");
     dumpImage("reversed-z-depth-view", depthView);
-    std::vector<float> depth = renderer.readDepth();
-    std::vector<float> info = renderer.readTarget(Target::Info);
-    std::vector<uint8_t> stencil = renderer.readStencil();
+    std::vector<float> depth = readDepth(renderer);
+    std::vector<float> info = readTarget(renderer, Target::Info);
+    std::vector<uint8_t> stencil = readStencil(renderer);
     int sky = 0, ground = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
@@ -89,7 +90,7 @@ TEST_F(ReversedDepth, FarBandReconstructionFarMorePreciseThanStandard) {
         Renderer renderer(*shaders_, scenes[0]);
         auto atlas = attachPlantAtlas(*shaders_, renderer);
         renderer.setDepthConvention(depth);
-        ASSERT_EQ(renderer.depthConvention().name, depth.name) << renderer.depthConventionReason();
+        ASSERT_EQ(renderer.paths().depth->name, depth.name) << renderer.paths().depthReason;
         renderer.configure(640, 360, layoutNamed("full"));
         std::vector<DepthPrecision> rows = measureDepthPrecision(renderer, scenes, depthBands(scenes[0]));
         std::printf("%s", depthPrecisionTable(rows).c_str());
@@ -112,20 +113,23 @@ TEST_F(ReversedDepth, FarBandReconstructionFarMorePreciseThanStandard) {
 TEST_F(ReversedDepth, WithoutClipControlFallsBackToTheStandardFrame) {
     SceneSettings scene;
     Renderer standard(*shaders_, scene), fallback(*shaders_, scene);
-    fallback.setClipControlAvailable(false, "switched off by --force no-clip-control");
+    RendererCapabilities caps = fallback.paths().capabilities;
+    caps.clipControl = {false, "switched off by --force no-clip-control"};
+    fallback.setCapabilities(caps);
     fallback.setDepthConvention(reversedZ());
-    EXPECT_EQ(fallback.depthConvention().name, "standard");
-    EXPECT_TRUE(fallback.depthFellBack());
-    EXPECT_NE(fallback.depthConventionReason().find("reversed-z was asked for but switched off by --force no-clip-control"),
-              std::string::npos) << fallback.depthConventionReason();
+    EXPECT_EQ(fallback.paths().depth->name, "standard");
+    EXPECT_TRUE(fallback.paths().depthFellBack);
+    EXPECT_NE(fallback.paths().depthReason.find("reversed-z was asked for but switched off by --force no-clip-control"),
+              std::string::npos) << fallback.paths().depthReason;
     standard.configure(160, 90, layoutNamed("standard"));
     fallback.configure(160, 90, layoutNamed("standard"));
     EXPECT_EQ(fallback.targets().depth().name, "standard");
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred})
         EXPECT_EQ(compareImages(renderFinal(standard, scene, kind), renderFinal(fallback, scene, kind)).maxAbs, 0);
     // Clip control coming back (the panel's combo is asked again) switches to reversed-z.
-    fallback.setClipControlAvailable(true, "clip control present");
-    EXPECT_EQ(fallback.depthConvention().name, "reversed-z");
+    caps.clipControl = {true, "clip control present"};
+    fallback.setCapabilities(caps);
+    EXPECT_EQ(fallback.paths().depth->name, "reversed-z");
     EXPECT_EQ(fallback.targets().depth().name, "reversed-z") << "targets not reallocated";
 }
 
@@ -134,7 +138,7 @@ TEST_F(ReversedDepth, SessionReportsTheForcedFallbackOnce) {
                                            "--size", "64x36", "--no-compute"});
     ASSERT_TRUE(parsed.ok) << parsed.error;
     RenderSession session(parsed.options);
-    EXPECT_EQ(session.renderer->depthConvention().name, "standard");
+    EXPECT_EQ(session.renderer->paths().depth->name, "standard");
     std::vector<std::string> lines = session.fallbacks();
     int clipLines = 0;
     for (const std::string& line : lines)
@@ -147,7 +151,7 @@ TEST_F(ReversedDepth, SessionReportsTheForcedFallbackOnce) {
     // Asked for and available: used, no fallback.
     ParseResult plain = parseCommandLine({"render", "--depth", "reversed-z", "--size", "64x36", "--no-compute"});
     RenderSession used(plain.options);
-    EXPECT_EQ(used.renderer->depthConvention().name, "reversed-z");
+    EXPECT_EQ(used.renderer->paths().depth->name, "reversed-z");
     for (const std::string& line : used.fallbacks()) EXPECT_EQ(line.rfind("clip-control", 0), std::string::npos) << line;
 }
 
@@ -159,7 +163,7 @@ TEST_F(ReversedDepth, ClipControlIsRestoredAfterEachFrame) {
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         renderer.setPipeline(kind);
         renderer.renderFrame(scene);
-        renderer.renderView("overview");  // forward fills the G-buffer for the views inside its own scope
+        renderer.views().render("overview");  // forward fills the G-buffer for the views inside its own scope
         GLint origin = 0, mode = 0;
         glGetIntegerv(GL_CLIP_ORIGIN, &origin);
         glGetIntegerv(GL_CLIP_DEPTH_MODE, &mode);

@@ -4,6 +4,7 @@
 // than the stated bound the GPU must say shadowed (no peter-panning beyond it). With the sun low
 // (long grazing shadows), near the horizon, 1e5 units out; night runs no shadow pass; the eye
 // at the water plane; forward and deferred agree with shadows on (agreement_test.cpp too).
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 #include "shader_dir_copy.h"
 
@@ -58,14 +59,14 @@ protected:
         renderer.renderFrame(scene);
         const FrameSetup& frame = renderer.lastFrame();
         EXPECT_TRUE(frame.shadowsActive) << name;
-        renderer.renderView("shadow");
-        dumpImage("shadows-" + name, renderer.readDisplay());
-        renderer.renderView("final");
-        Image final = renderer.readDisplay();
+        renderer.views().render("shadow");
+        dumpImage("shadows-" + name, readDisplay(renderer));
+        renderer.views().render("final");
+        Image final = readDisplay(renderer);
         dumpImage("shadows-" + name + "-final", final);
         EXPECT_TRUE(hasContent(final)) << name;
-        std::vector<float> values = renderer.readViewValues("shadow");
-        std::vector<float> positions = renderer.readSurfacePositions();
+        std::vector<float> values = renderer.views().readValues("shadow");
+        std::vector<float> positions = readSurfacePositions(renderer);
         glm::dvec3 camera = frame.view.pose.position;
         glm::dvec3 toSun = glm::normalize(glm::dvec3(frame.sky.sunDirection));
         ShadowCheck check;
@@ -127,8 +128,8 @@ TEST_F(Shadows, FourTapsGiveTheNineTheyReplace) {
         renderer.configure(width, height, layoutNamed("full"));
         renderer.setPipeline(PipelineKind::Deferred);
         renderer.renderFrame(scene);
-        renderer.renderView("shadow");
-        return renderer.readViewValues("shadow");
+        renderer.views().render("shadow");
+        return renderer.views().readValues("shadow");
     };
     std::vector<float> four = shadowValues(*shaders_);
 
@@ -190,7 +191,7 @@ TEST_F(Shadows, NightRunsNoShadowPass) {
         std::vector<std::string> ran;
         renderer.renderFrameObserved(scene, [&](const Pass& pass) { ran.push_back(pass.name()); });
         EXPECT_EQ(std::count(ran.begin(), ran.end(), "ShadowPass"), 0) << pipelineName(kind);
-        std::vector<float> values = renderer.readViewValues("shadow");
+        std::vector<float> values = renderer.views().readValues("shadow");
         for (size_t i = 0; i < values.size(); i += 4) {
             ASSERT_EQ(values[i], 1.0f) << "shadowed at night";
             ASSERT_EQ(values[i + 1], -1.0f) << "a cascade answered at night";
@@ -212,10 +213,10 @@ TEST_F(Shadows, OffIsLitEverywhereAndOnDarkens) {
     renderer.configure(320, 180, layoutNamed("compact"));
     scene.hour = 8.0;
     Image on = renderFinal(renderer, scene, PipelineKind::Deferred);
-    std::vector<float> onValues = renderer.readViewValues("shadow");
+    std::vector<float> onValues = renderer.views().readValues("shadow");
     scene.shadows.enabled = false;
     Image off = renderFinal(renderer, scene, PipelineKind::Deferred);
-    std::vector<float> offValues = renderer.readViewValues("shadow");
+    std::vector<float> offValues = renderer.views().readValues("shadow");
     int shadowed = 0;
     for (size_t i = 0; i < onValues.size(); i += 4) {
         ASSERT_EQ(offValues[i], 1.0f);
@@ -239,13 +240,13 @@ TEST_F(Shadows, PlantsCastShadowsOnTheGround) {
     renderer.configure(320, 180, layoutNamed("full"));
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(scene);
-    std::vector<float> with = renderer.readViewValues("shadow");
-    std::vector<uint8_t> stencil = renderer.readStencil();
-    EXPECT_GT(renderer.vegetationStats().plantsDrawn, 100u);
+    std::vector<float> with = renderer.views().readValues("shadow");
+    std::vector<uint8_t> stencil = readStencil(renderer);
+    EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 100u);
     SceneSettings bare = scene;
     bare.vegetation.enabled = false;
     renderer.renderFrame(bare);
-    std::vector<float> without = renderer.readViewValues("shadow");
+    std::vector<float> without = renderer.views().readValues("shadow");
     int darkened = 0, lightened = 0;
     for (size_t p = 0; p < stencil.size(); ++p) {
         if (stencil[p] != kStencilTerrain) continue;
@@ -271,7 +272,7 @@ TEST_F(Shadows, EyeAtTheWaterPlane) {
     ImageDifference difference = compareImages(forward, deferred);
     std::printf("[shadows] eye at the water plane: forward vs deferred %.2f dB\n", difference.psnrDb);
     EXPECT_GE(difference.psnrDb, 45.0);
-    std::vector<float> values = renderer.readViewValues("shadow");
+    std::vector<float> values = renderer.views().readValues("shadow");
     EXPECT_EQ(countNonFinite(values), 0);
 }
 

@@ -1,6 +1,7 @@
 // The sky as drawn against its CPU twin (sky_model.cpp), the cloud deck included, by day, at dawn,
 // at dusk and at night, in both pipelines; and the sun's disk: drawn where the sun is in view, as
 // large as the model's disk, nowhere else, and dimmed behind a cloud that covers it.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 #include "render/frame_setup.h"
 #include "sky_model.h"
@@ -29,7 +30,7 @@ struct SkyFrame {
 SkyFrame render(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    return {renderer.lastFrame().data, renderer.readTarget(Target::Radiance), renderer.readStencil()};
+    return {renderer.lastFrame().data, readTarget(renderer, Target::Radiance), readStencil(renderer)};
 }
 
 // A camera 5 units above the lake's level, looking along (yaw, pitch) in degrees.

@@ -6,6 +6,7 @@
 // forward and deferred agree (>= 45 dB, the standard layout's threshold), the frame has content;
 // some cases check what they are about on top (the camera under the water, the sun down, ...).
 // The compact layout runs every case too (CompactLayoutFiniteAndAgrees).
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -182,7 +183,7 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
     Image forward = renderFinal(renderer, hard.scene, PipelineKind::Forward);
     // Where the frame wrote each target: nothing clears the rest (NaNs in zink's fresh memory).
     auto nonFiniteWritten = [&](Target target) {
-        return countNonFiniteWritten(renderer.readTarget(target), target, renderer.readStencil(),
+        return countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
                                      renderer.lastFrame().reflectionsActive);
     };
     for (Target target : {Target::Radiance, Target::Reflection, Target::Final})
@@ -193,11 +194,11 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
     for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::Radiance,
                           Target::Reflection, Target::Final})
         EXPECT_EQ(nonFiniteWritten(target), 0) << "deferred " << targetName(target);
-    EXPECT_EQ(countNonFinite(renderer.readDepth()), 0) << "depth";
+    EXPECT_EQ(countNonFinite(readDepth(renderer)), 0) << "depth";
 
-    const std::vector<float> normal = renderer.readTarget(Target::Normal);
-    const std::vector<float> info = renderer.readTarget(Target::Info);
-    const std::vector<uint8_t> stencil = renderer.readStencil();  // bottom row first, as the targets
+    const std::vector<float> normal = readTarget(renderer, Target::Normal);
+    const std::vector<float> info = readTarget(renderer, Target::Info);
+    const std::vector<uint8_t> stencil = readStencil(renderer);  // bottom row first, as the targets
     int surfaces = 0, notUnit = 0;
     double worst = 0.0;
     for (int y = 0; y < hard.height; ++y)
@@ -213,16 +214,16 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
                 "%.2f dB, plants drawn %zu, lights %d\n",
                 hard.name.c_str(), renderer.lastFrame().view.pose.position.x, renderer.lastFrame().view.pose.position.y,
                 renderer.lastFrame().view.pose.position.z, surfaces, worst, difference.psnrDb,
-                renderer.vegetationStats().plantsDrawn, renderer.lightsDrawn());
+                renderer.vegetation().stats().plantsDrawn, renderer.paths().lightsDrawn);
     EXPECT_GT(surfaces, 0);
     EXPECT_EQ(notUnit, 0) << "normals off unit length by more than 1e-3 (worst " << worst << ")";
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";
     EXPECT_TRUE(hasContent(deferred));
     EXPECT_TRUE(hasContent(forward));
     if (hard.check) {
-        const std::vector<float> position = renderer.readTarget(Target::Position);
+        const std::vector<float> position = readTarget(renderer, Target::Position);
         hard.check(CaseFrame{renderer.lastFrame(), hard.width, hard.height, position, info, stencil, forward,
-                             deferred, renderer.lightsDrawn()});
+                             deferred, renderer.paths().lightsDrawn});
     }
 }
 
@@ -238,15 +239,15 @@ TEST_P(Stability, CompactLayoutFiniteAndAgrees) {
     Image deferred = renderFinal(renderer, hard.scene, PipelineKind::Deferred);
     for (Target target : {Target::Albedo, Target::Normal, Target::Info, Target::Radiance, Target::Reflection,
                           Target::Final})
-        EXPECT_EQ(countNonFiniteWritten(renderer.readTarget(target), target, renderer.readStencil(),
+        EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
                                         renderer.lastFrame().reflectionsActive),
                   0)
             << "deferred " << targetName(target);
-    const std::vector<float> positions = renderer.readSurfacePositions();
+    const std::vector<float> positions = readSurfacePositions(renderer);
     EXPECT_EQ(countNonFinite(positions), 0) << "reconstructed positions";
-    const std::vector<float> normal = renderer.readTarget(Target::Normal);
-    const std::vector<float> info = renderer.readTarget(Target::Info);
-    const std::vector<uint8_t> stencil = renderer.readStencil();  // bottom row first, as the targets
+    const std::vector<float> normal = readTarget(renderer, Target::Normal);
+    const std::vector<float> info = readTarget(renderer, Target::Info);
+    const std::vector<uint8_t> stencil = readStencil(renderer);  // bottom row first, as the targets
     int surfaces = 0, notUnit = 0;
     for (int y = 0; y < hard.height; ++y)
         for (int x = 0; x < hard.width; ++x) {

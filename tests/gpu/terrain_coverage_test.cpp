@@ -3,6 +3,7 @@
 // Reflections are off so that the G-buffer holds the direct terrain at water pixels too (the lake
 // bed under the water, e.g. below the camera at (-1150, 1250)); with them on, a water pixel holds
 // the mirrored scene, which is the sky for steep rays.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -43,8 +44,8 @@ TEST_F(TerrainCoverage, EveryRayTwentyDegreesBelowTheHorizonHitsTerrain) {
                 SceneSettings scene = sceneAt(place.x, place.y, 10.0, yaw, pitch);
                 scene.water.reflections = false;
                 renderer.renderFrame(scene);
-                const std::vector<float> position = renderer.readTarget(Target::Position);
-                const std::vector<uint8_t> stencil = renderer.readStencil();
+                const std::vector<float> position = readTarget(renderer, Target::Position);
+                const std::vector<uint8_t> stencil = readStencil(renderer);
                 const glm::mat4 inverse = renderer.lastFrame().data.inverseViewProjection;
                 int uncovered = 0;
                 float steepest = 0.0f, shallowest = -90.0f;  // elevations (degrees) of uncovered rays

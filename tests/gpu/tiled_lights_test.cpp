@@ -3,6 +3,7 @@
 // lights around and holding the camera, in every G-buffer layout and both depth conventions, direct
 // and mirrored (Reflection); a tile reached by more lights than its list holds still gets them all;
 // without compute shaders the renderer falls back to volumes and says why.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 namespace oasis::gputest {
@@ -88,16 +89,16 @@ Agreement compareMethods(Renderer& renderer, const SceneSettings& scene, const I
     volumes.lights.method = LightMethod::Volumes;
     tiled.lights.method = LightMethod::Tiled;
     Image reference = renderFinal(renderer, volumes, PipelineKind::Deferred);
-    EXPECT_EQ(renderer.lightMethod(), LightMethod::Volumes);
+    EXPECT_EQ(renderer.paths().lightMethod.method, LightMethod::Volumes);
     // Reflection where the frame wrote it (writtenTexels: nothing clears it outside the water).
     auto writtenReflection = [&] {
-        return writtenTexels(renderer.readTarget(Target::Reflection), Target::Reflection, renderer.readStencil(),
+        return writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection, readStencil(renderer),
                              renderer.lastFrame().reflectionsActive);
     };
-    std::vector<float> radiance = renderer.readTarget(Target::Radiance), reflection = writtenReflection();
+    std::vector<float> radiance = readTarget(renderer, Target::Radiance), reflection = writtenReflection();
     Image image = renderFinal(renderer, tiled, PipelineKind::Deferred);
-    EXPECT_EQ(renderer.lightMethod(), LightMethod::Tiled) << renderer.lightMethodReason();
-    std::vector<float> tiledRadiance = renderer.readTarget(Target::Radiance);
+    EXPECT_EQ(renderer.paths().lightMethod.method, LightMethod::Tiled) << renderer.paths().lightMethod.reason;
+    std::vector<float> tiledRadiance = readTarget(renderer, Target::Radiance);
     result.radiance = maxRelativeDifference(radiance, tiledRadiance);
     result.radianceTotal = totalRelativeDifference(radiance, tiledRadiance);
     result.reflection = maxRelativeDifference(reflection, writtenReflection());
@@ -136,7 +137,7 @@ TEST_F(TiledLights, AgreeWithVolumesInEveryLayoutAndDepthConvention) {
     SceneSettings base = nightScene();
     Renderer renderer(*shaders_, base);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    ASSERT_TRUE(renderer.computeAvailable());
+    ASSERT_TRUE(renderer.paths().capabilities.compute.available);
     for (const DepthConvention& depth : depthConventions()) {
         renderer.setDepthConvention(depth);
         for (const char* layout : {"full", "standard", "compact"}) {
@@ -206,14 +207,19 @@ TEST_F(GpuTest, TiledLightsFallBackToVolumesWithoutCompute) {
     renderer.configure(width, height, layoutNamed("standard"));
     std::string driverReason;
     bool driverCompute = gl::measureCapabilities().computeAvailable(&driverReason);
-    EXPECT_EQ(renderer.computeAvailable(), driverCompute) << driverReason;
-    if (driverCompute) renderer.setComputeAvailable(false, "switched off by --force no-compute", LightMethod::Tiled);
+    EXPECT_EQ(renderer.paths().capabilities.compute.available, driverCompute) << driverReason;
+    if (driverCompute) {
+        RendererCapabilities caps = renderer.paths().capabilities;
+        caps.compute = {false, "switched off by --force no-compute"};
+        caps.forcedLightMethod = LightMethod::Tiled;
+        renderer.setCapabilities(caps);
+    }
     SceneSettings scene = withLights(base, lightsAround(base, 64), LightMethod::Tiled);
     Image asked = renderFinal(renderer, scene, PipelineKind::Deferred);
-    EXPECT_EQ(renderer.lightMethod(), LightMethod::Volumes);
-    EXPECT_NE(renderer.lightMethodReason().find("tiled was asked for but"), std::string::npos) << renderer.lightMethodReason();
-    EXPECT_NE(renderer.lightMethodReason().find(driverCompute ? "--force no-compute" : driverReason), std::string::npos)
-        << renderer.lightMethodReason();
+    EXPECT_EQ(renderer.paths().lightMethod.method, LightMethod::Volumes);
+    EXPECT_NE(renderer.paths().lightMethod.reason.find("tiled was asked for but"), std::string::npos) << renderer.paths().lightMethod.reason;
+    EXPECT_NE(renderer.paths().lightMethod.reason.find(driverCompute ? "--force no-compute" : driverReason), std::string::npos)
+        << renderer.paths().lightMethod.reason;
     scene.lights.method = LightMethod::Volumes;
     EXPECT_EQ(compareImages(asked, renderFinal(renderer, scene, PipelineKind::Deferred)).maxAbs, 0);
 }

@@ -1,6 +1,7 @@
 // The tone map fused into the passes that write each pixel's colour last (FrameSetup::toneMapFused):
 // the fused frame is the separate ToneMapPass's frame, Radiance is still there for whoever asks,
 // ToneMapPass runs only where it cannot be fused, and one full screen of fragments is not shaded.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <algorithm>
@@ -67,14 +68,14 @@ TEST_F(ToneMapFusion, FusedFrameEqualsTheSeparatePassAndRadianceStaysWhole) {
                 SCOPED_TRACE(pose.name + ", " + pipelineName(kind) + ", " + layout);
                 renderer.setPipeline(kind);
                 renderer.renderFrame(withToneMap(pose.scene, false));
-                const std::vector<float> separateRadiance = renderer.readTarget(Target::Radiance);
-                renderer.renderView("final");
-                const Image separate = renderer.readDisplay();
+                const std::vector<float> separateRadiance = readTarget(renderer, Target::Radiance);
+                renderer.views().render("final");
+                const Image separate = readDisplay(renderer);
 
                 renderer.renderFrame(withToneMap(pose.scene, true));
                 EXPECT_TRUE(renderer.lastFrame().toneMapFused);
-                renderer.renderView("final");
-                const Image fused = renderer.readDisplay();
+                renderer.views().render("final");
+                const Image fused = readDisplay(renderer);
                 EXPECT_TRUE(hasContent(fused));
                 ImageDifference difference = compareImages(separate, fused);
                 // The fused passes round to half floats as Radiance stores them (common/output.glsl
@@ -85,7 +86,7 @@ TEST_F(ToneMapFusion, FusedFrameEqualsTheSeparatePassAndRadianceStaysWhole) {
                     std::printf("[tone map fusion] %s %s %s: max abs %d, %.2f dB\n", pose.name.c_str(),
                                 pipelineName(kind), layout.c_str(), difference.maxAbs, difference.psnrDb);
                 // Radiance as the separate pass leaves it, the water laid on when it is asked for.
-                const std::vector<float> fusedRadiance = renderer.readTarget(Target::Radiance);
+                const std::vector<float> fusedRadiance = readTarget(renderer, Target::Radiance);
                 size_t differing = 0;
                 for (size_t i = 0; i < fusedRadiance.size(); ++i)
                     if (fusedRadiance[i] != separateRadiance[i]) ++differing;
@@ -109,22 +110,22 @@ TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
     };
     std::vector<Case> cases = {{PipelineKind::Forward, LightMethod::Volumes, true},
                                {PipelineKind::Deferred, LightMethod::Volumes, false}};
-    if (renderer.computeAvailable()) cases.push_back({PipelineKind::Deferred, LightMethod::Tiled, true});
+    if (renderer.paths().capabilities.compute.available) cases.push_back({PipelineKind::Deferred, LightMethod::Tiled, true});
     for (const Case& c : cases) {
         SCOPED_TRACE(std::string(pipelineName(c.kind)) + ", " + lightMethodName(c.method));
         SceneSettings scene = pose.scene;
         scene.lights.method = c.method;
         renderer.setPipeline(c.kind);
         FrameRun separateRun = observe(renderer, withToneMap(scene, false));
-        renderer.renderView("final");
-        const Image separate = renderer.readDisplay();
+        renderer.views().render("final");
+        const Image separate = readDisplay(renderer);
         EXPECT_TRUE(ran(separateRun, "ToneMapPass"));
 
         FrameRun fusedRun = observe(renderer, withToneMap(scene, true));
-        renderer.renderView("final");
+        renderer.views().render("final");
         EXPECT_EQ(renderer.lastFrame().toneMapFused, c.fused);
         EXPECT_EQ(ran(fusedRun, "ToneMapPass"), !c.fused);
-        EXPECT_LE(compareImages(separate, renderer.readDisplay()).maxAbs, 1);
+        EXPECT_LE(compareImages(separate, readDisplay(renderer)).maxAbs, 1);
     }
 }
 

@@ -2,6 +2,7 @@
 // heights within 1e-3), the toggle changing only plant and water pixels, plants in the water's
 // reflection in both pipelines, wind that moves plants (and does not in still air, nor jumps after
 // days of animation), and the CPU-interpreted atlas giving the same frame as the compute one.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include <cstring>
@@ -17,7 +18,7 @@ protected:
     std::vector<uint8_t> stencilOf(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
         renderer.setPipeline(kind);
         renderer.renderFrame(scene);
-        return renderer.readStencil();
+        return readStencil(renderer);
     }
 };
 
@@ -67,14 +68,14 @@ TEST_F(Vegetation, ToggleChangesOnlyPlantAndWaterPixels) {
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         SCOPED_TRACE(pipelineName(kind));
         std::vector<uint8_t> stencilOn = stencilOf(renderer, pose.scene, kind);
-        renderer.renderView("final");
-        Image on = renderer.readDisplay();
-        EXPECT_GT(renderer.vegetationStats().plantsDrawn, 1000u);
-        EXPECT_GT(renderer.vegetationStats().plantsDrawnMirrored, 0u);
+        renderer.views().render("final");
+        Image on = readDisplay(renderer);
+        EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 1000u);
+        EXPECT_GT(renderer.vegetation().stats().plantsDrawnMirrored, 0u);
         std::vector<uint8_t> stencilOff = stencilOf(renderer, off, kind);
-        renderer.renderView("final");
-        Image offImage = renderer.readDisplay();
-        EXPECT_EQ(renderer.vegetationStats().plantsDrawn, 0u) << "plants drawn with vegetation off";
+        renderer.views().render("final");
+        Image offImage = readDisplay(renderer);
+        EXPECT_EQ(renderer.vegetation().stats().plantsDrawn, 0u) << "plants drawn with vegetation off";
         EXPECT_EQ(countValue(stencilOff, kStencilPlant), 0u) << "plant stencil marks with vegetation off";
         size_t plantPixels = countValue(stencilOn, kStencilPlant);
         EXPECT_GT(plantPixels, size_t(kWidth * kHeight / 20)) << "the meadow shows few plants";
@@ -99,7 +100,7 @@ TEST_F(Vegetation, ReflectedPlantsInBothPipelines) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     // Deferred: the water pixels of the G-buffer hold the mirrored scene, plants among it.
     std::vector<uint8_t> stencil = stencilOf(renderer, pose.scene, PipelineKind::Deferred);
-    std::vector<float> info = renderer.readTarget(Target::Info);
+    std::vector<float> info = readTarget(renderer, Target::Info);
     size_t reflectedPlants = 0, misplaced = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
@@ -113,10 +114,10 @@ TEST_F(Vegetation, ReflectedPlantsInBothPipelines) {
     EXPECT_EQ(misplaced, 0u) << "reflected plants outside the water";
     // Forward: the Reflection target changes when the plants go, inside the water only.
     std::vector<float> withPlants = (stencilOf(renderer, pose.scene, PipelineKind::Forward),
-                                     renderer.readTarget(Target::Reflection));
+                                     readTarget(renderer, Target::Reflection));
     SceneSettings off = pose.scene;
     off.vegetation.enabled = false;
-    std::vector<float> without = (stencilOf(renderer, off, PipelineKind::Forward), renderer.readTarget(Target::Reflection));
+    std::vector<float> without = (stencilOf(renderer, off, PipelineKind::Forward), readTarget(renderer, Target::Reflection));
     size_t changed = 0;
     for (size_t i = 0; i < withPlants.size(); i += 4)
         changed += withPlants[i] != without[i] || withPlants[i + 1] != without[i + 1] || withPlants[i + 2] != without[i + 2];
@@ -156,12 +157,12 @@ TEST_F(Vegetation, CpuAtlasDrawsTheSameFrame) {
     Renderer renderer(*shaders_, pose.scene);
     renderer.configure(kWidth, kHeight, layoutNamed("standard"));
     PlantAtlas gpuAtlas(*shaders_, PlantInterpretation::Gpu), cpuAtlas(*shaders_, PlantInterpretation::Cpu);
-    renderer.setPlantAtlas(&gpuAtlas);
+    renderer.views().setPlantAtlas(&gpuAtlas);
     Image gpu = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
-    renderer.setPlantAtlas(&cpuAtlas);
+    renderer.views().setPlantAtlas(&cpuAtlas);
     Image cpu = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
     EXPECT_EQ(compareImages(gpu, cpu).maxAbs, 0) << "the CPU-interpreted atlas draws a different frame";
-    EXPECT_GT(renderer.vegetationStats().plantsDrawn, 0u);
+    EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 0u);
 }
 
 // Fragment shader invocations of one frame, where the context counts them (GL 4.6 or
@@ -220,13 +221,13 @@ TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
         none.vegetation.enabled = false;
         long long trimmedCount = fragmentInvocations(renderer, pose.scene);
         renderer.renderFrame(pose.scene);
-        renderer.renderView("final");
-        Image trimmed = renderer.readDisplay();
+        renderer.views().render("final");
+        Image trimmed = readDisplay(renderer);
         EXPECT_TRUE(hasContent(trimmed));
         long long wholeCount = fragmentInvocations(renderer, whole);
         renderer.renderFrame(whole);
-        renderer.renderView("final");
-        Image reference = renderer.readDisplay();
+        renderer.views().render("final");
+        Image reference = readDisplay(renderer);
         long long noneCount = fragmentInvocations(renderer, none);
 
         ImageDifference difference = compareImages(reference, trimmed);

@@ -1,6 +1,7 @@
 // The numbers behind the views (VIEW_VALUES passes) against the targets read back on the CPU, in
 // every layout; a NaN written into Radiance is counted and painted by the overlay; the legend
 // strip draws the depth view's ramp with the frame's near and far planes.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "debug/view_controls.h"
@@ -21,20 +22,20 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.renderFrame(pose.scene);
     renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
-    const std::vector<float> positions = renderer.readSurfacePositions();
-    const std::vector<float> normal = renderer.readTarget(Target::Normal);
-    const std::vector<float> info = renderer.readTarget(Target::Info);
-    const std::vector<float> radiance = renderer.readTarget(Target::Radiance);
-    const std::vector<float> depth = renderer.readDepth();
-    const std::vector<uint8_t> stencil = renderer.readStencil();
+    const std::vector<float> positions = readSurfacePositions(renderer);
+    const std::vector<float> normal = readTarget(renderer, Target::Normal);
+    const std::vector<float> info = readTarget(renderer, Target::Info);
+    const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
+    const std::vector<float> depth = readDepth(renderer);
+    const std::vector<uint8_t> stencil = readStencil(renderer);
     const FrameData& frame = renderer.lastFrame().data;
     const double nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
 
-    const std::vector<float> positionValues = renderer.readViewValues("position");
-    const std::vector<float> normalValues = renderer.readViewValues("normal");
-    const std::vector<float> depthValues = renderer.readViewValues("depth");
-    const std::vector<float> stencilValues = renderer.readViewValues("stencil");
-    const std::vector<float> radianceValues = renderer.readViewValues("radiance");
+    const std::vector<float> positionValues = renderer.views().readValues("position");
+    const std::vector<float> normalValues = renderer.views().readValues("normal");
+    const std::vector<float> depthValues = renderer.views().readValues("depth");
+    const std::vector<float> stencilValues = renderer.views().readValues("stencil");
+    const std::vector<float> radianceValues = renderer.views().readValues("radiance");
     int positionOff = 0, normalOff = 0, depthOff = 0, stencilOff = 0, radianceOff = 0, surfaces = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
@@ -66,7 +67,7 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     EXPECT_EQ(radianceOff, 0);
     // Every view fills the channels its table row names and leaves the frame's numbers finite.
     for (const DebugView& view : debugViews()) {
-        ValueStatistics s = valueStatistics(renderer.readViewValues(view.name), defaultChannel(view));
+        ValueStatistics s = valueStatistics(renderer.views().readValues(view.name), defaultChannel(view));
         EXPECT_EQ(s.nan + s.positiveInfinity + s.negativeInfinity, 0) << view.name;
         EXPECT_TRUE(s.anyFinite) << view.name;
     }
@@ -86,12 +87,12 @@ TEST_F(GpuTest, NanInRadianceIsCountedAndOverlaid) {
     const GLfloat poisoned[4] = {nan, 0.5f, nan, 1.0f};
     glBindFramebuffer(GL_FRAMEBUFFER, renderer.targets().framebuffer({Target::Radiance}, Target::DepthStencil));
     glClearBufferfv(GL_COLOR, 0, poisoned);
-    std::vector<float> values = renderer.readViewValues("radiance");
+    std::vector<float> values = renderer.views().readValues("radiance");
     ValueStatistics rgb = valueStatistics(values, ViewChannel::Rgb);
     EXPECT_EQ(rgb.nan, 64 * 36 * 2);
     EXPECT_EQ(valueStatistics(values, ViewChannel::G).nan, 0);
-    renderer.renderView("radiance");
-    Image view = renderer.readDisplay();
+    renderer.views().render("radiance");
+    Image view = readDisplay(renderer);
     paintOverlay(view, values, ViewChannel::Rgb, kOverlayNan);
     for (int y = 0; y < 36; ++y)
         for (int x = 0; x < 64; ++x) {
@@ -99,7 +100,7 @@ TEST_F(GpuTest, NanInRadianceIsCountedAndOverlaid) {
             bool magenta = p[0] == 255 && p[1] == 0 && p[2] == 255, black = p[0] == 0 && p[1] == 0 && p[2] == 0;
             ASSERT_TRUE(magenta || black) << x << "," << y;
         }
-    Image unpainted = renderer.readDisplay();
+    Image unpainted = readDisplay(renderer);
     Image copy = unpainted;
     paintOverlay(copy, values, ViewChannel::G, kOverlayNan);  // g has no NaN
     EXPECT_TRUE(copy.rgba == unpainted.rgba);

@@ -4,6 +4,7 @@
 // is the deferred frame's state before the reflection is lit (stopped before LightingPass.mirrored),
 // bit for bit; the depth and the G-buffer agree on where nothing was drawn; a mirrored scene
 // asked for without reflections falls back to the direct one and says why.
+#include "frame/frame_readback.h"
 #include "gpu_test.h"
 
 #include "passes/pass.h"
@@ -30,8 +31,8 @@ struct Surfaces {
 // and Info's the SKY flag where the layout tells the sky by depth (compact); the layouts that store
 // position keep Info's clear, read as stored.
 Surfaces readSurfaces(Renderer& renderer) {
-    Surfaces read{renderer.readTarget(Target::Albedo), renderer.readTarget(Target::Info), renderer.readDepth(),
-                  renderer.readStencil()};
+    Surfaces read{readTarget(renderer, Target::Albedo), readTarget(renderer, Target::Info), readDepth(renderer),
+                  readStencil(renderer)};
     const GBufferLayout& layout = renderer.targets().layout();
     const float cleared = renderer.targets().depth().farPlaneWindowDepth;
     for (size_t i = 0; i < read.depth.size(); ++i) {
@@ -48,7 +49,7 @@ protected:
     // A whole frame of `pipeline`, then the views' fill of `waterScene`.
     Surfaces filled(Renderer& renderer, const SceneSettings& scene, PipelineKind pipeline, WaterScene waterScene) {
         renderer.setPipeline(pipeline);
-        renderer.setViewWaterScene(waterScene);
+        renderer.views().setWaterScene(waterScene);
         renderer.renderFrame(scene);
         renderer.ensureGBuffer();
         return readSurfaces(renderer);
@@ -76,8 +77,8 @@ TEST_P(WaterSceneTest, EachSceneIsTheDeferredFramesOwnAndBothPipelinesShowIt) {
         for (PipelineKind pipeline : {PipelineKind::Forward, PipelineKind::Deferred}) {
             SCOPED_TRACE(std::string(pipelineName(pipeline)) + ", water scene " + waterSceneName(waterScene));
             const Surfaces shown = filled(renderer, scene, pipeline, waterScene);
-            ASSERT_TRUE(renderer.viewScene().scene.has_value());
-            EXPECT_EQ(*renderer.viewScene().scene, waterScene);
+            ASSERT_TRUE(renderer.views().scene().scene.has_value());
+            EXPECT_EQ(*renderer.views().scene().scene, waterScene);
             EXPECT_EQ(shown.albedo, expected.albedo);
             EXPECT_EQ(shown.info, expected.info);
             EXPECT_EQ(shown.depth, expected.depth);
@@ -116,8 +117,8 @@ TEST_P(WaterSceneTest, MirroredWithoutReflectionsShowsTheDirectSceneAndSaysWhy) 
     const Surfaces direct = filled(renderer, scene, PipelineKind::Deferred, WaterScene::Direct);
     scene.water.reflections = false;
     const Surfaces asked = filled(renderer, scene, PipelineKind::Deferred, WaterScene::Mirrored);
-    EXPECT_EQ(*renderer.viewScene().scene, WaterScene::Direct);
-    EXPECT_NE(renderer.viewScene().reason.find("reflections off"), std::string::npos) << renderer.viewScene().reason;
+    EXPECT_EQ(*renderer.views().scene().scene, WaterScene::Direct);
+    EXPECT_NE(renderer.views().scene().reason.find("reflections off"), std::string::npos) << renderer.views().scene().reason;
     EXPECT_EQ(asked.albedo, direct.albedo);
     EXPECT_EQ(asked.depth, direct.depth);
 }
@@ -128,10 +129,10 @@ TEST_P(WaterSceneTest, AFrameStoppedEarlyIsShownAsItWasLeft) {
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.configure(kWidth, kHeight, layoutNamed(GetParam()));
     const Surfaces stopped = deferredBefore(renderer, scene, "WaterCompositePass");
-    renderer.setViewWaterScene(WaterScene::Direct);
-    renderer.renderView("albedo");
-    EXPECT_FALSE(renderer.viewScene().scene.has_value());
-    EXPECT_NE(renderer.viewScene().description.find("WaterCompositePass"), std::string::npos);
+    renderer.views().setWaterScene(WaterScene::Direct);
+    renderer.views().render("albedo");
+    EXPECT_FALSE(renderer.views().scene().scene.has_value());
+    EXPECT_NE(renderer.views().scene().description.find("WaterCompositePass"), std::string::npos);
     EXPECT_EQ(readSurfaces(renderer).albedo, stopped.albedo);
 }
 

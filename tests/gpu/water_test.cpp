@@ -32,16 +32,16 @@ FrameReadback readBack(Renderer& renderer, bool gbuffer) {
     r.height = renderer.targets().height();
     r.frame = renderer.lastFrame();
     if (gbuffer) {
-        r.albedo = renderer.readTarget(Target::Albedo);
-        r.normal = renderer.readTarget(Target::Normal);
-        r.position = renderer.readTarget(Target::Position);
-        r.info = renderer.readTarget(Target::Info);
+        r.albedo = readTarget(renderer, Target::Albedo);
+        r.normal = readTarget(renderer, Target::Normal);
+        r.position = readTarget(renderer, Target::Position);
+        r.info = readTarget(renderer, Target::Info);
     }
-    r.radiance = renderer.readTarget(Target::Radiance);
-    r.reflection = renderer.readTarget(Target::Reflection);
-    r.final = renderer.readTarget(Target::Final);
-    r.depth = renderer.readDepth();
-    r.stencil = renderer.readStencil();
+    r.radiance = readTarget(renderer, Target::Radiance);
+    r.reflection = readTarget(renderer, Target::Reflection);
+    r.final = readTarget(renderer, Target::Final);
+    r.depth = readDepth(renderer);
+    r.stencil = readStencil(renderer);
     return r;
 }
 
@@ -503,11 +503,11 @@ TEST_F(Water, ReflectionIsNotShownWhenReflectionsAreInactive) {
             FrameReadback r = renderAndRead(renderer, scene, kind);
             ASSERT_FALSE(r.frame.reflectionsActive);
             for (const char* name : {"reflection", "reflection-raw"}) {
-                renderer.renderView(name);
-                Image view = renderer.readDisplay();
+                renderer.views().render(name);
+                Image view = readDisplay(renderer);
                 EXPECT_EQ(rgbStats(view, wholeImage(view)).maxMean(), 0.0) << "the " << name << " view is not black";
             }
-            const std::vector<float> values = renderer.readViewValues("reflection");
+            const std::vector<float> values = renderer.views().readValues("reflection");
             EXPECT_EQ(size_t(std::count(values.begin(), values.end(), 0.0f)), values.size())
                 << "the reflection view's values are not zero";
         }
@@ -589,12 +589,12 @@ TEST_P(WaterHardCase, FiniteReflectionOnlyInWaterAndPipelinesAgree) {
         // frame outside the water was written there.
         zeroTarget(renderer.targets(), Target::Reflection);
         FrameReadback forward = renderAndRead(renderer, hard.scene, PipelineKind::Forward);
-        renderer.renderView("final");
-        Image forwardImage = renderer.readDisplay();
+        renderer.views().render("final");
+        Image forwardImage = readDisplay(renderer);
         zeroTarget(renderer.targets(), Target::Reflection);
         FrameReadback deferred = renderAndRead(renderer, hard.scene, PipelineKind::Deferred);
-        renderer.renderView("final");
-        Image deferredImage = renderer.readDisplay();
+        renderer.views().render("final");
+        Image deferredImage = readDisplay(renderer);
         dumpImage("water-" + hard.name + "-" + layout + "-forward", forwardImage);
         dumpImage("water-" + hard.name + "-" + layout + "-deferred", deferredImage);
         const FrameSetup& frame = deferred.frame;
@@ -677,7 +677,7 @@ TEST_F(Water, UnderWaterTheViewIsTintedAndNothingIsReflected) {
         SCOPED_TRACE(pipelineName(kind));
         Renderer renderer(*shaders_, below);
         renderer.configure(kW, kH, layoutNamed("standard"));
-        const std::vector<float> fresh = renderer.readTarget(Target::Reflection);
+        const std::vector<float> fresh = readTarget(renderer, Target::Reflection);
         FrameReadback under = renderAndRead(renderer, below, kind);
         EXPECT_FALSE(under.frame.reflectionsActive);
         ASSERT_EQ(fresh.size(), under.reflection.size());

@@ -79,7 +79,7 @@ void drawFrame(Renderer& renderer, SceneSettings& scene, const FrameKnobs& knobs
     scene.lights.count = knobs.lightCount;
     scene.lights.path = knobs.lightsPath;
     renderer.renderFrame(scene);
-    renderer.renderView(knobs.view);
+    renderer.views().render(knobs.view);
 }
 
 // What is measured at a checkpoint, after one frame of a fixed configuration (so the counts do
@@ -98,7 +98,7 @@ Checkpoint measure(Renderer& renderer, SceneSettings& scene, int frame) {
     fixed.timeSeconds = knobsFor(frame).timeSeconds;
     drawFrame(renderer, scene, fixed);
     glFinish();
-    return {frame, residentKiB(), liveCounts(), probeNames(), int(renderer.vegetationStats().plantsPlaced),
+    return {frame, residentKiB(), liveCounts(), probeNames(), int(renderer.vegetation().stats().plantsPlaced),
             renderer.lastFrame().view.pose.position.x};
 }
 

@@ -81,7 +81,7 @@ TEST(FrameGraph, EveryReadOfBothPipelinesHasAWriterBeforeIt) {
     }
 }
 
-// A view's sink (Renderer::setFrameSink): what the albedo view reads, walked back through the
+// A view's sink (FrameViews::setSink): what the albedo view reads, walked back through the
 // views' fill, which clears the depth-stencil whole (ClearPass's Replace) and draws the G-buffer
 // over what the frame left, reaches the frame as the G-buffer's colour targets alone; the frame
 // built for them runs the geometry and none of the shading.

@@ -1,0 +1,96 @@
+// What the renderer's last frame left, read back (frame/frame_readback.h).
+#include "frame/frame_readback.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "gl/objects.h"
+#include "render/pixel_readback.h"
+#include "render/texture_units.h"
+
+namespace oasis {
+
+// The renderer's internals these reads need, and nothing else of it (a friend of Renderer).
+struct ReadbackAccess {
+    static GLuint waterBounds(const Renderer& renderer) { return renderer.waterBounds_.name(); }
+    static FloatReadback& positions(Renderer& renderer) { return renderer.positionsReadback_; }
+    static void fillSurfacesWithTheirDepth(Renderer& renderer) { renderer.fillSurfacesWithTheirDepth(); }
+};
+
+glm::ivec4 readWaterBounds(const Renderer& renderer) {
+    glm::ivec4 bounds(1, 1, 0, 0);
+    if (!renderer.paths().waterBoundsAvailable) return bounds;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, ReadbackAccess::waterBounds(renderer));
+    gl::readBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(bounds), &bounds);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return bounds;
+}
+
+Image readDisplay(const Renderer& renderer) {
+    const FrameTargets& targets = renderer.targets();
+    Image image(targets.width(), targets.height());
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.displayFramebuffer());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+    image.flipRows();  // GL is bottom-up; images are top-down
+    return image;
+}
+
+void showImage(Renderer& renderer, const Image& image) {
+    const FrameTargets& targets = renderer.targets();
+    if (image.width != targets.width() || image.height != targets.height())
+        throw std::invalid_argument("showImage: the image is not the frame's size");
+    Image rows = image;
+    rows.flipRows();  // GL's rows are bottom-up
+    glBindTexture(GL_TEXTURE_2D, targets.displayTexture());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, rows.rgba.data());
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+std::vector<float> readTarget(Renderer& renderer, Target target) {
+    if (target == Target::Radiance) renderer.ensureRadiance();
+    const FrameTargets& targets = renderer.targets();
+    if (target == Target::DepthStencil || target == Target::SceneDepth)
+        throw std::invalid_argument(std::string("readTarget reads colour targets; ") + targetName(target) +
+                                    " is read with readDepth()");
+    if (!targets.layout().stores(target))
+        throw std::invalid_argument(std::string("the ") + targets.layout().name + " G-buffer layout has no " +
+                                    targetName(target) + " target");
+    std::vector<float> pixels(size_t(targets.width()) * size_t(targets.height()) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({target}));
+    readColourFloats(targets.width(), targets.height(), pixels.data());
+    return pixels;
+}
+
+std::vector<float> readSurfacePositions(Renderer& renderer) {
+    ReadbackAccess::fillSurfacesWithTheirDepth(renderer);
+    const FrameTargets& targets = renderer.targets();
+    FloatReadback& positions = ReadbackAccess::positions(renderer);
+    positions.bindForDrawing(targets.width(), targets.height());
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    bindGBufferInputs(targets);
+    glUseProgram(renderer.shaders().program(targets.layout().program("gbuffer.positions")));
+    renderer.geometry().drawFullscreenTriangle();
+    return positions.read();
+}
+
+std::vector<float> readDepth(const Renderer& renderer) {
+    const FrameTargets& targets = renderer.targets();
+    std::vector<float> depth(size_t(targets.width()) * size_t(targets.height()));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, Target::DepthStencil));
+    readDepthFloats(targets.width(), targets.height(), depth.data());
+    return depth;
+}
+
+std::vector<uint8_t> readStencil(const Renderer& renderer) {
+    const FrameTargets& targets = renderer.targets();
+    std::vector<uint8_t> stencil(size_t(targets.width()) * size_t(targets.height()));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, Target::DepthStencil));
+    readStencilBytes(targets.width(), targets.height(), stencil.data());
+    return stencil;
+}
+
+}  // namespace oasis

@@ -1,0 +1,62 @@
+// The renderer's debug views (Renderer::views()): what they are drawn with (the HDR exposure, the
+// stencil view's path, the water scene, the plant atlas), which views the frames are culled for
+// (the sink), and drawing one into Display or reading its values, from the last frame.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "debug/debug_view_pass.h"
+#include "frame/view_fill.h"
+#include "render/plant_atlas.h"
+
+namespace oasis {
+
+class Renderer;
+
+class FrameViews {
+public:
+    // What the frames after this are looked at through (their sink): the views named (table
+    // names or "overview"), and nothing else of them; empty (the default): anything, the whole
+    // frame (frameOutputs()). A view's frame runs only the passes whose writes reach what the
+    // view reads, through what runs after the frame for it (the composite onto Radiance, the
+    // views' fill). A frame stopped early keeps the whole frame's sink. render and readValues of
+    // a view not named throw std::logic_error; a name that is no view throws std::invalid_argument.
+    void setSink(const std::vector<std::string>& views);
+    const std::vector<std::string>& sink() const;
+    void setStencilPath(StencilViewPath path);
+    StencilViewPath stencilPath() const;
+    // The plant atlas the atlas view shows (and the plants are drawn with); the caller keeps it
+    // alive (nullptr: the view is black).
+    void setPlantAtlas(const PlantAtlas* atlas);
+    const PlantAtlas* plantAtlas() const;
+    // The HDR views' (radiance, reflection-raw) exposure, in stops.
+    void setExposure(float stops);
+    float exposure() const;
+    // The water scene the views ask the G-buffer to hold (frame/view_fill.h, Renderer::ensureGBuffer);
+    // scene() says what the views show at water pixels and why.
+    void setWaterScene(WaterScene scene);
+    WaterScene waterScene() const;
+    const ViewScene& scene() const;
+    // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
+    // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
+    void render(const std::string& viewName);
+    // The numbers behind a view (not the overview) of the last frame: its viewValue() per pixel,
+    // RGBA floats, bottom row first; the table's `values` name the channels.
+    std::vector<float> readValues(const std::string& viewName);
+
+private:
+    // Its owner, which reads the views' state while it builds and fills the frame (the sink, the
+    // water scene) and reaches the views' drawing; these reach the renderer's frame in turn.
+    friend class Renderer;
+    explicit FrameViews(Renderer& renderer) : renderer_(renderer) {}
+    void requireInSink(const std::string& viewName) const;
+
+    Renderer& renderer_;
+    DebugViewPass debugViews_;
+    StencilViewPath stencilPath_ = StencilViewPath::Texturing;
+    WaterScene waterScene_ = WaterScene::Direct;
+    ViewScene scene_;  // what the G-buffer holds at water pixels for the views, and why
+    std::vector<std::string> sink_;  // setSink's views; empty: the whole frame
+};
+
+}  // namespace oasis
