@@ -43,7 +43,7 @@ void FrameViews::requireInSink(const std::string& viewName) const {
     std::string names;
     for (const std::string& name : sink_) names += (names.empty() ? "" : ", ") + name;
     throw std::logic_error("the view " + viewName + " was not asked for: the frame was culled for " + names +
-                           " (Renderer::setFrameSink)");
+                           " (Renderer::views().setSink)");
 }
 
 void FrameViews::render(const std::string& viewName) {

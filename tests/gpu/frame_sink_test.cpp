@@ -3,25 +3,17 @@
 // the views' fill and the composite onto Radiance), and every view's picture and values are then the
 // same, bit for bit, as after a whole frame: a read missing from the table would cull its writer
 // and change the picture.
-#include "frame/frame_readback.h"
-#include "gpu_test.h"
+#include "debug_views_support.h"
 
 #include <stdexcept>
 
-#include "debug/debug_views.h"
+#include "frame/frame_readback.h"
 #include "frame/frame_traffic.h"
 
 namespace oasis::gputest {
 namespace {
 
 constexpr int kWidth = 96, kHeight = 54;
-
-std::vector<std::string> allViewNames() {
-    std::vector<std::string> names;
-    for (const DebugView& view : debugViews()) names.push_back(view.name);
-    names.push_back(kOverviewName);
-    return names;
-}
 
 // Water, terrain, plants and sky from the lake's shore; `night`: 21:00 with four point lights
 // added by volumes (LightVolumePass, the separate ToneMapPass), else 10:00 with the tone map fused.
