@@ -297,6 +297,10 @@ std::vector<Args> sweepCases() {
         cases.push_back({"render", "--size", value + "x18"});
         cases.push_back({"render", "--size", "32x" + value});
     }
+    // The graph's text in every sweep, not only where the random cases happen to reach one.
+    for (const char* view : {"final", "albedo", "stencil"})
+        for (const char* pipeline : {"deferred", "forward"})
+            cases.push_back({"render", "--graph", "--view", view, "--pipeline", pipeline, "--size", "32x18"});
     return cases;
 }
 
