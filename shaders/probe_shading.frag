@@ -19,7 +19,8 @@ uniform sampler2D radianceTexture;  // Radiance, as the frame left it (the tone 
 // The point lights' part, recorded first by the SHADING_LIGHTS variant (its own draw). It reads the
 // lights through the frame's path, as the forward loop and the volumes do: through the UBO path,
 // lavapipe (zink, Mesa 22.3.6) aborts running it ("stack smashing detected" in libvulkan_lvp.so),
-// even with no lights and without the sun's shading.
+// even with no lights and without the sun's shading; oasis refuses that record there (exit 1, the way
+// round named: src/frame/shading_probe.cpp) rather than crash.
 uniform vec3 probeLights;
 
 layout(location = 0) out vec4 outValue;

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "common/shading_terms.glsl"
 #include "common/shared_constants.glsl"
@@ -94,8 +96,23 @@ Slots drawRecord(Renderer& renderer, const FrameTargets& surfaces, const std::st
     return values.read();
 }
 
+// lavapipe (under zink; Mesa 22.3.6) crashes running the lights' record through the UBO path: "stack
+// smashing detected" or a SIGSEGV in libvulkan_lvp.so's worker thread, even with no lights. The
+// record would be the frame's own light code on another path, so it is refused, with the way round.
+void refuseLavapipeUboRecord(LightsPath path) {
+    const GLubyte* name = glGetString(GL_RENDERER);
+    std::string renderer = name ? reinterpret_cast<const char*>(name) : "";
+    bool lavapipe = renderer.find("zink") != std::string::npos &&
+                    (renderer.find("llvmpipe") != std::string::npos || renderer.find("lavapipe") != std::string::npos);
+    if (lavapipe && path == LightsPath::Ubo)
+        throw std::runtime_error("probe --shading: " + renderer +
+                                 " crashes running the lights' record through the UBO light path (a lavapipe bug); "
+                                 "--lights-path ssbo records them on this driver");
+}
+
 // The point lights' terms first (their own draw), then everything else with their sum.
 Slots recordShading(Renderer& renderer, const FrameTargets& surfaces, int glX, int glY, bool water, bool mirrored) {
+    refuseLavapipeUboRecord(renderer.lastFrame().lightsPath);
     std::string lightsVariant = "probe.shading.lights" + lightsVariantSuffix(renderer.lastFrame().lightsPath);
     Slots lights = drawRecord(renderer, surfaces, lightsVariant, glX, glY, water, mirrored, glm::vec3(0.0f));
     const float* sum = &lights[OASIS_TERM_LIGHTS * 4];

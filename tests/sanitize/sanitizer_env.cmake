@@ -24,10 +24,14 @@ endif()
 set(OASIS_SANITIZE_SKIPPED_CLI_TESTS
   cli.caps_zink cli.caps_softpipe cli.softpipe_bare_gl33_tier cli.no_blits_copies_or_dsa_in_the_renderer
   # zink over lavapipe under the sanitizer's preload fails as cli.caps_zink does
-  cli.zink_no_runtime_dir_error cli.probe_shading_zink
+  cli.zink_no_runtime_dir_error cli.probe_shading_zink cli.probe_shading_zink_ubo_refused cli.driver_compare_zink
   # the bench's interruption and the full perturbed check take minutes there (the other commands'
   # interruption cases and check --quick run sanitized); the browser test runs no oasis at all;
   # the pixel history's test renders ~150 frames (cli.probe_shading runs the probe's new paths sanitized,
   # and its perturbed twin the same paths over another shader tree)
   cli.interruption_bench cli.check_perturbed cli.check_html_in_chromium cli.probe_history
-  cli.probe_shading_perturbed)
+  cli.probe_shading_perturbed
+  # every writer of every subcommand, about 40 renders (155 s sanitized against 19 s): the other
+  # provenance cases run its code sanitized; the driver comparison's timeout case waits out a
+  # 15 s limit (the other driver_compare cases run the child-process code sanitized)
+  cli.provenance_writers cli.driver_compare_timeout)
