@@ -1,0 +1,132 @@
+// The web build's test driver (ctest label `web`, docs/web.md): serves build-web/ with oasis-serve,
+// opens the page in headless Chromium on SwiftShader, drives it over the DevTools protocol with
+// node's built-in WebSocket (no npm package), and checks what the page reports and draws.
+// usage: node --experimental-websocket web_test.mjs BUILD_DIR WEB_DIR OUT_DIR [WxH]
+import { spawn, execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+
+const [buildDir, webDir, outDir, size = '320x180'] = process.argv.slice(2);
+const [width, height] = size.split('x').map(Number);
+fs.mkdirSync(outDir, { recursive: true });
+const failures = [];
+const check = (ok, what) => { console.log(`${ok ? 'PASS' : 'FAIL'}: ${what}`); if (!ok) failures.push(what); };
+const children = [];
+const finish = (code) => { for (const c of children) { try { process.kill(c.pid); } catch {} } process.exit(code); };
+setTimeout(() => { console.log('FAIL: the web test ran past 240 s'); finish(1); }, 240000).unref();
+
+function waitForLine(child, stream, pattern, seconds) {
+  return new Promise((resolve, reject) => {
+    let text = '';
+    const timer = setTimeout(() => reject(new Error(`no ${pattern} in ${seconds} s: ${text}`)), seconds * 1000);
+    child[stream].on('data', (d) => {
+      text += d;
+      const m = text.match(pattern);
+      if (m) { clearTimeout(timer); resolve(m); }
+    });
+  });
+}
+
+const port = 18000 + (process.pid % 2000);
+const server = spawn(path.join(buildDir, 'oasis-serve'), ['--dir', webDir, '--port', String(port)]);
+children.push(server);
+await waitForLine(server, 'stdout', /oasis-serve: http/, 10);
+
+const chromium = fs.existsSync('/usr/bin/chromium-headless-shell') ? '/usr/bin/chromium-headless-shell'
+                                                                   : '/usr/lib/chromium/chromium-headless-shell';
+const profile = fs.mkdtempSync('/tmp/oasis-web-chromium-');
+const url = `http://127.0.0.1:${port}/oasis.html?size=${size}&hour=15`;
+const browser = spawn(chromium, ['--headless', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--remote-debugging-port=0', `--user-data-dir=${profile}`, '--window-size=1000,1400', 'about:blank']);
+children.push(browser);
+const [, devtools] = await waitForLine(browser, 'stderr', /DevTools listening on (ws:\/\/\S+)/, 30);
+const httpBase = devtools.replace('ws://', 'http://').replace(/\/devtools\/.*/, '');
+const targets = await (await fetch(`${httpBase}/json/list`)).json();
+const page = targets.find((t) => t.type === 'page');
+const socket = new WebSocket(page.webSocketDebuggerUrl);
+await new Promise((resolve) => socket.addEventListener('open', resolve));
+let nextId = 1;
+const pending = new Map();
+const consoleLines = [];
+socket.addEventListener('message', (event) => {
+  const message = JSON.parse(event.data);
+  if (message.id && pending.has(message.id)) { pending.get(message.id)(message); pending.delete(message.id); }
+  if (message.method === 'Runtime.consoleAPICalled')
+    consoleLines.push(message.params.args.map((a) => a.value ?? a.description).join(' '));
+});
+const send = (method, params = {}) => new Promise((resolve) => {
+  const id = nextId++;
+  pending.set(id, resolve);
+  socket.send(JSON.stringify({ id, method, params }));
+});
+const evaluate = async (expression) => {
+  const reply = await send('Runtime.evaluate', { expression, awaitPromise: true, returnByValue: true });
+  if (reply.result.exceptionDetails) throw new Error(`${expression}: ${JSON.stringify(reply.result.exceptionDetails)}`);
+  return reply.result.result.value;
+};
+
+await send('Runtime.enable');
+await send('Page.enable');
+const loadStart = Date.now();
+await send('Page.navigate', { url });
+let state = {};
+while (Date.now() - loadStart < 180000) {
+  state = await evaluate('({ first: window.oasisFirstFrameMs, error: window.oasisError })');
+  if (state.first !== undefined || state.error) break;
+  await new Promise((r) => setTimeout(r, 250));
+}
+if (state.error || state.first === undefined) {
+  console.log(consoleLines.join('\n'));
+  check(false, `the page drew a first frame (${state.error || 'timed out'})`);
+  finish(1);
+}
+console.log(`web: time from page load to first frame: ${state.first.toFixed(0)} ms (page's clock), ` +
+            `${Date.now() - loadStart} ms (test's clock)`);
+
+const browserGl = await evaluate('window.oasisBrowser');
+const caps = await evaluate('window.oasisCapabilities');
+console.log(`web: WebGL ${browserGl.version}; renderer ${browserGl.unmaskedRenderer}`);
+console.log(`web: oasis reports ${caps.version} on ${caps.renderer}; fallbacks: ${caps.fallbacks.join('; ')}`);
+check(/WebGL 2\.0/.test(browserGl.version) && /OpenGL ES 3\.0/.test(caps.version), 'the page has WebGL 2 (OpenGL ES 3.0)');
+check(/SwiftShader/.test(browserGl.unmaskedRenderer) && /SwiftShader/.test(caps.renderer), 'the renderer is SwiftShader');
+check(browserGl.extensions.includes('EXT_color_buffer_float'), 'EXT_color_buffer_float is there');
+fs.writeFileSync(path.join(outDir, 'capabilities.json'), JSON.stringify({ browser: browserGl, oasis: caps }, null, 1));
+
+// Both pipelines' final frames, written in the page by the same readDisplay + writePng as `render`.
+const readPageFile = async (file) => Buffer.from(await evaluate(
+  `(() => { const b = FS.readFile('${file}'); let s = ''; for (let i = 0; i < b.length; i += 8192) ` +
+  `s += String.fromCharCode.apply(null, b.subarray(i, i + 8192)); return btoa(s); })()`), 'base64');
+const writePageFile = (file, bytes) => evaluate(`FS.writeFile('${file}', Uint8Array.from(atob('${bytes.toString('base64')}'), c => c.charCodeAt(0)))`);
+const judge = async (a, b, rule) => JSON.parse(await evaluate(
+  `(() => { const p = Module.ccall('oasis_judge', 'number', ['string', 'string', 'string'], ['${a}', '${b}', '${rule}']); ` +
+  `const s = UTF8ToString(p); Module._free(p); return s; })()`));
+const oasisExe = path.join(buildDir, 'oasis');
+for (const [index, pipeline] of ['forward', 'deferred'].entries()) {
+  const ok = await evaluate(`Module.ccall('oasis_write_final_png', 'number', ['number', 'string'], [${index}, '/web-${pipeline}.png'])`);
+  check(ok === 1, `the page wrote its ${pipeline} frame`);
+  fs.writeFileSync(path.join(outDir, `web-${pipeline}.png`), await readPageFile(`/web-${pipeline}.png`));
+  const nativePng = path.join(outDir, `native-${pipeline}.png`);
+  execFileSync(oasisExe, ['render', '--api', 'gles', '--force', 'gles30', '--size', size, '--hour', '15',
+    '--gbuffer', caps.gbuffer, '--pipeline', pipeline, '--view', 'final', '--legend', 'off', '--out', nativePng], { stdio: 'ignore' });
+  await writePageFile(`/native-${pipeline}.png`, fs.readFileSync(nativePng));
+  const j = await judge(`/web-${pipeline}.png`, `/native-${pipeline}.png`, 'cross-driver');
+  const percent = (100 * j.pixels_over / j.pixels).toFixed(3);
+  console.log(`web: ${pipeline}: SwiftShader vs llvmpipe (native gles30): PSNR ${j.psnr_db} dB, max abs ${j.max_abs}, ` +
+              `${j.pixels_over} of ${j.pixels} pixels (${percent}%) over the rule's level`);
+  check(j.pass, `the browser's ${pipeline} frame matches native --api gles --force gles30 (rule cross-driver: ${j.summary})`);
+}
+const fd = await judge('/web-forward.png', '/web-deferred.png', 'cross-driver');
+console.log(`web: forward vs deferred in the browser: PSNR ${fd.psnr_db} dB, max abs ${fd.max_abs}`);
+check(fd.psnr_db >= 45, `forward vs deferred >= 45 dB in the browser (${fd.psnr_db} dB)`);
+
+// The page as a person sees it: frame, panel, report (after a few frames back on the live loop).
+await evaluate(`Module.ccall('oasis_set_pipeline', null, ['number'], [1])`);
+await new Promise((r) => setTimeout(r, 1500));
+const shot = await send('Page.captureScreenshot', { format: 'png', captureBeyondViewport: true });
+fs.writeFileSync(path.join(outDir, 'page.png'), Buffer.from(shot.result.data, 'base64'));
+const frames = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
+check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
+console.log(`web: wrote ${outDir}/page.png, web-*.png, native-*.png, capabilities.json`);
+socket.close();
+fs.rmSync(profile, { recursive: true, force: true });
+finish(failures.length ? 1 : 0);
