@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 
 #include "web/web_app.h"
@@ -15,6 +16,17 @@ WebApp& app();  // web_main.cpp
 }
 
 namespace {
+// `text` as a JSON string's contents: shader logs carry newlines and quotes.
+std::string escaped(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\', out += c;
+        else if (c == '\n') out += "\\n";
+        else if (static_cast<unsigned char>(c) >= 0x20) out += c;
+    }
+    return out;
+}
+
 char* copy(const std::string& text) {
     char* out = static_cast<char*>(std::malloc(text.size() + 1));
     std::memcpy(out, text.c_str(), text.size() + 1);
@@ -35,6 +47,15 @@ EMSCRIPTEN_KEEPALIVE void oasis_set_pipeline(int deferred) {
 }
 
 EMSCRIPTEN_KEEPALIVE void oasis_set_view(const char* view) { oasis::web::app().setView(view); }
+
+// `oasis probe --at X,Y --json` in the page; the caller frees the string.
+EMSCRIPTEN_KEEPALIVE char* oasis_probe_json(int deferred, int x, int y) {
+    try {
+        return copy(oasis::web::app().probeJson(deferred ? oasis::PipelineKind::Deferred : oasis::PipelineKind::Forward, x, y));
+    } catch (const std::exception& e) {
+        return copy(std::string("{\"error\":\"") + escaped(e.what()) + "\"}");
+    }
+}
 
 // 1 when the PNG was written.
 EMSCRIPTEN_KEEPALIVE int oasis_write_final_png(int deferred, const char* path) {

@@ -15,7 +15,9 @@
 #include "debug/imgui_gl_backend.h"
 
 #include "context/gl_context.h"
+#include "render/encoding_error.h"
 #include "render/image.h"
+#include "render/pixel_probe.h"
 
 namespace oasis::web {
 namespace {
@@ -103,7 +105,7 @@ void WebApp::frame() {
 void WebApp::drawPanel() {
     SceneSettings& scene = session_->scene;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(370, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("oasis (WebGL 2)");
     int kind = pipeline_ == PipelineKind::Forward ? 0 : 1;
     ImGui::RadioButton("forward", &kind, 0);
@@ -132,16 +134,20 @@ void WebApp::drawPanel() {
     ImGui::End();
 }
 
-bool WebApp::writeFinalPng(PipelineKind kind, const std::string& path) {
-    Renderer& renderer = *session_->renderer;
-    renderer.setPipeline(kind);
-    renderer.configure(options_.scene.width, options_.scene.height, renderer.targets().layout());
+SceneSettings WebApp::optionsScene() const {
     // The frame of the page's options (time, hour, camera), not of the live clock, as `render` draws it.
     SceneSettings scene = session_->scene;
     scene.timeSeconds = options_.scene.timeSeconds;
     scene.hour = options_.scene.hour;
     scene.camera = options_.scene.camera;
-    renderer.renderFrame(scene);
+    return scene;
+}
+
+bool WebApp::writeFinalPng(PipelineKind kind, const std::string& path) {
+    Renderer& renderer = *session_->renderer;
+    renderer.setPipeline(kind);
+    renderer.configure(options_.scene.width, options_.scene.height, renderer.targets().layout());
+    renderer.renderFrame(optionsScene());
     renderer.renderView("final");
     Image image = renderer.readDisplay();
     std::string error;
@@ -150,6 +156,20 @@ bool WebApp::writeFinalPng(PipelineKind kind, const std::string& path) {
         return false;
     }
     return true;
+}
+
+std::string WebApp::probeJson(PipelineKind kind, int x, int y) {
+    // What `oasis probe --at X,Y --json` does: the layout's encoding error, then the frame asked for.
+    Renderer& renderer = *session_->renderer;
+    renderer.configure(options_.scene.width, options_.scene.height, renderer.targets().layout());
+    SceneSettings scene = optionsScene();
+    std::optional<EncodingError> error;
+    if (renderer.targets().layout().name != "full") error = measureEncodingError(renderer, scene, renderer.targets().layout());
+    renderer.setPipeline(kind);
+    renderer.renderFrame(scene);
+    PixelProbe probe = probePixel(renderer, x, y);
+    if (error) addEncodingError(probe, *error);
+    return oasis::probeJson(probe);
 }
 
 std::string WebApp::capabilityJson() const {

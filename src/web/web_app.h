@@ -25,6 +25,8 @@ public:
     // The page's hooks (web_api.cpp): the final frame of a pipeline at the current size, as the
     // native `render` writes it, into a PNG in the page's file system.
     bool writeFinalPng(PipelineKind kind, const std::string& path);
+    // `oasis probe --at X,Y --json`'s object for the page's options' frame (x, y from the top left).
+    std::string probeJson(PipelineKind kind, int x, int y);
     void setPipeline(PipelineKind kind) { pipeline_ = kind; }
     void setView(const std::string& view) { view_ = view; }
     std::string capabilityJson() const;  // the context, every feature and the fallbacks
@@ -33,6 +35,7 @@ public:
 
 private:
     void drawPanel();
+    SceneSettings optionsScene() const;
     Options options_;
     PipelineKind pipeline_;
     std::string view_;
