@@ -12,8 +12,15 @@ fs.mkdirSync(outDir, { recursive: true });
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'PASS' : 'FAIL'}: ${what}`); if (!ok) failures.push(what); };
 const children = [];
-const finish = (code) => { for (const c of children) { try { process.kill(c.pid); } catch {} } process.exit(code); };
+// Each child leads its own process group (spawned detached): Chromium's zygote and GPU processes
+// outlive their parent unless the whole group is killed.
+const killChildren = () => { for (const c of children) { try { process.kill(-c.pid, 'SIGKILL'); } catch {} } };
+const finish = (code) => { killChildren(); process.exit(code); };
 setTimeout(() => { console.log('FAIL: the web test ran past 420 s'); finish(1); }, 420000).unref();
+// The server and the browser never outlive the test, whatever ends it.
+process.on('exit', killChildren);
+process.on('uncaughtException', (error) => { console.log(`FAIL: ${error.message}`); finish(1); });
+process.on('unhandledRejection', (error) => { console.log(`FAIL: ${error && error.message}`); finish(1); });
 
 function waitForLine(child, stream, pattern, seconds) {
   return new Promise((resolve, reject) => {
@@ -28,7 +35,7 @@ function waitForLine(child, stream, pattern, seconds) {
 }
 
 const port = 18000 + (process.pid % 2000);
-const server = spawn(path.join(buildDir, 'oasis-serve'), ['--dir', webDir, '--port', String(port)]);
+const server = spawn(path.join(buildDir, 'oasis-serve'), ['--dir', webDir, '--port', String(port)], { detached: true });
 children.push(server);
 await waitForLine(server, 'stdout', /oasis-serve: http/, 10);
 
@@ -37,7 +44,7 @@ const chromium = fs.existsSync('/usr/bin/chromium-headless-shell') ? '/usr/bin/c
 const profile = fs.mkdtempSync('/tmp/oasis-web-chromium-');
 const url = `http://127.0.0.1:${port}/oasis.html?size=${size}&hour=15`;
 const browser = spawn(chromium, ['--headless', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
-  '--remote-debugging-port=0', `--user-data-dir=${profile}`, '--window-size=1000,1400', 'about:blank']);
+  '--remote-debugging-port=0', `--user-data-dir=${profile}`, '--window-size=1000,1400', 'about:blank'], { detached: true });
 children.push(browser);
 const [, devtools] = await waitForLine(browser, 'stderr', /DevTools listening on (ws:\/\/\S+)/, 30);
 const httpBase = devtools.replace('ws://', 'http://').replace(/\/devtools\/.*/, '');
