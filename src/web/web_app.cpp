@@ -15,9 +15,10 @@
 #include "debug/imgui_gl_backend.h"
 
 #include "context/gl_context.h"
-#include "render/encoding_error.h"
+#include "frame/encoding_error.h"
+#include "frame/frame_readback.h"
+#include "frame/pixel_probe.h"
 #include "render/image.h"
-#include "render/pixel_probe.h"
 
 namespace oasis::web {
 namespace {
@@ -88,7 +89,7 @@ void WebApp::frame() {
     renderer.setPipeline(pipeline_);
     renderer.configure(width, height, renderer.targets().layout());
     renderer.renderFrame(session_->scene);
-    renderer.renderView(view_);
+    renderer.views().render(view_);
     renderer.present(width, height);
 
     imguiGlBackendNewFrame(true);
@@ -148,8 +149,8 @@ bool WebApp::writeFinalPng(PipelineKind kind, const std::string& path) {
     renderer.setPipeline(kind);
     renderer.configure(options_.scene.width, options_.scene.height, renderer.targets().layout());
     renderer.renderFrame(optionsScene());
-    renderer.renderView("final");
-    Image image = renderer.readDisplay();
+    renderer.views().render("final");
+    Image image = readDisplay(renderer);
     std::string error;
     if (!writePng(path, image, error)) {
         std::fprintf(stderr, "oasis: %s\n", error.c_str());

@@ -4,6 +4,16 @@
 
 #include <cstring>
 
+// The dispatch pointers (shim/epoxy/gl.h), pointing at the ES 3 functions themselves.
+#undef glClearBufferfv
+#undef glClearBufferfi
+#undef glBeginQuery
+#undef glEndQuery
+PFNGLCLEARBUFFERFVPROC epoxy_glClearBufferfv = glClearBufferfv;
+PFNGLCLEARBUFFERFIPROC epoxy_glClearBufferfi = glClearBufferfi;
+PFNGLBEGINQUERYPROC epoxy_glBeginQuery = glBeginQuery;
+PFNGLENDQUERYPROC epoxy_glEndQuery = glEndQuery;
+
 extern "C" int epoxy_gl_version(void) { return 30; }
 
 extern "C" bool epoxy_is_desktop_gl(void) { return false; }

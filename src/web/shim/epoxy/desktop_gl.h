@@ -24,6 +24,7 @@ inline void glDrawBuffer(GLenum) { OASIS_WEB_UNREACHABLE("glDrawBuffer"); }
 inline void glFrameTerminatorGREMEDY() {}
 // WebGL 2's getBufferSubData, in emscripten's library_webgl2.js (ES 3.0 has no such call).
 extern "C" void glGetBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, void* data);
+inline void glGetTextureLevelParameteriv(GLuint, GLint, GLenum, GLint* v) { OASIS_WEB_UNREACHABLE("glGetTextureLevelParameteriv"); if (v) *v = 0; }
 inline void glGetObjectLabel(GLenum, GLuint, GLsizei, GLsizei* length, char*) { if (length) *length = 0; }
 inline GLuint glGetProgramResourceIndex(GLuint, GLenum, const char*) { OASIS_WEB_UNREACHABLE("glGetProgramResourceIndex"); return 0xFFFFFFFFu; }
 inline void glGetQueryObjectui64v(GLuint, GLenum, uint64_t* v) { OASIS_WEB_UNREACHABLE("glGetQueryObjectui64v"); if (v) *v = 0; }

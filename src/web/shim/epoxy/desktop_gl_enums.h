@@ -54,6 +54,9 @@
 #ifndef GL_DEPTH_STENCIL_TEXTURE_MODE
 #define GL_DEPTH_STENCIL_TEXTURE_MODE 0x90EA
 #endif
+#ifndef GL_FRAGMENT_SHADER_INVOCATIONS_ARB
+#define GL_FRAGMENT_SHADER_INVOCATIONS_ARB 0x82F4
+#endif
 #ifndef GL_LOWER_LEFT
 #define GL_LOWER_LEFT 0x8CA1
 #endif
@@ -114,6 +117,9 @@
 #ifndef GL_RG16
 #define GL_RG16 0x822C
 #endif
+#ifndef GL_SAMPLES_PASSED
+#define GL_SAMPLES_PASSED 0x8914
+#endif
 #ifndef GL_SHADER
 #define GL_SHADER 0x82E1
 #endif
@@ -128,6 +134,12 @@
 #endif
 #ifndef GL_STENCIL_INDEX
 #define GL_STENCIL_INDEX 0x1901
+#endif
+#ifndef GL_TEXTURE_HEIGHT
+#define GL_TEXTURE_HEIGHT 0x1001
+#endif
+#ifndef GL_TEXTURE_WIDTH
+#define GL_TEXTURE_WIDTH 0x1000
 #endif
 #ifndef GL_TIME_ELAPSED
 #define GL_TIME_ELAPSED 0x88BF
