@@ -12,15 +12,58 @@ fs.mkdirSync(outDir, { recursive: true });
 const failures = [];
 const check = (ok, what) => { console.log(`${ok ? 'PASS' : 'FAIL'}: ${what}`); if (!ok) failures.push(what); };
 const children = [];
+let profile = null;  // Chromium's profile directory, removed at every exit
+let closeBrowser = async () => {};  // asks Chromium to quit (DevTools Browser.close) once it is up
+const delay = (ms) => new Promise((r) => setTimeout(r, ms));
+const exited = (child) => new Promise((resolve) => {
+  if (child.exitCode !== null || child.signalCode !== null) resolve();
+  else child.once('exit', resolve);
+});
 // Each child leads its own process group (spawned detached): Chromium's zygote and GPU processes
 // outlive their parent unless the whole group is killed.
-const killChildren = () => { for (const c of children) { try { process.kill(-c.pid, 'SIGKILL'); } catch {} } };
-const finish = (code) => { killChildren(); process.exit(code); };
+const killChildren = () => {
+  for (const c of children) { try { process.kill(-c.pid, 'SIGKILL'); } catch {} }
+  if (profile) { try { fs.rmSync(profile, { recursive: true, force: true }); } catch {} }
+};
+// Chromium asked to quit first, so that it reaps its own zygote, GPU and renderer processes; then
+// every group killed whatever it still holds, and each child waited for (reaped here, not left as
+// zombies for init): no process of the test outlives it.
+// The processes (zombies included) whose process group is one of the children's.
+const groupMembers = () => {
+  const groups = new Set(children.map((c) => c.pid));
+  const members = [];
+  for (const entry of fs.readdirSync('/proc')) {
+    if (!/^\d+$/.test(entry)) continue;
+    try {
+      const stat = fs.readFileSync(`/proc/${entry}/stat`, 'utf8');
+      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');  // state, ppid, pgrp, ...
+      if (groups.has(Number(fields[2]))) members.push(`${entry} (${fields[0]})`);
+    } catch {}
+  }
+  return members;
+};
+let finishing = false;
+const finish = async (code) => {
+  if (finishing) return;
+  finishing = true;
+  try { await Promise.race([closeBrowser(), delay(10000)]); } catch {}
+  killChildren();
+  await Promise.race([Promise.all(children.map(exited)), delay(5000)]);
+  // What Chromium double-forked is init's child: gone once init has reaped it (until then pgrep
+  // still lists it, <defunct>). Wait, a few seconds at most, until no process is left in our groups.
+  for (let tries = 0; tries < 50 && groupMembers().length; ++tries) await delay(100);
+  const left = groupMembers();
+  if (left.length) console.log(`web: processes still in the test's groups: ${left.join(', ')}`);
+  process.exit(code);
+};
 setTimeout(() => { console.log('FAIL: the web test ran past 420 s'); finish(1); }, 420000).unref();
-// The server and the browser never outlive the test, whatever ends it.
+// The server and the browser never outlive the test, whatever ends it: an error, a rejection, a
+// signal (ctest's timeout, ^C), or process.exit from anywhere (the last resort: kill, no wait).
 process.on('exit', killChildren);
 process.on('uncaughtException', (error) => { console.log(`FAIL: ${error.message}`); finish(1); });
 process.on('unhandledRejection', (error) => { console.log(`FAIL: ${error && error.message}`); finish(1); });
+for (const signal of ['SIGINT', 'SIGTERM', 'SIGHUP'])
+  process.on(signal, () => { console.log(`FAIL: the web test got ${signal}`); finish(1); });
 
 function waitForLine(child, stream, pattern, seconds) {
   return new Promise((resolve, reject) => {
@@ -41,7 +84,7 @@ await waitForLine(server, 'stdout', /oasis-serve: http/, 10);
 
 const chromium = fs.existsSync('/usr/bin/chromium-headless-shell') ? '/usr/bin/chromium-headless-shell'
                                                                    : '/usr/lib/chromium/chromium-headless-shell';
-const profile = fs.mkdtempSync('/tmp/oasis-web-chromium-');
+profile = fs.mkdtempSync('/tmp/oasis-web-chromium-');
 const url = `http://127.0.0.1:${port}/oasis.html?size=${size}&hour=15`;
 const browser = spawn(chromium, ['--headless', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
   '--remote-debugging-port=0', `--user-data-dir=${profile}`, '--window-size=1000,1400', 'about:blank'], { detached: true });
@@ -52,6 +95,12 @@ const targets = await (await fetch(`${httpBase}/json/list`)).json();
 const page = targets.find((t) => t.type === 'page');
 const socket = new WebSocket(page.webSocketDebuggerUrl);
 await new Promise((resolve) => socket.addEventListener('open', resolve));
+closeBrowser = async () => {
+  if (socket.readyState !== WebSocket.OPEN) return;
+  const done = exited(browser);
+  socket.send(JSON.stringify({ id: 0, method: 'Browser.close' }));
+  await done;
+};
 let nextId = 1;
 const pending = new Map();
 const consoleLines = [];
@@ -85,7 +134,7 @@ while (Date.now() - loadStart < 180000) {
 if (state.error || state.first === undefined) {
   console.log(consoleLines.join('\n'));
   check(false, `the page drew a first frame (${state.error || 'timed out'})`);
-  finish(1);
+  await finish(1);
 }
 console.log(`web: time from page load to first frame: ${state.first.toFixed(0)} ms (page's clock), ` +
             `${Date.now() - loadStart} ms (test's clock)`);
@@ -154,6 +203,4 @@ fs.writeFileSync(path.join(outDir, 'page.png'), Buffer.from(shot.result.data, 'b
 const frames = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
 check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
 console.log(`web: wrote ${outDir}/page.png, web-*.png, native-*.png, capabilities.json`);
-socket.close();
-fs.rmSync(profile, { recursive: true, force: true });
-finish(failures.length ? 1 : 0);
+await finish(failures.length ? 1 : 0);
