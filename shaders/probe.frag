@@ -35,7 +35,9 @@ void main() {
     else if (slot == 7) {
         // The sun's shadow at the surface's real position, as shadeSurface reads it.
         vec3 n = normalize(s.normal);
-        SunShadow shadow = sky ? SunShadow(1.0, -1) : sunShadow(litPosition(s), n);
+        // No ?: over structs: WebGL (ANGLE) refuses it ("not allowed for structures").
+        SunShadow shadow = SunShadow(1.0, -1);
+        if (!sky) shadow = sunShadow(litPosition(s), n);
         outValue = vec4(shadow.lit, float(shadow.cascade), sky ? 0.0 : dot(n, frame.sunDirection.xyz), 0.0);
     }
 #if defined(GBUFFER_COMPACT)

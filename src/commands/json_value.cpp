@@ -3,10 +3,11 @@
 #include "commands/json_value.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+
+#include "render/decimal_text.h"
 
 namespace oasis {
 namespace {
@@ -133,7 +134,7 @@ private:
     }
 
     // The grammar is checked here (strtod-like readers accept "01", ".5", "1." and "inf"), the value
-    // is converted by from_chars, which ignores the locale.
+    // is converted by parseDecimal (render/decimal_text.h), which ignores the locale.
     bool parseNumber(JsonValue& value) {
         size_t start = at_;
         auto digits = [&] {
@@ -154,9 +155,7 @@ private:
             if (!digits()) return fail("expected a digit in the exponent, found " + found());
         }
         if (!atEnd() && peek() >= '0' && peek() <= '9') return fail("a number may not start with 0 followed by digits");
-        const char* first = text_.data() + start;
-        auto [end, status] = std::from_chars(first, text_.data() + at_, value.number);
-        if (status != std::errc() || end != text_.data() + at_ || !std::isfinite(value.number)) {
+        if (!parseDecimal(std::string_view(text_).substr(start, at_ - start), value.number)) {
             std::string number = text_.substr(start, std::min<size_t>(at_ - start, 40));
             at_ = start;
             return fail("number " + number + " is out of range");

@@ -202,6 +202,10 @@ std::string errorString(GLenum error) {
 
 void readBufferData(GLenum target, GLsizeiptr size, void* out) {
     if (size <= 0) return;
+#ifdef __EMSCRIPTEN__
+    glGetBufferSubData(target, 0, size, out);  // WebGL 2 reads buffers so; it cannot map them for reading
+    return;
+#endif
     if (epoxy_is_desktop_gl()) {
         glGetBufferSubData(target, 0, size, out);
         return;

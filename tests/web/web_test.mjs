@@ -1,0 +1,206 @@
+// The web build's test driver (ctest label `web`, docs/web.md): serves build-web/ with oasis-serve,
+// opens the page in headless Chromium on SwiftShader, drives it over the DevTools protocol with
+// node's built-in WebSocket (no npm package), and checks what the page reports and draws.
+// usage: node --experimental-websocket web_test.mjs BUILD_DIR WEB_DIR OUT_DIR [WxH]
+import { spawn, execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+
+const [buildDir, webDir, outDir, size = '320x180'] = process.argv.slice(2);
+const [width, height] = size.split('x').map(Number);
+fs.mkdirSync(outDir, { recursive: true });
+const failures = [];
+const check = (ok, what) => { console.log(`${ok ? 'PASS' : 'FAIL'}: ${what}`); if (!ok) failures.push(what); };
+const children = [];
+let profile = null;  // Chromium's profile directory, removed at every exit
+let closeBrowser = async () => {};  // asks Chromium to quit (DevTools Browser.close) once it is up
+const delay = (ms) => new Promise((r) => setTimeout(r, ms));
+const exited = (child) => new Promise((resolve) => {
+  if (child.exitCode !== null || child.signalCode !== null) resolve();
+  else child.once('exit', resolve);
+});
+// Each child leads its own process group (spawned detached): Chromium's zygote and GPU processes
+// outlive their parent unless the whole group is killed.
+const killChildren = () => {
+  for (const c of children) { try { process.kill(-c.pid, 'SIGKILL'); } catch {} }
+  if (profile) { try { fs.rmSync(profile, { recursive: true, force: true }); } catch {} }
+};
+// Chromium asked to quit first, so that it reaps its own zygote, GPU and renderer processes; then
+// every group killed whatever it still holds, and each child waited for (reaped here, not left as
+// zombies for init): no process of the test outlives it.
+// The processes (zombies included) whose process group is one of the children's.
+const groupMembers = () => {
+  const groups = new Set(children.map((c) => c.pid));
+  const members = [];
+  for (const entry of fs.readdirSync('/proc')) {
+    if (!/^\d+$/.test(entry)) continue;
+    try {
+      const stat = fs.readFileSync(`/proc/${entry}/stat`, 'utf8');
+      const fields = stat.slice(stat.lastIndexOf(')') + 2).split(' ');  // state, ppid, pgrp, ...
+      if (groups.has(Number(fields[2]))) members.push(`${entry} (${fields[0]})`);
+    } catch {}
+  }
+  return members;
+};
+let finishing = false;
+const finish = async (code) => {
+  if (finishing) return;
+  finishing = true;
+  try { await Promise.race([closeBrowser(), delay(10000)]); } catch {}
+  killChildren();
+  await Promise.race([Promise.all(children.map(exited)), delay(5000)]);
+  // What Chromium double-forked is init's child: gone once init has reaped it (until then pgrep
+  // still lists it, <defunct>). Wait, a few seconds at most, until no process is left in our groups.
+  for (let tries = 0; tries < 50 && groupMembers().length; ++tries) await delay(100);
+  const left = groupMembers();
+  if (left.length) console.log(`web: processes still in the test's groups: ${left.join(', ')}`);
+  process.exit(code);
+};
+setTimeout(() => { console.log('FAIL: the web test ran past 420 s'); finish(1); }, 420000).unref();
+// The server and the browser never outlive the test, whatever ends it: an error, a rejection, a
+// signal (ctest's timeout, ^C), or process.exit from anywhere (the last resort: kill, no wait).
+process.on('exit', killChildren);
+process.on('uncaughtException', (error) => { console.log(`FAIL: ${error.message}`); finish(1); });
+process.on('unhandledRejection', (error) => { console.log(`FAIL: ${error && error.message}`); finish(1); });
+for (const signal of ['SIGINT', 'SIGTERM', 'SIGHUP'])
+  process.on(signal, () => { console.log(`FAIL: the web test got ${signal}`); finish(1); });
+
+function waitForLine(child, stream, pattern, seconds) {
+  return new Promise((resolve, reject) => {
+    let text = '';
+    const timer = setTimeout(() => reject(new Error(`no ${pattern} in ${seconds} s: ${text}`)), seconds * 1000);
+    child[stream].on('data', (d) => {
+      text += d;
+      const m = text.match(pattern);
+      if (m) { clearTimeout(timer); resolve(m); }
+    });
+  });
+}
+
+const port = 18000 + (process.pid % 2000);
+const server = spawn(path.join(buildDir, 'oasis-serve'), ['--dir', webDir, '--port', String(port)], { detached: true });
+children.push(server);
+await waitForLine(server, 'stdout', /oasis-serve: http/, 10);
+
+const chromium = fs.existsSync('/usr/bin/chromium-headless-shell') ? '/usr/bin/chromium-headless-shell'
+                                                                   : '/usr/lib/chromium/chromium-headless-shell';
+profile = fs.mkdtempSync('/tmp/oasis-web-chromium-');
+const url = `http://127.0.0.1:${port}/oasis.html?size=${size}&hour=15`;
+const browser = spawn(chromium, ['--headless', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+  '--remote-debugging-port=0', `--user-data-dir=${profile}`, '--window-size=1000,1400', 'about:blank'], { detached: true });
+children.push(browser);
+const [, devtools] = await waitForLine(browser, 'stderr', /DevTools listening on (ws:\/\/\S+)/, 30);
+const httpBase = devtools.replace('ws://', 'http://').replace(/\/devtools\/.*/, '');
+const targets = await (await fetch(`${httpBase}/json/list`)).json();
+const page = targets.find((t) => t.type === 'page');
+const socket = new WebSocket(page.webSocketDebuggerUrl);
+await new Promise((resolve) => socket.addEventListener('open', resolve));
+closeBrowser = async () => {
+  if (socket.readyState !== WebSocket.OPEN) return;
+  const done = exited(browser);
+  socket.send(JSON.stringify({ id: 0, method: 'Browser.close' }));
+  await done;
+};
+let nextId = 1;
+const pending = new Map();
+const consoleLines = [];
+socket.addEventListener('message', (event) => {
+  const message = JSON.parse(event.data);
+  if (message.id && pending.has(message.id)) { pending.get(message.id)(message); pending.delete(message.id); }
+  if (message.method === 'Runtime.consoleAPICalled')
+    consoleLines.push(message.params.args.map((a) => a.value ?? a.description).join(' '));
+});
+const send = (method, params = {}) => new Promise((resolve) => {
+  const id = nextId++;
+  pending.set(id, resolve);
+  socket.send(JSON.stringify({ id, method, params }));
+});
+const evaluate = async (expression) => {
+  const reply = await send('Runtime.evaluate', { expression, awaitPromise: true, returnByValue: true });
+  if (reply.result.exceptionDetails) throw new Error(`${expression}: ${JSON.stringify(reply.result.exceptionDetails)}`);
+  return reply.result.result.value;
+};
+
+await send('Runtime.enable');
+await send('Page.enable');
+const loadStart = Date.now();
+await send('Page.navigate', { url });
+let state = {};
+while (Date.now() - loadStart < 180000) {
+  state = await evaluate('({ first: window.oasisFirstFrameMs, error: window.oasisError })');
+  if (state.first !== undefined || state.error) break;
+  await new Promise((r) => setTimeout(r, 250));
+}
+if (state.error || state.first === undefined) {
+  console.log(consoleLines.join('\n'));
+  check(false, `the page drew a first frame (${state.error || 'timed out'})`);
+  await finish(1);
+}
+console.log(`web: time from page load to first frame: ${state.first.toFixed(0)} ms (page's clock), ` +
+            `${Date.now() - loadStart} ms (test's clock)`);
+
+const browserGl = await evaluate('window.oasisBrowser');
+const caps = await evaluate('window.oasisCapabilities');
+console.log(`web: WebGL ${browserGl.version}; renderer ${browserGl.unmaskedRenderer}`);
+console.log(`web: oasis reports ${caps.version} on ${caps.renderer}; fallbacks: ${caps.fallbacks.join('; ')}`);
+check(/WebGL 2\.0/.test(browserGl.version) && /OpenGL ES 3\.0/.test(caps.version), 'the page has WebGL 2 (OpenGL ES 3.0)');
+check(/SwiftShader/.test(browserGl.unmaskedRenderer) && /SwiftShader/.test(caps.renderer), 'the renderer is SwiftShader');
+check(browserGl.extensions.includes('EXT_color_buffer_float'), 'EXT_color_buffer_float is there');
+fs.writeFileSync(path.join(outDir, 'capabilities.json'), JSON.stringify({ browser: browserGl, oasis: caps }, null, 1));
+
+// Both pipelines' final frames, written in the page by the same readDisplay + writePng as `render`.
+const readPageFile = async (file) => Buffer.from(await evaluate(
+  `(() => { const b = FS.readFile('${file}'); let s = ''; for (let i = 0; i < b.length; i += 8192) ` +
+  `s += String.fromCharCode.apply(null, b.subarray(i, i + 8192)); return btoa(s); })()`), 'base64');
+const writePageFile = (file, bytes) => evaluate(`FS.writeFile('${file}', Uint8Array.from(atob('${bytes.toString('base64')}'), c => c.charCodeAt(0)))`);
+const judge = async (a, b, rule) => JSON.parse(await evaluate(
+  `(() => { const p = Module.ccall('oasis_judge', 'number', ['string', 'string', 'string'], ['${a}', '${b}', '${rule}']); ` +
+  `const s = UTF8ToString(p); Module._free(p); return s; })()`));
+const oasisExe = path.join(buildDir, 'oasis');
+for (const [index, pipeline] of ['forward', 'deferred'].entries()) {
+  const ok = await evaluate(`Module.ccall('oasis_write_final_png', 'number', ['number', 'string'], [${index}, '/web-${pipeline}.png'])`);
+  check(ok === 1, `the page wrote its ${pipeline} frame`);
+  fs.writeFileSync(path.join(outDir, `web-${pipeline}.png`), await readPageFile(`/web-${pipeline}.png`));
+  const nativePng = path.join(outDir, `native-${pipeline}.png`);
+  execFileSync(oasisExe, ['render', '--api', 'gles', '--force', 'gles30', '--size', size, '--hour', '15',
+    '--gbuffer', caps.gbuffer, '--pipeline', pipeline, '--view', 'final', '--legend', 'off', '--out', nativePng], { stdio: 'ignore' });
+  await writePageFile(`/native-${pipeline}.png`, fs.readFileSync(nativePng));
+  const j = await judge(`/web-${pipeline}.png`, `/native-${pipeline}.png`, 'cross-driver');
+  const percent = (100 * j.pixels_over / j.pixels).toFixed(3);
+  console.log(`web: ${pipeline}: SwiftShader vs llvmpipe (native gles30): PSNR ${j.psnr_db} dB, max abs ${j.max_abs}, ` +
+              `${j.pixels_over} of ${j.pixels} pixels (${percent}%) over the rule's level`);
+  check(j.pass, `the browser's ${pipeline} frame matches native --api gles --force gles30 (rule cross-driver: ${j.summary})`);
+}
+const fd = await judge('/web-forward.png', '/web-deferred.png', 'cross-driver');
+console.log(`web: forward vs deferred in the browser: PSNR ${fd.psnr_db} dB, max abs ${fd.max_abs}`);
+check(fd.psnr_db >= 45, `forward vs deferred >= 45 dB in the browser (${fd.psnr_db} dB)`);
+
+// The probe at fixed pixels (fractions of the frame, from the top left) against the native probe:
+// the final colour within the cross-driver rule's level (24) per channel, the same sky/ground answer.
+const probeLevel = 24;
+for (const [fx, fy] of [[0.5, 0.67], [0.25, 0.8], [0.75, 0.2]]) {
+  const x = Math.floor(fx * width), y = Math.floor(fy * height);
+  const web = JSON.parse(await evaluate(`(() => { const p = Module.ccall('oasis_probe_json', 'number', ` +
+    `['number', 'number', 'number'], [1, ${x}, ${y}]); const s = UTF8ToString(p); Module._free(p); return s; })()`));
+  const native = JSON.parse(execFileSync(oasisExe, ['probe', '--at', `${x},${y}`, '--json', '--api', 'gles', '--force',
+    'gles30', '--size', size, '--hour', '15', '--gbuffer', caps.gbuffer, '--pipeline', 'deferred'],
+    { stdio: ['ignore', 'pipe', 'ignore'] }).toString());
+  if (web.error) { check(false, `the page probed ${x},${y} (${web.error})`); continue; }
+  const a = web.stored.final.values, b = native.stored.final.values;
+  const diff = Math.max(...[0, 1, 2].map((i) => Math.abs(a[i] - b[i])));
+  console.log(`web: probe ${x},${y} (deferred): browser final ${a.slice(0, 3)}, native ${b.slice(0, 3)}, max abs ${diff}; ` +
+              `sky ${web.sky}/${native.sky}`);
+  check(diff <= probeLevel && web.sky === native.sky, `the probe at ${x},${y} equals the native probe within ${probeLevel} levels`);
+}
+
+// The page as a person sees it: frame, panel, report (after a few frames back on the live loop).
+await evaluate(`Module.ccall('oasis_set_pipeline', null, ['number'], [1])`);
+await new Promise((r) => setTimeout(r, 1500));
+// The canvas and the top of the report below it (the extension and path lists run long).
+const shot = await send('Page.captureScreenshot', { format: 'png',
+  clip: { x: 0, y: 0, width: Math.max(width + 40, 1000), height: height + 560, scale: 1 } });
+fs.writeFileSync(path.join(outDir, 'page.png'), Buffer.from(shot.result.data, 'base64'));
+const frames = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
+check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
+console.log(`web: wrote ${outDir}/page.png, web-*.png, native-*.png, capabilities.json`);
+await finish(failures.length ? 1 : 0);
