@@ -1,10 +1,10 @@
-// libepoxy's version and extension queries for the web build (src/web/shim/epoxy/gl.h): WebGL 2
+// libepoxy's version and extension queries for the web build (src/gl/web_shim/epoxy/gl.h): WebGL 2
 // is OpenGL ES 3.0 and never desktop GL; extensions are the ones the browser enabled, GL_ prefixed.
 #include <epoxy/gl.h>
 
 #include <cstring>
 
-// The dispatch pointers (shim/epoxy/gl.h), pointing at the ES 3 functions themselves.
+// The dispatch pointers (src/gl/web_shim/epoxy/gl.h), pointing at the ES 3 functions themselves.
 #undef glClearBufferfv
 #undef glClearBufferfi
 #undef glBeginQuery

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Regenerates src/web/shim/epoxy/desktop_gl_enums.h: every GL_ token the shared sources name that
+# Regenerates src/gl/web_shim/epoxy/desktop_gl_enums.h: every GL_ token the shared sources name that
 # emscripten's ES 3 headers lack, with its value from libepoxy's registry header (libepoxy-dev).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 inc=/usr/share/emscripten/system/include
-out=src/web/shim/epoxy/desktop_gl_enums.h
+out=src/gl/web_shim/epoxy/desktop_gl_enums.h
 {
     echo "// Desktop GL / KHR_debug tokens the shared sources name and the ES 3 headers lack (values from libepoxy's"
     echo "// registry header), each only where no header defined it; regenerate with tests/web/desktop_enums.sh."
