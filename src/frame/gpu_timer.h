@@ -38,6 +38,10 @@ struct TimingClock {
 // the wall times' sum (glFinish after each pass costs a little, so they never agree exactly; a
 // query that does not measure its pass moves whole passes' time about). Pure, for the unit tests.
 inline constexpr double kTimerDisagreement = 0.25;
+// ... and no pass's query reads more than 25 % plus 0.5 ms over its wall time: a query longer than
+// the glFinish-bracketed pass is another pass's time (llvmpipe's, now that its frame sums agree).
+inline constexpr double kTimerOverWall = 0.25;
+inline constexpr double kTimerOverWallMs = 0.5;
 // The frame with glFinish after every pass: wall milliseconds per pass, in order. The
 // synchronisation itself costs a little, so the sum can exceed an unsynchronised frame.
 PassTimes renderFrameTimingPasses(Renderer& renderer, const SceneSettings& scene);
