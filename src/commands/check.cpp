@@ -192,10 +192,17 @@ struct Checker {
 void fillDriver(CheckReport& report, const Options& options) {
     Options native = options;
     HeadlessContext context(maxGlVersionFor(native.scene));
+    // The session's targets in a layout this driver can draw (the default, compact, needs
+    // EXT_texture_norm16 on OpenGL ES); the cases that ask for another say so themselves.
+    if (!gbufferNotDrawable(native.scene.gbuffer, gl::measureCapabilities(native.scene.force)).empty())
+        native.scene.gbuffer = "standard";
     RenderSession session(native, RenderSession::Shaders::CapabilitiesOnly);
     const gl::Capabilities& caps = session.caps;
-    report.vendor = caps.vendor;
-    report.renderer = caps.renderer;
+    // The context's own strings: GL_VENDOR and GL_RENDERER natively; in a browser, whose GL_RENDERER
+    // is masked ("WebKit WebGL"), WEBGL_debug_renderer_info's where it is offered (web_context.cpp).
+    ContextInfo info = queryContextInfo();
+    report.vendor = info.vendor.empty() ? caps.vendor : info.vendor;
+    report.renderer = info.renderer.empty() ? caps.renderer : info.renderer;
     report.glVersion = caps.version;
     report.glslVersion = caps.glslVersion;
     report.api = caps.es ? "OpenGL ES" : "OpenGL";

@@ -15,6 +15,7 @@
 #include "commands/provenance.h"
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "render/gbuffer_layout.h"
 
 namespace oasis {
 namespace {
@@ -43,6 +44,11 @@ Options caseOptions(const std::vector<std::string>& arguments) {
 
 // The session's own report lines (its fallbacks) would bury the check's progress: stderr goes to a
 // scratch file while a case renders, and comes back afterwards.
+#ifdef __EMSCRIPTEN__
+// In the page stderr is the browser's console (emscripten's TTY, no descriptor to swap): the
+// sessions' report lines go there, out of the check's report.
+class QuietStderr {};
+#else
 class QuietStderr {
 public:
     QuietStderr() {
@@ -64,6 +70,7 @@ private:
     int saved_ = -1;
     std::FILE* scratch_ = nullptr;
 };
+#endif
 
 // Whose limit a path not taken is: the driver's own answer (ignoring --force) decides.
 std::string limitOf(bool driverHasIt) { return driverHasIt ? "forced tier" : "driver"; }
@@ -100,6 +107,19 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
 
 }  // namespace
 
+std::string gbufferNotDrawable(const std::string& name, const gl::Capabilities& caps) {
+    // The driver's own extensions: a forced tier (--force gles30) hides EXT_texture_norm16 from the
+    // report but not from the driver, whose RG16 targets the renderer still makes.
+    const std::set<std::string>& own = caps.beforeTier ? caps.beforeTier->extensions : caps.extensions;
+    const GBufferLayout* layout = findGBufferLayout(name);
+    if (!layout || !caps.es || own.count("GL_EXT_texture_norm16") || own.count("EXT_texture_norm16")) return {};
+    for (const TargetFormat& format : {layout->albedo, layout->normal, layout->position, layout->info})
+        if (format.internalFormat == GL_RG16)
+            return "gbuffer " + layout->name + " not drawable: its 16-bit unorm target needs EXT_texture_norm16, which "
+                   "this OpenGL ES driver lacks";
+    return {};
+}
+
 CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants) {
     Options options = caseOptions(arguments);
     CaseFrame frame;
@@ -109,6 +129,11 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
         context = std::make_unique<HeadlessContext>(maxGlVersionFor(options.scene));
     } catch (const std::exception& error) {
         frame.skipReason = std::string("no context for it: ") + error.what();
+        frame.limitedBy = "driver";
+        return frame;
+    }
+    if (std::string why = gbufferNotDrawable(options.scene.gbuffer, gl::measureCapabilities(options.scene.force)); !why.empty()) {
+        frame.skipReason = why;
         frame.limitedBy = "driver";
         return frame;
     }
@@ -160,7 +185,7 @@ bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vect
         if (reference[k].pass != candidate[k].pass) break;  // the lists part: nothing more to compare
         for (const auto& [label, a] : reference[k].targets) {
             auto other = std::find_if(candidate[k].targets.begin(), candidate[k].targets.end(),
-                                      [&](const auto& target) { return target.first == label; });
+                                      [&name = label](const auto& target) { return target.first == name; });
             if (other == candidate[k].targets.end()) continue;
             const std::vector<float>& b = other->second;
             if (a.size() != b.size()) continue;

@@ -8,6 +8,10 @@
 #include "render/image.h"
 #include "render/png_text.h"
 
+namespace oasis::gl {
+struct Capabilities;
+}
+
 namespace oasis {
 
 struct CaseFrame {
@@ -17,6 +21,12 @@ struct CaseFrame {
     Image image;
     std::vector<PngText> provenance;  // what made it (commands/provenance.h), for the PNGs the check writes
 };
+
+// Why the G-buffer layout `name` cannot be drawn on this context (or ""): on OpenGL ES a 16-bit
+// unorm target (the compact layout's RG16 normal) is renderable only with EXT_texture_norm16,
+// which many ES 3.0 drivers, WebGL 2's among them (SwiftShader in Chromium), lack. A case that asks
+// for it is a skip, the driver's limit.
+std::string gbufferNotDrawable(const std::string& name, const gl::Capabilities& caps);
 
 // Renders `oasis render ARGUMENTS` (the final view or the one asked for, no legend) and checks that
 // every path the arguments ask for was taken (and the plants on the GPU where `gpuPlants`, which no

@@ -94,3 +94,49 @@ EMSCRIPTEN_KEEPALIVE char* oasis_judge(const char* result, const char* reference
     }
 }
 }
+
+#include "cli/options.h"
+#include "commands/check.h"
+#include "commands/check_diff.h"
+#include "commands/json_value.h"
+
+extern "C" {
+// `oasis check ARGS` in the page, run to the end before it returns (the page's frame loop waits):
+// argsJson is a JSON array of the command's arguments (["--quick"], [] for the full check); the
+// page's context is OpenGL ES, so `--api gles` is added unless given, and `--out-dir /oasis-check`
+// unless given. The same cases, rules and report (report.json, report.html) as the native command,
+// written into the page's file system. Returns JSON {"exit", "dir", "json", "html", "pass",
+// "fail", "skip", "cases", "renderer"} (read back from report.json) or {"exit", "error"}; the
+// caller frees it.
+EMSCRIPTEN_KEEPALIVE char* oasis_check(const char* argsJson) {
+    oasis::JsonValue parsed;
+    std::string error;
+    if (!oasis::parseJson(argsJson ? argsJson : "[]", parsed, error) || !parsed.isArray())
+        return copy("{\"exit\":2,\"error\":\"oasis_check expects a JSON array of arguments" +
+                    escaped(error.empty() ? "" : ": " + error) + "\"}");
+    std::vector<std::string> arguments = {"check"};
+    bool hasApi = false, hasOutDir = false;
+    for (const oasis::JsonValue& item : parsed.items) {
+        if (!item.isString()) return copy("{\"exit\":2,\"error\":\"oasis_check's arguments are strings\"}");
+        hasApi = hasApi || item.text == "--api";
+        hasOutDir = hasOutDir || item.text == "--out-dir";
+        arguments.push_back(item.text);
+    }
+    if (!hasApi) arguments.insert(arguments.end(), {"--api", "gles"});
+    if (!hasOutDir) arguments.insert(arguments.end(), {"--out-dir", "/oasis-check"});
+    oasis::ParseResult options = oasis::parseCommandLine(arguments);
+    if (!options.ok) return copy("{\"exit\":2,\"error\":\"" + escaped(options.error) + "\"}");
+    std::fflush(stdout);
+    int exitCode = oasis::runCheckCommand(options.options);
+    std::fflush(stdout);
+    std::string dir = options.options.outDir;
+    oasis::CheckRun run;
+    if (!oasis::readCheckRun(dir + "/report.json", run, error))
+        return copy("{\"exit\":" + std::to_string(exitCode) + ",\"error\":\"" + escaped(error) + "\"}");
+    return copy("{\"exit\":" + std::to_string(exitCode) + ",\"dir\":\"" + escaped(dir) + "\",\"json\":\"" +
+                escaped(dir + "/report.json") + "\",\"html\":\"" + escaped(dir + "/report.html") +
+                "\",\"pass\":" + std::to_string(run.count("pass")) + ",\"fail\":" + std::to_string(run.count("fail")) +
+                ",\"skip\":" + std::to_string(run.count("skip")) + ",\"cases\":" + std::to_string(run.cases.size()) +
+                ",\"renderer\":\"" + escaped(run.renderer) + "\"}");
+}
+}

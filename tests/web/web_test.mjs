@@ -77,6 +77,18 @@ function waitForLine(child, stream, pattern, seconds) {
   });
 }
 
+// The native `oasis check --api gles` (llvmpipe) whose report the browser's is compared with by
+// `oasis check --diff`: run beside the browser, awaited after the page's check.
+const nativeReport = path.join(outDir, 'native-check', 'report.json');
+const nativeCheck = new Promise((resolve) => {
+  const started = Date.now();
+  const child = spawn(path.join(buildDir, 'oasis'), ['check', '--api', 'gles', '--out-dir', path.join(outDir, 'native-check')],
+                      { detached: true, stdio: 'ignore' });
+  children.push(child);
+  child.on('exit', (code) => resolve({ code, seconds: (Date.now() - started) / 1000 }));
+});
+
+const testStart = Date.now();
 const port = 18000 + (process.pid % 2000);
 const server = spawn(path.join(buildDir, 'oasis-serve'), ['--dir', webDir, '--port', String(port)], { detached: true });
 children.push(server);
@@ -193,6 +205,54 @@ for (const [fx, fy] of [[0.5, 0.67], [0.25, 0.8], [0.75, 0.2]]) {
   check(diff <= probeLevel && web.sky === native.sky, `the probe at ${x},${y} equals the native probe within ${probeLevel} levels`);
 }
 
+// `oasis check` in the page (the page's "Run oasis check" button runs the same oasisRunCheck):
+// every case of the covering set, judged by the same rules, report.json + report.html written into
+// the page's file system. Its report has no failure (skips, the browser's limits, are printed), and
+// `oasis check --diff` against the native OpenGL ES run (started above, beside the browser) finds
+// no regression. The full set: --quick's 8 cases all ask for a path WebGL 2 lacks.
+{
+  const framesBefore = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
+  const started = Date.now();
+  const result = await evaluate(`oasisRunCheck([])`);
+  const wall = (Date.now() - started) / 1000;
+  if (result.error) check(false, `oasis check ran in the page (${result.error})`);
+  else {
+    const report = await evaluate(`FS.readFile('${result.json}', { encoding: 'utf8' })`);
+    const html = await evaluate(`FS.readFile('${result.html}', { encoding: 'utf8' })`);
+    const webReport = path.join(outDir, 'web-check-report.json');
+    fs.writeFileSync(webReport, report);
+    fs.writeFileSync(path.join(outDir, 'web-check-report.html'), html);
+    const parsed = JSON.parse(report);
+    console.log(`web: oasis check in the page: ${result.pass} passed, ${result.fail} failed, ${result.skip} skipped of ` +
+                `${result.cases} cases in ${wall.toFixed(1)} s on ${parsed.driver.renderer}`);
+    for (const c of parsed.cases.filter((c) => c.verdict !== 'skip'))
+      console.log(`web:   ${c.verdict} ${c.name}: PSNR ${c.psnr_db} dB, max abs ${c.max_abs}, ${c.pixels_over} pixels over ` +
+                  `(${c.reference_rule}); main path ${c.main_path ? c.main_path.rule + ' max abs ' + c.main_path.max_abs : 'none'}`);
+    const skips = {};
+    for (const c of parsed.cases.filter((c) => c.verdict === 'skip')) {
+      const why = c.reason.replace(/ \(.*$/, '');
+      skips[why] = (skips[why] || []).concat(c.name.slice(0, 2));
+    }
+    for (const [why, names] of Object.entries(skips)) console.log(`web:   skip ${names.length} (${names.join(' ')}): ${why}`);
+    check(result.exit === 0 && result.fail === 0 && parsed.summary.fail === 0, `the browser's check report has no failure`);
+    check(result.pass > 0, `the browser's check passed cases (${result.pass})`);
+    check(/<html/i.test(html), 'the page wrote report.html');
+    const nativeRun = await nativeCheck;
+    check(nativeRun.code === 0, `native oasis check --api gles ran (exit ${nativeRun.code}, ${nativeRun.seconds.toFixed(1)} s)`);
+    let diff = { status: null, stdout: '' };
+    try {
+      diff.stdout = execFileSync(oasisExe, ['check', '--diff', nativeReport, webReport], { stdio: ['ignore', 'pipe', 'pipe'] }).toString();
+      diff.status = 0;
+    } catch (e) { diff = { status: e.status, stdout: String(e.stdout) + String(e.stderr) }; }
+    fs.writeFileSync(path.join(outDir, 'check-diff.txt'), diff.stdout);
+    console.log(diff.stdout.split('\n').filter((l) => l && !/^ {4}/.test(l)).map((l) => `web: diff: ${l}`).join('\n'));
+    check(diff.status === 0, `oasis check --diff native (llvmpipe, OpenGL ES) browser (SwiftShader): no regression (exit ${diff.status})`);
+  }
+  await delay(500);
+  const framesAfter = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
+  check(framesAfter > framesBefore, `the page's frame loop draws on after the check (${framesBefore} -> ${framesAfter} frames)`);
+}
+
 // The page as a person sees it: frame, panel, report (after a few frames back on the live loop).
 await evaluate(`Module.ccall('oasis_set_pipeline', null, ['number'], [1])`);
 await new Promise((r) => setTimeout(r, 1500));
@@ -202,5 +262,7 @@ const shot = await send('Page.captureScreenshot', { format: 'png',
 fs.writeFileSync(path.join(outDir, 'page.png'), Buffer.from(shot.result.data, 'base64'));
 const frames = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
 check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
-console.log(`web: wrote ${outDir}/page.png, web-*.png, native-*.png, capabilities.json`);
+console.log(`web: wrote ${outDir}/page.png, web-*.png, native-*.png, capabilities.json, web-check-report.{json,html}, ` +
+            `native-check/, check-diff.txt`);
+console.log(`web: the test took ${((Date.now() - testStart) / 1000).toFixed(1)} s`);
 await finish(failures.length ? 1 : 0);
