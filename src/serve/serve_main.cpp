@@ -70,7 +70,17 @@ int main(int argc, char** argv) {
     int port = 8080;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (a == "--port" && i + 1 < argc) port = std::atoi(argv[++i]);
+        if (a == "--port" && i + 1 < argc) {
+            // A port is 1..65535, digits only: atoi's 0 for "abc" would listen on a port the
+            // kernel picks and print ":0", and 99999 would wrap.
+            std::string text = argv[++i];
+            bool digits = !text.empty() && text.size() <= 5 && text.find_first_not_of("0123456789") == std::string::npos;
+            port = digits ? std::atoi(text.c_str()) : 0;
+            if (port < 1 || port > 65535) {
+                std::fprintf(stderr, "oasis-serve: --port expects a port in 1..65535, got '%s'\n", text.c_str());
+                return 2;
+            }
+        }
         else if (a == "--dir" && i + 1 < argc) root = argv[++i];
         else {
             std::fprintf(stderr, "usage: oasis-serve [--dir build-web] [--port 8080]\n");
