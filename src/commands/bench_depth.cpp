@@ -8,6 +8,7 @@
 #include "common/shared_constants.glsl"
 #include "frame/frame_readback.h"
 #include "passes/pass.h"
+#include "render/decimal_text.h"
 
 namespace oasis {
 namespace {
@@ -22,12 +23,6 @@ double median(std::vector<double> values) {
 // The far plane's window depth in either convention: nothing drawn there (depthAtFarPlane).
 bool atFarPlane(const FrameData& frame, float depth) {
     return frame.depthConvention.x != 0.0f ? depth <= 0.0f : depth >= 1.0f;
-}
-
-std::string number(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof(text), pattern, value);
-    return text;
 }
 
 }  // namespace
@@ -117,7 +112,7 @@ std::string depthPrecisionTable(const std::vector<DepthPrecision>& rows) {
                   "pixels", "median abs", "max abs", "median rel", "max rel");
     text += line;
     for (const DepthPrecision& r : rows) {
-        std::string range = number("%.2f", r.band.from) + "-" + number("%.0f", r.band.to);
+        std::string range = formatNumber("%.2f", r.band.from) + "-" + formatNumber("%.0f", r.band.to);
         std::snprintf(line, sizeof(line), "%-11s %-7s %-17s %8zu %11.3e %11.3e %11.3e %11.3e\n", r.depth.c_str(),
                       r.band.name.c_str(), range.c_str(), r.pixels, r.medianAbs, r.maxAbs, r.medianRelative,
                       r.maxRelative);
@@ -133,9 +128,9 @@ std::string depthPrecisionJson(const std::vector<DepthPrecision>& rows) {
         json += std::string(i ? ",\n  " : "\n  ") + "{\"depth\": " + jsonString(r.depth) + ", \"band\": " +
                 jsonString(r.band.name) + ", \"from\": " + jsonNumber(r.band.from, 3) + ", \"to\": " +
                 jsonNumber(r.band.to, 3) + ", \"pixels\": " + std::to_string(r.pixels) +
-                ", \"median_abs\": " + number("%.6e", r.medianAbs) + ", \"max_abs\": " + number("%.6e", r.maxAbs) +
-                ", \"median_relative\": " + number("%.6e", r.medianRelative) +
-                ", \"max_relative\": " + number("%.6e", r.maxRelative) + "}";
+                ", \"median_abs\": " + formatNumber("%.6e", r.medianAbs) + ", \"max_abs\": " + formatNumber("%.6e", r.maxAbs) +
+                ", \"median_relative\": " + formatNumber("%.6e", r.medianRelative) +
+                ", \"max_relative\": " + formatNumber("%.6e", r.maxRelative) + "}";
     }
     return json + "\n]";
 }
@@ -151,9 +146,9 @@ std::string depthPrecisionJsonFields(const std::vector<DepthPrecision>& rows) {
 std::string depthPrecisionCsv(const std::vector<DepthPrecision>& rows) {
     std::string csv = "depth,band,from,to,pixels,median_abs,max_abs,median_relative,max_relative\n";
     for (const DepthPrecision& r : rows)
-        csv += r.depth + "," + r.band.name + "," + number("%.3f", r.band.from) + "," + number("%.3f", r.band.to) +
-               "," + std::to_string(r.pixels) + "," + number("%.6e", r.medianAbs) + "," + number("%.6e", r.maxAbs) +
-               "," + number("%.6e", r.medianRelative) + "," + number("%.6e", r.maxRelative) + "\n";
+        csv += r.depth + "," + r.band.name + "," + formatNumber("%.3f", r.band.from) + "," + formatNumber("%.3f", r.band.to) +
+               "," + std::to_string(r.pixels) + "," + formatNumber("%.6e", r.medianAbs) + "," + formatNumber("%.6e", r.maxAbs) +
+               "," + formatNumber("%.6e", r.medianRelative) + "," + formatNumber("%.6e", r.maxRelative) + "\n";
     return csv;
 }
 

@@ -8,6 +8,7 @@
 
 #include "cli/option_table.h"
 #include "cli/options.h"
+#include "render/decimal_text.h"
 
 namespace oasis {
 namespace {
@@ -93,15 +94,9 @@ const std::vector<QualityKnob> kKnobs = makeKnobs();
 // 256 and 4096 compare the deferred light methods (forward stops at kForwardBenchMaxLights).
 const std::vector<int> kLightCounts = {0, 4, 32, 256, 4096};
 
-std::string format(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof(text), pattern, value);
-    return text;
-}
-
 std::string passesText(const BenchResult& result) {
     std::string text;
-    for (const auto& [name, ms] : result.passesMs) text += (text.empty() ? "" : ";") + name + "=" + format("%.3f", ms);
+    for (const auto& [name, ms] : result.passesMs) text += (text.empty() ? "" : ";") + name + "=" + formatNumber("%.3f", ms);
     return text;
 }
 
@@ -264,14 +259,14 @@ std::string benchCsvRow(const BenchResult& r) {
     const BenchConfig& c = r.config;
     return std::string(pipelineName(c.pipeline)) + "," + csvField(c.layout) + "," + std::to_string(c.width) + "," +
            std::to_string(c.height) + "," + csvField(r.variation) + "," + csvField(r.knobSettings) + "," +
-           std::to_string(c.lights) + "," + format("%.3f", r.msMedian) + "," + format("%.3f", r.msMin) + "," + format("%.3f", r.msMax) + "," +
-           format("%.3f", r.floorMs) + "," + format("%.3f", r.floorRatio()) + "," + format("%.3f", r.psnrDb) + "," +
-           format("%.4f", r.rmse) + "," + std::to_string(r.maxAbs) + "," + format("%.5f", r.ssim) + "," + format("%.3f", r.sameKnobsPsnrDb) + "," + std::to_string(r.sameKnobsMaxAbs) + "," +
+           std::to_string(c.lights) + "," + formatNumber("%.3f", r.msMedian) + "," + formatNumber("%.3f", r.msMin) + "," + formatNumber("%.3f", r.msMax) + "," +
+           formatNumber("%.3f", r.floorMs) + "," + formatNumber("%.3f", r.floorRatio()) + "," + formatNumber("%.3f", r.psnrDb) + "," +
+           formatNumber("%.4f", r.rmse) + "," + std::to_string(r.maxAbs) + "," + formatNumber("%.5f", r.ssim) + "," + formatNumber("%.3f", r.sameKnobsPsnrDb) + "," + std::to_string(r.sameKnobsMaxAbs) + "," +
            std::to_string(r.bytesPerPixel) + "," + std::to_string(r.gbufferBytesPerPixel) + "," +
-           format("%.2f", r.targetMiB) + "," + (r.pareto ? "true" : "false") + "," +
+           formatNumber("%.2f", r.targetMiB) + "," + (r.pareto ? "true" : "false") + "," +
            (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r)) + "," + csvField(c.depth) + "," +
-           lightMethodName(c.lightMethod) + "," + format("%.4f", r.trafficBytesPerPixel) + "," +
-           format("%.4f", r.clearedBytesPerPixel) + "," + format("%.4f", r.floorTrafficBytesPerPixel);
+           lightMethodName(c.lightMethod) + "," + formatNumber("%.4f", r.trafficBytesPerPixel) + "," +
+           formatNumber("%.4f", r.clearedBytesPerPixel) + "," + formatNumber("%.4f", r.floorTrafficBytesPerPixel);
 }
 
 std::string benchConfigJson(const BenchResult& r) {

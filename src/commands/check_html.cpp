@@ -6,14 +6,10 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "render/decimal_text.h"
+
 namespace oasis {
 namespace {
-
-std::string format(const char* pattern, double value) {
-    char text[64];
-    std::snprintf(text, sizeof(text), pattern, value);
-    return text;
-}
 
 // The style sheet: light, legible, the verdicts in colours that also read as text.
 const char* kStyle = R"(
@@ -102,7 +98,7 @@ std::string summary(const CheckReport& report) {
     html += "<table class=\"facts\">\n" + fact("vendor", report.vendor) + fact("renderer", report.renderer) +
             fact("version", report.glVersion) + fact("GLSL", report.glslVersion) + fact("API", report.api) +
             fact("oasis", report.oasisVersion + (report.oasisCommit.empty() ? "" : " (" + report.oasisCommit + ")")) +
-            fact("total time", format("%.1f s", report.seconds)) + "</table>\n</header>\n";
+            fact("total time", formatNumber("%.1f s", report.seconds)) + "</table>\n</header>\n";
     return html;
 }
 
@@ -129,13 +125,13 @@ std::vector<bool> casesWithImages(const CheckReport& report) {
 
 std::string numbers(const CaseResult& c) {
     if (c.verdict == Verdict::Skip) return cell("&mdash;", "number") + cell("&mdash;", "number") + cell("&mdash;", "number");
-    return cell(format("%.2f", c.psnrDb), "number") + cell(std::to_string(c.maxAbs), "number") +
+    return cell(formatNumber("%.2f", c.psnrDb), "number") + cell(std::to_string(c.maxAbs), "number") +
            cell(std::to_string(c.pixelsOver), "number");
 }
 
 std::string mainPath(const CaseResult& c) {
     if (!c.mainPathCompared) return cell("&mdash;");
-    return cell("<span class=\"nowrap\">" + format("%.2f dB,", c.mainPathPsnrDb) + "</span> <span class=\"nowrap\">max abs " +
+    return cell("<span class=\"nowrap\">" + formatNumber("%.2f dB,", c.mainPathPsnrDb) + "</span> <span class=\"nowrap\">max abs " +
                 std::to_string(c.mainPathMaxAbs) + ",</span> <span class=\"nowrap\">" + std::to_string(c.mainPathPixelsOver) +
                 " over</span>" +
                 (c.mainPathRule.empty() ? "" : "<div class=\"rule\">" + htmlEscape(c.mainPathRule) + "</div>"));
@@ -158,7 +154,7 @@ std::string caseTable(const CheckReport& report, const std::vector<bool>& withIm
         std::string reason = htmlEscape(c.reason) +
                              (c.referenceRule.empty() ? "" : "<div class=\"rule\">" + htmlEscape(c.referenceRule) + "</div>");
         html += "<tr>" + cell(name, "name") + cell(verdictSpan(c.verdict)) + cell(reason, "reason") + numbers(c) + mainPath(c) +
-                divergence(c) + cell(format("%.2f", c.seconds), "number") +
+                divergence(c) + cell(formatNumber("%.2f", c.seconds), "number") +
                 cell("<code class=\"command\">" + htmlEscape(renderCommandLine(c.options)) + "</code>") + "</tr>\n";
     }
     return html + "</table>\n";

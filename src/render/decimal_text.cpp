@@ -1,9 +1,11 @@
-// parseDecimal (render/decimal_text.h): strtod over a copy whose decimal point is the C locale's own.
+// Decimal text (render/decimal_text.h): parseDecimal is strtod over a copy whose decimal point is the
+// C locale's own; formatNumber is snprintf.
 #include "render/decimal_text.h"
 
 #include <cerrno>
 #include <clocale>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -29,6 +31,12 @@ bool parseDecimal(std::string_view text, double& value) {
     if (errno == ERANGE && parsed == 0.0) return false;      // a nonzero number too small for a double
     value = parsed;
     return true;
+}
+
+std::string formatNumber(const char* pattern, double value) {
+    char text[64];
+    std::snprintf(text, sizeof(text), pattern, value);
+    return text;
 }
 
 }  // namespace oasis

@@ -1,7 +1,9 @@
-// Reading a decimal number as a double, the same on every platform and in every locale: the native
-// build's libstdc++ and the web build's libc++ (emscripten 3.1.6, which has no std::from_chars for
-// double) give the same answers, which are std::from_chars's.
+// Decimal numbers as text. Reading one as a double, the same on every platform and in every locale:
+// the native build's libstdc++ and the web build's libc++ (emscripten 3.1.6, which has no
+// std::from_chars for double) give the same answers, which are std::from_chars's. Writing one with
+// a printf pattern, for the reports' tables.
 #pragma once
+#include <string>
 #include <string_view>
 
 namespace oasis {
@@ -11,5 +13,8 @@ namespace oasis {
 // the number and its value is finite and representable: false for an overflow, and for a nonzero
 // number that rounds to 0 (subnormals are fine), as std::from_chars reports result_out_of_range.
 bool parseDecimal(std::string_view text, double& value);
+
+// `value` written by printf's `pattern` for one double ("%.2f", "%.3g"), up to 63 characters.
+std::string formatNumber(const char* pattern, double value);
 
 }  // namespace oasis

@@ -39,6 +39,9 @@ extern "C" {
 // The caller frees the string.
 EMSCRIPTEN_KEEPALIVE char* oasis_capabilities() { return copy(oasis::web::app().capabilityJson()); }
 
+// The window app's state (WebApp::windowStateJson); the caller frees the string.
+EMSCRIPTEN_KEEPALIVE char* oasis_window_state() { return copy(oasis::web::app().windowStateJson()); }
+
 EMSCRIPTEN_KEEPALIVE int oasis_frames_drawn() { return oasis::web::app().framesDrawn(); }
 
 // 0 forward, 1 deferred.
@@ -46,7 +49,8 @@ EMSCRIPTEN_KEEPALIVE void oasis_set_pipeline(int deferred) {
     oasis::web::app().setPipeline(deferred ? oasis::PipelineKind::Deferred : oasis::PipelineKind::Forward);
 }
 
-EMSCRIPTEN_KEEPALIVE void oasis_set_view(const char* view) { oasis::web::app().setView(view); }
+// 1 when `view` names a view (the panel's view list: the debug views, the error views, overview).
+EMSCRIPTEN_KEEPALIVE int oasis_set_view(const char* view) { return oasis::web::app().setView(view) ? 1 : 0; }
 
 // `oasis probe --at X,Y --json` in the page; the caller frees the string.
 EMSCRIPTEN_KEEPALIVE char* oasis_probe_json(int deferred, int x, int y) {

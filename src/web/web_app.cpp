@@ -1,5 +1,6 @@
 // The browser app: a WebGL 2 canvas from emscripten's GLFW (an OpenGL ES 3.0 context; no EGL in
-// the browser), the same RenderSession and Renderer calls as the native window, and a panel.
+// the browser) and the native window's WindowApp on it: the same panel, keys, inspector and
+// comparison, a frame per call of the page's main loop.
 #include "web/web_app.h"
 
 #include <emscripten.h>
@@ -9,10 +10,6 @@
 
 #include <cstdio>
 #include <stdexcept>
-
-#include <imgui.h>
-#include <imgui_impl_glfw.h>
-#include "debug/imgui_gl_backend.h"
 
 #include "context/gl_context.h"
 #include "frame/encoding_error.h"
@@ -68,76 +65,54 @@ bool WebApp::start() {
                                 "absent in this browser's WebGL 2)");
     }
     try {
-        session_ = std::make_unique<RenderSession>(options_);
+        app_ = std::make_unique<WindowApp>(options_, window_);
     } catch (const std::exception& error) {
         showPageError(std::string("oasis could not start: ") + error.what());
         return false;
     }
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the page's file system
-    ImGui_ImplGlfw_InitForOpenGL(window_, true);
-    imguiGlBackendInit();
-    session_->scene.timeSeconds = options_.scene.timeSeconds;
+    for (const std::string& line : webFallbacks_) app_->state().fallbacks.push_back(line);
+    last_ = std::chrono::steady_clock::now();
     return true;
 }
 
 void WebApp::frame() {
-    Renderer& renderer = *session_->renderer;
     int width = 0, height = 0;
     glfwGetFramebufferSize(window_, &width, &height);
-    renderer.setPipeline(pipeline_);
-    renderer.configure(width, height, renderer.targets().layout());
-    renderer.renderFrame(session_->scene);
-    renderer.views().render(view_);
-    renderer.present(width, height);
-
-    imguiGlBackendNewFrame(true);
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    drawPanel();
-    ImGui::Render();
-    imguiGlBackendRender(true, ImGui::GetDrawData());
-    if (++frames_ == 1)  // the page's and the test's time to first frame
+    if (width <= 0 || height <= 0) return;  // a canvas of no size: nothing to draw into
+    auto now = std::chrono::steady_clock::now();
+    float seconds = std::chrono::duration<float>(now - last_).count();
+    last_ = now;
+    long before = framesDrawn();
+    app_->frame(width, height, seconds);
+    app_->finishFrame();  // the browser shows the canvas when this iteration returns
+    if (before == 0 && framesDrawn() == 1)  // the page's and the test's time to first frame
         EM_ASM({ if (typeof oasisFirstFrame === 'function') oasisFirstFrame(); });
-    if (!paused_) session_->scene.timeSeconds += 1.0 / 60.0;
 }
 
-void WebApp::drawPanel() {
-    SceneSettings& scene = session_->scene;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(370, 0), ImGuiCond_FirstUseEver);
-    ImGui::Begin("oasis (WebGL 2)");
-    int kind = pipeline_ == PipelineKind::Forward ? 0 : 1;
-    ImGui::RadioButton("forward", &kind, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("deferred", &kind, 1);
-    pipeline_ = kind == 0 ? PipelineKind::Forward : PipelineKind::Deferred;
-    if (ImGui::BeginCombo("view", view_.c_str())) {
-        for (const DebugView& view : debugViews())
-            if (ImGui::Selectable(view.name.c_str(), view.name == view_)) view_ = view.name;
-        if (ImGui::Selectable(kOverviewName, view_ == kOverviewName)) view_ = kOverviewName;
-        ImGui::EndCombo();
-    }
-    float hour = float(scene.hour ? *scene.hour : hourAtTime(scene.timeSeconds));
-    if (ImGui::SliderFloat("time of day (h)", &hour, 0.0f, 24.0f, "%.2f")) scene.hour = hour;
-    if (scene.hour && ImGui::Button("follow the clock")) scene.hour.reset();
-    ImGui::Checkbox("pause", &paused_);
-    ImGui::Text("%.1f ms/frame", 1000.0f / std::max(ImGui::GetIO().Framerate, 0.001f));
-    if (ImGui::CollapsingHeader("capabilities and paths")) {
-        ContextInfo context = queryContextInfo();
-        ImGui::TextWrapped("%s", context.summary().c_str());
-        for (const std::string& line : webFallbacks_) ImGui::TextWrapped("fallback: %s", line.c_str());
-        for (const gl::FeatureReport& feature : session_->features())
-            ImGui::TextWrapped("%s %s: %s", feature.used ? "[used]" : "[    ]", feature.name.c_str(),
-                               feature.reason.c_str());
-    }
-    ImGui::End();
+void WebApp::setPipeline(PipelineKind kind) { window::choosePipeline(app_->state(), kind); }
+
+bool WebApp::setView(const std::string& view) {
+    for (const std::string& name : window::viewNames())
+        if (name == view) {
+            app_->state().chosen.view = view;
+            return true;
+        }
+    return false;
 }
 
-SceneSettings WebApp::optionsScene() const {
+std::string WebApp::windowStateJson() {
+    const window::WindowState& state = app_->state();
+    const window::Configuration& chosen = state.chosen;
+    return std::string("{\"pipeline\":") + jsonString(pipelineName(chosen.pipeline)) +
+           ",\"gbuffer\":" + jsonString(gbufferLayouts()[chosen.layoutIndex].name) + ",\"view\":" + jsonString(chosen.view) +
+           ",\"paused\":" + (state.paused ? "true" : "false") + ",\"panel\":" + (state.panelShown ? "true" : "false") +
+           ",\"compare\":" + jsonString(compareModeName(state.comparison.mode)) +
+           ",\"pins\":" + std::to_string(state.inspector.pinned.size()) + "}";
+}
+
+SceneSettings WebApp::optionsScene() {
     // The frame of the page's options (time, hour, camera), not of the live clock, as `render` draws it.
-    SceneSettings scene = session_->scene;
+    SceneSettings scene = session().scene;
     scene.timeSeconds = options_.scene.timeSeconds;
     scene.hour = options_.scene.hour;
     scene.camera = options_.scene.camera;
@@ -145,7 +120,7 @@ SceneSettings WebApp::optionsScene() const {
 }
 
 bool WebApp::writeFinalPng(PipelineKind kind, const std::string& path) {
-    Renderer& renderer = *session_->renderer;
+    Renderer& renderer = *session().renderer;
     renderer.setPipeline(kind);
     renderer.configure(options_.scene.width, options_.scene.height, renderer.targets().layout());
     renderer.renderFrame(optionsScene());
@@ -161,7 +136,7 @@ bool WebApp::writeFinalPng(PipelineKind kind, const std::string& path) {
 
 std::string WebApp::probeJson(PipelineKind kind, int x, int y) {
     // What `oasis probe --at X,Y --json` does: the layout's encoding error, then the frame asked for.
-    Renderer& renderer = *session_->renderer;
+    Renderer& renderer = *session().renderer;
     renderer.configure(options_.scene.width, options_.scene.height, renderer.targets().layout());
     SceneSettings scene = optionsScene();
     std::optional<EncodingError> error;
@@ -173,13 +148,13 @@ std::string WebApp::probeJson(PipelineKind kind, int x, int y) {
     return oasis::probeJson(probe);
 }
 
-std::string WebApp::capabilityJson() const {
+std::string WebApp::capabilityJson() {
     ContextInfo context = queryContextInfo();
     std::string json = "{\"version\":" + jsonString(context.version) + ",\"vendor\":" + jsonString(context.vendor) +
                        ",\"renderer\":" + jsonString(context.renderer) + ",\"glsl\":" + jsonString(context.glslVersion) +
                        ",\"features\":[";
     bool first = true;
-    for (const gl::FeatureReport& feature : session_->features()) {
+    for (const gl::FeatureReport& feature : session().features()) {
         json += std::string(first ? "" : ",") + "{\"name\":" + jsonString(feature.name) + ",\"used\":" +
                 (feature.used ? "true" : "false") + ",\"available\":" + (feature.available ? "true" : "false") +
                 ",\"reason\":" + jsonString(feature.reason) + "}";
@@ -188,7 +163,7 @@ std::string WebApp::capabilityJson() const {
     json += "],\"gbuffer\":" + jsonString(options_.scene.gbuffer) + ",\"fallbacks\":[";
     first = true;
     std::vector<std::string> lines = webFallbacks_;
-    for (const std::string& line : session_->fallbacks()) lines.push_back(line);
+    for (const std::string& line : session().fallbacks()) lines.push_back(line);
     for (const std::string& line : lines) {
         json += std::string(first ? "" : ",") + jsonString(line);
         first = false;

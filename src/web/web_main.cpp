@@ -1,6 +1,6 @@
 // The browser's oasis: the ES 3.0 tier's RenderSession in a WebGL 2 canvas (emscripten's GLFW),
-// driven by emscripten_set_main_loop, with the panel (web_panel.cpp) and the page's hooks
-// (web_api.cpp). Options come from the page's URL query, parsed by the native command line parser.
+// driven by emscripten_set_main_loop, which calls the native window's WindowApp::frame (web_app.cpp),
+// and the page's hooks (web_api.cpp). Options come from the page's URL query, parsed by the native command line parser.
 #include <emscripten.h>
 #define GLFW_INCLUDE_ES3  // GLFW includes <GLES3/gl3.h>, not desktop <GL/gl.h>
 #include <GLFW/glfw3.h>

@@ -253,15 +253,105 @@ for (const [fx, fy] of [[0.5, 0.67], [0.25, 0.8], [0.75, 0.2]]) {
   check(framesAfter > framesBefore, `the page's frame loop draws on after the check (${framesBefore} -> ${framesAfter} frames)`);
 }
 
-// The page as a person sees it: frame, panel, report (after a few frames back on the live loop).
-await evaluate(`Module.ccall('oasis_set_pipeline', null, ['number'], [1])`);
-await new Promise((r) => setTimeout(r, 1500));
-// The canvas and the top of the report below it (the extension and path lists run long).
-const shot = await send('Page.captureScreenshot', { format: 'png',
-  clip: { x: 0, y: 0, width: Math.max(width + 40, 1000), height: height + 560, scale: 1 } });
-fs.writeFileSync(path.join(outDir, 'page.png'), Buffer.from(shot.result.data, 'base64'));
 const frames = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
 check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
+
+// The page as a person uses it: the native window's own app (WindowApp: panel, keys, inspector,
+// live comparison) at the page's default size, driven by real key and mouse events through the
+// DevTools protocol, its printed lines read from the console, and the page photographed.
+{
+  const [pw, ph] = [960, 540];
+  const linesFrom = consoleLines.length;
+  await send('Page.navigate', { url: `http://127.0.0.1:${port}/oasis.html?size=${pw}x${ph}&hour=15` });
+  const loaded = Date.now();
+  let first;
+  while (Date.now() - loaded < 120000 && !(first = await evaluate('window.oasisFirstFrameMs')))
+    await delay(250);
+  check(first !== undefined, `the ${pw}x${ph} page drew a first frame (${first === undefined ? 'timed out' : first.toFixed(0) + ' ms'})`);
+  const drawn = () => evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
+  const framesPass = async (n) => {  // the app has seen the events sent before: n whole frames since
+    const start = await drawn();
+    for (const t0 = Date.now(); Date.now() - t0 < 60000 && (await drawn()) < start + n;) await delay(50);
+  };
+  const codes = { ' ': ['Space', 32], Tab: ['Tab', 9], p: ['KeyP', 80], i: ['KeyI', 73], c: ['KeyC', 67], h: ['KeyH', 72],
+                  2: ['Digit2', 50] };
+  const press = async (key) => {
+    const [code, keyCode] = codes[key];
+    const event = { key, code, windowsVirtualKeyCode: keyCode, nativeVirtualKeyCode: keyCode };
+    await send('Input.dispatchKeyEvent', { type: 'keyDown', ...event, text: key.length === 1 ? key : undefined });
+    await send('Input.dispatchKeyEvent', { type: 'keyUp', ...event });
+    await framesPass(2);
+  };
+  const canvas = await evaluate(`(() => { const r = document.getElementById('canvas').getBoundingClientRect(); ` +
+                                `return { x: r.left, y: r.top, w: r.width, h: r.height }; })()`);
+  check(canvas.w === pw && canvas.h === ph, `the canvas is ${pw}x${ph} (${canvas.w}x${canvas.h})`);
+  const at = (x, y) => ({ x: canvas.x + x + 0.5, y: canvas.y + y + 0.5 });
+  const hover = async (x, y) => { await send('Input.dispatchMouseEvent', { type: 'mouseMoved', ...at(x, y) }); await framesPass(2); };
+  const click = async (x, y) => {
+    await send('Input.dispatchMouseEvent', { type: 'mousePressed', ...at(x, y), button: 'left', clickCount: 1 });
+    await send('Input.dispatchMouseEvent', { type: 'mouseReleased', ...at(x, y), button: 'left', clickCount: 1 });
+    await framesPass(2);
+  };
+  const printed = (pattern) => consoleLines.slice(linesFrom).filter((l) => pattern.test(l));
+  const jsonOf = (line) => JSON.parse(line.slice(line.indexOf('{')));
+
+  // Space: the clock stops, and says at which --time (the native probe renders that moment).
+  await press(' ');
+  const paused = printed(/oasis: paused at --time /);
+  check(paused.length === 1, `Space paused the clock (${paused[0] || 'no line'})`);
+  const time = paused.length ? paused[0].match(/--time (\S+)/)[1] : '0';
+  // P: the probe under the cursor (right of the panel), against the native probe of that moment.
+  const [px, py] = [700, 360];
+  await hover(px, py);
+  await press('p');
+  const probes = printed(/^oasis: probe \{/);
+  check(probes.length === 1, `P printed the probe under the cursor (${probes.length} lines)`);
+  if (probes.length) {
+    const web = jsonOf(probes[0]);
+    const native = JSON.parse(execFileSync(oasisExe, ['probe', '--at', `${px},${py}`, '--json', '--api', 'gles', '--force',
+      'gles30', '--size', `${pw}x${ph}`, '--hour', '15', '--time', time, '--gbuffer', caps.gbuffer, '--pipeline', 'deferred'],
+      { stdio: ['ignore', 'pipe', 'ignore'] }).toString());
+    const a = web.stored.final.values, b = native.stored.final.values;
+    const diff = Math.max(...[0, 1, 2].map((i) => Math.abs(a[i] - b[i])));
+    console.log(`web: P at ${px},${py} (paused at --time ${time}): page ${a.slice(0, 3)}, native ${b.slice(0, 3)}, max abs ${diff}`);
+    check(web.x === px && web.y === py && diff <= probeLevel && web.sky === native.sky,
+          `the hovered probe is pixel ${px},${py} and equals the native probe within ${probeLevel} levels`);
+  }
+  // A click pins the pixel; I prints the pin's shading and history, as `probe --shading --history`.
+  await click(px, py);
+  await press('i');
+  const deep = printed(/^oasis: probe in depth #1 \{/);
+  check(deep.length === 1, `a click pinned ${px},${py} and I printed its shading and history (${deep.length} lines)`);
+  if (deep.length) {
+    const report = jsonOf(deep[0]);
+    console.log(`web: I: shading ${report.shading ? Object.keys(report.shading).join(',') : 'none'}; history of ` +
+                `${(report.history || []).length} passes`);
+    check(report.x === px && report.y === py && report.shading && (report.history || []).length > 0,
+          `the pin's report is of ${px},${py} and has its shading and its history`);
+  }
+  // C: the live split, forward | deferred; P right of the divider reads side B (deferred).
+  await press('c');
+  await press('p');
+  const sideB = printed(/^oasis: probe \(B: deferred/);
+  check(sideB.length === 1, `C split the frame forward | deferred and P read side B there (${sideB.length} lines)`);
+  const shot = await send('Page.captureScreenshot', { format: 'png', clip: { x: 0, y: 0, width: pw + 40, height: ph + 430, scale: 1 } });
+  fs.writeFileSync(path.join(outDir, 'page.png'), Buffer.from(shot.result.data, 'base64'));
+  // Back to one frame (C cycles: split layouts, the two differences, off); Tab switches the
+  // pipeline, 2 chooses the second view, H hides the panel.
+  const windowState = async () => JSON.parse(await evaluate(`(() => { const p = Module.ccall('oasis_window_state', ` +
+    `'number', [], []); const s = UTF8ToString(p); Module._free(p); return s; })()`));
+  for (let i = 0; i < 4; ++i) await press('c');
+  const before = await windowState();
+  await press('Tab');
+  await press('2');
+  await press('h');
+  const after = await windowState();
+  console.log(`web: window state before ${JSON.stringify(before)}, after Tab, 2, H ${JSON.stringify(after)}`);
+  check(before.compare === after.compare && /off/i.test(after.compare), `C came round to no comparison (${after.compare})`);
+  check(before.pipeline === 'deferred' && after.pipeline === 'forward', 'Tab switched deferred -> forward');
+  check(before.view === 'final' && after.view !== 'final', `2 chose a view (${after.view})`);
+  check(before.panel && !after.panel && after.paused && after.pins === 1, 'H hid the panel; still paused, one pin');
+}
 console.log(`web: wrote ${outDir}/page.png, web-*.png, native-*.png, capabilities.json, web-check-report.{json,html}, ` +
             `native-check/, check-diff.txt`);
 console.log(`web: the test took ${((Date.now() - testStart) / 1000).toFixed(1)} s`);
