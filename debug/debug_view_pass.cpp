@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/pixel_readback.h"
+#include "render/depth_stencil_readback.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -13,11 +13,10 @@ const char* stencilViewPathName(StencilViewPath path) {
     return path == StencilViewPath::Texturing ? "stencil-texturing" : "read-back";
 }
 
-void DebugViewPass::uploadStencilCopy(const FrameTargets& targets) {
+void DebugViewPass::uploadStencilCopy(ShaderLibrary& shaders, const FrameTargets& targets, bool drawn) {
     int w = targets.width(), h = targets.height();
-    stencilBytes_.resize(size_t(w) * size_t(h));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, Target::DepthStencil));
-    readStencilBytes(w, h, stencilBytes_.data());  // render/pixel_readback.h: ES has no GL_STENCIL_INDEX read
+    // ES has no GL_STENCIL_INDEX read; without GL_NV_read_depth_stencil the stencil is drawn out.
+    stencilBytes_ = readStencilRegion(shaders, targets, wholeDepthStencil(targets, drawn));
     if (!stencilCopy_ || stencilCopyWidth_ != w || stencilCopyHeight_ != h) {
         stencilCopy_ = gl::createTargetTexture("stencil read-back copy", GL_R8UI, w, h);
         stencilCopyWidth_ = w;
@@ -40,7 +39,7 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
         case ViewSource::Reflection:
             // Written only at the water's pixels: the view reads the stencil's water mark with it.
             bind(kUnitSource, targets.texture(Target::Reflection));
-            bindStencil(targets, stencilPath);
+            bindStencil(context, stencilPath);
             break;
         case ViewSource::Radiance: bind(kUnitSource, targets.texture(Target::Radiance)); break;
         case ViewSource::PlantAtlas: bind(kUnitSource, plantAtlasTexture_); break;
@@ -58,14 +57,15 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
             bind(kUnitDepth, depthStencil);
             glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
             break;
-        case ViewSource::Stencil: bindStencil(targets, stencilPath); break;
+        case ViewSource::Stencil: bindStencil(context, stencilPath); break;
     }
 }
 
-void DebugViewPass::bindStencil(const FrameTargets& targets, StencilViewPath stencilPath) {
+void DebugViewPass::bindStencil(PassContext& context, StencilViewPath stencilPath) {
+    const FrameTargets& targets = context.targets;
     glActiveTexture(GL_TEXTURE0 + kUnitStencil);
     if (stencilPath == StencilViewPath::ReadBack) {
-        uploadStencilCopy(targets);
+        uploadStencilCopy(context.shaders, targets, context.drawDepthStencilReads);
         glActiveTexture(GL_TEXTURE0 + kUnitStencil);
         glBindTexture(GL_TEXTURE_2D, stencilCopy_.name());
     } else {

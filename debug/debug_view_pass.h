@@ -54,10 +54,10 @@ private:
                   int x, int y, int width, int height);
     void bindSource(PassContext& context, const DebugView& view, StencilViewPath stencilPath);
     void restoreDepthStencilMode(const DebugView& view, StencilViewPath stencilPath);
-    void uploadStencilCopy(const FrameTargets& targets);
+    void uploadStencilCopy(ShaderLibrary& shaders, const FrameTargets& targets, bool drawn);
     // The stencil on kUnitStencil (texturing, or a read-back copy), for the stencil view and the
     // water mask of the Reflection views.
-    void bindStencil(const FrameTargets& targets, StencilViewPath stencilPath);
+    void bindStencil(PassContext& context, StencilViewPath stencilPath);
 
     GLuint plantAtlasTexture_ = 0;
     float exposureStops_ = 0.0f;

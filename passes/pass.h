@@ -40,6 +40,9 @@ struct PassContext {
     const FrameTargets* reflectionTargets = nullptr;
     GLuint reflectionFrameBlock = 0;
     GLuint frameBlock = 0;
+    // Whether depth and stencil must be drawn into colour targets to be read back (no glReadPixels
+    // of them: OpenGL ES without GL_NV_read_depth_stencil, render/depth_stencil_readback.h).
+    bool drawDepthStencilReads = false;
 };
 
 // The context the reflection's passes draw with, for the scope's lifetime: at a reduced

@@ -26,6 +26,7 @@ RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const Sc
     c.compute.available = caps.computeAvailable(&c.compute.reason);
     c.clipControl.available = caps.clipControlAvailable(&c.clipControl.reason);
     c.readOnlyDepth.available = caps.readOnlyDepthAvailable(&c.readOnlyDepth.reason);
+    c.depthStencilRead.available = caps.depthStencilReadAvailable(&c.depthStencilRead.reason);
     c.forcedLightsPath = scene.lights.path;
     c.forcedLightMethod = scene.lights.method;
     return c;
@@ -197,6 +198,8 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
                                                 renderer->paths().capabilities.readOnlyDepth.reason
                                           : renderer->paths().capabilities.readOnlyDepth.reason,
                             caps.availability(&Capabilities::readOnlyDepthAvailable)));
+    gl::Availability depthStencilRead = caps.availability(&Capabilities::depthStencilReadAvailable);
+    list.push_back(reportOf("depth-stencil-read", depthStencilRead.tier, depthStencilRead.reason, depthStencilRead));
     gl::Availability clipDistances = caps.availability(&Capabilities::clipDistancesAvailable);
     list.push_back(reportOf("clip-distances", clipDistances.tier,
                             clipDistances.tier ? "the reflection clipped at the water plane by " + clipDistances.reason

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gl/objects.h"
+#include "render/depth_stencil_readback.h"
 #include "render/pixel_readback.h"
 #include "render/texture_units.h"
 
@@ -15,6 +16,9 @@ struct ReadbackAccess {
     static GLuint waterBounds(const Renderer& renderer) { return renderer.waterBounds_.name(); }
     static FloatReadback& positions(Renderer& renderer) { return renderer.positionsReadback_; }
     static void fillSurfacesWithTheirDepth(Renderer& renderer) { renderer.fillSurfacesWithTheirDepth(); }
+    // The depth and stencil read-backs may draw (render/depth_stencil_readback.h): a const read
+    // of the frame still builds their programs.
+    static ShaderLibrary& shaders(const Renderer& renderer) { return renderer.shaders_; }
 };
 
 glm::ivec4 readWaterBounds(const Renderer& renderer) {
@@ -77,20 +81,18 @@ std::vector<float> readSurfacePositions(Renderer& renderer) {
     return positions.read();
 }
 
+namespace {
+bool drawsDepthStencil(const Renderer& renderer) { return !renderer.paths().capabilities.depthStencilRead.available; }
+}  // namespace
+
 std::vector<float> readDepth(const Renderer& renderer) {
     const FrameTargets& targets = renderer.targets();
-    std::vector<float> depth(size_t(targets.width()) * size_t(targets.height()));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, Target::DepthStencil));
-    readDepthFloats(targets.width(), targets.height(), depth.data());
-    return depth;
+    return readDepthRegion(ReadbackAccess::shaders(renderer), targets, wholeDepthStencil(targets, drawsDepthStencil(renderer)));
 }
 
 std::vector<uint8_t> readStencil(const Renderer& renderer) {
     const FrameTargets& targets = renderer.targets();
-    std::vector<uint8_t> stencil(size_t(targets.width()) * size_t(targets.height()));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, Target::DepthStencil));
-    readStencilBytes(targets.width(), targets.height(), stencil.data());
-    return stencil;
+    return readStencilRegion(ReadbackAccess::shaders(renderer), targets, wholeDepthStencil(targets, drawsDepthStencil(renderer)));
 }
 
 }  // namespace oasis

@@ -32,13 +32,14 @@ const FrameTargets& targetsOf(const Renderer& renderer, const Pass& pass, PixelP
     return renderer.targets();
 }
 
-std::vector<StoredTexel> readWrites(const Renderer& renderer, const Pass& pass, PixelPlace place) {
+std::vector<StoredTexel> readWrites(Renderer& renderer, const Pass& pass, PixelPlace place) {
     const FrameTargets& targets = targetsOf(renderer, pass, place);
     std::vector<StoredTexel> texels;
     for (const Resource& resource : pass.writes(renderer.lastFrame())) {
         const Target* target = std::get_if<Target>(&resource);  // buffers have no pixels
         if (target && (targets.layout().stores(*target) || *target == Target::DepthStencil || *target == Target::SceneDepth))
-            texels.push_back(readStoredTexel(targets, *target, place.glX, place.glY));
+            texels.push_back(readStoredTexel(renderer.shaders(), targets, *target, place.glX, place.glY,
+                                            !renderer.paths().capabilities.depthStencilRead.available));
     }
     return texels;
 }

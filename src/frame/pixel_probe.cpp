@@ -14,6 +14,7 @@
 #include "frame/encoding_error.h"
 #include "frame/renderer.h"
 #include "passes/pass.h"
+#include "render/depth_stencil_readback.h"
 #include "render/float_readback.h"
 #include "render/texture_units.h"
 
@@ -57,8 +58,18 @@ std::pair<GLuint, GLenum> readSource(const FrameTargets& targets, Target target)
 
 }  // namespace
 
-StoredTexel readStoredTexel(const FrameTargets& targets, Target target, int glX, int glY) {
+StoredTexel readStoredTexel(ShaderLibrary& shaders, const FrameTargets& targets, Target target, int glX, int glY,
+                            bool drawDepthStencil) {
     const ReadFormat& format = readFormatOf(targetFormat(targets.layout(), targets.depth(), target).internalFormat);
+    if (format.format == GL_DEPTH_STENCIL && drawDepthStencil) {
+        // OpenGL ES without GL_NV_read_depth_stencil (WebGL 2): the depth and stencil drawn into
+        // colour targets (render/depth_stencil_readback.h), given as the packed read gives them.
+        DepthStencilRead read{target, glX, glY, 1, 1, true};
+        double depth = readDepthRegion(shaders, targets, read)[0];
+        double stencil = readStencilRegion(shaders, targets, read)[0];
+        if (format.type == GL_UNSIGNED_INT_24_8) depth = std::round(depth * 16777215.0);  // the 24-bit unorm
+        return {targetName(target), format.name, format.storedAs, {depth, stencil}};
+    }
     auto [framebuffer, attachment] = readSource(targets, target);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
     if (attachment != GL_NONE) glReadBuffer(attachment);
@@ -205,7 +216,8 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     // against it (light volumes, the reflection's lighting), so it need not hold this pixel's depth.
     for (int t = 0; t < int(Target::Count); ++t)
         if (Target(t) != Target::SceneDepth && targets.layout().stores(Target(t)))
-            probe.stored.push_back(readStoredTexel(targets, Target(t), glX, glY));
+            probe.stored.push_back(readStoredTexel(renderer.shaders(), targets, Target(t), glX, glY,
+                                                   !renderer.paths().capabilities.depthStencilRead.available));
 
     std::array<glm::vec4, kProbeSlots> slot = decodeOnGpu(renderer, glX, glY);
     probe.albedo = glm::vec3(slot[0]);

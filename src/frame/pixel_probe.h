@@ -19,9 +19,13 @@ struct StoredTexel {
 };
 
 class FrameTargets;
+class ShaderLibrary;
 enum class Target;
 // One target's texel at GL pixel (glX, glY), bottom row 0, as stored: any time, mid-frame too.
-StoredTexel readStoredTexel(const FrameTargets& targets, Target target, int glX, int glY);
+// `drawDepthStencil`: depth and stencil are drawn out with `shaders` to be read, where glReadPixels
+// cannot read them (RendererCapabilities::depthStencilRead, render/depth_stencil_readback.h).
+StoredTexel readStoredTexel(ShaderLibrary& shaders, const FrameTargets& targets, Target target, int glX, int glY,
+                            bool drawDepthStencil);
 
 struct PixelProbe {
     int x = 0, y = 0;              // as asked: 0,0 is the top-left pixel (as in the PNGs)

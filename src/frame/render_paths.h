@@ -19,6 +19,7 @@ struct RendererCapabilities {
         std::string reason;
     };
     Feature ssbo, compute, clipControl, readOnlyDepth;
+    Feature depthStencilRead;  // glReadPixels of depth and stencil, else they are drawn out to be read
     std::optional<LightsPath> forcedLightsPath;
     std::optional<LightMethod> forcedLightMethod;
 };

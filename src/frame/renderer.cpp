@@ -55,6 +55,7 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     // Reversed-z depth needs glClipControl; the session's report replaces this too (--force).
     given.clipControl.available = caps.clipControlAvailable(&given.clipControl.reason);
     given.readOnlyDepth.available = caps.readOnlyDepthAvailable(&given.readOnlyDepth.reason);
+    given.depthStencilRead.available = caps.depthStencilReadAvailable(&given.depthStencilRead.reason);
     setDepthConvention(standardDepthConvention());
 }
 
@@ -109,9 +110,11 @@ PassContext Renderer::context() { return contextOver(*targets_, frame_); }
 PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup& frame) {
     // Another renderer of the same context may have bound its own maps there since.
     shadowMaps_.bind();
-    return PassContext{targets, shaders_, geometry_, frame, vegetationBuffers_,
-                       paths_.waterBoundsAvailable ? waterBounds_.name() : 0u, &shadowMaps_,
-                       frame_.waterBounded ? waterSeen_.name() : 0u};
+    PassContext context{targets, shaders_, geometry_, frame, vegetationBuffers_,
+                        paths_.waterBoundsAvailable ? waterBounds_.name() : 0u, &shadowMaps_,
+                        frame_.waterBounded ? waterSeen_.name() : 0u};
+    context.drawDepthStencilReads = !paths_.capabilities.depthStencilRead.available;
+    return context;
 }
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {

@@ -62,6 +62,9 @@ const FeatureSource kDepthClamp{3, 2, "GL_ARB_depth_clamp", 0, 0, "GL_EXT_depth_
 // GL 4.5's feedback-loop rule (from ARB_texture_barrier): reads are undefined only of texels the
 // draws write. ES is not assumed to allow it.
 const FeatureSource kReadOnlyDepth{4, 5, "GL_ARB_texture_barrier", 0, 0, nullptr};  // desktop only
+// glReadPixels of GL_DEPTH_COMPONENT / GL_STENCIL_INDEX: desktop core; ES only by this extension
+// (Mesa's and NVIDIA's have it; WebGL 2 and ANGLE do not).
+const FeatureSource kDepthStencilRead{1, 0, nullptr, 0, 0, "GL_NV_read_depth_stencil"};
 
 // A version and extension list to ask: the tier oasis goes by (major/minor/extensions) or the
 // context's own (beforeTier, where a forced tier replaced them).
@@ -315,6 +318,15 @@ bool Capabilities::depthClampAvailable(std::string* reason) const {
     if (forced.noDepthClamp) return answer(false, reason, fallback + std::string("switched off by --force no-depth-clamp)"));
     if (from.empty()) return answer(false, reason, fallback + missing(*this, kDepthClamp) + ")");
     return answer(true, reason, "GL_DEPTH_CLAMP present (" + from + ")");
+}
+
+bool Capabilities::depthStencilReadAvailable(std::string* reason) const {
+    std::string from = source(*this, kDepthStencilRead);
+    if (from.empty())
+        return answer(false, reason, "fallback: depth and stencil drawn into colour targets and read from there (the "
+                                     "probe, the pixel history, the stencil view's read-back; " +
+                                     missing(*this, kDepthStencilRead) + ")");
+    return answer(true, reason, "glReadPixels reads depth and stencil (" + from + ")");
 }
 
 bool Capabilities::readOnlyDepthAvailable(std::string* reason) const {

@@ -152,6 +152,9 @@ struct Capabilities {
     // writes off: GL 4.5's feedback-loop rule (or ARB_texture_barrier's) makes only texels a draw
     // writes undefined to read. Else the compact lighting that samples depth in place shades every pixel.
     bool readOnlyDepthAvailable(std::string* reason = nullptr) const;
+    // glReadPixels of depth and stencil (desktop; ES with GL_NV_read_depth_stencil), else they are
+    // read by drawing (render/depth_stencil_readback.h).
+    bool depthStencilReadAvailable(std::string* reason = nullptr) const;
     // "OpenGL 4.5" / "OpenGL ES 3.2": the version as the reasons name it.
     std::string apiVersionName() const;
 

@@ -44,38 +44,38 @@ void readColourFloats(int width, int height, float* out) {
     for (size_t i = 0; i < count; ++i) out[i] = float(bytes[i]) / 255.0f;
 }
 
-void readDepthFloats(int width, int height, float* out) {
+void readDepthFloats(int x, int y, int width, int height, float* out) {
     size_t count = size_t(width) * size_t(height);
     if (epoxy_is_desktop_gl()) {
-        glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+        glReadPixels(x, y, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, out);
         return;
     }
     if (floatDepth()) {  // D32F_S8: the float and the stencil word of each pixel
         std::vector<uint32_t> words(count * 2);
-        glReadPixels(0, 0, width, height, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words.data());
+        glReadPixels(x, y, width, height, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words.data());
         for (size_t i = 0; i < count; ++i) out[i] = reinterpret_cast<const float*>(words.data())[2 * i];
         return;
     }
     std::vector<uint32_t> packed(count);  // D24S8: depth in the high 24 bits
-    glReadPixels(0, 0, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
+    glReadPixels(x, y, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
     for (size_t i = 0; i < count; ++i) out[i] = float(double(packed[i] >> 8) / 16777215.0);
 }
 
-void readStencilBytes(int width, int height, uint8_t* out) {
+void readStencilBytes(int x, int y, int width, int height, uint8_t* out) {
     size_t count = size_t(width) * size_t(height);
     if (epoxy_is_desktop_gl()) {
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, out);
+        glReadPixels(x, y, width, height, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, out);
         return;
     }
     if (floatDepth()) {
         std::vector<uint32_t> words(count * 2);
-        glReadPixels(0, 0, width, height, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words.data());
+        glReadPixels(x, y, width, height, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, words.data());
         for (size_t i = 0; i < count; ++i) out[i] = uint8_t(words[2 * i + 1] & 0xFF);
         return;
     }
     std::vector<uint32_t> packed(count);
-    glReadPixels(0, 0, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
+    glReadPixels(x, y, width, height, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, packed.data());
     for (size_t i = 0; i < count; ++i) out[i] = uint8_t(packed[i] & 0xFF);
 }
 

@@ -12,9 +12,10 @@ namespace oasis {
 
 // RGBA floats of the read buffer (GL_READ_FRAMEBUFFER's current glReadBuffer), `out` 4 * w * h.
 void readColourFloats(int width, int height, float* out);
-// The depth of GL_READ_FRAMEBUFFER's depth-stencil attachment as floats, `out` w * h.
-void readDepthFloats(int width, int height, float* out);
-// The stencil of GL_READ_FRAMEBUFFER's depth-stencil attachment, `out` w * h bytes.
-void readStencilBytes(int width, int height, uint8_t* out);
+// The depth of GL_READ_FRAMEBUFFER's depth-stencil attachment in the region as floats, `out` w * h;
+// the stencil, `out` w * h bytes. On ES only with GL_NV_read_depth_stencil: read them through
+// render/depth_stencil_readback.h, which draws them where the context cannot read them.
+void readDepthFloats(int x, int y, int width, int height, float* out);
+void readStencilBytes(int x, int y, int width, int height, uint8_t* out);
 
 }  // namespace oasis

@@ -75,6 +75,9 @@ std::vector<ProgramVariant> fixedVariants() {
         {"probe.height", "fullscreen.vert", "height_probe.frag", {}},
         {"gbuffer.positions", "fullscreen.vert", "gbuffer_positions.frag", {}},
         {"probe.pixel", "fullscreen.vert", "probe.frag", {}},
+        // Depth and stencil read by drawing where glReadPixels cannot (render/depth_stencil_readback.h).
+        {"readback.depth", "fullscreen.vert", "depth_stencil_read.frag", {"READ_DEPTH"}},
+        {"readback.stencil", "fullscreen.vert", "depth_stencil_read.frag", {"READ_STENCIL_BIT"}},
         // `probe --shading`: the lighting GLSL with its terms recorded (common/shading_terms.glsl).
         {"probe.shading", "fullscreen.vert", "probe_shading.frag", {"SHADING_RECORD"}},
         {"depth.copy", "fullscreen.vert", "depth_copy.frag", {}},

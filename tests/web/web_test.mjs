@@ -300,6 +300,7 @@ check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
   const paused = printed(/oasis: paused at --time /);
   check(paused.length === 1, `Space paused the clock (${paused[0] || 'no line'})`);
   const time = paused.length ? paused[0].match(/--time (\S+)/)[1] : '0';
+  let pausedStencil = null;
   // P: the probe under the cursor (right of the panel), against the native probe of that moment.
   const [px, py] = [700, 360];
   await hover(px, py);
@@ -313,9 +314,16 @@ check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
       { stdio: ['ignore', 'pipe', 'ignore'] }).toString());
     const a = web.stored.final.values, b = native.stored.final.values;
     const diff = Math.max(...[0, 1, 2].map((i) => Math.abs(a[i] - b[i])));
-    console.log(`web: P at ${px},${py} (paused at --time ${time}): page ${a.slice(0, 3)}, native ${b.slice(0, 3)}, max abs ${diff}`);
+    console.log(`web: P at ${px},${py} (paused at --time ${time}): page ${a.slice(0, 3)}, native ${b.slice(0, 3)}, max abs ${diff}; ` +
+                `stencil ${web.stencil.value}/${native.stencil.value}, 24-bit depth ${web.stored['depth-stencil'].values[0]}/` +
+                `${native.stored['depth-stencil'].values[0]} (page/native)`);
     check(web.x === px && web.y === py && diff <= probeLevel && web.sky === native.sky,
           `the hovered probe is pixel ${px},${py} and equals the native probe within ${probeLevel} levels`);
+    // WebGL 2 cannot glReadPixels depth or stencil: the page reads them by drawing.
+    const [dw, dn] = [web.stored['depth-stencil'].values[0], native.stored['depth-stencil'].values[0]];
+    check(web.stencil.value === native.stencil.value && Math.abs(dw - dn) <= 1,
+          `the page's stencil (${web.stencil.value}, ${web.stencil.meaning}) equals the native one and its depth is within 1 (drawn read-back)`);
+    pausedStencil = web.stencil.value;
   }
   // A click pins the pixel; I prints the pin's shading and history, as `probe --shading --history`.
   await click(px, py);
@@ -328,6 +336,9 @@ check(frames >= 2, `the main loop keeps drawing (${frames} frames)`);
                 `${(report.history || []).length} passes`);
     check(report.x === px && report.y === py && report.shading && (report.history || []).length > 0,
           `the pin's report is of ${px},${py} and has its shading and its history`);
+    const water = (pausedStencil & 0x7f) === 2;  // passes/pass.h StencilMark: the water
+    check(Boolean(report.shading && report.shading.water) === water,
+          `the pin's shading has the water's terms exactly where the stencil says water (stencil ${pausedStencil})`);
   }
   // C: the live split, forward | deferred; P right of the divider reads side B (deferred).
   await press('c');
