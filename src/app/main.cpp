@@ -66,6 +66,24 @@ int checkStandardOutput(int code) {
     return code == 0 ? 1 : code;
 }
 
+// `oasis serve [--dir DIR] [--port N]` is oasis-serve (src/serve/, built beside oasis): the web
+// build's page server, a program of its own so that serving needs no GL. Returns only when it
+// cannot be started.
+int runServe(char** argv) {
+    char self[4096];
+    ssize_t length = readlink("/proc/self/exe", self, sizeof(self) - 1);
+    std::string server = "oasis-serve";
+    if (length > 0) {
+        std::string path(self, size_t(length));
+        server = path.substr(0, path.rfind('/') + 1) + "oasis-serve";
+    }
+    argv[1] = const_cast<char*>(server.c_str());
+    execv(server.c_str(), argv + 1);
+    std::fprintf(stderr, "oasis: serve: cannot run %s (%s); it is built beside oasis (docs/web.md)\n", server.c_str(),
+                 std::strerror(errno));
+    return 1;
+}
+
 int runParsed(const oasis::Options& options) {
     using namespace oasis;
     if (options.help) {
@@ -100,6 +118,7 @@ int main(int argc, char** argv) {
     // Past a file-size limit (ulimit -f) a write should fail with EFBIG and be reported as a file
     // that could not be written (exit 1), not kill the process with SIGXFSZ.
     std::signal(SIGXFSZ, SIG_IGN);
+    if (argc > 1 && std::string(argv[1]) == "serve") return runServe(argv);
     ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
     if (!parsed.ok) {
         std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());
