@@ -197,6 +197,7 @@ bool Capabilities::driverHasDebugOutput() const { return !source(driverOffer(*th
 bool Capabilities::driverHasClipControl() const { return !source(driverOffer(*this), kClipControl).empty(); }
 bool Capabilities::driverHasClipDistances() const { return !source(driverOffer(*this), kClipDistances).empty(); }
 bool Capabilities::driverHasDepthClamp() const { return !source(driverOffer(*this), kDepthClamp).empty(); }
+bool Capabilities::driverHasNorm16Targets() const { return unforced().norm16TargetsAvailable(); }
 bool Capabilities::driverHasFloatRenderTargets() const {
     Offer own = driverOffer(*this);
     if (es) return !source(own, kFloatTargets).empty();
@@ -317,6 +318,22 @@ bool Capabilities::depthClampAvailable(std::string* reason) const {
     return answer(true, reason, "GL_DEPTH_CLAMP present (" + from + ")");
 }
 
+bool Capabilities::norm16TargetsAvailable(std::string* reason) const {
+    if (!es) {
+        if (!atLeast(3, 0)) return answer(false, reason, "no GL 3.0");
+        return answer(true, reason, "16-bit unorm colour-renderable (core since GL 3.0)");
+    }
+    // The driver's own list (beforeTier): a forced tier does not change which targets it can draw.
+    // In a browser emscripten lists WebGL's names with and without the GL_ prefix.
+    const std::set<std::string>& own = beforeTier ? beforeTier->extensions : extensions;
+    for (const char* name : {"GL_EXT_texture_norm16", "EXT_texture_norm16"})
+        if (own.count(name))
+            return answer(true, reason, std::string("16-bit unorm colour-renderable (") + name +
+                                            (extensions.count(name) ? "" : ", the driver's own: a forced tier does not hide it from the driver") +
+                                            ")");
+    return answer(false, reason, "no GL_EXT_texture_norm16 on this OpenGL ES driver");
+}
+
 bool Capabilities::readOnlyDepthAvailable(std::string* reason) const {
     const char* fallback = "fallback: the compact lighting that samples depth in place shades every pixel, the sky "
                            "drawn over its sky pixels (";
@@ -336,7 +353,7 @@ std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() con
         "GL_ARB_timer_query", "GL_ARB_clip_control", "GL_ARB_texture_barrier"};
     static const char* kEsNames[] = {"GL_EXT_color_buffer_float", "GL_EXT_clip_cull_distance", "GL_EXT_clip_control",
                                      "GL_EXT_depth_clamp", "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_OES_gpu_shader5",
-                                     "GL_EXT_disjoint_timer_query", "GL_NV_read_depth_stencil"};
+                                     "GL_EXT_disjoint_timer_query", "GL_NV_read_depth_stencil", "GL_EXT_texture_norm16"};
     std::vector<std::pair<std::string, bool>> list;
     if (es) {
         for (const char* name : kEsNames) list.emplace_back(name, hasExtension(name));

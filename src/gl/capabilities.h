@@ -137,6 +137,9 @@ struct Capabilities {
     bool driverHasClipDistances() const;
     // GL_DEPTH_CLAMP: desktop GL 3.2 on; ES only with GL_EXT_depth_clamp.
     bool driverHasDepthClamp() const;
+    // 16-bit unorm colour targets (GL_RG16) renderable: desktop GL 3.0 on; ES only with
+    // GL_EXT_texture_norm16 (WebGL 2's EXT_texture_norm16).
+    bool driverHasNorm16Targets() const;
 
     // The driver's answer with the forced fallbacks applied; `reason` (optional) says why.
     bool ssboAvailable(std::string* reason = nullptr) const;
@@ -148,6 +151,10 @@ struct Capabilities {
     bool clipControlAvailable(std::string* reason = nullptr) const;  // glClipControl: reversed-z depth
     bool clipDistancesAvailable(std::string* reason = nullptr) const;  // else a varying and discard
     bool depthClampAvailable(std::string* reason = nullptr) const;  // else shadow casters pancaked in the shader
+    // 16-bit unorm colour targets (the compact G-buffer's RG16 normal), else the standard layout is
+    // drawn. The driver's own extension list decides, not a forced tier's: --force gles30 hides
+    // EXT_texture_norm16 from the report but not from the driver, whose RG16 targets still draw.
+    bool norm16TargetsAvailable(std::string* reason = nullptr) const;
     // Depth-testing against the depth-stencil texture a draw also samples, with depth and stencil
     // writes off: GL 4.5's feedback-loop rule (or ARB_texture_barrier's) makes only texels a draw
     // writes undefined to read. Else the compact lighting that samples depth in place shades every pixel.
