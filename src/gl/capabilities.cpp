@@ -33,6 +33,9 @@ const FallbackName kFallbackNames[] = {
 const char* const kGles30Extensions[] = {"GL_EXT_color_buffer_float", "GL_EXT_color_buffer_half_float",
                                          "GL_KHR_debug", "GL_EXT_debug_label"};
 
+// WebGL 2's clip distances (WEBGL_clip_cull_distance, GLSL directive GL_ANGLE_clip_cull_distance).
+constexpr const char* kWebglClipDistances = "GL_WEBGL_clip_cull_distance";
+
 // Sets `reason` (when asked for) and returns `result`.
 bool answer(bool result, std::string* reason, const std::string& text) {
     if (reason) *reason = text;
@@ -46,6 +49,8 @@ struct FeatureSource {
     const char* extension;
     int esMajor, esMinor;
     const char* esExtension;
+    // WebGL 2's own name where it differs (emscripten lists WebGL's extensions GL_ prefixed).
+    const char* webglExtension = nullptr;
 };
 const FeatureSource kSsbo{4, 3, "GL_ARB_shader_storage_buffer_object", 3, 1, nullptr};
 const FeatureSource kCompute{4, 3, "GL_ARB_compute_shader", 3, 1, nullptr};
@@ -57,7 +62,7 @@ const FeatureSource k420Pack{4, 2, "GL_ARB_shading_language_420pack", 3, 1, null
 const FeatureSource kGpuShader5{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_EXT_gpu_shader5"};
 const FeatureSource kGpuShader5Oes{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_OES_gpu_shader5"};  // ES 3.1's other spelling
 const FeatureSource kFloatTargets{3, 0, nullptr, 3, 2, "GL_EXT_color_buffer_float"};
-const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance"};
+const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance", kWebglClipDistances};
 const FeatureSource kDepthClamp{3, 2, "GL_ARB_depth_clamp", 0, 0, "GL_EXT_depth_clamp"};
 // GL 4.5's feedback-loop rule (from ARB_texture_barrier): reads are undefined only of texels the
 // draws write. ES is not assumed to allow it.
@@ -87,6 +92,7 @@ std::string source(const Offer& offer, const FeatureSource& feature) {
     if (major > 0 && offer.atLeast(major, minor))
         return (offer.es ? "ES " : "GL ") + std::to_string(major) + "." + std::to_string(minor);
     if (extension && offer.has(extension)) return extension;
+    if (offer.es && feature.webglExtension && offer.has(feature.webglExtension)) return feature.webglExtension;
     return {};
 }
 std::string source(const Capabilities& caps, const FeatureSource& feature) { return source(tierOffer(caps), feature); }
@@ -307,6 +313,10 @@ bool Capabilities::clipDistancesAvailable(std::string* reason) const {
     if (from.empty())
         return answer(false, reason, "fallback: the reflection's water-plane clip by discard (" + missing(*this, kClipDistances) + ")");
     return answer(true, reason, "gl_ClipDistance present (" + from + ")");
+}
+
+std::string Capabilities::clipDistanceDirective() const {
+    return source(*this, kClipDistances) == kWebglClipDistances ? "GL_ANGLE_clip_cull_distance" : "GL_EXT_clip_cull_distance";
 }
 
 bool Capabilities::depthClampAvailable(std::string* reason) const {

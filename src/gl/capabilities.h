@@ -133,7 +133,8 @@ struct Capabilities {
     bool driverHasDebugOutput() const;
     bool driverHasFloatRenderTargets() const;
     bool driverHasClipControl() const;
-    // gl_ClipDistance in shaders: desktop GL 3.0 on; ES only with GL_EXT_clip_cull_distance.
+    // gl_ClipDistance in shaders: desktop GL 3.0 on; ES only with GL_EXT_clip_cull_distance (in
+    // WebGL 2 WEBGL_clip_cull_distance, listed as GL_WEBGL_clip_cull_distance).
     bool driverHasClipDistances() const;
     // GL_DEPTH_CLAMP: desktop GL 3.2 on; ES only with GL_EXT_depth_clamp.
     bool driverHasDepthClamp() const;
@@ -150,6 +151,9 @@ struct Capabilities {
     bool floatRenderTargetsAvailable(std::string* reason = nullptr) const;
     bool clipControlAvailable(std::string* reason = nullptr) const;  // glClipControl: reversed-z depth
     bool clipDistancesAvailable(std::string* reason = nullptr) const;  // else a varying and discard
+    // The GLSL ES #extension that brings gl_ClipDistance where clipDistancesAvailable():
+    // GL_EXT_clip_cull_distance, or in WebGL 2 GL_ANGLE_clip_cull_distance (its directive).
+    std::string clipDistanceDirective() const;
     bool depthClampAvailable(std::string* reason = nullptr) const;  // else shadow casters pancaked in the shader
     // 16-bit unorm colour targets (the compact G-buffer's RG16 normal), else the standard layout is
     // drawn. The driver's own extension list decides, not a forced tier's: --force gles30 hides
