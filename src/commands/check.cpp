@@ -107,6 +107,7 @@ struct Checker {
         if (failures.empty())
             failures.push_back(result.referenceCompared ? "matches the reference frame and the driver's main path"
                                                         : "matches the driver's main path");
+        if (!frame.drawnWith.empty()) notes.push_back(frame.drawnWith);
         failures.insert(failures.end(), notes.begin(), notes.end());
         for (const std::string& text : failures) result.reason += (result.reason.empty() ? "" : "; ") + text;
         if (mainPathFailed) findDivergence(c, result);
@@ -192,10 +193,6 @@ struct Checker {
 void fillDriver(CheckReport& report, const Options& options) {
     Options native = options;
     HeadlessContext context(maxGlVersionFor(native.scene));
-    // The session's targets in a layout this driver can draw (the default, compact, needs
-    // EXT_texture_norm16 on OpenGL ES); the cases that ask for another say so themselves.
-    if (!gbufferNotDrawable(native.scene.gbuffer, gl::measureCapabilities(native.scene.force)).empty())
-        native.scene.gbuffer = "standard";
     RenderSession session(native, RenderSession::Shaders::CapabilitiesOnly);
     const gl::Capabilities& caps = session.caps;
     // The context's own strings: GL_VENDOR and GL_RENDERER natively; in a browser, whose GL_RENDERER

@@ -107,19 +107,6 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
 
 }  // namespace
 
-std::string gbufferNotDrawable(const std::string& name, const gl::Capabilities& caps) {
-    // The driver's own extensions: a forced tier (--force gles30) hides EXT_texture_norm16 from the
-    // report but not from the driver, whose RG16 targets the renderer still makes.
-    const std::set<std::string>& own = caps.beforeTier ? caps.beforeTier->extensions : caps.extensions;
-    const GBufferLayout* layout = findGBufferLayout(name);
-    if (!layout || !caps.es || own.count("GL_EXT_texture_norm16") || own.count("EXT_texture_norm16")) return {};
-    for (const TargetFormat& format : {layout->albedo, layout->normal, layout->position, layout->info})
-        if (format.internalFormat == GL_RG16)
-            return "gbuffer " + layout->name + " not drawable: its 16-bit unorm target needs EXT_texture_norm16, which "
-                   "this OpenGL ES driver lacks";
-    return {};
-}
-
 CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants) {
     Options options = caseOptions(arguments);
     CaseFrame frame;
@@ -132,17 +119,14 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
         frame.limitedBy = "driver";
         return frame;
     }
-    if (std::string why = gbufferNotDrawable(options.scene.gbuffer, gl::measureCapabilities(options.scene.force)); !why.empty()) {
-        frame.skipReason = why;
-        frame.limitedBy = "driver";
-        return frame;
-    }
     RenderSession session(options);
     if (std::string why = pathNotTaken(options, session, gpuPlants, frame.limitedBy); !why.empty()) {
         frame.skipReason = why;
         return frame;
     }
     Renderer& renderer = *session.renderer;
+    // The renderer's own layout fallback: the case runs on the layout drawn, and says which and why.
+    if (renderer.paths().gbufferFellBack) frame.drawnWith = "drawn with gbuffer " + renderer.paths().gbufferReason;
     renderer.setPipeline(options.pipeline);
     renderer.renderFrame(session.scene);
     std::FILE* sink = std::fopen("/dev/null", "w");

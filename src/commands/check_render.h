@@ -18,19 +18,18 @@ struct CaseFrame {
     bool rendered = false;
     std::string skipReason;  // why it could not be rendered as asked (no ES context, a path fell back)
     std::string limitedBy;   // "driver" or "forced tier" when skipped
+    // A fallback the frame was drawn with that changes no path the case tests, said in its report:
+    // the G-buffer layout where the one asked for cannot be drawn (OpenGL ES without
+    // EXT_texture_norm16 draws standard for compact), "" when none.
+    std::string drawnWith;
     Image image;
     std::vector<PngText> provenance;  // what made it (commands/provenance.h), for the PNGs the check writes
 };
 
-// Why the G-buffer layout `name` cannot be drawn on this context (or ""): on OpenGL ES a 16-bit
-// unorm target (the compact layout's RG16 normal) is renderable only with EXT_texture_norm16,
-// which many ES 3.0 drivers, WebGL 2's among them (SwiftShader in Chromium), lack. A case that asks
-// for it is a skip, the driver's limit.
-std::string gbufferNotDrawable(const std::string& name, const gl::Capabilities& caps);
-
 // Renders `oasis render ARGUMENTS` (the final view or the one asked for, no legend) and checks that
 // every path the arguments ask for was taken (and the plants on the GPU where `gpuPlants`, which no
-// argument forces): a fallback makes it a skip, saying whose limit it was. Throws
+// argument forces): a fallback makes it a skip, saying whose limit it was, except the G-buffer
+// layout's, which the renderer takes itself and the frame is judged with (drawnWith). Throws
 // std::runtime_error for a failure that is not a limit (a shader that does not build).
 CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants);
 

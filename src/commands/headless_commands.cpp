@@ -402,6 +402,7 @@ int runRenderCommand(const Options& options) {
         std::fprintf(report, "oasis: %s\n", describeVegetation(renderer).c_str());
         std::fprintf(report, "oasis: %s\n", describeLights(renderer).c_str());
         std::fprintf(report, "oasis: %s\n", describeReflectionBounds(renderer, session.scene).c_str());
+        std::fprintf(report, "oasis: gbuffer %s\n", renderer.paths().gbufferReason.c_str());
         return 0;
     });
 }

@@ -27,6 +27,7 @@ RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const Sc
     c.clipControl.available = caps.clipControlAvailable(&c.clipControl.reason);
     c.readOnlyDepth.available = caps.readOnlyDepthAvailable(&c.readOnlyDepth.reason);
     c.depthStencilRead.available = caps.depthStencilReadAvailable(&c.depthStencilRead.reason);
+    c.norm16Targets.available = caps.norm16TargetsAvailable(&c.norm16Targets.reason);
     c.forcedLightsPath = scene.lights.path;
     c.forcedLightMethod = scene.lights.method;
     return c;
@@ -71,6 +72,21 @@ gl::FeatureReport clipControlFeature(const gl::Capabilities& caps, const Rendere
                         (can.tier ? "; " + why + " for --depth reversed-z" : can.driver ? "; " + why : "; the driver has " + why),
                     can);
 }
+
+// 16-bit unorm targets serve the compact layout's RG16 normal: without them the renderer draws the
+// standard layout, a fallback only where a layout that needs them was asked for.
+gl::FeatureReport norm16TargetsFeature(const gl::Capabilities& caps, const Renderer& renderer) {
+    gl::Availability can = caps.availability(&gl::Capabilities::norm16TargetsAvailable);
+    const RenderPaths& paths = renderer.paths();
+    if (paths.gbufferFellBack) return reportOf("norm16-targets", false, "fallback: gbuffer " + paths.gbufferReason, can);
+    if (paths.gbuffer && paths.gbuffer->needsNorm16Targets())
+        return reportOf("norm16-targets", true, "gbuffer " + paths.gbufferReason, can);
+    return reportOf("norm16-targets", false,
+                    "not used: gbuffer " + (paths.gbuffer ? paths.gbuffer->name : std::string("none")) +
+                        " has no 16-bit unorm target; " +
+                        (can.tier ? can.reason : "--gbuffer compact would draw standard: " + can.reason),
+                    can);
+}
 }  // namespace
 
 MaxGlVersion maxGlVersionFor(const SceneOptions& options) {
@@ -91,7 +107,10 @@ std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     same.forcedLightMethod = scene.lights.method;
     second->setCapabilities(same);
     second->setDepthConvention(*renderer->paths().depth);
-    second->configure(renderer->targets().width(), renderer->targets().height(), renderer->targets().layout());
+    // The layout the first was asked for: a second falls back (and says why) as the first did.
+    const GBufferLayout* requested = findGBufferLayout(renderer->paths().gbufferRequested);
+    second->configure(renderer->targets().width(), renderer->targets().height(),
+                      requested ? *requested : renderer->targets().layout());
     second->views().setStencilPath(renderer->views().stencilPath());
     second->views().setWaterScene(renderer->views().waterScene());
     second->views().setPlantAtlas(plantAtlas.get());
@@ -181,6 +200,7 @@ std::vector<gl::FeatureReport> RenderSession::features() const {
     if (dsa.available) dsa.limitedBy = gl::kLimitedByNotAskedFor;
     list.push_back(dsa);
     list.push_back(clipControlFeature(caps, *renderer));
+    list.push_back(norm16TargetsFeature(caps, *renderer));
     const GBufferLayout& layout = renderer->targets().layout();
     // Sampling the depth-stencil target is core on every context oasis makes: the layout decides.
     list.push_back(reportOf("depth-read-in-place", layout.positionFromDepth(),

@@ -169,6 +169,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
         }
         ImGui::EndCombo();
     }
+    if (renderer.paths().gbufferFellBack) ImGui::TextWrapped("G-buffer: %s", renderer.paths().gbufferReason.c_str());
     drawDepthCombo(renderer, state);
     if (ImGui::BeginCombo("view", chosen.view.c_str())) {
         for (const std::string& name : viewNames())

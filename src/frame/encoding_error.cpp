@@ -33,9 +33,12 @@ EncodingError measureEncodingError(Renderer& renderer, const SceneSettings& scen
     if (layout.name == "full")
         throw std::invalid_argument("the encoding-error views compare a layout against full: choose standard or compact");
     const PipelineKind pipeline = renderer.pipeline();
+    const std::string requested = renderer.paths().gbufferRequested;  // kept: a fallback still says so
     const DecodedFrame reference = decodedFrame(renderer, scene, *findGBufferLayout("full"));
     const DecodedFrame encoded = decodedFrame(renderer, scene, layout);
     renderer.setPipeline(pipeline);
+    if (const GBufferLayout* asked = findGBufferLayout(requested); asked && asked->name != layout.name)
+        renderer.configure(renderer.targets().width(), renderer.targets().height(), *asked);
     const FrameData& frame = renderer.lastFrame().data;
     const double nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
     EncodingError error;

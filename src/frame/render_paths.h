@@ -5,6 +5,7 @@
 #include <string>
 
 #include "render/depth_convention.h"
+#include "render/gbuffer_layout.h"
 #include "render/light_method.h"
 #include "render/light_paths.h"
 
@@ -20,6 +21,9 @@ struct RendererCapabilities {
     };
     Feature ssbo, compute, clipControl, readOnlyDepth;
     Feature depthStencilRead;  // glReadPixels of depth and stencil, else they are drawn out to be read
+    // 16-bit unorm colour targets (the compact layout's RG16 normal): desktop GL; ES only with
+    // EXT_texture_norm16 (gl::Capabilities::norm16TargetsAvailable).
+    Feature norm16Targets;
     std::optional<LightsPath> forcedLightsPath;
     std::optional<LightMethod> forcedLightMethod;
 };
@@ -36,6 +40,14 @@ struct RenderPaths {
     const DepthConvention* depth = &standardDepthConvention();
     std::string depthReason;
     bool depthFellBack = false;
+    // The G-buffer layout in use (render/gbuffer_layout.h): the one asked for (Renderer::configure),
+    // or standard where the one asked for has a 16-bit unorm target and the context cannot draw
+    // into one (OpenGL ES without EXT_texture_norm16, WebGL 2 on SwiftShader); the name asked for,
+    // why, and whether it fell back. Null before the first configure.
+    const GBufferLayout* gbuffer = nullptr;
+    std::string gbufferRequested;
+    std::string gbufferReason;
+    bool gbufferFellBack = false;
     // How shaders read the point lights, decided each frame from SceneSettings::lights.path (forced)
     // or else the context (SSBOs present or not); a forced SSBO path the context lacks falls back
     // to ubo.

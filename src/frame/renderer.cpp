@@ -56,6 +56,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     given.clipControl.available = caps.clipControlAvailable(&given.clipControl.reason);
     given.readOnlyDepth.available = caps.readOnlyDepthAvailable(&given.readOnlyDepth.reason);
     given.depthStencilRead.available = caps.depthStencilReadAvailable(&given.depthStencilRead.reason);
+    // The compact layout's RG16 target (OpenGL ES: EXT_texture_norm16); else configure takes standard.
+    given.norm16Targets.available = caps.norm16TargetsAvailable(&given.norm16Targets.reason);
     setDepthConvention(standardDepthConvention());
 }
 
@@ -95,14 +97,23 @@ void Renderer::uploadLights() {
 }
 
 void Renderer::configure(int width, int height, const GBufferLayout& layout) {
-    if (targets_ && targets_->width() == width && targets_->height() == height &&
-        targets_->layout().name == layout.name)
-        return;
-    // Build the new targets before dropping the old: if allocation fails (too large, out of
-    // memory) the renderer keeps working at its previous size.
-    auto replacement = std::make_unique<FrameTargets>(layout, *paths_.depth, width, height);
-    targets_ = std::move(replacement);
-    forgetGBuffer();
+    // The layout a fallback put in use, asked for again (a resize): the request stands.
+    const bool sameAsFallback = targets_ && paths_.gbufferFellBack && layout.name == targets_->layout().name;
+    const GBufferLayout& requested = sameAsFallback ? *layoutRequested_ : layout;
+    std::string reason;
+    const GBufferLayout& use = chooseGBufferLayout(requested, reason);
+    if (!targets_ || targets_->width() != width || targets_->height() != height || targets_->layout().name != use.name) {
+        // Build the new targets before dropping the old: if allocation fails (too large, out of
+        // memory) the renderer keeps working at its previous size, layout and reason.
+        auto replacement = std::make_unique<FrameTargets>(use, *paths_.depth, width, height);
+        targets_ = std::move(replacement);
+        forgetGBuffer();
+    }
+    if (!sameAsFallback) layoutRequested_ = layout;
+    paths_.gbuffer = &targets_->layout();
+    paths_.gbufferRequested = layoutRequested_->name;
+    paths_.gbufferReason = std::move(reason);
+    paths_.gbufferFellBack = use.name != layoutRequested_->name;
 }
 
 PassContext Renderer::context() { return contextOver(*targets_, frame_); }

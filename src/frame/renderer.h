@@ -36,11 +36,15 @@ public:
 
     // Reallocates the targets when the size or layout changes; scene data is kept. Throws
     // std::runtime_error (naming the size) when the targets cannot be made, keeping the old ones.
+    // A layout with a 16-bit unorm target the context cannot draw into (capabilities'
+    // norm16Targets) falls back to standard; paths() says which is in use and why. Asking for the
+    // layout a fallback put in use (a resize with targets().layout()) keeps the request and reason.
     void configure(int width, int height, const GBufferLayout& layout);
     // What the context offers (frame/render_paths.h), given once and whole: replaces the
     // constructor's own measure (a session's report honours --force). Rechooses the paths in
     // order: the lights' path and the water's bounds, the light method, the depth convention
-    // (reallocating the targets when the one in use changes), the read-only depth.
+    // (reallocating the targets when the one in use changes), the read-only depth, the G-buffer
+    // layout (reallocating when the one in use changes).
     void setCapabilities(const RendererCapabilities& capabilities);
     // The depth convention (render/depth_convention.h) asked for; reversed-z needs glClipControl
     // and falls back to standard without it. Reallocates the targets when the convention in use
@@ -145,6 +149,9 @@ private:
     gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)
     gl::Query waterSeen_;     // did the water mask pass a sample? (the reflection renders only then)
     void chooseWaterBounds();  // from the SSBOs and the context's limits; sets the context defines
+    // The layout drawn for `requested` (itself, or standard without 16-bit unorm targets) and why.
+    const GBufferLayout& chooseGBufferLayout(const GBufferLayout& requested, std::string& reason) const;
+    std::optional<GBufferLayout> layoutRequested_;  // configure's last request (a copy: callers may pass a temporary)
     RenderPaths paths_;
     FrameSetup frame_;
     const DepthConvention* depthRequested_ = &standardDepthConvention();

@@ -1,6 +1,6 @@
 // The renderer's choices from what the context offers (frame/renderer.h, frame/render_paths.h):
-// the depth convention, the lights' path, the water's bounds and the light method, each with the
-// reason it was made.
+// the depth convention, the G-buffer layout, the lights' path, the water's bounds and the light
+// method, each with the reason it was made.
 #include "frame/renderer.h"
 
 #include <epoxy/gl.h>
@@ -20,6 +20,26 @@ void Renderer::setCapabilities(const RendererCapabilities& capabilities) {
     paths_.lightMethod = chooseLightMethod(given.compute.available, given.forcedLightMethod, given.compute.reason,
                                           paths_.lights.path);
     setDepthConvention(*depthRequested_);
+    if (targets_ && layoutRequested_) {
+        const GBufferLayout requested = *layoutRequested_;  // configure replaces the stored copy
+        configure(targets_->width(), targets_->height(), requested);
+    }
+}
+
+const GBufferLayout& Renderer::chooseGBufferLayout(const GBufferLayout& requested, std::string& reason) const {
+    const RendererCapabilities::Feature& norm16 = paths_.capabilities.norm16Targets;
+    if (!requested.needsNorm16Targets()) {
+        reason = requested.name + " (asked for)";
+        return requested;
+    }
+    if (norm16.available) {
+        reason = requested.name + " (asked for; " + norm16.reason + ")";
+        return requested;
+    }
+    const GBufferLayout& fallback = norm16FallbackGBufferLayout();
+    reason = fallback.name + " (" + requested.name + " was asked for but its 16-bit unorm target is not " +
+             "colour-renderable: " + norm16.reason + ")";
+    return fallback;
 }
 
 void Renderer::setDepthConvention(const DepthConvention& requested) {

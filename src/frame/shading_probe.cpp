@@ -10,6 +10,7 @@
 
 #include "common/shading_terms.glsl"
 #include "common/shared_constants.glsl"
+#include "context/gl_context.h"
 #include "frame/pixel_probe.h"
 #include "frame/renderer.h"
 #include "passes/pass.h"
@@ -100,8 +101,8 @@ Slots drawRecord(Renderer& renderer, const FrameTargets& surfaces, const std::st
 // smashing detected" or a SIGSEGV in libvulkan_lvp.so's worker thread, even with no lights. The
 // record would be the frame's own light code on another path, so it is refused, with the way round.
 void refuseLavapipeUboRecord(LightsPath path) {
-    const GLubyte* name = glGetString(GL_RENDERER);
-    std::string renderer = name ? reinterpret_cast<const char*>(name) : "";
+    // The context's own renderer string, as the check's driver report reads it (context/gl_context.h).
+    const std::string renderer = queryContextInfo().renderer;
     bool lavapipe = renderer.find("zink") != std::string::npos &&
                     (renderer.find("llvmpipe") != std::string::npos || renderer.find("lavapipe") != std::string::npos);
     if (lavapipe && path == LightsPath::Ubo)

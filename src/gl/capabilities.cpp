@@ -33,6 +33,9 @@ const FallbackName kFallbackNames[] = {
 const char* const kGles30Extensions[] = {"GL_EXT_color_buffer_float", "GL_EXT_color_buffer_half_float",
                                          "GL_KHR_debug", "GL_EXT_debug_label"};
 
+// WebGL 2's clip distances (WEBGL_clip_cull_distance, GLSL directive GL_ANGLE_clip_cull_distance).
+constexpr const char* kWebglClipDistances = "GL_WEBGL_clip_cull_distance";
+
 // Sets `reason` (when asked for) and returns `result`.
 bool answer(bool result, std::string* reason, const std::string& text) {
     if (reason) *reason = text;
@@ -46,6 +49,8 @@ struct FeatureSource {
     const char* extension;
     int esMajor, esMinor;
     const char* esExtension;
+    // WebGL 2's own name where it differs (emscripten lists WebGL's extensions GL_ prefixed).
+    const char* webglExtension = nullptr;
 };
 const FeatureSource kSsbo{4, 3, "GL_ARB_shader_storage_buffer_object", 3, 1, nullptr};
 const FeatureSource kCompute{4, 3, "GL_ARB_compute_shader", 3, 1, nullptr};
@@ -57,7 +62,7 @@ const FeatureSource k420Pack{4, 2, "GL_ARB_shading_language_420pack", 3, 1, null
 const FeatureSource kGpuShader5{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_EXT_gpu_shader5"};
 const FeatureSource kGpuShader5Oes{4, 0, "GL_ARB_gpu_shader5", 3, 2, "GL_OES_gpu_shader5"};  // ES 3.1's other spelling
 const FeatureSource kFloatTargets{3, 0, nullptr, 3, 2, "GL_EXT_color_buffer_float"};
-const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance"};
+const FeatureSource kClipDistances{3, 0, nullptr, 0, 0, "GL_EXT_clip_cull_distance", kWebglClipDistances};
 const FeatureSource kDepthClamp{3, 2, "GL_ARB_depth_clamp", 0, 0, "GL_EXT_depth_clamp"};
 // GL 4.5's feedback-loop rule (from ARB_texture_barrier): reads are undefined only of texels the
 // draws write. ES is not assumed to allow it.
@@ -90,6 +95,7 @@ std::string source(const Offer& offer, const FeatureSource& feature) {
     if (major > 0 && offer.atLeast(major, minor))
         return (offer.es ? "ES " : "GL ") + std::to_string(major) + "." + std::to_string(minor);
     if (extension && offer.has(extension)) return extension;
+    if (offer.es && feature.webglExtension && offer.has(feature.webglExtension)) return feature.webglExtension;
     return {};
 }
 std::string source(const Capabilities& caps, const FeatureSource& feature) { return source(tierOffer(caps), feature); }
@@ -200,6 +206,7 @@ bool Capabilities::driverHasDebugOutput() const { return !source(driverOffer(*th
 bool Capabilities::driverHasClipControl() const { return !source(driverOffer(*this), kClipControl).empty(); }
 bool Capabilities::driverHasClipDistances() const { return !source(driverOffer(*this), kClipDistances).empty(); }
 bool Capabilities::driverHasDepthClamp() const { return !source(driverOffer(*this), kDepthClamp).empty(); }
+bool Capabilities::driverHasNorm16Targets() const { return unforced().norm16TargetsAvailable(); }
 bool Capabilities::driverHasFloatRenderTargets() const {
     Offer own = driverOffer(*this);
     if (es) return !source(own, kFloatTargets).empty();
@@ -311,6 +318,10 @@ bool Capabilities::clipDistancesAvailable(std::string* reason) const {
     return answer(true, reason, "gl_ClipDistance present (" + from + ")");
 }
 
+std::string Capabilities::clipDistanceDirective() const {
+    return source(*this, kClipDistances) == kWebglClipDistances ? "GL_ANGLE_clip_cull_distance" : "GL_EXT_clip_cull_distance";
+}
+
 bool Capabilities::depthClampAvailable(std::string* reason) const {
     std::string from = source(*this, kDepthClamp);
     const char* fallback = "fallback: the shadow casters nearer the sun than a cascade's box are flattened onto its "
@@ -327,6 +338,22 @@ bool Capabilities::depthStencilReadAvailable(std::string* reason) const {
                                      "probe, the pixel history, the stencil view's read-back; " +
                                      missing(*this, kDepthStencilRead) + ")");
     return answer(true, reason, "glReadPixels reads depth and stencil (" + from + ")");
+}
+
+bool Capabilities::norm16TargetsAvailable(std::string* reason) const {
+    if (!es) {
+        if (!atLeast(3, 0)) return answer(false, reason, "no GL 3.0");
+        return answer(true, reason, "16-bit unorm colour-renderable (core since GL 3.0)");
+    }
+    // The driver's own list (beforeTier): a forced tier does not change which targets it can draw.
+    // In a browser emscripten lists WebGL's names with and without the GL_ prefix.
+    const std::set<std::string>& own = beforeTier ? beforeTier->extensions : extensions;
+    for (const char* name : {"GL_EXT_texture_norm16", "EXT_texture_norm16"})
+        if (own.count(name))
+            return answer(true, reason, std::string("16-bit unorm colour-renderable (") + name +
+                                            (extensions.count(name) ? "" : ", the driver's own: a forced tier does not hide it from the driver") +
+                                            ")");
+    return answer(false, reason, "no GL_EXT_texture_norm16 on this OpenGL ES driver");
 }
 
 bool Capabilities::readOnlyDepthAvailable(std::string* reason) const {
@@ -348,7 +375,7 @@ std::vector<std::pair<std::string, bool>> Capabilities::relevantExtensions() con
         "GL_ARB_timer_query", "GL_ARB_clip_control", "GL_ARB_texture_barrier"};
     static const char* kEsNames[] = {"GL_EXT_color_buffer_float", "GL_EXT_clip_cull_distance", "GL_EXT_clip_control",
                                      "GL_EXT_depth_clamp", "GL_KHR_debug", "GL_EXT_gpu_shader5", "GL_OES_gpu_shader5",
-                                     "GL_EXT_disjoint_timer_query", "GL_NV_read_depth_stencil"};
+                                     "GL_EXT_disjoint_timer_query", "GL_NV_read_depth_stencil", "GL_EXT_texture_norm16"};
     std::vector<std::pair<std::string, bool>> list;
     if (es) {
         for (const char* name : kEsNames) list.emplace_back(name, hasExtension(name));

@@ -133,10 +133,14 @@ struct Capabilities {
     bool driverHasDebugOutput() const;
     bool driverHasFloatRenderTargets() const;
     bool driverHasClipControl() const;
-    // gl_ClipDistance in shaders: desktop GL 3.0 on; ES only with GL_EXT_clip_cull_distance.
+    // gl_ClipDistance in shaders: desktop GL 3.0 on; ES only with GL_EXT_clip_cull_distance (in
+    // WebGL 2 WEBGL_clip_cull_distance, listed as GL_WEBGL_clip_cull_distance).
     bool driverHasClipDistances() const;
     // GL_DEPTH_CLAMP: desktop GL 3.2 on; ES only with GL_EXT_depth_clamp.
     bool driverHasDepthClamp() const;
+    // 16-bit unorm colour targets (GL_RG16) renderable: desktop GL 3.0 on; ES only with
+    // GL_EXT_texture_norm16 (WebGL 2's EXT_texture_norm16).
+    bool driverHasNorm16Targets() const;
 
     // The driver's answer with the forced fallbacks applied; `reason` (optional) says why.
     bool ssboAvailable(std::string* reason = nullptr) const;
@@ -147,7 +151,14 @@ struct Capabilities {
     bool floatRenderTargetsAvailable(std::string* reason = nullptr) const;
     bool clipControlAvailable(std::string* reason = nullptr) const;  // glClipControl: reversed-z depth
     bool clipDistancesAvailable(std::string* reason = nullptr) const;  // else a varying and discard
+    // The GLSL ES #extension that brings gl_ClipDistance where clipDistancesAvailable():
+    // GL_EXT_clip_cull_distance, or in WebGL 2 GL_ANGLE_clip_cull_distance (its directive).
+    std::string clipDistanceDirective() const;
     bool depthClampAvailable(std::string* reason = nullptr) const;  // else shadow casters pancaked in the shader
+    // 16-bit unorm colour targets (the compact G-buffer's RG16 normal), else the standard layout is
+    // drawn. The driver's own extension list decides, not a forced tier's: --force gles30 hides
+    // EXT_texture_norm16 from the report but not from the driver, whose RG16 targets still draw.
+    bool norm16TargetsAvailable(std::string* reason = nullptr) const;
     // Depth-testing against the depth-stencil texture a draw also samples, with depth and stencil
     // writes off: GL 4.5's feedback-loop rule (or ARB_texture_barrier's) makes only texels a draw
     // writes undefined to read. Else the compact lighting that samples depth in place shades every pixel.

@@ -50,6 +50,13 @@ const char* targetName(Target target) {
     return "?";
 }
 
+bool GBufferLayout::needsNorm16Targets() const {
+    // GL_RG16 is the table's only 16-bit unorm format.
+    for (const TargetFormat& target : {albedo, normal, position, info})
+        if (target.internalFormat == GL_RG16) return true;
+    return false;
+}
+
 TargetFormat GBufferLayout::format(Target target) const {
     switch (target) {
         case Target::Albedo: return albedo;
@@ -123,6 +130,7 @@ const GBufferLayout* findGBufferLayout(const std::string& name) {
 
 // The default sits on the bench's time-against-error frontier (README, Speed against error).
 const GBufferLayout& defaultGBufferLayout() { return *findGBufferLayout(kDefaultGBufferLayoutName); }
+const GBufferLayout& norm16FallbackGBufferLayout() { return *findGBufferLayout("standard"); }
 
 std::string gbufferLayoutNames() {
     std::string names;

@@ -37,6 +37,9 @@ struct GBufferLayout {
     int bytesPerPixel() const;                 // the G-buffer colour targets it stores, depth-stencil, SceneDepth
     bool stores(Target target) const { return format(target).internalFormat != 0; }
     bool positionFromDepth() const { return position.internalFormat == 0; }
+    // Whether a colour target is 16-bit unorm (the compact layout's RG16 normal): renderable on
+    // OpenGL ES only with EXT_texture_norm16 (the renderer falls back to standard without it).
+    bool needsNorm16Targets() const;
     // The shader program of a G-buffer reader or writer for this layout: "lighting" ->
     // "lighting.compact" where the encoding needs its own #define (shader_variants.cpp).
     std::string program(const std::string& base) const;
@@ -55,6 +58,9 @@ const std::vector<GBufferLayout>& gbufferLayouts();
 const GBufferLayout* findGBufferLayout(const std::string& name);
 inline constexpr const char* kDefaultGBufferLayoutName = "compact";
 const GBufferLayout& defaultGBufferLayout();
+// The layout the renderer draws where the one asked for needs 16-bit unorm targets the context
+// cannot draw into: "standard" (half-float normal, float position).
+const GBufferLayout& norm16FallbackGBufferLayout();
 std::string gbufferLayoutNames();  // "full, standard, compact" for help and error text
 
 // Octahedral unit-vector encoding (as shaders/common/gbuffer.glsl): [-1,1]^2 and back.

@@ -128,12 +128,12 @@ bool GlslDialect::es() const {
 }
 
 GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp,
-                             const std::string& preciseExtension) {
+                             const std::string& preciseExtension, const std::string& clipDistanceDirective) {
     GlslDialect dialect;
     int version = major > 3 || (major == 3 && minor >= 2) ? 320 : (major == 3 && minor == 1 ? 310 : 300);
     dialect.versionLine = "#version " + std::to_string(version) + " es";
     if (version == 310) dialect.preciseExtension = preciseExtension;  // 320 has `precise`, 300 no compute
-    if (clipDistances) dialect.extensionLines.push_back("#extension GL_EXT_clip_cull_distance : enable");
+    if (clipDistances) dialect.extensionLines.push_back("#extension " + clipDistanceDirective + " : enable");
     else dialect.defines.push_back("OASIS_NO_CLIP_DISTANCE 1");
     if (!depthClamp) dialect.defines.push_back("OASIS_NO_DEPTH_CLAMP 1");  // passes/shadow_pass.cpp
     dialect.defines.push_back("OASIS_STORAGE_BINDINGS 1");  // common/storage_layout.glsl
@@ -147,7 +147,8 @@ GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool dept
 GlslDialect glslDialectForEs(const gl::Capabilities& caps) {
     // The tier's answers (--force gles30 has neither), not the driver's own.
     return glslDialectForEs(caps.major, caps.minor, caps.clipDistancesAvailable(), caps.depthClampAvailable(),
-                            esPreciseExtension([&](const char* name) { return caps.hasExtension(name); }));
+                            esPreciseExtension([&](const char* name) { return caps.hasExtension(name); }),
+                            caps.clipDistanceDirective());
 }
 
 std::string computeExtensionLines(const GlslDialect& dialect) {
@@ -221,9 +222,12 @@ std::string findShaderDirectory(std::string* searched) {
 GlslDialect glslDialectForCurrentContext() {
     if (!epoxy_is_desktop_gl())
         return glslDialectForEs(epoxy_gl_version() / 10, epoxy_gl_version() % 10,
-                                epoxy_has_gl_extension("GL_EXT_clip_cull_distance"),
+                                epoxy_has_gl_extension("GL_EXT_clip_cull_distance") ||
+                                    epoxy_has_gl_extension("GL_WEBGL_clip_cull_distance"),
                                 epoxy_has_gl_extension("GL_EXT_depth_clamp"),
-                                esPreciseExtension([](const char* name) { return epoxy_has_gl_extension(name); }));
+                                esPreciseExtension([](const char* name) { return epoxy_has_gl_extension(name); }),
+                                epoxy_has_gl_extension("GL_EXT_clip_cull_distance") ? "GL_EXT_clip_cull_distance"
+                                                                                     : "GL_ANGLE_clip_cull_distance");
     GlslDialect dialect;
     int version = epoxy_gl_version();  // 42 for GL 4.2; GLSL matches GL from 3.3 on
     if (version >= 33 && version < 45) dialect.versionLine = "#version " + std::to_string(version * 10) + " core";

@@ -50,9 +50,11 @@ GlslDialect glslDialectForCurrentContext();
 // compute stages enable GL_EXT_gpu_shader5 (else GL_OES_gpu_shader5) where listed, for `precise`.
 GlslDialect glslDialectForEs(const gl::Capabilities& caps);
 // The same from an ES version, whether gl_ClipDistance and GL_DEPTH_CLAMP exist and which
-// gpu_shader5 extension ES 3.1 has ("" none; the shader tests' ES variants).
+// gpu_shader5 extension ES 3.1 has ("" none; the shader tests' ES variants); `clipDistanceDirective`
+// is the extension that brings gl_ClipDistance (WebGL 2's is GL_ANGLE_clip_cull_distance).
 GlslDialect glslDialectForEs(int major, int minor, bool clipDistances, bool depthClamp,
-                             const std::string& preciseExtension = {});
+                             const std::string& preciseExtension = {},
+                             const std::string& clipDistanceDirective = "GL_EXT_clip_cull_distance");
 
 // The #extension lines a compute stage needs in this dialect (none at GLSL 4.30 and later).
 std::string computeExtensionLines(const GlslDialect& dialect);

@@ -55,22 +55,12 @@ bool WebApp::start() {
         showPageError("this browser's WebGL 2 lacks EXT_color_buffer_float: the G-buffer's float targets cannot be drawn");
         return false;
     }
-    // The compact G-buffer's RG16 normal target is renderable on ES 3.0 only with EXT_texture_norm16,
-    // which many WebGL 2 implementations (SwiftShader in Chromium among them) do not offer: the
-    // standard layout (RGBA16F normal) is taken instead, and the report says so.
-    if (options_.scene.gbuffer == "compact" && !epoxy_has_gl_extension("GL_EXT_texture_norm16") &&
-        !epoxy_has_gl_extension("EXT_texture_norm16")) {
-        options_.scene.gbuffer = "standard";
-        webFallbacks_.push_back("gbuffer layout: standard (the compact layout's RG16 target needs EXT_texture_norm16, "
-                                "absent in this browser's WebGL 2)");
-    }
     try {
         app_ = std::make_unique<WindowApp>(options_, window_);
     } catch (const std::exception& error) {
         showPageError(std::string("oasis could not start: ") + error.what());
         return false;
     }
-    for (const std::string& line : webFallbacks_) app_->state().fallbacks.push_back(line);
     last_ = std::chrono::steady_clock::now();
     return true;
 }
@@ -160,11 +150,11 @@ std::string WebApp::capabilityJson() {
                 ",\"reason\":" + jsonString(feature.reason) + "}";
         first = false;
     }
-    json += "],\"gbuffer\":" + jsonString(options_.scene.gbuffer) + ",\"fallbacks\":[";
+    // The layout drawn (the renderer's fallback may have replaced the one asked for): the web test
+    // renders the native frame with it.
+    json += "],\"gbuffer\":" + jsonString(session().renderer->targets().layout().name) + ",\"fallbacks\":[";
     first = true;
-    std::vector<std::string> lines = webFallbacks_;
-    for (const std::string& line : session().fallbacks()) lines.push_back(line);
-    for (const std::string& line : lines) {
+    for (const std::string& line : session().fallbacks()) {
         json += std::string(first ? "" : ",") + jsonString(line);
         first = false;
     }

@@ -44,7 +44,6 @@ private:
     GLFWwindow* window_ = nullptr;
     std::unique_ptr<WindowApp> app_;
     std::chrono::steady_clock::time_point last_;
-    std::vector<std::string> webFallbacks_;  // what the page changed for its browser, and why
 };
 
 }  // namespace oasis::web

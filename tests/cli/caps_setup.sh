@@ -21,6 +21,9 @@ case $setup in
   gles31-no-gpu-shader5) driver=llvmpipe
     json=$(MESA_GLES_VERSION_OVERRIDE=3.1 MESA_SHADER_CACHE_DISABLE=true \
            MESA_EXTENSION_OVERRIDE="-GL_EXT_gpu_shader5 -GL_OES_gpu_shader5" "$oasis" caps --json $args) ;;
+  # OpenGL ES without 16-bit unorm colour targets (--api gles in the options), as WebGL 2 on SwiftShader.
+  gles-no-norm16) driver=llvmpipe
+    json=$(MESA_SHADER_CACHE_DISABLE=true MESA_EXTENSION_OVERRIDE=-GL_EXT_texture_norm16 "$oasis" caps --json $args) ;;
   *) echo "unknown set-up $setup"; exit 1 ;;
 esac
 if [ -z "$json" ]; then

@@ -149,5 +149,41 @@ TEST_F(GpuTest, CompactFrameAgreesWithTheFullLayoutAndStoresNoPosition) {
     EXPECT_THROW(readTarget(renderer, Target::Position), std::invalid_argument);
 }
 
+// Without 16-bit unorm colour targets (OpenGL ES without EXT_texture_norm16) the renderer draws
+// the standard layout for compact, says why, draws standard's frame bit for bit, keeps the request
+// through a resize with its own layout, and draws compact again when the capability comes back.
+TEST_F(GpuTest, CompactWithoutNorm16TargetsFallsBackToTheStandardFrame) {
+    SceneSettings scene;
+    Renderer standard(*shaders_, scene), fallback(*shaders_, scene);
+    RendererCapabilities caps = fallback.paths().capabilities;
+    caps.norm16Targets = {false, "no GL_EXT_texture_norm16 on this OpenGL ES driver"};
+    fallback.setCapabilities(caps);
+    fallback.configure(160, 90, layoutNamed("compact"));
+    standard.configure(160, 90, layoutNamed("standard"));
+    EXPECT_EQ(fallback.targets().layout().name, "standard");
+    EXPECT_EQ(fallback.paths().gbuffer->name, "standard");
+    EXPECT_EQ(fallback.paths().gbufferRequested, "compact");
+    EXPECT_TRUE(fallback.paths().gbufferFellBack);
+    EXPECT_NE(fallback.paths().gbufferReason.find("compact was asked for but its 16-bit unorm target is not "
+                                                  "colour-renderable: no GL_EXT_texture_norm16"),
+              std::string::npos) << fallback.paths().gbufferReason;
+    for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred})
+        EXPECT_EQ(compareImages(renderFinal(standard, scene, kind), renderFinal(fallback, scene, kind)).maxAbs, 0);
+    // A resize with the layout in use (the web page's frame loop) keeps the request and its reason.
+    fallback.configure(96, 54, fallback.targets().layout());
+    EXPECT_EQ(fallback.paths().gbufferRequested, "compact");
+    EXPECT_TRUE(fallback.paths().gbufferFellBack);
+    // Standard and full need no 16-bit unorm target: no fallback.
+    fallback.configure(96, 54, layoutNamed("full"));
+    EXPECT_FALSE(fallback.paths().gbufferFellBack);
+    EXPECT_EQ(fallback.targets().layout().name, "full");
+    // The capability coming back switches to compact (targets reallocated).
+    fallback.configure(96, 54, layoutNamed("compact"));
+    caps.norm16Targets = {true, "16-bit unorm colour-renderable"};
+    fallback.setCapabilities(caps);
+    EXPECT_EQ(fallback.targets().layout().name, "compact") << "targets not reallocated";
+    EXPECT_FALSE(fallback.paths().gbufferFellBack);
+}
+
 }  // namespace
 }  // namespace oasis::gputest

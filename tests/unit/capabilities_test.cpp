@@ -217,6 +217,48 @@ TEST(Capabilities, ForcedEs30TierOnADriverWithoutTheExtensionsBlamesTheDriver) {
     EXPECT_FALSE(plain.beforeTier.has_value());
 }
 
+// 16-bit unorm colour targets (the compact G-buffer's RG16 normal): desktop GL 3.0 core; ES only
+// with EXT_texture_norm16 (emscripten lists WebGL's name with and without GL_), the driver's own
+// list deciding under --force gles30 (the tier hides the extension, not the driver's targets).
+TEST(Capabilities, Norm16TargetsOnEsOnlyWithTheDriversOwnExtension) {
+    std::string reason;
+    gl::Capabilities without = esContextOf(0, {"GL_EXT_color_buffer_float"});
+    EXPECT_FALSE(without.norm16TargetsAvailable(&reason));
+    EXPECT_EQ(reason, "no GL_EXT_texture_norm16 on this OpenGL ES driver");
+    EXPECT_EQ(gl::limitedBy(false, without.availability(&gl::Capabilities::norm16TargetsAvailable)), gl::kLimitedByDriver);
+    EXPECT_TRUE(esContextOf(0, {"EXT_texture_norm16"}).norm16TargetsAvailable());
+    gl::Capabilities forced = esContextOf(2, {"GL_EXT_texture_norm16", "GL_EXT_color_buffer_float"});
+    forced.forced.gles30 = true;
+    gl::applyForcedTier(forced);
+    EXPECT_FALSE(forced.hasExtension("GL_EXT_texture_norm16")) << "the tier's list hides it";
+    EXPECT_TRUE(forced.norm16TargetsAvailable(&reason)) << reason;
+    EXPECT_NE(reason.find("the driver's own"), std::string::npos) << reason;
+    gl::Capabilities desktop;
+    desktop.major = 3;
+    EXPECT_TRUE(desktop.norm16TargetsAvailable(&reason));
+    EXPECT_EQ(reason, "16-bit unorm colour-renderable (core since GL 3.0)");
+}
+
+// WebGL 2's clip distances are WEBGL_clip_cull_distance (listed GL_WEBGL_clip_cull_distance by
+// emscripten), whose GLSL directive is GL_ANGLE_clip_cull_distance; under the page's forced ES 3.0
+// tier the tier, not the driver, is their limit.
+TEST(Capabilities, WebglClipDistancesAreTheDriversAndTheirDirectiveIsAngles) {
+    gl::Capabilities webgl = esContextOf(0, {"GL_WEBGL_clip_cull_distance", "WEBGL_clip_cull_distance",
+                                             "GL_EXT_color_buffer_float"});
+    std::string reason;
+    EXPECT_TRUE(webgl.clipDistancesAvailable(&reason));
+    EXPECT_EQ(reason, "gl_ClipDistance present (GL_WEBGL_clip_cull_distance)");
+    EXPECT_EQ(webgl.clipDistanceDirective(), "GL_ANGLE_clip_cull_distance");
+    EXPECT_EQ(esContextOf(2, {"GL_EXT_clip_cull_distance"}).clipDistanceDirective(), "GL_EXT_clip_cull_distance");
+    webgl.forced.gles30 = true;
+    gl::applyForcedTier(webgl);
+    gl::Availability clip = webgl.availability(&gl::Capabilities::clipDistancesAvailable);
+    EXPECT_TRUE(clip.driver && !clip.tier) << clip.reason;
+    EXPECT_EQ(gl::limitedBy(false, clip), gl::kLimitedByForcedTier);
+    EXPECT_NE(clip.reason.find("in the forced ES 3.0 tier (--force gles30; the driver has GL_WEBGL_clip_cull_distance)"),
+              std::string::npos) << clip.reason;
+}
+
 // --force NAME switches a feature off where the driver has it: the forced tier limits it, and a
 // context with nothing to cap keeps no beforeTier.
 TEST(Capabilities, ForcedFallbacksAreTheForcedTiersLimit) {
