@@ -155,7 +155,7 @@ std::string usage(Command command) {
            "  bench      time against error over pipelines, layouts, quality knobs and sizes\n"
            "  probe      every target's value at one pixel, stored and decoded (--at X,Y)\n"
            "  check      a hardware-compatibility verdict: every path against references, a report to send\n"
-           "  serve      the web build's page on 127.0.0.1 (oasis-serve: --dir build-web --port 8080)\n"
+           "  serve      the web build's page on 127.0.0.1 (runs oasis-serve: oasis serve --help)\n"
            "  oasis SUBCOMMAND --help for its options\n"
            "  --out-dir DIR             where the main job writes (default oasis-out)\n" + scene;
 }

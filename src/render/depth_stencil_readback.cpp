@@ -48,7 +48,9 @@ public:
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
         glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
         glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-        glUseProgram(GLuint(program_));
+        // A program deleted while current stays in use until another is: the read's own program
+        // ended it, so its name is no program any more.
+        glUseProgram(program_ != 0 && glIsProgram(GLuint(program_)) ? GLuint(program_) : 0u);
         glBindVertexArray(GLuint(vertexArray_));
         glActiveTexture(GL_TEXTURE0 + kUnitSource);
         glBindTexture(GL_TEXTURE_2D, GLuint(sourceTexture_));
