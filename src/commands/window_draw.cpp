@@ -110,6 +110,10 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
         renderer.setPipeline(sides[s]->pipeline);
         renderer.setDepthConvention(depthConventions()[config.depthIndex]);
         renderer.configure(width, height, gbufferLayouts()[sides[s]->layoutIndex]);
+        // A layout the context cannot draw falls back (paths().gbuffer): the side is named by what it draws.
+        if (sides[s]->pipeline == PipelineKind::Deferred && renderer.paths().gbufferFellBack)
+            (s == 0 ? c.a : c.b).label = "deferred, " + renderer.targets().layout().name + " for " +
+                                         renderer.paths().gbufferRequested;
         renderer.views().setExposure(state.inspector.exposureStops);
         renderer.views().setWaterScene(config.waterScene);
         glFinish();
