@@ -2,7 +2,8 @@
 // depth: in front of the surface, either way) and no writes but the stencil bit, INVERT on depth fail. A surface inside the volume is in front of its back face
 // (one toggle) and behind its front face (none); in front of both is two toggles, behind both
 // none. With the camera inside, or the front face cut by the near plane, the back face alone
-// toggles, so there are no holes; depth clamping keeps back faces beyond the far plane. Shading:
+// toggles, so there are no holes; depth clamping keeps back faces beyond the far plane (where the
+// context has none, a volume crossing the far plane lights only its nearer part). Shading:
 // the back faces, no depth test, where the bit is set, added; the pass resets the bit (ZERO).
 #include "passes/light_volume_pass.h"
 
@@ -38,7 +39,7 @@ void LightVolumePass::execute(PassContext& context) {
     const GLint surfaceRef = mirrored ? kStencilWater : 0, surfaceMask = mirrored ? 0x7F : 0x00;
     glEnable(GL_STENCIL_TEST);
     glStencilMask(kStencilLightVolumeBit);
-    glEnable(GL_DEPTH_CLAMP);
+    if (context.depthClamp) glEnable(GL_DEPTH_CLAMP);
     glDepthMask(GL_FALSE);
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);  // only the centre is mirrored: the sphere keeps its winding
@@ -78,7 +79,7 @@ void LightVolumePass::execute(PassContext& context) {
     glDisable(GL_CULL_FACE);
     glDepthMask(GL_TRUE);
     glDepthFunc(targets.depth().nearerFunc);
-    glDisable(GL_DEPTH_CLAMP);
+    if (context.depthClamp) glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);

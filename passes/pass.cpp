@@ -108,7 +108,8 @@ ReflectionContext::ReflectionContext(const PassContext& frame)
     : reduced_(frame.reflectionTargets != nullptr),
       context_{reduced_ ? *frame.reflectionTargets : frame.targets, frame.shaders, frame.geometry, frame.frame,
                frame.vegetation, frame.waterBounds, frame.shadowMaps, frame.waterSeen,
-               frame.reflectionTargets, frame.reflectionFrameBlock, frame.frameBlock} {
+               frame.reflectionTargets, frame.reflectionFrameBlock, frame.frameBlock,
+               frame.drawDepthStencilReads, frame.depthClamp} {
     if (reduced_) glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame.reflectionFrameBlock);
 }
 

@@ -43,6 +43,10 @@ struct PassContext {
     // Whether depth and stencil must be drawn into colour targets to be read back (no glReadPixels
     // of them: OpenGL ES without GL_NV_read_depth_stencil, render/depth_stencil_readback.h).
     bool drawDepthStencilReads = false;
+    // Whether GL_DEPTH_CLAMP may be enabled: not on OpenGL ES without GL_EXT_depth_clamp, nor in a
+    // tier forced without it (--force gles30, no-depth-clamp). The water plane and the light
+    // volumes draw clamped where they can; the shadow casters' fallback is render/shadow_cascades.h's.
+    bool depthClamp = true;
 };
 
 // The context the reflection's passes draw with, for the scope's lifetime: at a reduced

@@ -22,15 +22,15 @@ void WaterCompositePass::execute(PassContext& context) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0x00);
     glEnable(GL_DEPTH_TEST);
-    glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
+    if (context.depthClamp) glEnable(GL_DEPTH_CLAMP);  // as markWaterStencil (water_mask_pass.cpp)
     glDepthFunc(GL_ALWAYS);  // the mirrored scene's depths are behind us now; the water's replace them
     glDepthMask(GL_TRUE);
     if (!fused) glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
     glUseProgram(context.shaders.program(fused ? "water.composite.tonemapped" : "water.composite"));
-    context.geometry.drawWaterQuad();
+    context.geometry.drawWaterGrid();
     glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_CLAMP);
+    if (context.depthClamp) glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);

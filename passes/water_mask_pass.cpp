@@ -13,10 +13,12 @@ void markWaterStencil(PassContext& context, const char* program) {
     glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glStencilMask(0xFF);
-    glEnable(GL_DEPTH_CLAMP);  // the plane must not be clipped by the near plane when the eye is at it
+    // The plane must not be clipped by the near plane when the eye is at it. Without depth clamp
+    // it is: a camera nearer the water than about the near plane's distance sees none below it.
+    if (context.depthClamp) glEnable(GL_DEPTH_CLAMP);
     glUseProgram(context.shaders.program(program));
-    context.geometry.drawWaterQuad();
-    glDisable(GL_DEPTH_CLAMP);
+    context.geometry.drawWaterGrid();
+    if (context.depthClamp) glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_STENCIL_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

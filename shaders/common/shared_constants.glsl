@@ -37,6 +37,12 @@
 #define OASIS_LIGHT_TILE_SIZE 16
 #define OASIS_LIGHT_TILE_SLICES 4
 #define OASIS_LIGHT_TILE_MAX_LIGHTS 256
+// The water plane is a grid of this many cells per side around the camera, drawn as two triangles
+// per cell (render/scene_geometry.cpp draws 6 * cells^2 vertices; water.vert places them). Cells
+// grow with the square of their distance from the camera, so the ones near it are small: one
+// view-wide quad is clipped to a sliver whose depth some rasterisers (SwiftShader) interpolate
+// too coarsely, and the water then won the depth test against nearby river banks (docs/web.md).
+#define OASIS_WATER_GRID_CELLS 8
 // Bit of FrameData.water.w: the mirrored scene is drawn this frame.
 #define OASIS_WATER_REFLECTIONS_FLAG 1u
 // Set by the renderer when the reflection is bounded to the visible water this frame (--reflection-bounds).

@@ -125,6 +125,7 @@ PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup&
                         paths_.waterBoundsAvailable ? waterBounds_.name() : 0u, &shadowMaps_,
                         frame_.waterBounded ? waterSeen_.name() : 0u};
     context.drawDepthStencilReads = !paths_.capabilities.depthStencilRead.available;
+    context.depthClamp = shadowMaps_.depthClamp();  // the dialect's answer (OASIS_NO_DEPTH_CLAMP)
     return context;
 }
 
@@ -204,7 +205,8 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         throw std::invalid_argument("the " + std::string(pipelineName(active_)) + " pipeline has no pass '" +
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     if (!sameGridDensity(scene.grid, geometry_.density())) geometry_ = SceneGeometry(scene.grid);
-    frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth());
+    frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth(),
+                          shadowMaps_.depthClamp() ? ShadowCasterDepth::Clamped : ShadowCasterDepth::Contained);
     frame_.positionFromDepth = targets_->layout().positionFromDepth();
     frame_.waterBounded = paths_.waterBoundsAvailable && scene.water.reflectionBounds;
     if (frame_.waterBounded)  // the shaders' copy of it: the mirrored billboards cull by the rectangle

@@ -324,8 +324,10 @@ std::string Capabilities::clipDistanceDirective() const {
 
 bool Capabilities::depthClampAvailable(std::string* reason) const {
     std::string from = source(*this, kDepthClamp);
-    const char* fallback = "fallback: the shadow casters nearer the sun than a cascade's box are flattened onto its "
-                           "front in the vertex shader (";
+    const char* fallback = "fallback: each shadow cascade's depth reaches towards the sun to the highest caster (one "
+                           "past that flattened onto its front); the water plane and the light volumes are drawn "
+                           "unclamped: with the camera nearer the water than the near plane's distance, the water "
+                           "nearest it is lost (";
     if (forced.noDepthClamp) return answer(false, reason, fallback + std::string("switched off by --force no-depth-clamp)"));
     if (from.empty()) return answer(false, reason, fallback + missing(*this, kDepthClamp) + ")");
     return answer(true, reason, "GL_DEPTH_CLAMP present (" + from + ")");

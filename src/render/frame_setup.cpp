@@ -52,7 +52,8 @@ const char* reflectionResolutionName(int divisor) {
     return kReflectionResolutions[0].name;
 }
 
-FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const DepthConvention& depth) {
+FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const DepthConvention& depth,
+                        ShadowCasterDepth casterDepth) {
     FrameSetup setup;
     setup.view.pose = scene.camera ? *scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
     setup.view.projection = scene.projection;
@@ -113,7 +114,7 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     setup.shadowsActive = scene.shadows.enabled && setup.sky.sunDirection.y > 0.0f;
     if (setup.shadowsActive) {
         setup.shadowCascades = fitShadowCascades(setup.view, setup.sky.sunDirection, *setup.shadowQuality,
-                                                 scene.viewDistance, terrainHeightBounds(scene.terrain));
+                                                 scene.viewDistance, terrainHeightBounds(scene.terrain), casterDepth);
         const ShadowCascades& cascades = setup.shadowCascades;
         for (int c = 0; c < OASIS_SHADOW_MAX_CASCADES; ++c) d.shadowMatrices[c] = cascades.matrices[size_t(c)];
         d.shadow = glm::vec4(1.0f, float(cascades.count), cascades.fadeStart, cascades.fadeEnd);

@@ -129,7 +129,9 @@ struct FrameSetup {
 };
 
 // `depth`: the convention of the targets drawn into (the renderer's); the camera projects with it.
+// `casterDepth`: whether ShadowPass clamps depth (ShadowCasterDepth, render/shadow_cascades.h).
 FrameSetup prepareFrame(const SceneSettings& scene, int width, int height,
-                        const DepthConvention& depth = standardDepthConvention());
+                        const DepthConvention& depth = standardDepthConvention(),
+                        ShadowCasterDepth casterDepth = ShadowCasterDepth::Clamped);
 
 }  // namespace oasis

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "common/shared_constants.glsl"
 #include "scene/point_lights.h"
 
 namespace oasis {
@@ -90,9 +91,9 @@ void SceneGeometry::drawTerrainStrips(int first, int end) const {
     glBindVertexArray(0);
 }
 
-void SceneGeometry::drawWaterQuad() const {
+void SceneGeometry::drawWaterGrid() const {
     glBindVertexArray(emptyVao_.name());
-    glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+    glDrawArrays(GL_TRIANGLES, 0, 6 * OASIS_WATER_GRID_CELLS * OASIS_WATER_GRID_CELLS);
     glBindVertexArray(0);
 }
 

@@ -22,7 +22,7 @@ public:
     // go ring by ring, so a run of strips is one run of indices).
     void drawTerrainStrips(int first, int end) const;
     void drawFullscreenTriangle() const;
-    void drawWaterQuad() const;  // four vertices generated in water.vert
+    void drawWaterGrid() const;  // vertices generated in water.vert (OASIS_WATER_GRID_CELLS)
     int terrainTriangles() const { return indexCount_ / 3; }
     // The light volume (scene/point_lights.h lightVolumeMesh): bind once, then draw per light.
     void bindLightVolume() const { glBindVertexArray(lightVolumeVao_.name()); }

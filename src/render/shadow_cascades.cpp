@@ -16,6 +16,10 @@ constexpr double kLogarithmicShare = 0.9;
 constexpr double kNearest = 1.0;
 // Shadows fade out over the last part of the distance, ending at it.
 constexpr double kFadeShare = 0.15;
+// A contained box's depth range is at most this many of its radii: the 32-bit float depth's step
+// at the back of the range (2^-24 of it) then stays under a quarter of a 2048 map's texel. Only a
+// sun under a degree above the horizon needs more; past it casters are flattened onto the front.
+constexpr double kMostDepthRangeInRadii = 4096.0;
 
 // Whether the origin lies in the triangle abc (either winding, edges included).
 bool originInTriangle(glm::dvec2 a, glm::dvec2 b, glm::dvec2 c) {
@@ -70,6 +74,20 @@ glm::vec2 casterReach(const glm::dmat4& toLight, double radius, double low, doub
     return {float(nearest), float(farthest)};
 }
 
+// The light depth (from the box's centre, towards the sun) up to which a caster no higher than
+// `high` (camera-relative) can stand above the box's square: the highest of its four corners'.
+double casterFrontDepth(const glm::dmat4& toLight, double radius, double high) {
+    glm::dmat4 fromLight = glm::inverse(toLight);
+    glm::dvec3 step = glm::dvec3(fromLight[2]);  // camera-relative change per unit of light depth
+    if (step.y <= 1e-9) return 1e30;             // the sun at the horizon
+    double front = -1e30;
+    for (int corner = 0; corner < 4; ++corner) {
+        glm::dvec4 at = fromLight * glm::dvec4(corner & 1 ? radius : -radius, corner & 2 ? radius : -radius, 0.0, 1.0);
+        front = std::max(front, (high - at.y) / step.y);
+    }
+    return front;
+}
+
 }  // namespace
 
 const std::vector<ShadowQuality>& shadowQualities() {
@@ -98,7 +116,7 @@ std::string shadowQualityNames() {
 }
 
 ShadowCascades fitShadowCascades(const CameraView& view, const glm::vec3& toSun, const ShadowQuality& quality,
-                                 float distance, glm::vec2 casterHeights) {
+                                 float distance, glm::vec2 casterHeights, ShadowCasterDepth casterDepth) {
     ShadowCascades cascades;
     cascades.count = std::clamp(quality.cascades, 1, OASIS_SHADOW_MAX_CASCADES);
     const double far = std::max(double(distance), 2.0 * kNearest);
@@ -138,16 +156,21 @@ ShadowCascades fitShadowCascades(const CameraView& view, const glm::vec3& toSun,
         glm::dvec3 offset = glm::dvec3(rotation * glm::dvec4(camera, 1.0)) - centreLight;
         glm::mat4 lightView = glm::mat4(glm::mat3(rotation));
         lightView[3] = glm::vec4(glm::vec3(offset), 1.0f);
+        glm::dmat4 toLight = glm::dmat4(glm::dmat3(rotation));
+        toLight[3] = glm::dvec4(offset, 1.0);
         // Depth across the sphere; casters nearer the sun than its front are clamped onto it
         // (ShadowPass draws with depth clamping), so nothing between the sun and the slice is lost.
+        // Contained: the front moves towards the sun to the highest caster (ShadowCasterDepth).
+        double front = radius;
+        if (casterDepth == ShadowCasterDepth::Contained)
+            front = std::clamp(casterFrontDepth(toLight, radius, double(casterHeights.y) - camera.y), radius,
+                               (kMostDepthRangeInRadii - 1.0) * radius);
         glm::mat4 projection = glm::ortho(float(-radius), float(radius), float(-radius), float(radius),
-                                          float(-radius), float(radius));
+                                          float(-front), float(radius));
         cascades.matrices[size_t(c)] = projection * lightView;
         cascades.sliceEnd[c] = float(end);
         cascades.texel[c] = float(texel);
-        cascades.depthRange[c] = float(2.0 * radius);
-        glm::dmat4 toLight = glm::dmat4(glm::dmat3(rotation));
-        toLight[3] = glm::dvec4(offset, 1.0);
+        cascades.depthRange[c] = float(front + radius);
         cascades.casterReach[size_t(c)] = casterReach(toLight, radius, double(casterHeights.x) - camera.y,
                                                       double(casterHeights.y) - camera.y);
         start = end;

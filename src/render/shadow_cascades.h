@@ -43,6 +43,16 @@ struct ShadowCascades {
     std::array<glm::vec2, OASIS_SHADOW_MAX_CASCADES> casterReach{};
 };
 
+// How the casters nearer the sun than a cascade's sphere reach its map. Clamped: the box's depth
+// spans the sphere and ShadowPass clamps nearer casters onto its front (GL_DEPTH_CLAMP). Contained:
+// where there is no depth clamp (the ES 3.0 tier), the box reaches towards the sun up to the
+// highest caster above its square, so no caster crosses its front. Flattening a vertex onto the
+// front (common/shadow_caster.glsl) changes the depth slope of the triangles crossing it, so their
+// slope-scaled polygon offset and depth move: shadows a few pixels apart from the clamped path's
+// (check case 05: max abs 5 on SwiftShader, 8 on softpipe). Flattening remains the safety net
+// past the reach's cap (a sun at the horizon).
+enum class ShadowCasterDepth { Clamped, Contained };
+
 // Fits `quality.cascades` cascades to the view out to `distance`: each slice's bounding sphere
 // (its size depends only on the slice, so turning the camera does not resize the map) seen from
 // the sun, its centre snapped to whole texels in world coordinates (so moving the camera moves
@@ -50,6 +60,7 @@ struct ShadowCascades {
 // `casterHeights`: the lowest and highest world height of any caster (the reach; the default
 // reaches everywhere).
 ShadowCascades fitShadowCascades(const CameraView& view, const glm::vec3& toSun, const ShadowQuality& quality,
-                                 float distance, glm::vec2 casterHeights = glm::vec2(-1e6f, 1e6f));
+                                 float distance, glm::vec2 casterHeights = glm::vec2(-1e6f, 1e6f),
+                                 ShadowCasterDepth casterDepth = ShadowCasterDepth::Clamped);
 
 }  // namespace oasis

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include <glm/gtc/matrix_access.hpp>
+
 #include "render/frame_setup.h"
 #include "render/shadow_cascades.h"
 
@@ -148,6 +150,49 @@ TEST(ShadowCascades, CasterReachHoldsEveryCasterThatCanShadowTheBox) {
             EXPECT_GT(inside, 0) << "cascade " << k;
         }
         if (sun == highSun) EXPECT_LT(c.casterReach[0].y, 1000.0f) << "cascade 0 reaches the whole view";
+    }
+}
+
+// Without depth clamp the box reaches towards the sun (ShadowCasterDepth::Contained): every point
+// above the box's square at a caster's height lies inside its depth range, so no caster is
+// flattened (with a low sun, the sphere's box leaves many out); the square and the texel are the
+// sphere's; the sphere's front is where common/shadows.glsl computes it from the texel and the
+// depth range (it asks a wider cascade nearer the sun, as the clamped box does).
+TEST(ShadowCascades, AContainedBoxHoldsEveryCasterAboveItsSquare) {
+    const glm::vec2 heights(-20.0f, 150.0f);
+    const glm::vec3 highSun = glm::normalize(glm::vec3(0.3f, 0.8f, -0.4f));
+    const ShadowQuality& quality = *findShadowQuality("medium");
+    for (glm::vec3 sun : {kLowSun, highSun}) {
+        CameraView view = viewAt({1000, 60, -300}, 40.0f, -10.0f);
+        ShadowCascades clamped = fitShadowCascades(view, sun, quality, 4000.0f, heights, ShadowCasterDepth::Clamped);
+        ShadowCascades contained = fitShadowCascades(view, sun, quality, 4000.0f, heights, ShadowCasterDepth::Contained);
+        ASSERT_EQ(clamped.count, contained.count);
+        int pastTheSphere = 0;
+        for (int k = 0; k < clamped.count; ++k) {
+            const glm::mat4 &sphere = clamped.matrices[size_t(k)], &box = contained.matrices[size_t(k)];
+            EXPECT_EQ(clamped.texel[k], contained.texel[k]);
+            EXPECT_GE(contained.depthRange[k], clamped.depthRange[k]);
+            for (int row = 0; row < 4; ++row) {  // x and y: the same square
+                EXPECT_EQ(glm::row(sphere, 0)[row], glm::row(box, 0)[row]);
+                EXPECT_EQ(glm::row(sphere, 1)[row], glm::row(box, 1)[row]);
+            }
+            glm::mat4 fromSphere = glm::inverse(sphere);
+            for (float a = -1.0f; a <= 1.0f; a += 0.25f)
+                for (float b = -1.0f; b <= 1.0f; b += 0.25f)
+                    for (float z = 1.0f; z >= -40.0f; z -= 0.125f) {
+                        glm::vec4 p = fromSphere * glm::vec4(a, b, z, 1.0f);
+                        if (p.y / p.w + 60.0f > heights.y || p.y / p.w + 60.0f < heights.x) continue;
+                        if (z < -1.0f) ++pastTheSphere;
+                        float boxZ = (box * p).z / (box * p).w;
+                        EXPECT_GE(boxZ, -1.0f - 1e-4f) << "cascade " << k << " flattens a caster at sphere depth " << z;
+                        EXPECT_LE(boxZ, 1.0f + 1e-4f) << "cascade " << k;
+                    }
+            float sphereFront = 1.0f - 2.0f * (contained.texel[k] * float(quality.mapSize)) / contained.depthRange[k];
+            glm::vec4 front = box * (fromSphere * glm::vec4(0.0f, 0.0f, -1.0f, 1.0f));
+            EXPECT_NEAR(front.z / front.w, sphereFront, 1e-4f) << "cascade " << k;
+            EXPECT_EQ(1.0f - 2.0f * (clamped.texel[k] * float(quality.mapSize)) / clamped.depthRange[k], -1.0f);
+        }
+        if (sun == kLowSun) EXPECT_GT(pastTheSphere, 100) << "the low sun's casters all fit the sphere: nothing tested";
     }
 }
 
