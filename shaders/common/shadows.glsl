@@ -58,8 +58,8 @@ SunShadow sunShadow(vec3 position, vec3 normal) {
         // with a low sun a cascade's square reaches far along the sun's rays, and a point nearer
         // the sun than its depth range (where casters are clamped) must ask a wider cascade.
         // A box that reaches towards the sun past its sphere (ShadowCasterDepth::Contained, no
-        // depth clamp) asks the same: its sphere's front lies where the depth range less the
-        // sphere's (2 radii = the map's texels) starts; -1 where the two are one.
+        // depth clamp) asks the same: the sphere's diameter (texel x map size) is the back part of
+        // the depth range, so its front sits at this clip depth; -1 where the two are one.
         float sphereFront = 1.0 - 2.0 * (texel * mapSize.x) / frame.shadowDepthRange[c];
         if (any(greaterThan(abs(clip.xy), vec2(1.0 - margin))) || clip.z >= 1.0 || clip.z <= sphereFront) continue;
         vec3 coord = clip.xyz * 0.5 + 0.5;
