@@ -58,6 +58,13 @@ const std::vector<InputDomain>& inputDomains() {
         {"--frames", "frames", 1.0, 1000.0, DomainKind::Integer, "timed frames per measurement"},
         {"--driver-timeout", "seconds", 0.1, 86400.0, DomainKind::Real,
          "compare --driver: each child render's limit (default 300; softpipe takes ~10 s a 640x360 frame)"},
+        {"--case-timeout", "seconds", 0.1, 86400.0, DomainKind::Real,
+         "check: each case's child process limit (default 60; a healthy case on llvmpipe takes under 2 s, "
+         "softpipe under 30 s)"},
+        {"--jobs", "processes", 1.0, 64.0, DomainKind::Integer, "check: the cases' child processes at a time"},
+        {"--retries", "re-runs", 0.0, 10.0, DomainKind::Integer, "check: a failing case runs again up to this often"},
+        {"--shard I", "shard", 1.0, 1000.0, DomainKind::Integer, "check: which shard, at most N"},
+        {"--shard N", "shards", 1.0, 1000.0, DomainKind::Integer, "check: how many shards the cases are dealt into"},
         {"--view-exposure", "stops", -20.0, 20.0, DomainKind::Real,
          "the HDR views' scale 2^stops: 1e-6 to 1e6 covers every value a half float holds"},
         {"--range LO", "the view's values", -1e9, 1e9, DomainKind::Real,

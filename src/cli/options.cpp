@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "cli/check_options.h"
 #include "cli/driver_setups.h"
 #include "cli/input_domains.h"
 #include "cli/option_rules.h"
@@ -84,35 +85,13 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
                           std::find(kValueOptions.begin(), kValueOptions.end(), flag) != kValueOptions.end();
         if (flag == "--help" || flag == "-h") { options.help = true; continue; }
         if (options.command == Command::Check) {
-            // The check sets every scene option itself (its cases); it takes only these.
-            auto value = [&](int count) { return i + size_t(count) < arguments.size(); };
-            if (flag == "--quick") { options.quick = true; continue; }
-            if (flag == "--tables") { options.checkTables = true; continue; }
-            if (flag == "--api" && value(1)) {
-                if (!gl::parseApi(arguments[++i], options.scene.api))
-                    return fail("--api expects gl or gles, got '" + arguments[i] + "'");
-                continue;
-            }
-            if ((flag == "--out-dir" || flag == "--references" || flag == "--write-references") && value(1)) {
-                const std::string& path = arguments[++i];
-                if (path.empty()) return fail(flag + " expects a directory name, got ''");
-                (flag == "--out-dir" ? options.outDir : flag == "--references" ? options.checkReferences
-                                                                                : options.writeReferences) = path;
-                if (flag == "--out-dir") options.outDirGiven = true;
-                continue;
-            }
-            if (flag == "--diff" && value(2)) {
-                options.diffReports = {arguments[i + 1], arguments[i + 2]};
-                i += 2;
-                continue;
-            }
-            if (flag == "--diff" || flag == "--api" || flag == "--out-dir" || flag == "--references" ||
-                flag == "--write-references")
-                return fail("option " + flag + (flag == "--diff" ? " needs two reports: --diff A.json B.json"
-                                                                  : " needs a value (see oasis check --help)"));
-            return fail("option " + flag + " does not belong to `oasis check` (it sets the scene itself; see oasis "
-                        "check --help)");
+            CheckOptionParse parsed = parseCheckOption(arguments, i, options);
+            if (!parsed.ok) return fail(parsed.error);
+            continue;
         }
+        for (const char* checkOnly : {"--case", "--shard", "--jobs", "--case-timeout", "--retries", "--expectations",
+                                      "--junit", "--expect-renderer", "--baseline", "--references", "--write-references"})
+            if (flag == checkOnly) return fail("option " + flag + " belongs to `oasis check`");
         if (flag == "--shading" || flag == "--history") {
             if (options.command != Command::Probe) return fail("option " + flag + " belongs to `oasis probe`");
             (flag == "--shading" ? options.probeShading : options.probeHistory) = true;

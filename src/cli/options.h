@@ -38,6 +38,26 @@ struct SceneOptions {
 
 enum class Command { Default, Window, Render, Compare, Caps, Bench, Probe, Check };
 
+// `oasis check`'s own options beyond the references and --diff (cli/check_options.cpp parses them;
+// commands/check.h says what each does).
+struct CheckOptions {
+    std::vector<std::string> caseGlobs;  // --case GLOB (repeatable): only the cases whose names match
+    int shardIndex = 1, shardCount = 1;  // --shard I/N: the cases whose 1-based number is I modulo N
+    int retries = 1;                     // --retries N: a failing case runs again up to N times
+    double caseTimeoutSeconds = 60.0;    // --case-timeout S: a case's child still running is stopped
+    int jobs = 0;                        // --jobs N: children at a time (0: this machine's cores, at most 4)
+    std::string expectations;            // --expectations FILE (commands/check_expectations.h)
+    std::string junit;                   // --junit FILE
+    std::string expectRenderer;          // --expect-renderer REGEX: refuse any other driver
+    std::string baseline;                // --baseline DIR: this driver's own frames, judged identical
+    // The child process a case renders in (commands/check_child.h); never typed by a user.
+    std::string child;                   // --child frame|passes|driver
+    std::string childOut;                // --child-out PREFIX: PREFIX.json, .png, .bin
+    std::string childWhere;              // --where FILE: the pixels a pass-by-pass search looks at
+    bool childGpuPlants = false;         // --gpu-plants: the plants must be interpreted on the GPU
+    std::vector<std::string> childArguments;  // after --: the case's `oasis render` arguments
+};
+
 struct Options {
     Command command = Command::Default;
     bool help = false;
@@ -82,6 +102,7 @@ struct Options {
     std::string checkReferences, writeReferences;
     std::vector<std::string> diffReports;
     bool checkTables = false;  // check --tables: print the dimensions and rules as Markdown
+    CheckOptions check;
     std::vector<std::string> givenFlags;  // the options on the command line, in order (cli/option_rules.h)
     std::string commandLine;  // "oasis" and the arguments as given, shell-quoted (a PNG's provenance)
     bool comparesDrivers() const { return !drivers.empty() || !reference.empty(); }

@@ -1,27 +1,35 @@
-// `oasis check` (commands/check.h): the cases in turn, each judged, then the report written whole.
+// `oasis check` (commands/check.h): the options checked and the outputs proven writable before
+// anything renders, the driver's report, the cases in turn (each in a process of its own: a
+// crash or a hang ends its case, not the check), then the blame settled across cases and the
+// report written whole.
 #include "commands/check.h"
 
+#include <fcntl.h>
+#include <fnmatch.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
-#include <cstring>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <sstream>
 #include <stdexcept>
+#include <thread>
 
+#include "commands/check_case_judge.h"
 #include "commands/check_cases.h"
 #include "commands/check_diff.h"
+#include "commands/check_expectations.h"
 #include "commands/check_html.h"
-#include "commands/check_judge.h"
-#include "commands/check_render.h"
-#include "commands/provenance.h"
+#include "commands/check_references.h"
 #include "commands/check_report.h"
-#include "commands/session.h"
-#include "context/gl_context.h"
+#include "commands/check_runner.h"
+#include "commands/provenance.h"
 #include "render/file_output.h"
 #include "render/shader_library.h"
 
@@ -29,11 +37,8 @@ namespace oasis {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr const char* kCheckSize = "256x144";
 
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 bool isDirectory(const std::string& path) {
     struct stat info;
@@ -42,169 +47,7 @@ bool isDirectory(const std::string& path) {
 
 std::string parentOf(const std::string& path) {
     size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? "." : path.substr(0, slash);
-}
-
-// The arguments every render of this check adds: the frame size, and --api gles where the check
-// runs on OpenGL ES (its native tier; a case's own tier may say so again).
-std::vector<std::string> withCommon(std::vector<std::string> arguments, const Options& options) {
-    arguments.insert(arguments.begin(), {"--size", kCheckSize});
-    bool hasApi = false;
-    for (const std::string& argument : arguments) hasApi = hasApi || argument == "--api";
-    if (options.scene.api == gl::Api::Gles && !hasApi) arguments.insert(arguments.end(), {"--api", "gles"});
-    return arguments;
-}
-
-// The rule a case is held to against its own main path: identical, except where a fallback's
-// rounding was measured to differ.
-const ImageRule& mainPathRule(const CheckCase& c) {
-    bool rounded = c.value("tier").name == "gles30" || c.value("light-method").name == "tiled";
-    return imageRule(rounded ? "same-driver-fallback" : "identical");
-}
-
-// Why a case cannot run here at all before anything is rendered, or "".
-std::string caseRefused(const CheckCase& c, const Options& options) {
-    if (options.scene.api == gl::Api::Gles && c.value("tier").name == "gl33")
-        return "the gl33 tier is a desktop OpenGL context; this check runs on OpenGL ES (--api gles)";
-    return {};
-}
-
-struct Checker {
-    const Options& options;
-    std::string referenceDir;
-    std::map<std::vector<std::string>, CaseFrame> mainPaths;  // by arguments: shared between cases
-    std::vector<std::string> notes;  // the running case's, after its verdict's reasons
-
-    const CaseFrame& mainPath(const CheckCase& c) {
-        std::vector<std::string> arguments = withCommon(c.mainPathArguments(), options);
-        auto found = mainPaths.find(arguments);
-        if (found == mainPaths.end()) found = mainPaths.emplace(arguments, renderCaseFrame(arguments, false)).first;
-        return found->second;
-    }
-
-    CaseResult run(const CheckCase& c) {
-        Clock::time_point start = Clock::now();
-        CaseResult result;
-        result.name = c.name();
-        result.options = withCommon(c.arguments(), options);
-        result.referenceRule = imageRule("cross-driver").name;
-        if (std::string refused = caseRefused(c, options); !refused.empty()) {
-            result.reason = "forced tier: " + refused;
-            return result;
-        }
-        CaseFrame frame = renderCaseFrame(result.options, c.value("plants").name == "plants-gpu");
-        if (!frame.rendered) {
-            result.reason = frame.limitedBy + ": " + frame.skipReason;
-            result.seconds = secondsSince(start);
-            return result;
-        }
-        result.result = frame.image;
-        std::vector<std::string> failures;
-        notes.clear();
-        judgeAgainstReference(c, result, failures);
-        bool mainPathFailed = judgeAgainstMainPath(c, result, failures);
-        result.verdict = failures.empty() ? Verdict::Pass : Verdict::Fail;
-        if (failures.empty())
-            failures.push_back(result.referenceCompared ? "matches the reference frame and the driver's main path"
-                                                        : "matches the driver's main path");
-        if (!frame.drawnWith.empty()) notes.push_back(frame.drawnWith);
-        failures.insert(failures.end(), notes.begin(), notes.end());
-        for (const std::string& text : failures) result.reason += (result.reason.empty() ? "" : "; ") + text;
-        if (mainPathFailed) findDivergence(c, result);
-        else if (result.verdict == Verdict::Fail)
-            result.reason += " (the case matches the driver's main path by its rule: the difference from the "
-                             "reference is this driver's, not this path's)";
-        result.seconds = secondsSince(start);
-        return result;
-    }
-
-    // Without a reference frame the case is judged against the main path alone, and says so.
-    void judgeAgainstReference(const CheckCase& c, CaseResult& result, std::vector<std::string>& failures) {
-        std::string path = referenceDir + "/" + c.name() + ".png", error;
-        if (referenceDir.empty() || !readPng(path, result.reference, error)) {
-            result.referenceRule = "none";
-            notes.push_back("no reference frame (" + (referenceDir.empty() ? std::string("no reference directory") : error) +
-                            "): judged against the driver's main path alone");
-            return;
-        }
-        const ImageRule& rule = imageRule("cross-driver");
-        if (result.reference.width != result.result.width || result.reference.height != result.result.height) {
-            failures.push_back("the reference frame " + path + " is not " + kCheckSize);
-            return;
-        }
-        Judgement j = judge(result.result, result.reference, rule);
-        result.referenceCompared = true;
-        result.psnrDb = j.psnrDb;
-        result.maxAbs = j.maxAbs;
-        result.pixelsOver = j.pixelsOver;
-        if (!j.pass) {
-            failures.push_back("against the reference frame: " + j.summary);
-            result.errorMask = errorMask(result.result, result.reference, rule);
-        }
-    }
-
-    // True when the case fails against its main path (then the pass-by-pass search runs).
-    bool judgeAgainstMainPath(const CheckCase& c, CaseResult& result, std::vector<std::string>& failures) {
-        const CaseFrame& main = mainPath(c);
-        if (!main.rendered) {
-            failures.push_back("the driver's main path did not render: " + main.skipReason);
-            return false;
-        }
-        const ImageRule& rule = mainPathRule(c);
-        Judgement j = judge(result.result, main.image, rule);
-        result.mainPathCompared = true;
-        result.mainPathRule = rule.name;
-        result.mainPathPsnrDb = j.psnrDb;
-        result.mainPathMaxAbs = j.maxAbs;
-        result.mainPathPixelsOver = j.pixelsOver;
-        if (j.pass) return false;
-        failures.push_back("against the driver's main path: " + j.summary);
-        if (result.errorMask.width == 0) {
-            result.errorMask = errorMask(result.result, main.image, rule);
-            if (result.reference.width == 0) result.reference = main.image;
-        }
-        return true;
-    }
-
-    // Where the case's path parts from the main path on this driver, pass by pass.
-    void findDivergence(const CheckCase& c, CaseResult& result) {
-        try {
-            std::vector<PassSnapshot> main = renderPassByPass(withCommon(c.mainPathArguments(), options));
-            std::vector<PassSnapshot> candidate = renderPassByPass(result.options);
-            // The pixels whose final colours part, bottom row first as the views read them.
-            const Image& mainImage = mainPath(c).image;
-            std::vector<bool> where(size_t(mainImage.width) * size_t(mainImage.height));
-            for (int y = 0; y < mainImage.height; ++y)
-                for (int x = 0; x < mainImage.width; ++x) {
-                    int d = 0;
-                    for (int k = 0; k < 3; ++k)
-                        d = std::max(d, std::abs(int(mainImage.pixel(x, y)[k]) - int(result.result.pixel(x, y)[k])));
-                    where[size_t(mainImage.height - 1 - y) * size_t(mainImage.width) + size_t(x)] = d > mainPathRule(c).level;
-                }
-            Divergence found;
-            if (firstDivergence(main, candidate, mainPathRule(c).level, where, found))
-                result.firstDivergence = FirstDivergence{found.pass, found.target, found.pixels};
-        } catch (const std::exception& error) {
-            result.reason += " (pass by pass: " + std::string(error.what()) + ")";
-        }
-    }
-};
-
-void fillDriver(CheckReport& report, const Options& options) {
-    Options native = options;
-    HeadlessContext context(maxGlVersionFor(native.scene));
-    RenderSession session(native, RenderSession::Shaders::CapabilitiesOnly);
-    const gl::Capabilities& caps = session.caps;
-    // The context's own strings: GL_VENDOR and GL_RENDERER natively; in a browser, whose GL_RENDERER
-    // is masked ("WebKit WebGL"), WEBGL_debug_renderer_info's where it is offered (web_context.cpp).
-    ContextInfo info = queryContextInfo();
-    report.vendor = info.vendor.empty() ? caps.vendor : info.vendor;
-    report.renderer = info.renderer.empty() ? caps.renderer : info.renderer;
-    report.glVersion = caps.version;
-    report.glslVersion = caps.glslVersion;
-    report.api = caps.es ? "OpenGL ES" : "OpenGL";
-    for (const gl::FeatureReport& feature : session.features())
-        report.caps.push_back({feature.name, feature.available, feature.used, feature.reason, feature.limitedBy});
+    return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
 }
 
 std::string formatSeconds(double seconds) {
@@ -213,63 +56,188 @@ std::string formatSeconds(double seconds) {
     return text;
 }
 
-// Makes the directories, then writes the files as one set (whole or not at all); false after
-// saying what failed.
-bool writeSet(const std::vector<std::string>& directories, const std::vector<OutputFile>& files) {
-    for (const std::string& dir : directories)
-        if (mkdir(dir.c_str(), 0755) != 0 && errno != EEXIST) {
-            std::fprintf(stderr, "oasis: cannot create directory %s: %s\n", dir.c_str(), std::strerror(errno));
+// A directory the check will write into, made (with its parents) and proven writable now, before
+// a case renders, so that a bad --out-dir costs milliseconds and not the whole run. Remembers
+// what it made, to remove it again if the check ends without writing there.
+class OutputDirectory {
+public:
+    ~OutputDirectory() { removeMade(); }
+    bool prepare(const std::string& path, std::string& error) {
+        path_ = path;
+        std::vector<std::string> missing;
+        for (std::string at = path; !at.empty() && at != "/" && at != "." && !isDirectory(at); at = parentOf(at))
+            missing.push_back(at);
+        for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+            if (mkdir(it->c_str(), 0755) != 0 && errno != EEXIST) {
+                error = "cannot write " + path + ": " + std::strerror(errno);
+                removeMade();
+                return false;
+            }
+            made_.push_back(*it);
+        }
+        std::string probe = path + "/.oasis-write-probe-" + std::to_string(getpid());
+        int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+        bool written = fd >= 0 && write(fd, "x", 1) == 1;
+        int writeErrno = errno;
+        if (fd >= 0) close(fd);
+        unlink(probe.c_str());
+        if (!written) {
+            error = "cannot write " + path + ": " + std::strerror(writeErrno);
+            removeMade();
             return false;
         }
-    std::vector<std::string> written;
-    std::string error;
-    if (writeFilesWhole(files, written, error)) return true;
-    std::fprintf(stderr, "oasis: %s\n", error.c_str());
-    for (const std::string& path : written)
-        std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
-    return false;
-}
-
-int writeReferences(const Options& options, const std::vector<CheckCase>& cases) {
-    std::vector<OutputFile> files;
-    for (const CheckCase& c : cases) {
-        std::vector<std::string> arguments = withCommon(c.arguments(), options);
-        CaseFrame frame = renderCaseFrame(arguments, false);
-        if (!frame.rendered) {
-            std::fprintf(stderr, "oasis: check --write-references: %s cannot be rendered here: %s\n", c.name().c_str(),
-                         frame.skipReason.c_str());
-            return 1;
-        }
-        files.push_back({options.writeReferences + "/" + c.name() + ".png", {}});
-        encodePng(frame.image, files.back().bytes, frame.provenance);
-        std::fprintf(stderr, "oasis check: [%d/%zu] %s\n", c.index, cases.size(), c.name().c_str());
+        return true;
     }
-    if (!writeSet({options.writeReferences}, files)) return 1;
-    std::fprintf(stderr, "oasis check: wrote %zu reference frames to %s\n", files.size(), options.writeReferences.c_str());
-    return 0;
+    // The directories it made that are still empty go again, deepest first (rmdir leaves any
+    // that holds a file): a check that ends early leaves nothing empty behind.
+    void removeMade() {
+        for (auto it = made_.rbegin(); it != made_.rend(); ++it) rmdir(it->c_str());
+        made_.clear();
+    }
+
+private:
+    std::string path_;
+    std::vector<std::string> made_;  // outermost first
+};
+
+// The cases --case and --shard select, in the set's order; `selection` says what was asked.
+std::vector<CheckCase> selectCases(const std::vector<CheckCase>& cases, const CheckOptions& check, std::string& selection) {
+    std::vector<CheckCase> chosen;
+    for (const CheckCase& c : cases) {
+        bool matches = check.caseGlobs.empty();
+        for (const std::string& glob : check.caseGlobs) matches = matches || fnmatch(glob.c_str(), c.name().c_str(), 0) == 0;
+        if (matches) chosen.push_back(c);
+    }
+    for (const std::string& glob : check.caseGlobs) selection += (selection.empty() ? "--case " : " --case ") + glob;
+    if (check.shardCount > 1) {
+        std::vector<CheckCase> shard;
+        for (size_t k = 0; k < chosen.size(); ++k)
+            if (int(k % size_t(check.shardCount)) == check.shardIndex - 1) shard.push_back(chosen[k]);
+        chosen = shard;
+        selection += (selection.empty() ? "" : " ") + std::string("--shard ") + std::to_string(check.shardIndex) + "/" +
+                     std::to_string(check.shardCount);
+    }
+    return chosen;
 }
 
-// The report's files as one set (written whole or not at all): report.json, and for each failing
-// case its frame, the frame it was judged against and the error mask.
-int writeCheckReport(const Options& options, const CheckReport& report) {
-    std::string directory = options.outDirGiven ? options.outDir : "oasis-check";
+std::string readFile(const std::string& path, bool& ok) {
+    std::ifstream file(path, std::ios::binary);
+    std::stringstream bytes;
+    bytes << file.rdbuf();
+    ok = bool(file) || file.eof();
+    ok = ok && file.is_open();
+    return bytes.str();
+}
+
+// The report's files as one set (written whole or not at all): report.json, report.html, the
+// JUnit file if asked for, and for each case that did not pass its frames and error mask.
+int writeCheckReport(const Options& options, const std::string& directory, const CheckReport& report) {
     std::vector<OutputFile> files = {{directory + "/report.json", checkReportJson(report)},
                                      {directory + "/report.html", checkReportHtml(report)}};
+    if (!options.check.junit.empty()) files.push_back({options.check.junit, checkReportJunit(report)});
     for (const CaseResult& c : report.cases) {
-        if (c.verdict != Verdict::Fail) continue;
-        for (const auto& [suffix, image] : {std::pair{"result", &c.result}, {"reference", &c.reference}, {"mask", &c.errorMask}}) {
+        if (c.verdict == Verdict::Pass || c.verdict == Verdict::Skip) continue;
+        for (const auto& [suffix, image] : {std::pair{"result", &c.result}, {"reference", &c.reference},
+                                            {"main-path", &c.mainPathImage}, {"mask", &c.errorMask}}) {
             if (image->width == 0) continue;
             files.push_back({directory + "/cases/" + c.name + "-" + suffix + ".png", {}});
             encodePng(*image, files.back().bytes);
         }
     }
-    if (!writeSet({directory, directory + "/cases"}, files)) return 1;
-    std::printf("oasis check: %d passed, %d failed, %d skipped of %zu cases in %s on %s\n", report.passed(),
-                report.failed(), report.skipped(), report.cases.size(), formatSeconds(report.seconds).c_str(),
-                report.renderer.c_str());
-    std::fprintf(stderr, "  wrote %s/report.json, %s/report.html%s\n", directory.c_str(), directory.c_str(),
-                report.failed() ? (" and the failing cases' images in " + directory + "/cases").c_str() : "");
+    bool withCases = files.size() > (options.check.junit.empty() ? 2u : 3u);
+    if (withCases && mkdir((directory + "/cases").c_str(), 0755) != 0 && errno != EEXIST) {
+        std::fprintf(stderr, "oasis: cannot write %s/cases: %s\n", directory.c_str(), std::strerror(errno));
+        return 1;
+    }
+    std::vector<std::string> written;
+    std::string error;
+    if (!writeFilesWhole(files, written, error)) {
+        std::fprintf(stderr, "oasis: %s\n", error.c_str());
+        for (const std::string& path : written)
+            std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
+        return 1;
+    }
+    std::string counts;
+    for (Verdict verdict : allVerdicts()) {
+        int n = report.count(verdict);
+        if (n || verdict == Verdict::Pass || verdict == Verdict::Fail || verdict == Verdict::Skip)
+            counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " +
+                      (verdict == Verdict::Pass ? "passed" : verdict == Verdict::Fail ? "failed"
+                                                           : verdict == Verdict::Skip ? "skipped" : verdictName(verdict));
+    }
+    std::printf("oasis check: %s of %zu cases in %s on %s\n", counts.c_str(), report.cases.size(),
+                formatSeconds(report.seconds).c_str(), report.renderer.c_str());
+    std::fprintf(stderr, "  wrote %s/report.json, %s/report.html%s%s\n", directory.c_str(), directory.c_str(),
+                 options.check.junit.empty() ? "" : (", " + options.check.junit).c_str(),
+                 withCases ? (" and the images of the cases that did not pass in " + directory + "/cases").c_str() : "");
     return report.failed() ? 1 : 0;
+}
+
+// The baseline's frames and manifest, written when --baseline names a directory without one.
+int recordBaseline(const std::string& dir, const CheckReport& report, const std::vector<CaseFrame>& frames) {
+    std::vector<OutputFile> files;
+    BaselineManifest manifest{report.renderer, report.glVersion, report.oasisCommit, {}};
+    for (size_t i = 0; i < report.cases.size(); ++i) {
+        if (!frames[i].rendered) continue;
+        manifest.cases.push_back(report.cases[i].name);
+        files.push_back({dir + "/" + report.cases[i].name + ".png", {}});
+        encodePng(frames[i].image, files.back().bytes, frames[i].provenance);
+    }
+    files.push_back({dir + "/baseline.json", baselineManifestJson(manifest)});
+    std::vector<std::string> written;
+    std::string error;
+    if (!writeFilesWhole(files, written, error)) {
+        std::fprintf(stderr, "oasis: %s\n", error.c_str());
+        return 1;
+    }
+    std::fprintf(stderr, "oasis check: recorded this driver's baseline (%zu frames) in %s\n", manifest.cases.size(),
+                 dir.c_str());
+    return 0;
+}
+
+int writeReferences(const Options& options, CaseRunner& runner, const std::vector<CheckCase>& cases) {
+    std::vector<OutputFile> files;
+    for (const CheckCase& c : cases) {
+        FrameRun run = runner.frame(checkCaseArguments(c, options), false);
+        if (run.outcome.end != RunEnd::Finished || !run.outcome.error.empty() || !run.frame.rendered) {
+            std::fprintf(stderr, "oasis: check --write-references: %s cannot be rendered here: %s\n", c.name().c_str(),
+                         !run.outcome.detail.empty() ? run.outcome.detail.c_str()
+                         : !run.outcome.error.empty() ? run.outcome.error.c_str() : run.frame.skipReason.c_str());
+            return 1;
+        }
+        files.push_back({options.writeReferences + "/" + c.name() + ".png", {}});
+        encodePng(run.frame.image, files.back().bytes, run.frame.provenance);
+        std::fprintf(stderr, "oasis check: [%d/%zu] %s\n", c.index, cases.size(), c.name().c_str());
+    }
+    std::vector<std::string> written;
+    std::string error;
+    if (!writeFilesWhole(files, written, error)) {
+        std::fprintf(stderr, "oasis: %s\n", error.c_str());
+        return 1;
+    }
+    std::fprintf(stderr, "oasis check: wrote %zu reference frames to %s\n", files.size(), options.writeReferences.c_str());
+    return 0;
+}
+
+std::unique_ptr<CaseRunner> makeRunner(const Options& options) {
+#ifdef __EMSCRIPTEN__
+    (void)options;
+    return makeInProcessRunner();
+#else
+    return makeChildRunner(options.check.caseTimeoutSeconds);
+#endif
+}
+
+// The case's line on stdout: the verdict, the name, and for anything but a pass what decided it.
+void printCaseLine(const CaseResult& r) {
+    std::string detail;
+    if (r.verdict != Verdict::Pass) {
+        if (!r.blame.empty()) detail += "blame: " + r.blame + "; ";
+        if (r.firstDivergence)
+            detail += "first diverges at " + r.firstDivergence->pass + " / " + r.firstDivergence->target + "; ";
+        detail += r.reason;
+    }
+    std::printf("  %-15s %s%s%s\n", verdictName(r.verdict), r.name.c_str(), detail.empty() ? "" : ": ", detail.c_str());
 }
 
 }  // namespace
@@ -314,43 +282,145 @@ std::string findCheckReferences() {
 }
 
 int runCheckCommand(const Options& options) {
+#ifndef __EMSCRIPTEN__
+    if (!options.check.child.empty()) return runCheckChild(options);
+#endif
     if (!options.diffReports.empty()) return runCheckDiff(options.diffReports[0], options.diffReports[1]);
     if (options.checkTables) {
         std::fputs(checkTablesMarkdown().c_str(), stdout);
         return 0;
     }
     Clock::time_point start = Clock::now();
+    const CheckOptions& check = options.check;
     std::vector<CheckCase> all = coveringCases();
-    std::vector<CheckCase> cases = options.quick ? quickCases(all) : all;
-    PairCoverage coverage = pairCoverage(all);
     try {
-        if (!options.writeReferences.empty()) return writeReferences(options, all);
+        std::unique_ptr<CaseRunner> runner = makeRunner(options);
+        if (!options.writeReferences.empty()) {
+            OutputDirectory out;
+            std::string error;
+            if (!out.prepare(options.writeReferences, error)) return std::fprintf(stderr, "oasis: %s\n", error.c_str()), 1;
+            return writeReferences(options, *runner, all);
+        }
+        // Everything a run reads and writes is settled before the first case renders.
         CheckReport report;
+        std::string selection;
+        std::vector<CheckCase> cases = selectCases(options.quick ? quickCases(all) : all, check, selection);
+        if (cases.empty()) {
+            std::fprintf(stderr, "oasis: check: no case matches %s (oasis check --tables lists the dimensions; the "
+                         "report of a full check names every case)\n", selection.c_str());
+            return 2;
+        }
+        std::vector<Expectation> expectations;
+        if (!check.expectations.empty()) {
+            bool ok = false;
+            std::string text = readFile(check.expectations, ok), error;
+            if (!ok) return std::fprintf(stderr, "oasis: check: cannot read --expectations %s\n", check.expectations.c_str()), 2;
+            if (!parseExpectations(text, expectations, error))
+                return std::fprintf(stderr, "oasis: check: --expectations %s: %s\n", check.expectations.c_str(), error.c_str()), 2;
+        }
+        std::string referenceDir = options.checkReferences.empty() ? findCheckReferences() : options.checkReferences;
+        ReferenceSet references;
+        std::string error;
+        if (referenceDir.empty()) {
+            std::fprintf(stderr, "oasis: check: no reference frames found (set --references DIR or "
+                         "$OASIS_CHECK_REFERENCES; the source tree's are tests/check-references)\n");
+            return 2;
+        }
+        if (!openReferenceSet(referenceDir, references, error)) return std::fprintf(stderr, "oasis: check: %s\n", error.c_str()), 2;
+        CaseJudge judge(options, references.dir, *runner, expectations);
+        bool recordingBaseline = false;
+        if (!check.baseline.empty()) {
+            if (baselineExists(check.baseline)) {
+                if (!judge.useBaseline(check.baseline, error)) return std::fprintf(stderr, "oasis: check: %s\n", error.c_str()), 2;
+            } else {
+                recordingBaseline = true;
+            }
+        }
+        std::string directory = options.outDirGiven ? options.outDir
+                                : options.scene.api == gl::Api::Gles ? "oasis-check-gles" : "oasis-check";
+        OutputDirectory out, baselineOut;
+        if (!out.prepare(directory, error) || (!check.junit.empty() && !OutputDirectory().prepare(parentOf(check.junit), error)) ||
+            (recordingBaseline && !baselineOut.prepare(check.baseline, error)))
+            return std::fprintf(stderr, "oasis: %s (checked before the first case)\n", error.c_str()), 1;
+
+        // The driver, from a child of its own too: a driver that crashes there still gets a report
+        // (its capabilities measured again without compute, which the report's plant atlas uses).
+        std::vector<std::string> driverArguments;
+        if (options.scene.api == gl::Api::Gles) driverArguments = {"--api", "gles"};
+        DriverRun driver = runner->driver(driverArguments);
+        std::vector<std::string> runNotes;
+        if (driver.outcome.end != RunEnd::Finished || !driver.outcome.error.empty()) {
+            std::string how = driver.outcome.detail.empty() ? driver.outcome.error : driver.outcome.detail;
+            driverArguments.push_back("--no-compute");
+            DriverRun again = runner->driver(driverArguments);
+            bool recovered = again.outcome.end == RunEnd::Finished && again.outcome.error.empty();
+            runNotes.push_back("the driver's report " + how + (recovered ? "; it is from a re-run with --no-compute" : "") +
+                               (driver.outcome.tail.empty() ? "" : "; its last output: " + driver.outcome.tail));
+            if (recovered) driver = std::move(again);
+        }
+        report = driver.driver;
+        report.notes = runNotes;
+        if (driver.outcome.end != RunEnd::Finished || !driver.outcome.error.empty())
+            report.renderer = "(unknown: the driver's report " +
+                              (driver.outcome.detail.empty() ? driver.outcome.error : driver.outcome.detail) + ")";
+        if (!check.expectRenderer.empty()) {
+            std::regex expected;
+            try {
+                expected = std::regex(check.expectRenderer);
+            } catch (const std::regex_error& regexError) {
+                return std::fprintf(stderr, "oasis: check: --expect-renderer /%s/ does not compile: %s\n",
+                                    check.expectRenderer.c_str(), regexError.what()), 2;
+            }
+            if (!std::regex_search(report.renderer, expected)) {
+                return std::fprintf(stderr, "oasis: check: refused: this driver is '%s', not one --expect-renderer /%s/ "
+                                    "finds\n", report.renderer.c_str(), check.expectRenderer.c_str()), 2;
+            }
+        }
+        judge.setRenderer(report.renderer);
         report.quick = options.quick;
         report.oasisVersion = oasisRelease();
         report.oasisCommit = oasisCommit();
-        fillDriver(report, options);
-        Checker checker{options, options.checkReferences.empty() ? findCheckReferences() : options.checkReferences, {}, {}};
-        std::printf("oasis check: %zu cases%s (the full set of %zu meets all %d compatible pairs of %zu dimensions' "
-                    "values) on %s\n", cases.size(), options.quick ? " (--quick: every value once)" : "", all.size(),
-                    coverage.pairs, checkDimensions().size(), report.renderer.c_str());
-        if (checker.referenceDir.empty())
-            std::printf("  reference frames: NONE FOUND (set OASIS_CHECK_REFERENCES or --references DIR): every case is "
-                        "judged against this driver's main path alone\n");
-        else
-            std::printf("  reference frames: %s\n", checker.referenceDir.c_str());
+        report.isolation = runner->isolation();
+        report.referenceDir = references.dir;
+        report.referenceHash = references.hash;
+        report.baselineDir = check.baseline;
+        report.selection = selection;
+        report.expectations = check.expectations;
+        report.retries = check.retries;
+        report.caseTimeoutSeconds = check.caseTimeoutSeconds;
+        PairCoverage coverage = pairCoverage(all);
+        std::printf("oasis check: %zu cases%s%s (the full set of %zu meets all %d compatible pairs of %zu dimensions' "
+                    "values) on %s\n", cases.size(), options.quick ? " (--quick: every value once)" : "",
+                    selection.empty() ? "" : (" (" + selection + ")").c_str(), all.size(), coverage.pairs,
+                    checkDimensions().size(), report.renderer.c_str());
+        std::printf("  reference frames: %s (%d frames, %s)%s\n", references.dir.c_str(), references.frames,
+                    references.hash.c_str(), judge.baselineNote().c_str());
+        for (const std::string& note : report.notes) std::printf("  note: %s\n", note.c_str());
+        int jobs = check.jobs ? check.jobs : std::clamp(int(std::thread::hardware_concurrency()), 1, 4);
+#ifdef __EMSCRIPTEN__
+        jobs = 1;
+#endif
+        if (jobs > 1) {
+            std::fprintf(stderr, "oasis check: rendering the %zu cases and their main paths, %d processes at a time\n",
+                         cases.size(), jobs);
+            judge.prefetch(cases, jobs);
+        }
+        std::vector<CaseFrame> frames;
         for (size_t i = 0; i < cases.size(); ++i) {
             double elapsed = secondsSince(start);
             std::fprintf(stderr, "oasis check: case %zu of %zu, %s (%s elapsed%s)\n", i + 1, cases.size(),
                          cases[i].name().c_str(), formatSeconds(elapsed).c_str(),
                          i ? (", about " + formatSeconds(elapsed / double(i) * double(cases.size() - i)) + " left").c_str() : "");
-            report.cases.push_back(checker.run(cases[i]));
-            const CaseResult& r = report.cases.back();
-            std::printf("  %-4s %s%s%s\n", verdictName(r.verdict), r.name.c_str(), r.verdict == Verdict::Pass ? "" : ": ",
-                        r.verdict == Verdict::Pass ? "" : r.reason.c_str());
+            CaseFrame frame;
+            report.cases.push_back(judge.run(cases[i], recordingBaseline ? &frame : nullptr));
+            if (recordingBaseline) frames.push_back(std::move(frame));
         }
+        // The verdict lines once the blame is settled across the cases (the progress is stderr's).
+        judge.settleBlame(report.cases);
+        for (const CaseResult& result : report.cases) printCaseLine(result);
         report.seconds = secondsSince(start);
-        return writeCheckReport(options, report);
+        if (recordingBaseline && recordBaseline(check.baseline, report, frames) != 0) return 1;
+        return writeCheckReport(options, directory, report);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: check: %s\n", error.what());
         return 1;

@@ -2,6 +2,8 @@
 // name, sort each changed case into its section, print the sections.
 #include "commands/check_diff.h"
 
+#include "commands/check_report.h"
+
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -46,14 +48,23 @@ std::string divergenceOf(const JsonValue& c) {
            (pixels && pixels->isNumber() ? ", " + std::to_string(long(pixels->number)) + " pixels" : "");
 }
 
+bool isUnexpected(const std::string& verdict) {
+    for (Verdict v : allVerdicts())
+        if (verdict == verdictName(v)) return unexpected(v);
+    return false;
+}
+
 bool readCase(const JsonValue& c, CheckedCase& out, std::string& error) {
     if (!c.isObject()) return refuse(error, "is not an object");
     out.name = stringOf(&c, "name");
     out.verdict = stringOf(&c, "verdict");
     out.reason = stringOf(&c, "reason");
     if (out.name.empty()) return refuse(error, "has no \"name\" string");
-    if (out.verdict != "pass" && out.verdict != "fail" && out.verdict != "skip") {
-        error = "has verdict \"" + out.verdict + "\" (not pass, fail or skip)";
+    bool known = false;
+    for (Verdict verdict : allVerdicts()) known = known || out.verdict == verdictName(verdict);
+    if (!known) {
+        error = "has verdict \"" + out.verdict + "\" (not pass, fail, skip, crash, timeout, flake, expected-fail or "
+                "unexpected-pass)";
         return false;
     }
     double maxAbs = 0, pixelsOver = 0;
@@ -183,6 +194,9 @@ bool parseCheckRun(const std::string& json, CheckRun& run, std::string& error) {
     run.api = stringOf(driver, "api");
     run.oasisVersion = stringOf(oasis, "version");
     run.oasisCommit = stringOf(oasis, "commit");
+    const JsonValue* summary = root.find("summary");
+    const JsonValue* quick = summary ? summary->find("quick") : nullptr;
+    run.quick = quick && quick->kind == JsonValue::Kind::Bool && quick->boolean;
     run.cases.clear();
     return readCases(*cases, run, error);
 }
@@ -210,8 +224,10 @@ CheckDiff diffCheckRuns(const CheckRun& a, const CheckRun& b) {
         const CheckedCase& before = *found->second;
         CaseChange change{after.name, before, after};
         bool wasSkipped = before.verdict == "skip", isSkipped = after.verdict == "skip";
-        if (before.verdict == "pass" && after.verdict == "fail") diff.regressions.push_back(change);
-        else if (before.verdict == "fail" && after.verdict == "pass") diff.fixes.push_back(change);
+        // A crash, a timeout or an unexpected pass is as unexpected as a failure (check_report.h).
+        bool wasBad = isUnexpected(before.verdict), isBad = isUnexpected(after.verdict);
+        if (!wasSkipped && !isSkipped && !wasBad && isBad) diff.regressions.push_back(change);
+        else if (!wasSkipped && !isSkipped && wasBad && !isBad) diff.fixes.push_back(change);
         else if (!wasSkipped && isSkipped) diff.newSkips.push_back(change);
         else if (wasSkipped && !isSkipped) diff.noLongerSkipped.push_back(change);
         else if (!isSkipped && numbersMoved(before, after)) diff.changedNumbers.push_back(change);
@@ -222,10 +238,19 @@ CheckDiff diffCheckRuns(const CheckRun& a, const CheckRun& b) {
 }
 
 std::string checkDiffText(const CheckRun& a, const CheckRun& b, const CheckDiff& diff) {
-    return runHeader("A", a) + runHeader("B", b) + section("regressions", diff.regressions) + section("fixes", diff.fixes) +
-           section("new skips", diff.newSkips) + section("no longer skipped", diff.noLongerSkipped) +
-           section("changed numbers", diff.changedNumbers) + section("new cases", diff.newCases) +
-           section("removed cases", diff.removedCases);
+    std::string text = runHeader("A", a) + runHeader("B", b);
+    // A --quick run against a full one: the cases only one ran are the subset's, not news.
+    if (a.quick != b.quick) {
+        size_t both = b.cases.size() - diff.newCases.size();
+        text += std::string(a.quick ? "A" : "B") + " is a --quick run and " + (a.quick ? "B" : "A") +
+                " a full one: the " + std::to_string(both) + " cases both ran are compared; the " +
+                std::to_string(diff.newCases.size() + diff.removedCases.size()) +
+                " that only the full run has are not listed as new or removed\n";
+    }
+    text += section("regressions", diff.regressions) + section("fixes", diff.fixes) + section("new skips", diff.newSkips) +
+            section("no longer skipped", diff.noLongerSkipped) + section("changed numbers", diff.changedNumbers);
+    if (a.quick == b.quick) text += section("new cases", diff.newCases) + section("removed cases", diff.removedCases);
+    return text;
 }
 
 int runCheckDiff(const std::string& pathA, const std::string& pathB) {

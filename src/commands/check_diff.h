@@ -23,6 +23,7 @@ struct CheckRun {
     std::string vendor, renderer, glVersion, api;  // the driver's strings
     std::string oasisVersion, oasisCommit;
     std::vector<CheckedCase> cases;  // in the file's order
+    bool quick = false;               // summary.quick: a --quick run's subset
     int count(const std::string& verdict) const;
 };
 

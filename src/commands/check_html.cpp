@@ -34,6 +34,14 @@ figure { margin: 0; } figcaption { color: #444; font-size: .9em; }
 img.frame { image-rendering: pixelated; border: 1px solid #999; display: block; }
 .flipped img.shown { outline: 3px solid #1565c0; }
 button { font: inherit; }
+.row { display: grid; grid-template-columns: 9.5em minmax(0, 1fr) 8.5em 8.5em 11em 3em; gap: .6em; padding: .2em .3em;
+       align-items: baseline; border-bottom: 1px solid #e4e4e8; }
+.row.head { font-weight: bold; background: #f0f0f3; } summary.row { cursor: pointer; list-style: none; }
+summary.row::-webkit-details-marker { display: none; } details[open] > summary.row { background: #eef3fb; }
+.row .name { font-size: .85em; overflow-wrap: anywhere; } .row .c, .row .n { font-variant-numeric: tabular-nums; white-space: nowrap; }
+.n { text-align: right; } .detail { padding: .4em 1em 1em; border-bottom: 1px solid #d0d0d5; }
+.detail .facts th { white-space: nowrap; vertical-align: top; } pre { margin: 0; white-space: pre-wrap; font-size: .85em; }
+.crash, .timeout, .unexpected-pass { background: #6a1b9a; } .flake, .expected-fail { background: #546e7a; }
 )";
 
 // The flip shows the reference in the result's place (and back): a difference then blinks where it
@@ -91,14 +99,26 @@ std::string summary(const CheckReport& report) {
     std::string label = report.failed() ? "FAIL" : report.passed() ? "PASS" : "NOTHING RAN";
     std::string html = "<header>\n<h1>oasis check <span class=\"verdict " + verdict + "\">" + label + "</span> " +
                        htmlEscape(report.renderer) + "</h1>\n";
-    html += "<p class=\"counts\"><span>pass <b id=\"count-pass\">" + std::to_string(report.passed()) +
-            "</b></span><span>fail <b id=\"count-fail\">" + std::to_string(report.failed()) +
-            "</b></span><span>skip <b id=\"count-skip\">" + std::to_string(report.skipped()) + "</b></span><span>of " +
-            std::to_string(report.cases.size()) + " cases" + (report.quick ? " (quick)" : "") + "</span></p>\n";
+    // One count per verdict, each in an element with id count-VERDICT (the tests read them);
+    // the rarer verdicts only where a case has them.
+    html += "<p class=\"counts\">";
+    for (Verdict v : allVerdicts()) {
+        int n = report.count(v);
+        if (!n && v != Verdict::Pass && v != Verdict::Fail && v != Verdict::Skip) continue;
+        html += "<span>" + std::string(verdictName(v)) + " <b id=\"count-" + verdictName(v) + "\">" + std::to_string(n) +
+                "</b></span>";
+    }
+    html += "<span>of " + std::to_string(report.cases.size()) + " cases" + (report.quick ? " (quick)" : "") +
+            (report.selection.empty() ? "" : " (" + htmlEscape(report.selection) + ")") + "</span></p>\n";
     html += "<table class=\"facts\">\n" + fact("vendor", report.vendor) + fact("renderer", report.renderer) +
             fact("version", report.glVersion) + fact("GLSL", report.glslVersion) + fact("API", report.api) +
             fact("oasis", report.oasisVersion + (report.oasisCommit.empty() ? "" : " (" + report.oasisCommit + ")")) +
-            fact("total time", formatNumber("%.1f s", report.seconds)) + "</table>\n</header>\n";
+            fact("total time", formatNumber("%.1f s", report.seconds)) +
+            fact("cases ran in", report.isolation) +
+            fact("reference set", report.referenceDir.empty() ? "" : report.referenceDir + " (" + report.referenceHash + ")");
+    if (!report.baselineDir.empty()) html += fact("baseline", report.baselineDir);
+    for (const std::string& note : report.notes) html += fact("note", note);
+    html += "</table>\n</header>\n";
     return html;
 }
 
@@ -111,92 +131,119 @@ std::string capabilityTable(const CheckReport& report) {
     return html + "</table>\n";
 }
 
-// Which cases show their images (check_html.h: every failing one, the first few passing ones).
+// Which cases show their images (check_html.h: every case that did not pass or skip, and the
+// first few passing ones).
 std::vector<bool> casesWithImages(const CheckReport& report) {
     std::vector<bool> shown(report.cases.size(), false);
     int passing = 0;
     for (size_t i = 0; i < report.cases.size(); ++i) {
         const CaseResult& c = report.cases[i];
         if (c.result.rgba.empty() || c.verdict == Verdict::Skip) continue;
-        shown[i] = c.verdict == Verdict::Fail || passing++ < kPassingCasesWithImages;
+        shown[i] = c.verdict != Verdict::Pass || passing++ < kPassingCasesWithImages;
     }
     return shown;
 }
 
-std::string numbers(const CaseResult& c) {
-    if (c.verdict == Verdict::Skip) return cell("&mdash;", "number") + cell("&mdash;", "number") + cell("&mdash;", "number");
-    return cell(formatNumber("%.2f", c.psnrDb), "number") + cell(std::to_string(c.maxAbs), "number") +
-           cell(std::to_string(c.pixelsOver), "number");
+// "41.20 dB, 3" (max abs), with the rule under it; a dash where nothing was compared.
+std::string comparison(bool compared, double psnrDb, int maxAbs, long pixelsOver, const std::string& rule) {
+    if (!compared) return "<span class=\"c\">&mdash;</span>";
+    return "<span class=\"c\" title=\"rule " + htmlEscape(rule) + ": " + std::to_string(pixelsOver) +
+           " pixels over its level\">" + formatNumber("%.1f dB", psnrDb) + " &middot; " + std::to_string(maxAbs) + "</span>";
 }
 
-std::string mainPath(const CaseResult& c) {
-    if (!c.mainPathCompared) return cell("&mdash;");
-    return cell("<span class=\"nowrap\">" + formatNumber("%.2f dB,", c.mainPathPsnrDb) + "</span> <span class=\"nowrap\">max abs " +
-                std::to_string(c.mainPathMaxAbs) + ",</span> <span class=\"nowrap\">" + std::to_string(c.mainPathPixelsOver) +
-                " over</span>" +
-                (c.mainPathRule.empty() ? "" : "<div class=\"rule\">" + htmlEscape(c.mainPathRule) + "</div>"));
+// One image as an <img> with its PNG inline, at its own size; nothing where there is none.
+std::string imageFigure(const Image& image, const std::string& cls, const std::string& caption) {
+    std::string png;
+    if (image.rgba.empty() || !encodePng(image, png)) return {};
+    std::string captionClass = cls == "shown" ? " class=\"shown-caption\"" : "";
+    return "<figure><img class=\"frame " + cls + "\" width=\"" + std::to_string(image.width) + "\" height=\"" +
+           std::to_string(image.height) + "\" alt=\"" + caption + "\" src=\"data:image/png;base64," + base64Encode(png) +
+           "\"><figcaption" + captionClass + ">" + caption + "</figcaption></figure>";
 }
 
-std::string divergence(const CaseResult& c) {
-    if (!c.firstDivergence) return cell("&mdash;");
-    const FirstDivergence& d = *c.firstDivergence;
-    return cell(htmlEscape(d.pass) + " &rarr; " + htmlEscape(d.target) + " (" + std::to_string(d.pixels) + " px)");
+// The case's frames: its result, the frame its mask was computed against (what the flip shows in
+// the result's place), the mask beside it, then the other frame.
+std::string caseImages(const CaseResult& c, size_t index) {
+    bool againstMain = c.maskAgainst == "the main path";
+    const Image& compared = againstMain ? c.mainPathImage : c.reference;
+    const Image& other = againstMain ? c.reference : c.mainPathImage;
+    std::string comparedName = againstMain ? "main path" : "reference";
+    std::string html = "<section class=\"case-images\" id=\"images-" + std::to_string(index) + "\">\n<p>" +
+                       verdictSpan(c.verdict) + " <button type=\"button\" onclick=\"flip(this)\">flip: show the " +
+                       comparedName + " here</button> Zoom: <button type=\"button\" onclick=\"zoom(1)\">1&times;</button> "
+                       "<button type=\"button\" onclick=\"zoom(2)\">2&times;</button> "
+                       "<button type=\"button\" onclick=\"zoom(4)\">4&times;</button></p>\n<div class=\"strip\">" +
+                       imageFigure(c.result, "shown", "result") + imageFigure(compared, "reference", comparedName) +
+                       imageFigure(c.errorMask, "mask", "error mask against the " + comparedName) +
+                       imageFigure(other, "other", againstMain ? "reference" : "main path") + "</div>\n</section>\n";
+    return html;
 }
 
-std::string caseTable(const CheckReport& report, const std::vector<bool>& withImages) {
-    std::string html = "<h2>Cases</h2>\n<table>\n<tr><th>case</th><th>verdict</th><th>reason</th><th>PSNR dB</th>"
-                       "<th>max abs</th><th>pixels over</th><th>main path</th><th>first divergence</th>"
-                       "<th>s</th><th>command line</th></tr>\n";
-    for (size_t i = 0; i < report.cases.size(); ++i) {
+std::string detailLine(const char* name, const std::string& html) {
+    return "<tr><th>" + std::string(name) + "</th><td>" + html + "</td></tr>\n";
+}
+
+// What a click on a case's line opens: the reason, the three comparisons, the blame, the first
+// divergence, what its renderer saw, the reproduce line, a crash's output, the images.
+std::string caseDetails(const CaseResult& c, size_t index, bool withImages) {
+    auto numbers = [](bool compared, double psnr, int maxAbs, long over, const std::string& rule) {
+        if (!compared) return std::string("not compared");
+        return formatNumber("%.2f dB", psnr) + ", max abs " + std::to_string(maxAbs) + ", " + std::to_string(over) +
+               " pixels over (rule " + htmlEscape(rule) + ")";
+    };
+    std::string html = "<div class=\"detail\"><table class=\"facts\">\n" + detailLine("reason", htmlEscape(c.reason));
+    html += detailLine("against the reference", numbers(c.referenceCompared, c.psnrDb, c.maxAbs, c.pixelsOver, c.referenceRule));
+    html += detailLine("against its main path",
+                       numbers(c.mainPathCompared, c.mainPathPsnrDb, c.mainPathMaxAbs, c.mainPathPixelsOver, c.mainPathRule));
+    html += detailLine("main path against the reference",
+                       c.mainPathReferenceCompared
+                           ? numbers(true, c.mainPathReferencePsnrDb, c.mainPathReferenceMaxAbs, c.mainPathReferencePixelsOver,
+                                     c.referenceRule) + (c.mainPathMatchesReference ? " &mdash; matches" : " &mdash; differs")
+                           : std::string("not compared"));
+    if (!c.blame.empty()) html += detailLine("blame", htmlEscape(c.blame));
+    if (c.firstDivergence)
+        html += detailLine("first divergence", htmlEscape(c.firstDivergence->pass) + " &rarr; " +
+                                                   htmlEscape(c.firstDivergence->target) + " (" +
+                                                   std::to_string(c.firstDivergence->pixels) + " px)");
+    if (!c.expectation.empty()) html += detailLine("expectation", htmlEscape(c.expectation));
+    if (!c.context.renderer.empty())
+        html += detailLine("context", htmlEscape(c.context.api + " " + c.context.glVersion + ", GLSL " +
+                                                 c.context.glslVersion + ", " + c.context.renderer));
+    html += detailLine("reproduce", "<code class=\"command\">" +
+                                        htmlEscape(c.reproduce.empty() ? renderCommandLine(c.options) : c.reproduce) + "</code>");
+    if (!c.childTail.empty()) html += detailLine("last output", "<pre>" + htmlEscape(c.childTail) + "</pre>");
+    html += "</table>\n";
+    if (withImages) html += caseImages(c, index);
+    return html + "</div>\n";
+}
+
+// One line per case, the cases that need a look first; a click opens the details.
+std::string caseList(const CheckReport& report, const std::vector<bool>& withImages) {
+    std::string html = "<h2>Cases</h2>\n<p class=\"rule\">One line each, the ones that need a look first; click a "
+                       "line for its reason, its three comparisons, its images and the command that draws it. "
+                       "Numbers: PSNR &middot; max abs. <span id=\"images-decoded\"></span></p>\n"
+                       "<div class=\"row head\"><span>verdict</span><span>case</span><span>vs reference</span>"
+                       "<span>vs main path</span><span>blame</span><span class=\"n\">s</span></div>\n";
+    std::vector<size_t> order;
+    for (int pass = 0; pass < 2; ++pass)
+        for (size_t i = 0; i < report.cases.size(); ++i)
+            if ((report.cases[i].verdict == Verdict::Pass || report.cases[i].verdict == Verdict::Skip) == (pass == 1))
+                order.push_back(i);
+    for (size_t i : order) {
         const CaseResult& c = report.cases[i];
         std::string name = htmlEscape(c.name);
         if (withImages[i]) name = "<a href=\"#images-" + std::to_string(i) + "\">" + name + "</a>";
-        std::string reason = htmlEscape(c.reason) +
-                             (c.referenceRule.empty() ? "" : "<div class=\"rule\">" + htmlEscape(c.referenceRule) + "</div>");
-        html += "<tr>" + cell(name, "name") + cell(verdictSpan(c.verdict)) + cell(reason, "reason") + numbers(c) + mainPath(c) +
-                divergence(c) + cell(formatNumber("%.2f", c.seconds), "number") +
-                cell("<code class=\"command\">" + htmlEscape(renderCommandLine(c.options)) + "</code>") + "</tr>\n";
+        html += "<details class=\"case\" id=\"case-" + std::to_string(i) + "\"><summary class=\"row\"><span>" +
+                verdictSpan(c.verdict) + "</span><span class=\"name\">" + name + "</span>" +
+                comparison(c.referenceCompared, c.psnrDb, c.maxAbs, c.pixelsOver, c.referenceRule) +
+                comparison(c.mainPathCompared, c.mainPathPsnrDb, c.mainPathMaxAbs, c.mainPathPixelsOver, c.mainPathRule) +
+                "<span>" + htmlEscape(c.blame.empty() ? "" : c.blame) + "</span><span class=\"n\">" +
+                formatNumber("%.1f", c.seconds) + "</span></summary>\n" + caseDetails(c, i, withImages[i]) + "</details>\n";
     }
-    return html + "</table>\n";
-}
-
-// One image as an <img> with its PNG inline, at its own size; a note where there is none.
-std::string imageFigure(const Image& image, const std::string& cls, const std::string& caption) {
-    std::string png;
-    std::string body;
-    if (image.rgba.empty()) body = "<p>(no image)</p>";
-    else if (!encodePng(image, png)) body = "<p>(the image could not be encoded)</p>";
-    else
-        body = "<img class=\"frame " + cls + "\" width=\"" + std::to_string(image.width) + "\" height=\"" +
-               std::to_string(image.height) + "\" alt=\"" + caption + "\" src=\"data:image/png;base64," + base64Encode(png) +
-               "\">";
-    std::string captionClass = cls == "shown" ? " class=\"shown-caption\"" : "";
-    return "<figure>" + body + "<figcaption" + captionClass + ">" + caption + "</figcaption></figure>";
-}
-
-std::string caseImages(const CaseResult& c, size_t index) {
-    return "<section class=\"case-images\" id=\"images-" + std::to_string(index) + "\">\n<h3>" + verdictSpan(c.verdict) + " " +
-           htmlEscape(c.name) + " <button type=\"button\" onclick=\"flip(this)\">flip: show the reference here</button></h3>\n"
-           "<div class=\"strip\">" + imageFigure(c.result, "shown", "result") + imageFigure(c.reference, "reference", "reference") +
-           imageFigure(c.errorMask, "mask", "error mask") + "</div>\n</section>\n";
-}
-
-// The failing cases' images first (what a reader came for), then the passing ones shown for comparison.
-std::string imageSections(const CheckReport& report, const std::vector<bool>& withImages) {
-    std::string html = "<h2>Images</h2>\n<p>Every failing case, then the first " + std::to_string(kPassingCasesWithImages) +
-                       " passing ones; the others can be rendered again with their command line. "
-                       "Zoom: <button type=\"button\" onclick=\"zoom(1)\">1&times;</button> "
-                       "<button type=\"button\" onclick=\"zoom(2)\">2&times;</button> "
-                       "<button type=\"button\" onclick=\"zoom(4)\">4&times;</button> "
-                       "<span id=\"images-decoded\" class=\"rule\"></span></p>\n";
-    bool any = false;
-    for (Verdict verdict : {Verdict::Fail, Verdict::Pass})
-        for (size_t i = 0; i < report.cases.size(); ++i) {
-            if (!withImages[i] || report.cases[i].verdict != verdict) continue;
-            html += caseImages(report.cases[i], i);
-            any = true;
-        }
-    return any ? html : html + "<p>(no case has images)</p>\n";
+    bool anyImages = false;
+    for (bool shown : withImages) anyImages = anyImages || shown;
+    if (!anyImages) html += "<p>(no case has images)</p>\n";
+    return html;
 }
 
 bool needsShellQuotes(const std::string& word) {
@@ -262,8 +309,8 @@ std::string renderCommandLine(const std::vector<std::string>& options) {
 
 std::string checkReportHtml(const CheckReport& report) {
     std::vector<bool> withImages = casesWithImages(report);
-    return pageHead(report) + summary(report) + capabilityTable(report) + caseTable(report, withImages) +
-           imageSections(report, withImages) + "<script>" + kScript + "</script>\n</body>\n</html>\n";
+    return pageHead(report) + summary(report) + caseList(report, withImages) + capabilityTable(report) + "<script>" +
+           kScript + "</script>\n</body>\n</html>\n";
 }
 
 }  // namespace oasis

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 #include <cstdio>
 #include <stdexcept>
@@ -107,10 +108,11 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
 
 }  // namespace
 
-CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants) {
+CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants, bool quiet) {
     Options options = caseOptions(arguments);
     CaseFrame frame;
-    QuietStderr quiet;
+    std::optional<QuietStderr> quieted;
+    if (quiet) quieted.emplace();
     std::unique_ptr<HeadlessContext> context;
     try {
         context = std::make_unique<HeadlessContext>(maxGlVersionFor(options.scene));
@@ -120,6 +122,8 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
         return frame;
     }
     RenderSession session(options);
+    ContextInfo info = queryContextInfo();
+    frame.context = {info.version, info.glslVersion, info.renderer, session.caps.es ? "OpenGL ES" : "OpenGL"};
     if (std::string why = pathNotTaken(options, session, gpuPlants, frame.limitedBy); !why.empty()) {
         frame.skipReason = why;
         return frame;
@@ -127,10 +131,8 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
     Renderer& renderer = *session.renderer;
     // The renderer's own layout fallback: the case runs on the layout drawn, and says which and why.
     if (renderer.paths().gbufferFellBack) frame.drawnWith = "drawn with gbuffer " + renderer.paths().gbufferReason;
-    renderer.setPipeline(options.pipeline);
-    renderer.renderFrame(session.scene);
     std::FILE* sink = std::fopen("/dev/null", "w");
-    frame.image = renderedViewImage(options, renderer, sink ? sink : stderr);
+    frame.image = renderRequestedImage(options, session, sink ? sink : stderr);
     if (sink) std::fclose(sink);
     frame.provenance = provenanceTexts(pictureProvenance(options, options.view, pipelineName(options.pipeline),
                                                          frame.image.height, frame.image.height));
@@ -138,9 +140,29 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
     return frame;
 }
 
-std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& arguments) {
+CheckReport driverReport(const std::vector<std::string>& arguments) {
     Options options = caseOptions(arguments);
-    QuietStderr quiet;
+    CheckReport report;
+    HeadlessContext context(maxGlVersionFor(options.scene));
+    RenderSession session(options, RenderSession::Shaders::CapabilitiesOnly);
+    const gl::Capabilities& caps = session.caps;
+    // The context's own strings: GL_VENDOR and GL_RENDERER natively; in a browser, whose GL_RENDERER
+    // is masked ("WebKit WebGL"), WEBGL_debug_renderer_info's where it is offered (web_context.cpp).
+    ContextInfo info = queryContextInfo();
+    report.vendor = info.vendor.empty() ? caps.vendor : info.vendor;
+    report.renderer = info.renderer.empty() ? caps.renderer : info.renderer;
+    report.glVersion = caps.version;
+    report.glslVersion = caps.glslVersion;
+    report.api = caps.es ? "OpenGL ES" : "OpenGL";
+    for (const gl::FeatureReport& feature : session.features())
+        report.caps.push_back({feature.name, feature.available, feature.used, feature.reason, feature.limitedBy});
+    return report;
+}
+
+std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& arguments, bool quiet) {
+    Options options = caseOptions(arguments);
+    std::optional<QuietStderr> quieted;
+    if (quiet) quieted.emplace();
     HeadlessContext context(maxGlVersionFor(options.scene));
     RenderSession session(options);
     Renderer& renderer = *session.renderer;

@@ -1,10 +1,12 @@
-// `oasis check` renders each case in this process, each on a context of its own tier: the frame
-// (or the view the case asks for), which paths the session really took and why, and, for a failing
-// case, the frame pass by pass to find where two paths part.
+// How one check case is rendered, on a context of its own tier (natively in a child process of its
+// own: commands/check_runner.h): the frame (or the view the case asks for) exactly as `oasis render`
+// draws it, which paths the session really took and why, and, for a failing case, the frame pass
+// by pass to find where two paths part.
 #pragma once
 #include <string>
 #include <vector>
 
+#include "commands/check_report.h"
 #include "render/image.h"
 #include "render/png_text.h"
 
@@ -13,6 +15,8 @@ struct Capabilities;
 }
 
 namespace oasis {
+
+struct Options;
 
 struct CaseFrame {
     bool rendered = false;
@@ -24,6 +28,7 @@ struct CaseFrame {
     std::string drawnWith;
     Image image;
     std::vector<PngText> provenance;  // what made it (commands/provenance.h), for the PNGs the check writes
+    CaseContext context;  // empty where no context was made
 };
 
 // Renders `oasis render ARGUMENTS` (the final view or the one asked for, no legend) and checks that
@@ -31,7 +36,9 @@ struct CaseFrame {
 // argument forces): a fallback makes it a skip, saying whose limit it was, except the G-buffer
 // layout's, which the renderer takes itself and the frame is judged with (drawnWith). Throws
 // std::runtime_error for a failure that is not a limit (a shader that does not build).
-CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants);
+// `quiet`: the session's report lines go to a scratch file (in the page and in-process; a child's
+// output is its parent's to keep).
+CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants, bool quiet = true);
 
 // The frame after each pass, for every target the views can read (albedo ... final): a name per
 // pass in order and, per pass, each target's values.
@@ -39,7 +46,11 @@ struct PassSnapshot {
     std::string pass;
     std::vector<std::pair<std::string, std::vector<float>>> targets;  // target name, RGBA floats
 };
-std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& arguments);
+std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& arguments, bool quiet = true);
+
+// The driver's strings and capabilities (vendor, renderer, versions, api, caps; nothing else of
+// the report) on the context `oasis caps ARGUMENTS` would make (--api gles, --no-compute).
+CheckReport driverReport(const std::vector<std::string>& arguments);
 
 struct Divergence {
     std::string pass, target;

@@ -38,6 +38,21 @@ std::string caseJson(const CaseResult& c) {
                                      ", \"max_abs\": " + std::to_string(c.mainPathMaxAbs) +
                                      ", \"pixels_over\": " + std::to_string(c.mainPathPixelsOver) + "}"
                                : std::string("null");
+    json += ", \"main_path_against_reference\": ";
+    json += c.mainPathReferenceCompared
+                ? "{\"psnr_db\": " + number(c.mainPathReferencePsnrDb) + ", \"max_abs\": " +
+                      std::to_string(c.mainPathReferenceMaxAbs) + ", \"pixels_over\": " +
+                      std::to_string(c.mainPathReferencePixelsOver) + ", \"pass\": " +
+                      (c.mainPathMatchesReference ? "true" : "false") + "}"
+                : std::string("null");
+    json += ", \"blame\": " + (c.blame.empty() ? std::string("null") : jsonString(c.blame));
+    json += ", \"observed\": " + jsonString(verdictName(c.observed)) + ", \"expectation\": " +
+            (c.expectation.empty() ? std::string("null") : jsonString(c.expectation)) + ", \"runs\": " + std::to_string(c.runs);
+    json += ", \"context\": {\"gl_version\": " + jsonString(c.context.glVersion) + ", \"glsl_version\": " +
+            jsonString(c.context.glslVersion) + ", \"renderer\": " + jsonString(c.context.renderer) + ", \"api\": " +
+            jsonString(c.context.api) + "}";
+    json += ", \"reproduce\": " + jsonString(c.reproduce);
+    json += ", \"child_output\": " + (c.childTail.empty() ? std::string("null") : jsonString(c.childTail));
     json += ", \"first_divergence\": " + divergence + ", \"seconds\": " + number(c.seconds, "%.3f") + "}";
     return json;
 }
@@ -48,9 +63,25 @@ std::string capabilityJson(const CapabilityRow& row) {
            ", \"limited_by\": " + (row.limitedBy.empty() ? std::string("null") : jsonString(row.limitedBy)) + "}";
 }
 
-int count(const CheckReport& report, Verdict verdict) {
-    return int(std::count_if(report.cases.begin(), report.cases.end(),
-                             [&](const CaseResult& c) { return c.verdict == verdict; }));
+// The summary's key of a verdict ("expected-fail" -> "expected_fail").
+std::string summaryKey(Verdict verdict) {
+    std::string key = verdictName(verdict);
+    for (char& c : key)
+        if (c == '-') c = '_';
+    return key;
+}
+
+std::string xmlEscape(const std::string& text) {
+    std::string out;
+    for (unsigned char c : text) {
+        if (c == '&') out += "&amp;";
+        else if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '"') out += "&quot;";
+        else if (c < 0x20 && c != '\n' && c != '\t') out += "?";  // XML 1.0 has no other control characters
+        else out += char(c);
+    }
+    return out;
 }
 
 }  // namespace
@@ -60,19 +91,73 @@ const char* verdictName(Verdict verdict) {
         case Verdict::Pass: return "pass";
         case Verdict::Fail: return "fail";
         case Verdict::Skip: return "skip";
+        case Verdict::Crash: return "crash";
+        case Verdict::Timeout: return "timeout";
+        case Verdict::Flake: return "flake";
+        case Verdict::ExpectedFail: return "expected-fail";
+        case Verdict::UnexpectedPass: return "unexpected-pass";
     }
     return "skip";
 }
 
-int CheckReport::passed() const { return count(*this, Verdict::Pass); }
-int CheckReport::failed() const { return count(*this, Verdict::Fail); }
-int CheckReport::skipped() const { return count(*this, Verdict::Skip); }
+bool unexpected(Verdict verdict) {
+    return verdict == Verdict::Fail || verdict == Verdict::Crash || verdict == Verdict::Timeout ||
+           verdict == Verdict::UnexpectedPass;
+}
+
+const std::vector<Verdict>& allVerdicts() {
+    static const std::vector<Verdict> verdicts = {Verdict::Pass,  Verdict::Fail,         Verdict::Skip,
+                                                  Verdict::Crash, Verdict::Timeout,      Verdict::Flake,
+                                                  Verdict::ExpectedFail, Verdict::UnexpectedPass};
+    return verdicts;
+}
+
+int CheckReport::count(Verdict verdict) const {
+    return int(std::count_if(cases.begin(), cases.end(), [&](const CaseResult& c) { return c.verdict == verdict; }));
+}
+int CheckReport::passed() const { return count(Verdict::Pass); }
+int CheckReport::failed() const {
+    return int(std::count_if(cases.begin(), cases.end(), [](const CaseResult& c) { return unexpected(c.verdict); }));
+}
+int CheckReport::skipped() const { return count(Verdict::Skip); }
+
+std::string checkReportJunit(const CheckReport& report) {
+    std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites>\n<testsuite name=\"oasis-check\" tests=\"" +
+                      std::to_string(report.cases.size()) + "\" failures=\"" + std::to_string(report.failed()) +
+                      "\" skipped=\"" + std::to_string(report.skipped()) + "\" time=\"" + number(report.seconds, "%.3f") +
+                      "\">\n  <properties><property name=\"renderer\" value=\"" + xmlEscape(report.renderer) +
+                      "\"/><property name=\"gl_version\" value=\"" + xmlEscape(report.glVersion) + "\"/></properties>\n";
+    for (const CaseResult& c : report.cases) {
+        xml += "  <testcase classname=\"oasis.check\" name=\"" + xmlEscape(c.name) + "\" time=\"" +
+               number(c.seconds, "%.3f") + "\">";
+        std::string message = std::string(verdictName(c.verdict)) + (c.blame.empty() ? "" : " (blame: " + c.blame + ")") +
+                              ": " + c.reason;
+        if (unexpected(c.verdict))
+            xml += "\n    <failure type=\"" + std::string(verdictName(c.verdict)) + "\" message=\"" + xmlEscape(message) +
+                   "\">" + xmlEscape(message + "\nreproduce: " + c.reproduce +
+                                      (c.childTail.empty() ? "" : "\nlast output:\n" + c.childTail)) + "</failure>\n  ";
+        else if (c.verdict == Verdict::Skip)
+            xml += "<skipped message=\"" + xmlEscape(c.reason) + "\"/>";
+        else if (c.verdict != Verdict::Pass)
+            xml += "<system-out>" + xmlEscape(message) + "</system-out>";
+        xml += "</testcase>\n";
+    }
+    return xml + "</testsuite>\n</testsuites>\n";
+}
 
 std::string checkReportJson(const CheckReport& report) {
-    std::string json = "{\"schema\": \"oasis-check/1\", \"summary\": {\"pass\": " + std::to_string(report.passed()) +
-                       ", \"fail\": " + std::to_string(report.failed()) + ", \"skip\": " + std::to_string(report.skipped()) +
-                       ", \"cases\": " + std::to_string(report.cases.size()) + ", \"quick\": " +
-                       (report.quick ? "true" : "false") + ", \"seconds\": " + number(report.seconds, "%.1f") + "}";
+    std::string json = "{\"schema\": \"oasis-check/1\", \"summary\": {";
+    for (Verdict verdict : allVerdicts()) json += "\"" + summaryKey(verdict) + "\": " + std::to_string(report.count(verdict)) + ", ";
+    json += "\"unexpected\": " + std::to_string(report.failed()) + ", \"cases\": " + std::to_string(report.cases.size()) +
+            ", \"quick\": " + (report.quick ? "true" : "false") + ", \"seconds\": " + number(report.seconds, "%.1f") + "}";
+    json += ", \"run\": {\"isolation\": " + jsonString(report.isolation) + ", \"selection\": " + jsonString(report.selection) +
+            ", \"retries\": " + std::to_string(report.retries) + ", \"case_timeout_s\": " +
+            number(report.caseTimeoutSeconds, "%.1f") + ", \"expectations\": " +
+            (report.expectations.empty() ? std::string("null") : jsonString(report.expectations)) +
+            ", \"notes\": " + stringList(report.notes) + "}";
+    json += ", \"references\": {\"dir\": " + jsonString(report.referenceDir) + ", \"hash\": " +
+            jsonString(report.referenceHash) + ", \"baseline\": " +
+            (report.baselineDir.empty() ? std::string("null") : jsonString(report.baselineDir)) + "}";
     json += ", \"oasis\": {\"version\": " + jsonString(report.oasisVersion) + ", \"commit\": " + jsonString(report.oasisCommit) + "}";
     json += ", \"driver\": {\"vendor\": " + jsonString(report.vendor) + ", \"renderer\": " + jsonString(report.renderer) +
             ", \"version\": " + jsonString(report.glVersion) + ", \"glsl_version\": " + jsonString(report.glslVersion) +

@@ -17,8 +17,19 @@ struct FirstDivergence {
     long pixels = 0;     // pixels of that target above the tolerance's level
 };
 
-enum class Verdict { Pass, Fail, Skip };
-const char* verdictName(Verdict verdict);  // "pass", "fail", "skip"
+// What the case's renderer saw: the context's versions and renderer, the API asked for.
+struct CaseContext {
+    std::string glVersion, glslVersion, renderer, api;  // api: "OpenGL" or "OpenGL ES"
+};
+
+// A case's verdict. Pass, Fail and Skip are judged from its frames; Crash and Timeout say how its
+// child process ended; Flake, ExpectedFail and UnexpectedPass come from --retries and
+// --expectations (deqp-runner's results). Only Fail, Crash, Timeout and UnexpectedPass make the
+// check's exit status 1.
+enum class Verdict { Pass, Fail, Skip, Crash, Timeout, Flake, ExpectedFail, UnexpectedPass };
+const char* verdictName(Verdict verdict);  // "pass", ..., "expected-fail", "unexpected-pass"
+bool unexpected(Verdict verdict);
+const std::vector<Verdict>& allVerdicts();
 
 struct CaseResult {
     std::string name;                  // "deferred-compact-ubo-night", stable across drivers
@@ -36,10 +47,27 @@ struct CaseResult {
     int mainPathMaxAbs = 0;
     long mainPathPixelsOver = 0;
     bool mainPathCompared = false;
+    // The main path against the reference frame (the third comparison: it decides the blame).
+    bool mainPathReferenceCompared = false;
+    double mainPathReferencePsnrDb = 0.0;
+    int mainPathReferenceMaxAbs = 0;
+    long mainPathReferencePixelsOver = 0;
+    bool mainPathMatchesReference = false;
     std::optional<FirstDivergence> firstDivergence;
     double seconds = 0.0;
-    // Kept for the HTML report (not in the JSON): the case's frame, its reference and the error mask.
-    Image result, reference, errorMask;
+    // Who is to blame when it did not pass: "this path", "the main path", "the driver against the
+    // reference", or "" (passed, skipped).
+    std::string blame;
+    Verdict observed = Verdict::Skip;  // what the last run gave, before --expectations and re-runs
+    std::string expectation;           // the --expectations line that matched it, or ""
+    int runs = 0;                      // how often it ran (1 + the re-runs of --retries)
+    CaseContext context;               // what its renderer saw
+    std::string reproduce;             // the `oasis render` command line that draws its frame
+    std::string childTail;             // a crash's or timeout's last lines of output
+    // Kept for the HTML report (not in the JSON): the case's frame, its reference, its main path's
+    // frame, and the error mask with the name of the frame it was computed against.
+    Image result, reference, mainPathImage, errorMask;
+    std::string maskAgainst;  // "the reference frame" or "the main path"
 };
 
 struct CapabilityRow {
@@ -57,12 +85,23 @@ struct CheckReport {
     std::vector<CaseResult> cases;
     bool quick = false;
     double seconds = 0.0;
+    std::string isolation;  // how the cases ran: "child processes", or the page itself
+    std::vector<std::string> notes;  // what the run itself met (a driver report that crashed)
+    std::string referenceDir, referenceHash;  // the reference set used, and its content's hash
+    std::string baselineDir;  // --baseline: this driver's frames, judged identical
+    std::string selection;    // --case / --shard as given, "" for every case of the set
+    std::string expectations;  // the --expectations file, or ""
+    int retries = 0;
+    double caseTimeoutSeconds = 0.0;
+    int count(Verdict verdict) const;
     int passed() const;
-    int failed() const;
+    int failed() const;  // Fail, Crash, Timeout and UnexpectedPass: the unexpected results
     int skipped() const;
 };
 
 // report.json's text (schema: docs/check.md).
 std::string checkReportJson(const CheckReport& report);
+// The JUnit XML of --junit: one testcase per case, a failure with its message and reproduce line.
+std::string checkReportJunit(const CheckReport& report);
 
 }  // namespace oasis

@@ -86,7 +86,11 @@ ChildResult runChild(const std::vector<std::string>& arguments, const std::vecto
         close(pipeEnds[1]);
         if (spawnError == 0) {
             result.timedOut = readUntilClosed(pipeEnds[0], result.output, deadline);
-            if (result.timedOut || heldSignal()) stopChildGroup(pid, result.status);
+            if (result.timedOut || heldSignal()) {
+                stopChildGroup(pid, result.status);
+                // What it said while it was stopped (oasis check's children name the pass they were in).
+                readUntilClosed(pipeEnds[0], result.output, std::chrono::steady_clock::now() + std::chrono::seconds(1));
+            }
             else while (waitpid(pid, &result.status, 0) < 0 && errno == EINTR) {}
         }
         close(pipeEnds[0]);

@@ -358,32 +358,38 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     return stackImages(image, legends.draw(legend, image.width));
 }
 
+Image renderRequestedImage(const Options& options, RenderSession& session, std::FILE* report) {
+    Renderer& renderer = *session.renderer;
+    renderer.setPipeline(options.pipeline);
+    const EncodingErrorView* errorView = findEncodingErrorView(options.view);
+    // The frame is built for what is written (its sink): the view, and the info view whose
+    // SKY flags mask the sky out of its values. A capture keeps the whole frame to inspect;
+    // the encoding-error views and a stopped frame read more and keep it too.
+    if (!errorView && !options.capture) {
+        std::vector<std::string> sink = {options.view};
+        if (const DebugView* view = findDebugView(options.view); view && masksUndrawn(*view)) sink.push_back("info");
+        renderer.views().setSink(sink);
+    }
+    // Shader builds in a frame of their own; the frame after it (captured with --capture) only draws.
+    if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
+    if (options.capture) gl::armCaptures(1);
+    renderer.renderFrame(session.scene, options.stopBefore);
+    if (options.graph) return Image();
+    return errorView ? encodingErrorImage(options, session, *errorView, report) : renderedViewImage(options, renderer, report);
+}
+
 int runRenderCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
         Renderer& renderer = *session.renderer;
-        renderer.setPipeline(options.pipeline);
         const EncodingErrorView* errorView = findEncodingErrorView(options.view);
-        // The frame is built for what is written (its sink): the view, and the info view whose
-        // SKY flags mask the sky out of its values. A capture keeps the whole frame to inspect;
-        // the encoding-error views and a stopped frame read more and keep it too.
-        if (!errorView && !options.capture) {
-            std::vector<std::string> sink = {options.view};
-            if (const DebugView* view = findDebugView(options.view); view && masksUndrawn(*view)) sink.push_back("info");
-            renderer.views().setSink(sink);
-        }
-        // Shader builds in a frame of their own; the frame after it (captured with --capture) only draws.
-        if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
-        if (options.capture) gl::armCaptures(1);
-        renderer.renderFrame(session.scene, options.stopBefore);
+        // Logs go to stderr always: stdout carries only what was asked for (a PNG with --out
+        // /dev/stdout), never a log line (issue 31, defect 8).
+        std::FILE* report = stderr;
+        Image image = renderRequestedImage(options, session, report);
         if (options.graph) {
             std::printf("%s", frameGraphText(renderer.frameGraph()).c_str());
             return 0;
         }
-        // Logs go to stderr always: stdout carries only what was asked for (a PNG with --out
-        // /dev/stdout), never a log line (issue 31, defect 8).
-        std::FILE* report = stderr;
-        Image image = errorView ? encodingErrorImage(options, session, *errorView, report)
-                                : renderedViewImage(options, renderer, report);
         std::string error;
         Provenance provenance = pictureProvenance(options, options.view,
                                                   errorView ? "deferred" : pipelineName(options.pipeline),

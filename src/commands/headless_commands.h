@@ -20,6 +20,13 @@ int runProbeCommand(const Options& options);
 // overlay, and under a single view its legend (with --legend on); `report` gets the value counts.
 Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* report);
 
+// What `oasis render OPTIONS` draws into its PNG, from the session's first frame on: the sink set,
+// the programs built, the frame rendered, the view or encoding-error image made (empty with
+// --graph). `oasis check` renders every case through it, so that a case's reproduce line is the
+// same code.
+struct RenderSession;
+Image renderRequestedImage(const Options& options, RenderSession& session, std::FILE* report);
+
 // The difference image compare writes: the heat map of a against b (render/image.h, full scale 16
 // levels) with a legend strip naming them and giving PSNR, max abs and RMSE. Sizes must agree.
 Image differenceImage(const Image& a, const std::string& aName, const Image& b, const std::string& bName);

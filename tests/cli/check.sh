@@ -3,7 +3,9 @@
 #   quick      --quick on this machine's llvmpipe against the repository's reference frames: exit 0,
 #              report.json with the keys scripts depend on and counts that add up, report.html
 #              opened in chromium-headless-shell showing the same counts, within the 90 s budget
-#   perturbed  a copy of the shaders whose UBO light list returns each light 4x as bright: the full
+#   perturbed  the full check recorded as this driver's baseline, every case's reproduce line drawing its
+#              frame bit for bit, a second run against the baseline passing; then
+#              a copy of the shaders whose UBO light list returns each light 4x as bright: the full
 #              check fails exactly the cases that draw lights through the UBO path into the final
 #              frame (not the far lands, out of the lights' sight) and names for each a pass that adds
 #              or carries the lights; every other case passes; --diff against the clean run lists
@@ -58,8 +60,31 @@ EOF
     fi
     echo "check quick: $(grep "^oasis check: " out.txt | tail -n 1) in $elapsed s" ;;
 perturbed)
-    "$oasis" check --references "$references" --out-dir clean > clean.txt 2> clean.err ||
+    # The clean run records every case's frame (--baseline): each case's reproduce line must draw it
+    # bit for bit; a second run judged against that baseline passes.
+    "$oasis" check --references "$references" --out-dir clean --baseline baseline > clean.txt 2> clean.err ||
         fail "the clean check failed: $(grep -v '^  pass' clean.txt)"
+    python3 - clean/report.json "$oasis" "$(dirname "$0")/../capture/png_max_abs.py" << 'EOF' || fail "a reproduce line"
+import json, os, shlex, subprocess, sys
+report, oasis, compare = json.load(open(sys.argv[1])), sys.argv[2], sys.argv[3]
+os.makedirs("reproduced", exist_ok=True)
+checked = 0
+for c in report["cases"]:
+    assert c["context"]["gl_version"], c["name"]
+    if c["verdict"] == "skip":
+        continue
+    words = shlex.split(c["reproduce"])
+    assert words[:2] == ["oasis", "render"] and words[-1] == c["name"] + ".png", c["reproduce"]
+    subprocess.run([oasis] + words[1:], cwd="reproduced", check=True, stderr=subprocess.DEVNULL)
+    same = subprocess.run([sys.executable, compare, "reproduced/" + c["name"] + ".png", "baseline/" + c["name"] + ".png"],
+                          capture_output=True, text=True)
+    assert same.returncode == 0, (c["name"], c["reproduce"], same.stdout, same.stderr)
+    checked += 1
+assert checked == len([c for c in report["cases"] if c["verdict"] != "skip"]) >= 40, checked
+print("reproduce: %d cases drawn again bit for bit by their reproduce lines" % checked)
+EOF
+    "$oasis" check --references "$references" --baseline baseline --out-dir again > again.txt 2> again.err ||
+        fail "the second run against this driver's baseline: $(grep -v '^  pass' again.txt)"
     cp -r "$shaders" shaders || fail "cannot copy the shaders"
     # The UBO light list only (both of its lightAt() definitions: GLSL 4.00 on and before).
     sed -i 's|PointLight lightAt(int i) { return lightBlocks\[i / LIGHTS_UBO_CAPACITY\].lights\[i % LIGHTS_UBO_CAPACITY\]; }|PointLight lightAt(int i) { PointLight l = lightBlocks[i / LIGHTS_UBO_CAPACITY].lights[i % LIGHTS_UBO_CAPACITY]; l.colourIntensity.w *= 4.0; return l; }|; s|^    return lightBlocks\[0\].lights\[index\];|    PointLight l = lightBlocks[0].lights[index]; l.colourIntensity.w *= 4.0; return l;|' shaders/common/lights.glsl

@@ -111,6 +111,11 @@ const std::vector<Flag>& flags() {
         // Low limits kill the children mid-render (exit 1): the kill path, fuzzed.
         {"--driver-timeout", Value::Number, 0.1, 20},
         {"--quick", Value::None},
+        // check's own (refused by the fuzzed subcommands, which do not include check: it runs minutes)
+        {"--case-timeout", Value::Number, 0.1, 20},
+        {"--jobs", Value::Integer, 1, 4},
+        {"--retries", Value::Integer, 0, 3},
+        {"--shard", Value::Choice, 0, 0, {"1/2", "2/2", "0/1", "3/2", "1/1000"}},
         {"--capture", Value::None},   // exit 1 here: no RenderDoc (tests/capture checks the capture)
         {"--gl-debug", Value::None},
         {"--help", Value::None},

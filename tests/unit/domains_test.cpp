@@ -41,6 +41,9 @@ std::vector<std::string> argumentsFor(const InputDomain& domain, const std::stri
     if (name == "--view-exposure") return {"render", "--view", "radiance", name, text};
     if (name == "--range LO") return {"render", "--view", "depth", "--range", text + ",1e9"};
     if (name == "--range HI") return {"render", "--view", "depth", "--range", "-1e9," + text};
+    if (name == "--shard I") return {"check", "--shard", text + "/1000"};
+    if (name == "--shard N") return {"check", "--shard", "1/" + text};
+    if (name == "--case-timeout" || name == "--jobs" || name == "--retries") return {"check", name, text};
     if (name == "--at X") return {"probe", "--size", "32768x18", "--at", text + ",0"};
     if (name == "--at Y") return {"probe", "--size", "32x32768", "--at", "0," + text};
     return {"render", name, text};
