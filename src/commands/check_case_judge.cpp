@@ -194,6 +194,7 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
         result.observed = run.outcome.end == RunEnd::Crashed ? Verdict::Crash : Verdict::Timeout;
         result.reason = "the case's process " + endedHow(run.outcome);
         result.childTail = run.outcome.tail;
+        result.ended = run.outcome.detail;
         result.blame = "this path";
         return result.observed;
     }
@@ -215,8 +216,10 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
 
     // 1. The case against the reference frame: identical where this very driver drew the reference.
     ReferenceFrame reference = readReferenceFrame(referenceDir_, result.name);
+    // A frame drawn with another G-buffer layout than asked for (drawnWith) is not the reference's
+    // maths, even on its driver: cross-driver then.
     bool sameDriver = reference.readable && !reference.renderer.empty() && reference.renderer == result.context.renderer &&
-                      reference.driverRelease == driverRelease(result.context.glVersion);
+                      reference.driverRelease == driverRelease(result.context.glVersion) && run.frame.drawnWith.empty();
     const ImageRule& referenceRule = imageRule(sameDriver ? "identical" : "cross-driver");
     result.referenceRule = referenceRule.name;
     bool caseMatchesReference = false;

@@ -237,7 +237,8 @@ std::string caseList(const CheckReport& report, const std::vector<bool>& withIma
                 verdictSpan(c.verdict) + "</span><span class=\"name\">" + name + "</span>" +
                 comparison(c.referenceCompared, c.psnrDb, c.maxAbs, c.pixelsOver, c.referenceRule) +
                 comparison(c.mainPathCompared, c.mainPathPsnrDb, c.mainPathMaxAbs, c.mainPathPixelsOver, c.mainPathRule) +
-                "<span>" + htmlEscape(c.blame.empty() ? "" : c.blame) + "</span><span class=\"n\">" +
+                "<span>" + htmlEscape(c.blame) +
+                (c.ended.empty() ? "" : "<div class=\"rule\">" + htmlEscape(c.ended) + "</div>") + "</span><span class=\"n\">" +
                 formatNumber("%.1f", c.seconds) + "</span></summary>\n" + caseDetails(c, i, withImages[i]) + "</details>\n";
     }
     bool anyImages = false;

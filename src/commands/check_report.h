@@ -64,6 +64,7 @@ struct CaseResult {
     CaseContext context;               // what its renderer saw
     std::string reproduce;             // the `oasis render` command line that draws its frame
     std::string childTail;             // a crash's or timeout's last lines of output
+    std::string ended;                 // a crash's or timeout's end: "killed by signal 6 (Aborted) in PlantAtlas"
     // Kept for the HTML report (not in the JSON): the case's frame, its reference, its main path's
     // frame, and the error mask with the name of the frame it was computed against.
     Image result, reference, mainPathImage, errorMask;
