@@ -26,6 +26,7 @@
 #include "commands/check_diff.h"
 #include "commands/check_expectations.h"
 #include "commands/check_html.h"
+#include "commands/check_profile.h"
 #include "commands/check_references.h"
 #include "commands/check_report.h"
 #include "commands/check_runner.h"
@@ -131,10 +132,12 @@ std::string readFile(const std::string& path, bool& ok) {
 
 // The report's files as one set (written whole or not at all): report.json, report.html, the
 // JUnit file if asked for, and for each case that did not pass its frames and error mask.
-int writeCheckReport(const Options& options, const std::string& directory, const CheckReport& report) {
+int writeCheckReport(const Options& options, const std::string& directory, const CheckReport& report,
+                     const std::string& profileFile) {
     std::vector<OutputFile> files = {{directory + "/report.json", checkReportJson(report)},
                                      {directory + "/report.html", checkReportHtml(report)}};
     if (!options.check.junit.empty()) files.push_back({options.check.junit, checkReportJunit(report)});
+    if (!profileFile.empty()) files.push_back({directory + "/workarounds", profileFile});
     for (const CaseResult& c : report.cases) {
         if (c.verdict == Verdict::Pass || c.verdict == Verdict::Skip) continue;
         for (const auto& [suffix, image] : {std::pair{"result", &c.result}, {"reference", &c.reference},
@@ -144,7 +147,7 @@ int writeCheckReport(const Options& options, const std::string& directory, const
             encodePng(*image, files.back().bytes);
         }
     }
-    bool withCases = files.size() > (options.check.junit.empty() ? 2u : 3u);
+    bool withCases = files.size() > 2u + (options.check.junit.empty() ? 0u : 1u) + (profileFile.empty() ? 0u : 1u);
     if (withCases && mkdir((directory + "/cases").c_str(), 0755) != 0 && errno != EEXIST) {
         std::fprintf(stderr, "oasis: cannot write %s/cases: %s\n", directory.c_str(), std::strerror(errno));
         return 1;
@@ -406,6 +409,7 @@ int runCheckCommand(const Options& options) {
             judge.prefetch(cases, jobs);
         }
         std::vector<CaseFrame> frames;
+        std::string profileFile;
         for (size_t i = 0; i < cases.size(); ++i) {
             double elapsed = secondsSince(start);
             std::fprintf(stderr, "oasis check: case %zu of %zu, %s (%s elapsed%s)\n", i + 1, cases.size(),
@@ -418,9 +422,28 @@ int runCheckCommand(const Options& options) {
         // The verdict lines once the blame is settled across the cases (the progress is stderr's).
         judge.settleBlame(report.cases);
         for (const CaseResult& result : report.cases) printCaseLine(result);
+        // What works on this driver: the fallbacks under which nothing that broke breaks.
+        if (report.failed()) {
+            std::fprintf(stderr, "oasis check: looking for the fallbacks under which no case crashes or fails\n");
+            ProposedProfile profile = proposeProfile(judge, options, cases, report.cases);
+            report.profileNeeded = profile.needed;
+            report.profileFound = profile.found;
+            report.profileFallbacks = profile.fallbacks;
+            report.profileWhy = profile.why;
+            report.profileFramesTried = profile.framesTried;
+            if (profile.found) {
+                profileFile = profileFileText(profile, report.renderer, report.glVersion);
+                std::string list;
+                for (const std::string& name : profile.fallbacks) list += (list.empty() ? "" : ",") + name;
+                std::printf("  proposed: --force %s mends every crash and failure (%d frames tried; written to "
+                            "%s/workarounds)\n", list.c_str(), profile.framesTried, directory.c_str());
+            } else if (profile.needed) {
+                std::printf("  proposed: nothing: %s\n", profile.why.c_str());
+            }
+        }
         report.seconds = secondsSince(start);
         if (recordingBaseline && recordBaseline(check.baseline, report, frames) != 0) return 1;
-        return writeCheckReport(options, directory, report);
+        return writeCheckReport(options, directory, report, profileFile);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "oasis: check: %s\n", error.what());
         return 1;

@@ -366,6 +366,31 @@ void CaseJudge::findDivergence(const CheckCase& c, CaseResult& result) {
         result.firstDivergence = FirstDivergence{found.pass, found.target, found.pixels};
 }
 
+bool CaseJudge::frameHolds(const CheckCase& c, const std::vector<std::string>& arguments, std::string& why) {
+    FrameRun run = runner_.frame(arguments, false);
+    if (run.outcome.end != RunEnd::Finished) {
+        why = endedHow(run.outcome);
+        return false;
+    }
+    if (!run.outcome.error.empty()) {
+        why = "did not render: " + run.outcome.error;
+        return false;
+    }
+    if (!run.frame.rendered) {
+        why = "skipped (" + run.frame.skipReason + ")";
+        return true;  // the profile takes the path away: nothing left to go wrong there
+    }
+    ReferenceFrame reference = readReferenceFrame(referenceDir_, c.name());
+    if (!reference.readable || reference.image.width != run.frame.image.width ||
+        reference.image.height != run.frame.image.height) {
+        why = "rendered (no reference to judge it by)";
+        return true;
+    }
+    Judgement j = judge(run.frame.image, reference.image, imageRule("cross-driver"));
+    why = j.pass ? "matches the reference" : "against the reference: " + j.summary;
+    return j.pass;
+}
+
 void CaseJudge::settleBlame(std::vector<CaseResult>& cases) const {
     bool someFallbackMatches = std::any_of(cases.begin(), cases.end(), [](const CaseResult& c) {
         return c.observed == Verdict::Pass && !c.mainPathMatchesReference;

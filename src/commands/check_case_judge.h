@@ -45,6 +45,11 @@ public:
     // Runs and judges one case. `keptFrame`, if given, gets its frame (a baseline being recorded).
     CaseResult run(const CheckCase& c, CaseFrame* keptFrame);
 
+    // Whether the frame of ARGUMENTS renders (or is skipped as a path not taken) without a crash,
+    // a timeout or an error, and matches the case's reference frame by the cross-driver rule:
+    // what a proposed profile must give (commands/check_profile.h). `why` says what it gave.
+    bool frameHolds(const CheckCase& c, const std::vector<std::string>& arguments, std::string& why);
+
     // "the main path" is the blame only where some fallback matched the reference while its main
     // path did not: a driver whose every path misses the reference is "the driver against the
     // reference".

@@ -207,8 +207,9 @@ std::string caseDetails(const CaseResult& c, size_t index, bool withImages) {
                                                    std::to_string(c.firstDivergence->pixels) + " px)");
     if (!c.expectation.empty()) html += detailLine("expectation", htmlEscape(c.expectation));
     if (!c.context.renderer.empty())
-        html += detailLine("context", htmlEscape(c.context.api + " " + c.context.glVersion + ", GLSL " +
-                                                 c.context.glslVersion + ", " + c.context.renderer));
+        html += detailLine("context", htmlEscape((c.context.glVersion.rfind("OpenGL", 0) == 0 ? "" : c.context.api + " ") +
+                                                 c.context.glVersion + "; GLSL " + c.context.glslVersion + "; " +
+                                                 c.context.renderer));
     html += detailLine("reproduce", "<code class=\"command\">" +
                                         htmlEscape(c.reproduce.empty() ? renderCommandLine(c.options) : c.reproduce) + "</code>");
     if (!c.childTail.empty()) html += detailLine("last output", "<pre>" + htmlEscape(c.childTail) + "</pre>");

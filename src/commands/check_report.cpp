@@ -155,6 +155,13 @@ std::string checkReportJson(const CheckReport& report) {
             number(report.caseTimeoutSeconds, "%.1f") + ", \"expectations\": " +
             (report.expectations.empty() ? std::string("null") : jsonString(report.expectations)) +
             ", \"notes\": " + stringList(report.notes) + "}";
+    json += ", \"proposed_workarounds\": ";
+    json += report.profileNeeded ? "{\"found\": " + std::string(report.profileFound ? "true" : "false") +
+                                       ", \"fallbacks\": " + stringList(report.profileFallbacks) +
+                                       ", \"file\": " + (report.profileFound ? jsonString("workarounds") : std::string("null")) +
+                                       ", \"frames_tried\": " + std::to_string(report.profileFramesTried) +
+                                       ", \"why\": " + jsonString(report.profileWhy) + "}"
+                                 : std::string("null");
     json += ", \"references\": {\"dir\": " + jsonString(report.referenceDir) + ", \"hash\": " +
             jsonString(report.referenceHash) + ", \"baseline\": " +
             (report.baselineDir.empty() ? std::string("null") : jsonString(report.baselineDir)) + "}";

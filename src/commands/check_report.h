@@ -90,6 +90,11 @@ struct CheckReport {
     std::vector<std::string> notes;  // what the run itself met (a driver report that crashed)
     std::string referenceDir, referenceHash;  // the reference set used, and its content's hash
     std::string baselineDir;  // --baseline: this driver's frames, judged identical
+    // The profile proposed where cases crashed or failed (commands/check_profile.h).
+    bool profileNeeded = false, profileFound = false;
+    std::vector<std::string> profileFallbacks;
+    std::string profileWhy;
+    int profileFramesTried = 0;
     std::string selection;    // --case / --shard as given, "" for every case of the set
     std::string expectations;  // the --expectations file, or ""
     int retries = 0;
