@@ -67,6 +67,10 @@ CheckOptionParse parseCheckOption(const std::vector<std::string>& arguments, siz
     for (const char* pathFlag : kPathFlags) isPath = isPath || flag == pathFlag;
     bool takesValue = isPath || flag == "--api" || flag == "--case" || flag == "--shard" || flag == "--retries" || flag == "--jobs" ||
                       flag == "--case-timeout" || flag == "--expect-renderer" || flag == "--child";
+    // A word that is not an option is an argument too many (`--diff a b c`), not a scene option.
+    if (!takesValue && (flag.empty() || flag[0] != '-'))
+        return fail("unexpected argument '" + flag + "'" +
+                    (options.diffReports.empty() ? "" : " (--diff takes two reports: --diff A.json B.json)"));
     if (!takesValue)
         return fail("option " + flag + " does not belong to `oasis check` (it sets the scene itself; see oasis "
                     "check --help)");
