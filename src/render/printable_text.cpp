@@ -55,4 +55,18 @@ std::string printableText(const std::string& text) {
     return out;
 }
 
+std::string validUtf8(const std::string& text) {
+    static const char kReplacement[] = "\xEF\xBF\xBD";
+    std::string out;
+    out.reserve(text.size());
+    for (size_t i = 0; i < text.size();) {
+        uint32_t code = 0;
+        size_t length = utf8Sequence(text, i, code);
+        if (length) out.append(text, i, length);
+        else out += kReplacement;
+        i += length ? length : 1;
+    }
+    return out;
+}
+
 }  // namespace oasis

@@ -14,4 +14,8 @@ namespace oasis {
 // kept as it is.
 std::string printableText(const std::string& text);
 
+// `text` with every byte that is not part of valid UTF-8 replaced by U+FFFD (a path in a command
+// line may be in another encoding; a PNG's iTXt and JSON hold UTF-8 only).
+std::string validUtf8(const std::string& text);
+
 }  // namespace oasis
