@@ -60,6 +60,9 @@ check("render: an unknown option", [oasis, "render", "--bogus" + EVIL], want_cod
 check("compare --reference NAME (missing)", [oasis.encode(), b"compare", b"--reference", EVIL_BYTES + b".png"],
       want_code=2)
 
+check("render --out NAME (wrote NAME)", [oasis.encode(), b"render", b"--size", b"32x18", b"--out",
+                                        b"r" + EVIL_BYTES + b".png"], want_code=0)
+
 # A received PNG's provenance: its options (refused, quoted), its renderer and version (printed).
 base = [("oasis:view", b"final"), ("oasis:pipeline", b"deferred"), ("oasis:legend", b"off")]
 with open("bad-options.png", "wb") as f:
