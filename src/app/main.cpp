@@ -67,7 +67,7 @@ int checkStandardOutput(int code) {
     return code == 0 ? 1 : code;
 }
 
-// `oasis serve [--dir DIR] [--port N]` is oasis-serve (src/serve/, built beside oasis): the web
+// `oasis serve [--dir DIR] [--port N] [--host H]` is oasis-serve (src/serve/, built beside oasis): the web
 // build's page server, a program of its own so that serving needs no GL. Returns only when it
 // cannot be started.
 int runServe(char** argv) {
