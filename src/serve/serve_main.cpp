@@ -6,6 +6,7 @@
 // mount point follows symlinks out of the folder, so it is not used.
 #include <httplib.h>
 
+#include <arpa/inet.h>
 #include <fcntl.h>
 #include <limits.h>
 #include <sys/stat.h>
@@ -114,7 +115,14 @@ int main(int argc, char** argv) {
         } else if (a == "--dir" && i + 1 < argc) {
             root = argv[++i];
         } else if (a == "--host" && i + 1 < argc) {
+            // A numeric address only: a name would be looked up (DNS) before the server listens.
             host = argv[++i];
+            unsigned char address[sizeof(in6_addr)];
+            if (inet_pton(AF_INET, host.c_str(), address) != 1 && inet_pton(AF_INET6, host.c_str(), address) != 1) {
+                std::fprintf(stderr, "oasis-serve: --host expects a numeric address (127.0.0.1, 0.0.0.0, ::1), got '%s'\n",
+                             oasis::printableText(host).c_str());
+                return 2;
+            }
         } else {
             return usage(a);
         }
@@ -156,7 +164,8 @@ int main(int argc, char** argv) {
                      std::strerror(errno));
         return 1;
     }
-    std::printf("oasis-serve: http://%s:%d/oasis.html (serving %s)\n", oasis::printableText(host).c_str(), port,
+    const std::string urlHost = host.find(':') == std::string::npos ? host : "[" + host + "]";  // IPv6 in a URL
+    std::printf("oasis-serve: http://%s:%d/oasis.html (serving %s)\n", urlHost.c_str(), port,
                 oasis::printableText(root).c_str());
     std::fflush(stdout);
     return server.listen_after_bind() ? 0 : 1;

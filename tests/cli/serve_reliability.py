@@ -37,6 +37,17 @@ os.mkfifo(os.path.join(www, "fifo"))
 failures, cases = [], 0
 
 port = 20000 + os.getpid() % 1000
+# --host takes a numeric address: anything else is exit 2 before listening (killed after 10 s if not).
+for host in ["nonsense", "127.0.0.1x", ""]:
+    cases += 1
+    try:
+        bad = subprocess.run([oasis, "serve", "--dir", www, "--port", str(port), "--host", host], capture_output=True,
+                             text=True, timeout=10)
+        if bad.returncode != 2 or "--host expects a numeric address" not in bad.stderr:
+            failures.append(f"oasis serve --host {host!r}: exit {bad.returncode}, {bad.stderr.strip()!r}")
+    except subprocess.TimeoutExpired:
+        failures.append(f"oasis serve --host {host!r} was still running after 10 s")
+
 log_path = os.path.join(out, "serve.err")
 log = open(log_path, "wb")
 server = subprocess.Popen([oasis, "serve", "--dir", www, "--port", str(port)], stdout=subprocess.PIPE, stderr=log)
