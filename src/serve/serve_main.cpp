@@ -139,7 +139,9 @@ int main(int argc, char** argv) {
     server.new_task_queue = [] { return new httplib::ThreadPool(kWorkers); };
     server.set_read_timeout(kTimeoutSeconds);
     server.set_write_timeout(kTimeoutSeconds);
-    server.set_keep_alive_timeout(1);
+    // One request per connection: an idle keep-alive connection would hold a worker as a silent
+    // client does; a page load is a few files, each a new connection on loopback.
+    server.set_keep_alive_max_count(1);
     server.set_payload_max_length(0);  // GET and HEAD only: a request has no body to read
     server.Get(".*", [&served](const httplib::Request& request, httplib::Response& response) {
         std::string file = servedFile(served, request.path), body;
