@@ -20,6 +20,7 @@
 #include "context/runtime_dir.h"
 #include "gl/frame_capture.h"
 #include "render/interruption.h"
+#include "render/printable_text.h"
 
 namespace {
 int runCommand(const oasis::Options& options) {
@@ -66,7 +67,7 @@ int checkStandardOutput(int code) {
     return code == 0 ? 1 : code;
 }
 
-// `oasis serve [--dir DIR] [--port N]` is oasis-serve (src/serve/, built beside oasis): the web
+// `oasis serve [--dir DIR] [--port N] [--host H]` is oasis-serve (src/serve/, built beside oasis): the web
 // build's page server, a program of its own so that serving needs no GL. Returns only when it
 // cannot be started.
 int runServe(char** argv) {
@@ -121,10 +122,11 @@ int main(int argc, char** argv) {
     if (argc > 1 && std::string(argv[1]) == "serve") return runServe(argv);
     ParseResult parsed = parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
     if (!parsed.ok) {
-        std::fprintf(stderr, "oasis: %s\n", parsed.error.c_str());
+        // The arguments are echoed in it (a file name may hold any byte): escaped, never raw.
+        std::fprintf(stderr, "oasis: %s\n", printableText(parsed.error).c_str());
         return 2;
     }
-    for (const std::string& note : parsed.notes) std::fprintf(stderr, "oasis: %s\n", note.c_str());
+    for (const std::string& note : parsed.notes) std::fprintf(stderr, "oasis: %s\n", printableText(note).c_str());
     PrivateRuntimeDir runtimeDir;  // before any context: zink's WSI reads XDG_RUNTIME_DIR
     return checkStandardOutput(runParsed(parsed.options));
 }

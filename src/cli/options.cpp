@@ -105,6 +105,11 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (compareOnly && (options.command == Command::Render || options.command == Command::Window ||
                             options.command == Command::Caps || options.command == Command::Probe))
             return fail("option " + flag + " belongs to `oasis compare`, `oasis bench` and the main job");
+        if (flag == "--allow-large") {  // a --reference over 4096 a side (render/png_text.h)
+            if (options.command != Command::Compare) return fail("option --allow-large belongs to `oasis compare --reference`");
+            options.allowLarge = true;
+            continue;
+        }
         if (flag == "--quick") {
             if (options.command != Command::Bench) return fail("option --quick belongs to `oasis bench`");
             options.quick = true;
@@ -289,7 +294,18 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("--stop-before: the " + std::string(pipelineName(options.pipeline)) + " pipeline has no pass '" +
                         options.stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     }
+    if (options.command == Command::Check && !options.help && !options.diffReports.empty()) {
+        // --diff reads two reports and renders nothing: an option of the rendering check would be ignored.
+        for (const char* unused : {"--quick", "--write-references", "--references", "--tables", "--case", "--shard",
+                                   "--jobs", "--case-timeout", "--retries", "--expectations", "--junit",
+                                   "--expect-renderer", "--baseline"})
+            if (std::find(options.givenFlags.begin(), options.givenFlags.end(), unused) != options.givenFlags.end())
+                return fail(std::string("option ") + unused + " does nothing with --diff (it compares two reports "
+                            "and renders nothing): drop one of them");
+    }
     if (options.command == Command::Compare && !options.help) {
+        if (options.allowLarge && options.reference.empty())
+            return fail("option --allow-large belongs to `oasis compare --reference` (it admits a larger reference)");
         if (options.drivers.size() == 2 && !options.reference.empty())
             return fail("compare takes two --driver set-ups, or one --driver and --reference FILE.png, not both");
         if (options.drivers.size() == 1 && options.reference.empty())

@@ -93,6 +93,7 @@ struct Options {
     std::string reference;
     std::vector<std::string> sceneArguments;
     bool sizeGiven = false;  // --size on the command line (else a --reference's size is used)
+    bool allowLarge = false;  // --allow-large: a --reference up to 32768 a side, not 4096 (render/png_text.h)
     // --driver-timeout: a child render still running after this many seconds is killed (exit 1).
     double driverTimeoutSeconds = 300.0;
     bool driverTimeoutGiven = false;

@@ -67,6 +67,8 @@ std::string usage(Command command) {
                    "                            legend strip is exit 2. A PNG without provenance: a warning; without\n"
                    "                            --size, the frame is rendered at the reference's size (a different\n"
                    "                            --size is exit 2)\n"
+                   "  --allow-large             admit a --reference over 4096 pixels a side (up to 32768; without\n"
+                   "                            it a larger one is exit 2 before its pixels are decoded)\n"
                    "  --pipeline forward|deferred  the pipeline of the rendered frames (default deferred)\n"
                    "  --driver-timeout SECONDS  kill a child render (its process group) still running after this\n"
                    "                            long: exit 1 naming the set-up (default 300)\n" + scene;

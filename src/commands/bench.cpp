@@ -25,6 +25,7 @@
 #include "render/file_output.h"
 #include "render/gbuffer_layout.h"
 #include "render/image.h"
+#include "render/printable_text.h"
 
 namespace oasis {
 namespace {
@@ -418,7 +419,7 @@ int runBenchCommand(const Options& options) {
         if (!writeFilesWhole(reports, written, error)) {
             std::fprintf(stderr, "oasis: %s\n", error.c_str());
             for (const std::string& path : written)
-                std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
+                std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", printableText(path).c_str());
             return 1;
         }
         std::fprintf(tableOut, "wrote %s/bench.csv, %s/bench.json, %s/bench.svg, %s/depth_precision.csv in %.0f s\n",

@@ -11,6 +11,8 @@
 
 #include "commands/json_value.h"
 #include "render/file_input.h"
+#include "render/image.h"
+#include "render/printable_text.h"
 
 namespace oasis {
 namespace {
@@ -20,32 +22,67 @@ bool refuse(std::string& error, const std::string& why) {
     return false;
 }
 
-// A member's string, or "" where it is absent, null or not a string (the driver's strings are
+// The most pixels a case can count: a frame of the --size domain's largest side squared.
+constexpr double kMaxCasePixels = 32768.0 * 32768.0;
+
+// A member's string, escaped for the terminal (render/printable_text.h: every string --diff prints
+// came from a file), or "" where it is absent, null or not a string (the driver's strings are
 // informative: a report without them can still be compared).
 std::string stringOf(const JsonValue* object, const char* key) {
     const JsonValue* member = object ? object->find(key) : nullptr;
-    return member && member->isString() ? member->text : "";
+    return member && member->isString() ? printableText(member->text) : "";
 }
 
-// A number-or-null member of a case: true with `present` false for null or absent; false (an error)
-// for any other type.
-bool optionalNumber(const JsonValue& c, const char* key, double& value, bool& present, std::string& error) {
+// A case's string member: absent or null gives "" where `optional`, any other type is an error.
+bool caseString(const JsonValue& c, const char* key, bool optional, std::string& value, std::string& error) {
+    const JsonValue* member = c.find(key);
+    if (member && member->isString()) {
+        value = printableText(member->text);
+        return true;
+    }
+    if (optional && (!member || member->isNull())) return true;
+    error = std::string("\"") + key + "\" is " + (member ? "not a string" : "missing");
+    return false;
+}
+
+// A number-or-null member of a case within [lowest, highest] (an integer where `integer`): true
+// with `present` false for null or absent; false (an error naming the key and why) for any other
+// type or a number out of its range.
+bool optionalNumber(const JsonValue& c, const char* key, double lowest, double highest, bool integer, double& value,
+                    bool& present, std::string& error) {
     const JsonValue* member = c.find(key);
     present = member && member->isNumber();
-    if (present) value = member->number;
     if (member && !member->isNumber() && !member->isNull()) {
         error = std::string("\"") + key + "\" is neither a number nor null";
+        return false;
+    }
+    if (!present) return true;
+    value = member->number;
+    if (!(value >= lowest && value <= highest) || (integer && value != std::floor(value))) {
+        char text[160];
+        std::snprintf(text, sizeof text, "\"%s\" is %.17g: out of its range (%s in %.17g..%.17g)", key, value,
+                      integer ? "an integer" : "a number", lowest, highest);
+        error = text;
         return false;
     }
     return true;
 }
 
-std::string divergenceOf(const JsonValue& c) {
+// A case's first divergence, or "" where absent or null; `error` for a wrong type or range.
+bool divergenceOf(const JsonValue& c, std::string& text, std::string& error) {
     const JsonValue* divergence = c.find("first_divergence");
-    if (!divergence || !divergence->isObject()) return "";
-    const JsonValue* pixels = divergence->find("pixels");
-    return stringOf(divergence, "pass") + "/" + stringOf(divergence, "target") +
-           (pixels && pixels->isNumber() ? ", " + std::to_string(long(pixels->number)) + " pixels" : "");
+    if (!divergence || divergence->isNull()) return true;
+    if (!divergence->isObject()) return refuse(error, "\"first_divergence\" is neither an object nor null");
+    std::string pass, target;
+    double pixels = 0;
+    bool hasPixels = false;
+    if (!caseString(*divergence, "pass", true, pass, error) || !caseString(*divergence, "target", true, target, error) ||
+        !optionalNumber(*divergence, "pixels", 0, kMaxCasePixels, true, pixels, hasPixels, error)) {
+        error = "\"first_divergence\": " + error;
+        return false;
+    }
+    text = pass + "/" + target + (hasPixels ? ", " + std::to_string(long(pixels)) + " pixels" : "");
+    return true;
 }
 
 bool isUnexpected(const std::string& verdict) {
@@ -56,10 +93,10 @@ bool isUnexpected(const std::string& verdict) {
 
 bool readCase(const JsonValue& c, CheckedCase& out, std::string& error) {
     if (!c.isObject()) return refuse(error, "is not an object");
-    out.name = stringOf(&c, "name");
-    out.verdict = stringOf(&c, "verdict");
-    out.reason = stringOf(&c, "reason");
-    if (out.name.empty()) return refuse(error, "has no \"name\" string");
+    if (!caseString(c, "name", false, out.name, error)) return false;
+    if (out.name.empty()) return refuse(error, "has an empty \"name\"");
+    if (!caseString(c, "verdict", false, out.verdict, error) || !caseString(c, "reason", true, out.reason, error))
+        return false;
     bool known = false;
     for (Verdict verdict : allVerdicts()) known = known || out.verdict == verdictName(verdict);
     if (!known) {
@@ -69,14 +106,15 @@ bool readCase(const JsonValue& c, CheckedCase& out, std::string& error) {
     }
     double maxAbs = 0, pixelsOver = 0;
     bool hasPsnr = false, hasMaxAbs = false, hasPixelsOver = false;
-    if (!optionalNumber(c, "psnr_db", out.psnrDb, hasPsnr, error) || !optionalNumber(c, "max_abs", maxAbs, hasMaxAbs, error) ||
-        !optionalNumber(c, "pixels_over", pixelsOver, hasPixelsOver, error))
+    // PSNR of 8-bit images: 0 dB (every channel 255 apart) up to the cap for identical ones.
+    if (!optionalNumber(c, "psnr_db", 0, kPsnrIdentical, false, out.psnrDb, hasPsnr, error) ||
+        !optionalNumber(c, "max_abs", 0, 255, true, maxAbs, hasMaxAbs, error) ||
+        !optionalNumber(c, "pixels_over", 0, kMaxCasePixels, true, pixelsOver, hasPixelsOver, error))
         return false;
     out.hasNumbers = hasPsnr && hasMaxAbs && hasPixelsOver;
     out.maxAbs = long(maxAbs);
     out.pixelsOver = long(pixelsOver);
-    out.firstDivergence = divergenceOf(c);
-    return true;
+    return divergenceOf(c, out.firstDivergence, error);
 }
 
 bool readCases(const JsonValue& cases, CheckRun& run, std::string& error) {
@@ -166,7 +204,7 @@ std::string runHeader(const char* label, const CheckRun& run) {
     for (const std::string& part : {run.vendor, run.glVersion, run.api})
         if (!part.empty()) details += (details.empty() ? "" : "; ") + part;
     std::string oasis = run.oasisVersion + (run.oasisCommit.empty() ? "" : " " + run.oasisCommit);
-    return std::string(label) + ": " + run.path + "\n   " + driver + (details.empty() ? "" : " (" + details + ")") +
+    return std::string(label) + ": " + printableText(run.path) + "\n   " + driver + (details.empty() ? "" : " (" + details + ")") +
            (oasis.empty() ? "" : ", oasis " + oasis) + "\n   pass " + std::to_string(run.count("pass")) + ", fail " +
            std::to_string(run.count("fail")) + ", skip " + std::to_string(run.count("skip")) + "\n";
 }
@@ -186,6 +224,7 @@ bool parseCheckRun(const std::string& json, CheckRun& run, std::string& error) {
     if (!isCheckReport(root)) return refuse(error, "not an oasis check report (no \"schema\": \"oasis-check/N\")");
     const JsonValue* cases = root.find("cases");
     if (!cases || !cases->isArray()) return refuse(error, "not an oasis check report (no \"cases\" list)");
+    if (cases->items.empty()) return refuse(error, "\"cases\" is empty: a check report holds every case it ran");
     const JsonValue* driver = root.find("driver");
     const JsonValue* oasis = root.find("oasis");
     run.vendor = stringOf(driver, "vendor");
@@ -206,7 +245,7 @@ bool readCheckRun(const std::string& path, CheckRun& run, std::string& error) {
     if (!readRegularFile(path, kCheckReportMaxBytes, json, error)) return false;
     run.path = path;
     if (parseCheckRun(json, run, error)) return true;
-    error = path + ": " + error;
+    error = printableText(path) + ": " + error;
     return false;
 }
 

@@ -29,6 +29,7 @@
 #include "render/file_output.h"
 #include "render/image.h"
 #include "render/interruption.h"
+#include "render/printable_text.h"
 
 extern char** environ;
 
@@ -161,7 +162,9 @@ int renderSide(const Options& options, Side& side, const std::vector<std::string
         return 1;
     }
     std::string error;
-    if (!readPng(side.path, side.image, error, &side.bytes)) {
+    PngHeader header;  // a frame rendered here at --size: the --size domain is its limit
+    if (!readPngFile(side.path, side.bytes, header, error, kMaxPngSide) ||
+        !decodePng(side.path, side.bytes, side.image, error, kMaxPngSide)) {
         std::fprintf(stderr, "oasis: %s: %s\n", name.c_str(), error.c_str());
         return 1;
     }
@@ -174,12 +177,12 @@ std::string fileLabel(const std::string& path) {
 }
 
 // 2 after saying so when --size was given and the reference is another size, else 0.
-int referenceSizeRefused(const Options& options, const Image& reference) {
+int referenceSizeRefused(const Options& options, int width, int height) {
     const SceneOptions& scene = options.scene;
-    if (!options.sizeGiven || (reference.width == scene.width && reference.height == scene.height)) return 0;
+    if (!options.sizeGiven || (width == scene.width && height == scene.height)) return 0;
     std::fprintf(stderr, "oasis: --reference %s is %s but --size is %s: give the reference's size, or leave "
                  "--size out to render at the reference's size\n", options.reference.c_str(),
-                 sizeText(reference.width, reference.height).c_str(), sizeText(scene.width, scene.height).c_str());
+                 sizeText(width, height).c_str(), sizeText(scene.width, scene.height).c_str());
     return 2;
 }
 
@@ -201,30 +204,32 @@ std::string valueIn(const std::vector<std::pair<std::string, std::string>>& pair
 // options this oasis cannot read, or that differs from the scene options given, is refused (2,
 // saying why); otherwise `run` gets its options (all of them when no scene option was given, and
 // its pipeline when --pipeline was not) and 0 is returned.
-int adoptReference(const Options& options, const std::string& fileBytes, Side& reference, Options& run) {
-    const char* path = options.reference.c_str();
+int adoptReference(const Options& options, const PngHeader& header, Side& reference, Options& run) {
+    // Every text of the file is printed escaped (render/printable_text.h): it came from outside.
+    const std::string shownPath = printableText(options.reference);
+    const char* path = shownPath.c_str();
     Provenance provenance;
     std::string why;
-    if (!readProvenance(readPngTexts(fileBytes), provenance, why)) {
+    if (!readProvenance(header.texts, provenance, why)) {
         std::fprintf(stderr, "oasis: --reference %s has no oasis provenance: %s; it is compared as it is (its scene "
                      "options, view and legend unchecked)\n", path, why.c_str());
         return 0;
     }
     reference.renderer = provenance.renderer;
-    std::string madeBy = "written by oasis " + provenance.version;
+    std::string madeBy = "written by oasis " + printableText(provenance.version);
     if (provenance.view != "final" || provenance.hasLegend() || !provenance.viewOptions.empty()) {
         std::string what = "--view " + provenance.view + (provenance.viewOptions.empty() ? "" : " " + provenance.viewOptions) +
                            (provenance.hasLegend() ? " with a legend strip under the frame (oasis:legend: " +
                                                          provenance.legend + ")"
                                                    : " without a legend strip");
         std::fprintf(stderr, "oasis: --reference %s is not a frame alone: it is %s; compare --reference compares the "
-                     "final view without a legend, as `oasis render --legend off` writes it\n", path, what.c_str());
+                     "final view without a legend, as `oasis render --legend off` writes it\n", path, printableText(what).c_str());
         return 2;
     }
     PipelineKind pipeline;
     if (!parsePipelineKind(provenance.pipeline, pipeline)) {
         std::fprintf(stderr, "oasis: --reference %s: its oasis:pipeline '%s' is not forward or deferred (%s)\n", path,
-                     provenance.pipeline.c_str(), madeBy.c_str());
+                     printableText(provenance.pipeline).c_str(), madeBy.c_str());
         return 2;
     }
     // Its options read as this oasis reads them: only the picture's options, each known here.
@@ -233,7 +238,7 @@ int adoptReference(const Options& options, const std::string& fileBytes, Side& r
         const SceneArgument* row = findSceneArgument(arguments[k]);
         if (!row || row->kind != SceneArgumentKind::Picture || row->bare) {
             std::fprintf(stderr, "oasis: --reference %s: its oasis:options '%s' hold '%s', not a scene option of this "
-                         "oasis (%s)\n", path, provenance.options.c_str(), arguments[k].c_str(), madeBy.c_str());
+                         "oasis (%s)\n", path, printableText(provenance.options).c_str(), printableText(arguments[k]).c_str(), madeBy.c_str());
             return 2;
         }
     }
@@ -242,17 +247,18 @@ int adoptReference(const Options& options, const std::string& fileBytes, Side& r
     ParseResult parsed = parseCommandLine(renderArguments);
     if (!parsed.ok || std::find(arguments.begin(), arguments.end(), "--size") == arguments.end()) {
         std::fprintf(stderr, "oasis: --reference %s: its oasis:options '%s' cannot be read here: %s (%s)\n", path,
-                     provenance.options.c_str(), parsed.ok ? "no --size" : parsed.error.c_str(), madeBy.c_str());
+                     printableText(provenance.options).c_str(), parsed.ok ? "no --size" : printableText(parsed.error).c_str(), madeBy.c_str());
         return 2;
     }
     const SceneOptions& theirs = parsed.options.scene;
-    if (theirs.width != reference.image.width || theirs.height != reference.image.height) {
+    const int width = int(header.width), height = int(header.height);
+    if (theirs.width != width || theirs.height != height) {
         std::fprintf(stderr, "oasis: --reference %s is %s but its oasis:options say --size %s (%s)\n", path,
-                     sizeText(reference.image.width, reference.image.height).c_str(),
+                     sizeText(width, height).c_str(),
                      sizeText(theirs.width, theirs.height).c_str(), madeBy.c_str());
         return 2;
     }
-    if (int code = referenceSizeRefused(options, reference.image)) return code;
+    if (int code = referenceSizeRefused(options, width, height)) return code;
     // The scene options given here must be the reference's, every one (an option left out is at its
     // default here). --size alone gives nothing new: it was held to the reference's size above.
     bool sceneGiven = false;
@@ -303,10 +309,10 @@ int adoptReference(const Options& options, const std::string& fileBytes, Side& r
     if (!sceneGiven || !options.pipelineGiven)
         std::fprintf(stderr, "oasis: --reference %s: rendering with its options: %s (%s on %s)\n", path,
                      adopted.c_str(), madeBy.c_str(),
-                     provenance.renderer.empty() ? "an unnamed renderer" : provenance.renderer.c_str());
+                     provenance.renderer.empty() ? "an unnamed renderer" : printableText(provenance.renderer).c_str());
     if (!provenance.driverOptions.empty())
         std::fprintf(stderr, "oasis: --reference %s was drawn with %s: driver options are not taken from a reference "
-                     "(each side is drawn with its own set-up's)\n", path, provenance.driverOptions.c_str());
+                     "(each side is drawn with its own set-up's)\n", path, printableText(provenance.driverOptions).c_str());
     return 0;
 }
 
@@ -323,13 +329,20 @@ int runDriverCompare(const Options& given) {
         Side reference(fileLabel(options.reference));
         reference.reference = true;
         reference.path = options.reference;
+        // What the file claims (its size, its provenance) is judged before its pixels are decoded.
         std::string error, bytes;
-        if (!readPng(options.reference, reference.image, error, &bytes)) {
+        PngHeader header;
+        const uint32_t maxSide = given.allowLarge ? kMaxPngSide : kDefaultMaxPngSide;
+        if (!readPngFile(options.reference, bytes, header, error, maxSide)) {
             std::fprintf(stderr, "oasis: --reference: %s\n", error.c_str());
             return 2;
         }
-        if (int code = adoptReference(given, bytes, reference, options)) return code;
-        if (int code = referenceSizeRefused(given, reference.image)) return code;
+        if (int code = adoptReference(given, header, reference, options)) return code;
+        if (int code = referenceSizeRefused(given, int(header.width), int(header.height))) return code;
+        if (!decodePng(options.reference, bytes, reference.image, error, maxSide)) {
+            std::fprintf(stderr, "oasis: --reference: %s\n", error.c_str());
+            return 2;
+        }
         if (!options.sizeGiven) {
             extraArguments = {"--size", sizeText(reference.image.width, reference.image.height)};
             options.scene.width = reference.image.width;
@@ -389,8 +402,8 @@ int runDriverCompare(const Options& given) {
 
     const Side &a = sides[0], &b = sides[1];
     if (a.image.width != b.image.width || a.image.height != b.image.height) {
-        std::fprintf(stderr, "oasis: %s is %s but %s is %s\n", a.label.c_str(),
-                     sizeText(a.image.width, a.image.height).c_str(), b.label.c_str(),
+        std::fprintf(stderr, "oasis: %s is %s but %s is %s\n", printableText(a.label).c_str(),
+                     sizeText(a.image.width, a.image.height).c_str(), printableText(b.label).c_str(),
                      sizeText(b.image.width, b.image.height).c_str());
         return 1;
     }
@@ -416,7 +429,7 @@ int runDriverCompare(const Options& given) {
         std::fprintf(stderr, "oasis: %s\n", error.empty() ? ("cannot write " + differencePath + ": PNG encoding failed").c_str()
                                                             : error.c_str());
         for (const std::string& path : written)
-            std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
+            std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", printableText(path).c_str());
         return 1;
     }
     bool identical = difference.maxAbs == 0;
@@ -443,8 +456,9 @@ int runDriverCompare(const Options& given) {
     std::printf("  %-12s %s\n", "options:", pictureOptions.c_str());
     for (const Side* s : {&a, &b})
         std::printf("  %-12s %s\n", (s->label + ":").c_str(),
-                    s->reference ? ("saved image " + s->path + (s->renderer.empty() ? "" : ", drawn on " + s->renderer)).c_str() : (s->renderer + ", " + s->path).c_str());
-    std::fprintf(stderr, "  wrote %s\n", differencePath.c_str());  // a log line: stderr, as every command's
+                    printableText(s->reference ? "saved image " + s->path + (s->renderer.empty() ? "" : ", drawn on " + s->renderer)
+                                               : s->renderer + ", " + s->path).c_str());
+    std::fprintf(stderr, "  wrote %s\n", printableText(differencePath).c_str());  // a log line: stderr, as every command's
     return 0;
 }
 

@@ -26,6 +26,7 @@
 #include "frame/pixel_probe.h"
 #include "gl/frame_capture.h"
 #include "render/file_output.h"
+#include "render/printable_text.h"
 
 namespace oasis {
 namespace {
@@ -108,14 +109,14 @@ bool writeImages(const std::string& directory, const std::vector<ImageFile>& ima
     for (const ImageFile& image : images) {
         files.push_back({directory + "/" + image.file, {}});
         if (!encodePng(*image.image, files.back().bytes, provenanceTexts(image.provenance))) {
-            std::fprintf(stderr, "oasis: cannot write %s: PNG encoding failed\n", files.back().path.c_str());
+            std::fprintf(stderr, "oasis: cannot write %s: PNG encoding failed\n", printableText(files.back().path).c_str());
             return false;
         }
     }
     if (writeFilesWhole(files, written, error)) return true;
     std::fprintf(stderr, "oasis: %s\n", error.c_str());
     for (const std::string& path : written)
-        std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", path.c_str());
+        std::fprintf(stderr, "oasis: wrote %s before the failure (complete, kept)\n", printableText(path).c_str());
     return false;
 }
 
@@ -398,7 +399,7 @@ int runRenderCommand(const Options& options) {
             std::fprintf(stderr, "oasis: %s\n", error.c_str());
             return 1;
         }
-        std::fprintf(report, "oasis: wrote %s (%s pipeline, view %s, %dx%d)\n", options.out.c_str(),
+        std::fprintf(report, "oasis: wrote %s (%s pipeline, view %s, %dx%d)\n", printableText(options.out).c_str(),
                      pipelineName(options.pipeline), options.view.c_str(), renderer.targets().width(),
                      renderer.targets().height());
         // compare --driver reads this line to tell whether the set-up got the driver it asked for.
@@ -423,7 +424,7 @@ int runCompareCommand(const Options& options) {
             printJson(options, session, c);
         } else {
             printSummary(options, session, c);
-            for (const std::string& path : written) std::fprintf(stderr, "  wrote %s\n", path.c_str());  // a log line
+            for (const std::string& path : written) std::fprintf(stderr, "  wrote %s\n", printableText(path).c_str());  // a log line
         }
         return 0;
     });
@@ -447,7 +448,7 @@ int runMainJob(const Options& options) {
         if (!writeImages(options.outDir, files, written)) return 1;
         if (options.json) printJson(options, session, c);
         else printSummary(options, session, c);
-        for (const std::string& path : written) std::fprintf(report, "  wrote %s\n", path.c_str());
+        for (const std::string& path : written) std::fprintf(report, "  wrote %s\n", printableText(path).c_str());
         return 0;
     });
 }

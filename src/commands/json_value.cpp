@@ -1,278 +1,125 @@
-// The JSON reader (commands/json_value.h): one function per grammar rule of RFC 8259, each reading
-// from the current byte and failing with the byte where the input stopped making sense.
+// The strict JSON reader (commands/json_value.h): nlohmann::json::parse with a callback that sees
+// every key and value as it is read, to refuse a repeated key, too deep a nesting and too many
+// values before the tree grows; then the parsed document copied into JsonValue's tree.
 #include "commands/json_value.h"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdint>
-#include <cstdio>
+#include <nlohmann/json.hpp>
 
-#include "render/decimal_text.h"
+#include <set>
+
+#include "render/printable_text.h"
 
 namespace oasis {
 namespace {
 
-class Parser {
-public:
-    Parser(const std::string& text, int maxDepth, size_t maxValues) : text_(text), maxDepth_(maxDepth), maxValues_(maxValues) {}
+using Json = nlohmann::ordered_json;  // members kept in the file's order
 
-    bool parseDocument(JsonValue& value, std::string& error) {
-        skipSpace();
-        bool ok = parseValue(value, 0);
-        if (ok) {
-            skipSpace();
-            if (at_ < text_.size()) ok = fail("unexpected text after the JSON value");
-        }
-        if (!ok) error = where() + ": " + problem_;
-        return ok;
-    }
-
-private:
-    const std::string& text_;
-    const int maxDepth_;
-    const size_t maxValues_;
-    size_t at_ = 0;
-    size_t values_ = 0;
-    std::string problem_;
-
-    bool fail(const std::string& problem) {
-        problem_ = problem;
-        return false;
-    }
-    bool atEnd() const { return at_ >= text_.size(); }
-    char peek() const { return atEnd() ? '\0' : text_[at_]; }
-    bool consume(char c) {
-        if (atEnd() || text_[at_] != c) return false;
-        ++at_;
-        return true;
-    }
-
-    std::string where() const {
-        long line = 1 + long(std::count(text_.begin(), text_.begin() + long(std::min(at_, text_.size())), '\n'));
-        return "at byte " + std::to_string(at_) + " (line " + std::to_string(line) + ")";
-    }
-
-    // What the parser found instead of what it wanted, in words ("the end of the input", "'x'", "byte 0x01").
-    std::string found() const {
-        if (atEnd()) return "the end of the input";
-        unsigned char c = static_cast<unsigned char>(text_[at_]);
-        if (c < 0x20 || c >= 0x7f) {
-            char hex[8];
-            std::snprintf(hex, sizeof(hex), "0x%02x", c);
-            return std::string("byte ") + hex;
-        }
-        return std::string("'") + char(c) + "'";
-    }
-
-    void skipSpace() {
-        while (!atEnd() && (peek() == ' ' || peek() == '\t' || peek() == '\n' || peek() == '\r')) ++at_;
-    }
-
-    bool parseValue(JsonValue& value, int depth) {
-        if (++values_ > maxValues_) return fail("more than " + std::to_string(maxValues_) + " values");
-        switch (peek()) {
-            case '{': return parseObject(value, depth + 1);
-            case '[': return parseArray(value, depth + 1);
-            case '"': value.kind = JsonValue::Kind::String; return parseString(value.text);
-            case 't': value.kind = JsonValue::Kind::Bool; value.boolean = true; return parseWord("true");
-            case 'f': value.kind = JsonValue::Kind::Bool; value.boolean = false; return parseWord("false");
-            case 'n': value.kind = JsonValue::Kind::Null; return parseWord("null");
-            default:
-                if (peek() == '-' || (peek() >= '0' && peek() <= '9')) return parseNumber(value);
-                return fail("expected a value (object, array, string, number, true, false or null), found " + found());
-        }
-    }
-
-    bool parseWord(const char* word) {
-        std::string expected(word);
-        if (text_.compare(at_, expected.size(), expected) != 0) return fail("expected '" + expected + "', found " + found());
-        at_ += expected.size();
-        return true;
-    }
-
-    bool enter(int depth) {
-        if (depth > maxDepth_) return fail("nesting deeper than " + std::to_string(maxDepth_) + " levels");
-        ++at_;  // the opening bracket
-        skipSpace();
-        return true;
-    }
-
-    bool parseObject(JsonValue& value, int depth) {
-        value.kind = JsonValue::Kind::Object;
-        if (!enter(depth)) return false;
-        if (consume('}')) return true;
-        for (;;) {
-            if (peek() != '"') return fail("expected a member name in double quotes, found " + found());
-            value.members.emplace_back();
-            if (!parseString(value.members.back().first)) return false;
-            skipSpace();
-            if (peek() != ':') return fail("expected ':' after a member name, found " + found());
-            ++at_;
-            skipSpace();
-            if (!parseValue(value.members.back().second, depth)) return false;
-            skipSpace();
-            if (consume('}')) return true;
-            if (peek() != ',') return fail("expected ',' or '}' in an object, found " + found());
-            ++at_;
-            skipSpace();
-        }
-    }
-
-    bool parseArray(JsonValue& value, int depth) {
-        value.kind = JsonValue::Kind::Array;
-        if (!enter(depth)) return false;
-        if (consume(']')) return true;
-        for (;;) {
-            value.items.emplace_back();
-            if (!parseValue(value.items.back(), depth)) return false;
-            skipSpace();
-            if (consume(']')) return true;
-            if (peek() != ',') return fail("expected ',' or ']' in an array, found " + found());
-            ++at_;
-            skipSpace();
-        }
-    }
-
-    // The grammar is checked here (strtod-like readers accept "01", ".5", "1." and "inf"), the value
-    // is converted by parseDecimal (render/decimal_text.h), which ignores the locale.
-    bool parseNumber(JsonValue& value) {
-        size_t start = at_;
-        auto digits = [&] {
-            size_t first = at_;
-            while (!atEnd() && peek() >= '0' && peek() <= '9') ++at_;
-            return at_ > first;
-        };
-        if (peek() == '-') ++at_;
-        if (peek() == '0') ++at_;
-        else if (!digits()) return fail("expected a digit in a number, found " + found());
-        if (peek() == '.') {
-            ++at_;
-            if (!digits()) return fail("expected a digit after the decimal point, found " + found());
-        }
-        if (peek() == 'e' || peek() == 'E') {
-            ++at_;
-            if (peek() == '+' || peek() == '-') ++at_;
-            if (!digits()) return fail("expected a digit in the exponent, found " + found());
-        }
-        if (!atEnd() && peek() >= '0' && peek() <= '9') return fail("a number may not start with 0 followed by digits");
-        if (!parseDecimal(std::string_view(text_).substr(start, at_ - start), value.number)) {
-            std::string number = text_.substr(start, std::min<size_t>(at_ - start, 40));
-            at_ = start;
-            return fail("number " + number + " is out of range");
-        }
-        value.kind = JsonValue::Kind::Number;
-        return true;
-    }
-
-    bool parseHex4(uint32_t& code) {
-        code = 0;
-        for (int i = 0; i < 4; ++i, ++at_) {
-            char c = peek();
-            int digit = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
-            if (digit < 0) return fail("expected four hex digits after \\u, found " + found());
-            code = code * 16 + uint32_t(digit);
-        }
-        return true;
-    }
-
-    // \uXXXX, or a surrogate pair \uD8XX\uDCXX, into its code point.
-    bool parseUnicodeEscape(uint32_t& code) {
-        size_t escapeStart = at_ - 2;  // the backslash
-        if (!parseHex4(code)) return false;
-        auto lone = [&](const char* which) {
-            at_ = escapeStart;
-            return fail(std::string("lone ") + which + " surrogate in a \\u escape (UTF-16 pairs a high one with a low one)");
-        };
-        if (code >= 0xDC00 && code <= 0xDFFF) return lone("low");
-        if (code < 0xD800 || code > 0xDBFF) return true;
-        if (text_.compare(at_, 2, "\\u") != 0) return lone("high");
-        at_ += 2;
-        uint32_t low = 0;
-        if (!parseHex4(low)) return false;
-        if (low < 0xDC00 || low > 0xDFFF) return lone("high");
-        code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);
-        return true;
-    }
-
-    static void appendUtf8(uint32_t code, std::string& out) {
-        if (code < 0x80) {
-            out += char(code);
-        } else if (code < 0x800) {
-            out += char(0xC0 | (code >> 6));
-            out += char(0x80 | (code & 0x3F));
-        } else if (code < 0x10000) {
-            out += char(0xE0 | (code >> 12));
-            out += char(0x80 | ((code >> 6) & 0x3F));
-            out += char(0x80 | (code & 0x3F));
-        } else {
-            out += char(0xF0 | (code >> 18));
-            out += char(0x80 | ((code >> 12) & 0x3F));
-            out += char(0x80 | ((code >> 6) & 0x3F));
-            out += char(0x80 | (code & 0x3F));
-        }
-    }
-
-    bool parseEscape(std::string& out) {
-        ++at_;  // the backslash
-        if (atEnd()) return fail("string not closed before the end of the input");
-        char c = peek();
-        ++at_;
-        switch (c) {
-            case '"': out += '"'; return true;
-            case '\\': out += '\\'; return true;
-            case '/': out += '/'; return true;
-            case 'b': out += '\b'; return true;
-            case 'f': out += '\f'; return true;
-            case 'n': out += '\n'; return true;
-            case 'r': out += '\r'; return true;
-            case 't': out += '\t'; return true;
-            case 'u': {
-                uint32_t code = 0;
-                if (!parseUnicodeEscape(code)) return false;
-                appendUtf8(code, out);
-                return true;
-            }
-            default:
-                --at_;
-                return fail("unknown escape in a string: a backslash followed by " + found());
-        }
-    }
-
-    // Bytes other than escapes are kept as they are: oasis writes UTF-8, and a report's strings are
-    // only printed again.
-    bool parseString(std::string& out) {
-        size_t start = at_;
-        ++at_;  // the opening quote
-        for (;;) {
-            if (atEnd()) {
-                at_ = start;
-                return fail("string not closed before the end of the input");
-            }
-            if (consume('"')) return true;
-            char c = peek();
-            if (static_cast<unsigned char>(c) < 0x20) return fail("control character " + found() + " in a string (it must be escaped)");
-            if (c == '\\') {
-                if (!parseEscape(out)) return false;
-            } else {
-                out += c;
-                ++at_;
-            }
-        }
-    }
+// Thrown by the callback to stop the parse with oasis's reason.
+struct Refusal {
+    std::string why;
 };
+
+// Copies the parsed document (its depth bounded by the callback), refusing a NUL in a string or key.
+bool copyValue(const Json& from, JsonValue& to, std::string& error) {
+    switch (from.type()) {
+        case Json::value_t::null: to.kind = JsonValue::Kind::Null; return true;
+        case Json::value_t::boolean: to.kind = JsonValue::Kind::Bool; to.boolean = from.get<bool>(); return true;
+        case Json::value_t::number_integer:
+        case Json::value_t::number_unsigned:
+        case Json::value_t::number_float: to.kind = JsonValue::Kind::Number; to.number = from.get<double>(); return true;
+        case Json::value_t::string:
+            to.kind = JsonValue::Kind::String;
+            to.text = from.get<std::string>();
+            if (to.text.find('\0') != std::string::npos) {
+                error = "a string holds a NUL (\\u0000): \"" + printableText(to.text) + "\"";
+                return false;
+            }
+            return true;
+        case Json::value_t::array:
+            to.kind = JsonValue::Kind::Array;
+            to.items.resize(from.size());
+            for (size_t i = 0; i < from.size(); ++i)
+                if (!copyValue(from[i], to.items[i], error)) return false;
+            return true;
+        case Json::value_t::object:
+            to.kind = JsonValue::Kind::Object;
+            for (const auto& [key, member] : from.items()) {
+                if (key.find('\0') != std::string::npos) {
+                    error = "a key holds a NUL (\\u0000): \"" + printableText(key) + "\"";
+                    return false;
+                }
+                to.members.emplace_back(key, JsonValue{});
+                if (!copyValue(member, to.members.back().second, error)) return false;
+            }
+            return true;
+        default: error = "a value of a kind JSON text does not hold"; return false;
+    }
+}
+
+// "at byte N (line L)" of nlohmann's byte count (1 past the byte it stopped at).
+std::string where(const std::string& text, size_t byte) {
+    size_t at = byte > 0 ? byte - 1 : 0;
+    size_t line = 1;
+    for (size_t i = 0; i < at && i < text.size(); ++i) line += text[i] == '\n';
+    return "at byte " + std::to_string(at) + " (line " + std::to_string(line) + ")";
+}
 
 }  // namespace
 
 const JsonValue* JsonValue::find(const std::string& key) const {
     if (kind != Kind::Object) return nullptr;
-    for (const auto& [name, member] : members)
-        if (name == key) return &member;
+    for (const auto& member : members)
+        if (member.first == key) return &member.second;
     return nullptr;
 }
 
 bool parseJson(const std::string& text, JsonValue& value, std::string& error, int maxDepth, size_t maxValues) {
-    value = JsonValue();
-    return Parser(text, maxDepth, maxValues).parseDocument(value, error);
+    // One set of keys per object being read (nlohmann keeps the last of a repeated key silently).
+    std::vector<std::set<std::string>> keys;
+    size_t values = 0;
+    auto callback = [&](int depth, Json::parse_event_t event, Json& parsed) {
+        switch (event) {
+            case Json::parse_event_t::object_start:
+            case Json::parse_event_t::array_start:
+                if (depth >= maxDepth) throw Refusal{"nesting deeper than " + std::to_string(maxDepth) + " levels"};
+                if (event == Json::parse_event_t::object_start) keys.emplace_back();
+                break;
+            case Json::parse_event_t::object_end: keys.pop_back(); break;
+            case Json::parse_event_t::key: {
+                const std::string& key = parsed.get_ref<const std::string&>();
+                if (!keys.back().insert(key).second)
+                    throw Refusal{"the key '" + printableText(key) + "' appears twice in one object"};
+                break;
+            }
+            default: break;
+        }
+        bool aValue = event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start ||
+                      event == Json::parse_event_t::value;
+        if (aValue && ++values > maxValues)
+            throw Refusal{"more than " + std::to_string(maxValues) + " values"};
+        return true;
+    };
+    Json document;
+    try {
+        document = Json::parse(text, callback, /*allow_exceptions=*/true, /*ignore_comments=*/false);
+    } catch (const Refusal& refusal) {
+        error = refusal.why;
+        return false;
+    } catch (const Json::parse_error& e) {
+        // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 4: WHAT".
+        std::string what = e.what();
+        size_t colon = what.find(": ");
+        error = where(text, e.byte) + ": " + printableText(colon == std::string::npos ? what : what.substr(colon + 2));
+        return false;
+    } catch (const Json::exception& e) {
+        // A number past a double's range: "[json.exception.out_of_range.406] number overflow parsing '1e400'".
+        std::string what = e.what();
+        size_t bracket = what.find("] ");
+        error = printableText(bracket == std::string::npos ? what : what.substr(bracket + 2));
+        return false;
+    }
+    value = JsonValue{};
+    return copyValue(document, value, error);
 }
 
 }  // namespace oasis

@@ -1,6 +1,7 @@
-// A small JSON reader for oasis's own reports (report.json, read back by `oasis check --diff`):
-// a recursive-descent parser of RFC 8259 JSON into a tree of values. No JSON library is among the
-// Debian packages oasis depends on, and the reports are small, so clarity wins over speed.
+// The one strict JSON reader of oasis (report.json read back by `oasis check --diff`, the web page's
+// arguments): nlohmann's parser (Debian's nlohmann-json3-dev) into a small tree of values, with what
+// RFC 8259 leaves open decided strictly: a key twice in one object, a NUL in a string, nesting
+// deeper than a limit and more values than a limit are errors, not a silent choice.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -23,8 +24,8 @@ struct JsonValue {
     bool isString() const { return kind == Kind::String; }
     bool isObject() const { return kind == Kind::Object; }
     bool isArray() const { return kind == Kind::Array; }
-    // An Object's member named `key` (the first, should the file repeat it); nullptr if there is
-    // none or this is not an Object.
+    // An Object's member named `key` (the parser refuses a key twice); nullptr if there is none or
+    // this is not an Object.
     const JsonValue* find(const std::string& key) const;
 };
 
@@ -36,10 +37,11 @@ constexpr int kJsonMaxDepth = 64;
 constexpr size_t kJsonMaxValues = 1000000;
 
 // Parses `text` whole (one value, surrounded by nothing but white space) into `value`. On bad input
-// returns false with `error` = "at byte N (line L): WHAT", N counted from 0: an unexpected
-// character or end, a bad escape or \u sequence (lone surrogates included), a control character in
-// a string, a malformed or out-of-range number, nesting deeper than `maxDepth`, more than
-// `maxValues` values (arrays, objects and their members each count one), trailing text.
+// returns false with `error` = "at byte N (line L): WHAT" (nlohmann's reason, escaped: it may quote
+// the input) or "the key 'K' appears twice in one object", "a string holds a NUL (\u0000)",
+// "nesting deeper than `maxDepth` levels", "more than `maxValues` values" (arrays, objects and
+// their members each count one). Invalid UTF-8, control characters, bad escapes and lone
+// surrogates, numbers out of a double's range and trailing text are nlohmann's errors.
 bool parseJson(const std::string& text, JsonValue& value, std::string& error, int maxDepth = kJsonMaxDepth,
                size_t maxValues = kJsonMaxValues);
 

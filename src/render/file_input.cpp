@@ -1,5 +1,6 @@
 // Checked file input (render/file_input.h): open without blocking, fstat the open file, then read.
 #include "render/file_input.h"
+#include "render/printable_text.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -12,7 +13,7 @@ namespace oasis {
 namespace {
 
 bool fail(const std::string& path, const std::string& why, std::string& error) {
-    error = "cannot read " + path + ": " + why;
+    error = "cannot read " + printableText(path) + ": " + why;
     return false;
 }
 

@@ -1,5 +1,6 @@
 // Whole-or-nothing file output: stage to a temporary beside the target, check, rename.
 #include "render/file_output.h"
+#include "render/printable_text.h"
 
 #include "render/interruption.h"
 
@@ -30,7 +31,7 @@ struct Staged {
 };
 
 bool fail(const std::string& path, const std::string& why, std::string& error) {
-    error = "cannot write " + path + ": " + why;
+    error = "cannot write " + printableText(path) + ": " + why;
     return false;
 }
 

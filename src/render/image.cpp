@@ -1,12 +1,10 @@
-// Image output (PNG encoded in memory, written whole) and comparison.
+// Image output (PNG encoded in memory through libpng, render/png_text.h, written whole), input and comparison.
 #include "render/image.h"
 
 #include "render/file_input.h"
 #include "render/file_output.h"
+#include "render/printable_text.h"
 
-#include <stb_image.h>
-#include <stb_image_write.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -28,22 +26,18 @@ void Image::flipRows() {
     }
 }
 
-bool encodePng(const Image& image, std::string& png, const std::vector<PngText>& texts) {
-    png.clear();
-    if (image.width < 1 || image.height < 1) return false;
-    auto append = [](void* context, void* data, int size) {
-        static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
-    };
+bool encodePng(const Image& image, std::string& png, const std::vector<PngText>& texts, std::string* why) {
     std::string error;
-    return stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.rgba.data(), image.width * 4) &&
-           !png.empty() && (texts.empty() || insertPngTexts(png, texts, error));
+    bool encoded = encodePngBytes(image.rgba.data(), image.width, image.height, texts, png, error);
+    if (!encoded && why) *why = error;
+    return encoded;
 }
 
 bool writePng(const std::string& path, const Image& image, std::string& error, const std::vector<PngText>& texts) {
-    std::string png;
-    if (!encodePng(image, png, texts)) {
-        error = "cannot write " + path + ": PNG encoding failed (" + std::to_string(image.width) + "x" +
-                std::to_string(image.height) + ")";
+    std::string png, why;
+    if (!encodePng(image, png, texts, &why)) {
+        error = "cannot write " + printableText(path) + ": PNG encoding failed (" + std::to_string(image.width) + "x" +
+                std::to_string(image.height) + ": " + why + ")";
         return false;
     }
     return writeFileWhole(path, png, error);
@@ -51,57 +45,39 @@ bool writePng(const std::string& path, const Image& image, std::string& error, c
 
 namespace {
 
-// What a PNG may be before oasis decodes it: a frame of the --size domain, in a file of bounded size.
+// What a PNG file may be before oasis looks inside: a regular file of bounded size.
 constexpr size_t kMaxPngFileBytes = size_t(256) << 20;
-constexpr uint32_t kMaxPngSide = 32768;
-constexpr uint64_t kMaxPngDecodedBytes = uint64_t(1) << 30;
-
-uint32_t bigEndian32(const std::string& bytes, size_t at) {
-    return uint32_t(uint8_t(bytes[at])) << 24 | uint32_t(uint8_t(bytes[at + 1])) << 16 |
-           uint32_t(uint8_t(bytes[at + 2])) << 8 | uint32_t(uint8_t(bytes[at + 3]));
-}
-
-// The signature and the IHDR chunk (the first 33 bytes): what the file claims to be, checked before
-// its data is read. Empty when it is a PNG oasis will decode, else why not.
-std::string pngHeaderProblem(const std::string& header) {
-    static const char kSignature[] = "\x89PNG\r\n\x1a\n";
-    // stb_image reads JPEG, BMP and more too: a reference must be what oasis writes.
-    if (header.size() < 8 || header.compare(0, 8, kSignature, 8) != 0) return "not a PNG file";
-    if (header.size() < 33 || bigEndian32(header, 8) != 13 || header.compare(12, 4, "IHDR") != 0)
-        return "not a readable PNG (no IHDR header where the format puts it)";
-    uint32_t width = bigEndian32(header, 16), height = bigEndian32(header, 20);
-    if (width < 1 || height < 1 || width > kMaxPngSide || height > kMaxPngSide)
-        return "its header says " + std::to_string(width) + "x" + std::to_string(height) + " pixels; oasis reads 1.." +
-               std::to_string(kMaxPngSide) + " a side";
-    if (uint64_t(width) * height * 4 > kMaxPngDecodedBytes)
-        return "its header says " + std::to_string(width) + "x" + std::to_string(height) +
-               " pixels, more than the 1 GiB of RGBA oasis decodes";
-    return {};
-}
 
 }  // namespace
 
-bool readPng(const std::string& path, Image& image, std::string& error, std::string* fileBytes) {
-    int fd = openRegularFile(path, kMaxPngFileBytes, error);
-    if (fd < 0) return false;
-    std::string bytes;
-    bool read = readUpTo(fd, 33, bytes, path, error);
-    std::string problem = read ? pngHeaderProblem(bytes) : std::string();
-    if (read && problem.empty()) read = readUpTo(fd, kMaxPngFileBytes - bytes.size(), bytes, path, error);
-    close(fd);
-    if (!read) return false;
-    if (!problem.empty()) { error = "cannot read " + path + ": " + problem; return false; }
-    int width = 0, height = 0, channels = 0;
-    stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), int(bytes.size()), &width,
-                                            &height, &channels, 4);
-    if (!pixels) {
-        error = "cannot read " + path + ": not a readable PNG (" + stbi_failure_reason() + ")";
+bool readPngFile(const std::string& path, std::string& bytes, PngHeader& header, std::string& error,
+                 uint32_t maxSide) {
+    if (!readRegularFile(path, kMaxPngFileBytes, bytes, error)) return false;
+    if (!readPngHeader(bytes, header, error, maxSide)) {
+        error = "cannot read " + printableText(path) + ": " + error;
         return false;
     }
-    image = Image(width, height);
-    std::memcpy(image.rgba.data(), pixels, image.rgba.size());
-    stbi_image_free(pixels);
-    if (fileBytes) *fileBytes = std::move(bytes);
+    return true;
+}
+
+bool decodePng(const std::string& path, const std::string& bytes, Image& image, std::string& error, uint32_t maxSide) {
+    std::vector<uint8_t> rgba;
+    uint32_t width = 0, height = 0;
+    if (!decodePngBytes(bytes, rgba, width, height, error, maxSide)) {
+        error = "cannot read " + printableText(path) + ": " + error;
+        return false;
+    }
+    image.width = int(width);
+    image.height = int(height);
+    image.rgba = std::move(rgba);
+    return true;
+}
+
+bool readPng(const std::string& path, Image& image, std::string& error, PngTexts* texts, uint32_t maxSide) {
+    std::string bytes;
+    PngHeader header;
+    if (!readPngFile(path, bytes, header, error, maxSide) || !decodePng(path, bytes, image, error, maxSide)) return false;
+    if (texts) *texts = std::move(header.texts);
     return true;
 }
 

@@ -21,21 +21,29 @@ struct Image {
     void flipRows();
 };
 
-// The PNG file's bytes, encoded in memory, with `texts` as text chunks after the header
-// (render/png_text.h); false if the encoder fails (no memory, an empty image) or a text cannot be
-// a chunk (a bad keyword, over kMaxPngTextBytes).
-bool encodePng(const Image& image, std::string& png, const std::vector<PngText>& texts = {});
+// The PNG file's bytes, encoded in memory by libpng, with `texts` as iTXt chunks before the image
+// data (render/png_text.h); false, with `why` if given, if the encoder fails (no memory, an empty
+// image) or a text cannot be a chunk (a bad keyword, over kMaxPngTextBytes).
+bool encodePng(const Image& image, std::string& png, const std::vector<PngText>& texts = {}, std::string* why = nullptr);
 
 // Writes a PNG (with `texts`, as encodePng) whole or not at all (render/file_output.h); on failure
 // returns false and `error` says "cannot write PATH: REASON".
 bool writePng(const std::string& path, const Image& image, std::string& error, const std::vector<PngText>& texts = {});
 
-// Reads a PNG file (any bit depth or channel count; converted to 8-bit RGBA, alpha 255 where it
-// has none). The file is checked before it is read (render/file_input.h: a regular file of at most
-// 256 MiB) and its signature and header before its data (1..32768 pixels a side). False with
-// `error` saying "cannot read PATH: REASON" if it is missing, unreadable, not such a file or not a
-// PNG. `fileBytes`, if given, gets the file as it was read (readPngTexts finds its text chunks).
-bool readPng(const std::string& path, Image& image, std::string& error, std::string* fileBytes = nullptr);
+// Reading is two steps, so that a caller judges what a file claims before paying for its pixels:
+// readPngFile reads the file (render/file_input.h: a regular file of at most 256 MiB) and its
+// header and text chunks (render/png_text.h: at most `maxSide` pixels a side, 4096 unless the
+// caller was given --allow-large); decodePng then decodes its pixels (any bit depth or channel
+// count, to 8-bit RGBA, alpha 255 where it has none). Each is false with `error` saying "cannot
+// read PATH: REASON" (the path escaped, render/printable_text.h) when the file is missing, not a
+// regular file, not a PNG, cut, fails a CRC or is over the limits.
+bool readPngFile(const std::string& path, std::string& bytes, PngHeader& header, std::string& error,
+                 uint32_t maxSide = kDefaultMaxPngSide);
+bool decodePng(const std::string& path, const std::string& bytes, Image& image, std::string& error,
+               uint32_t maxSide = kDefaultMaxPngSide);
+// Both steps; `texts`, if given, gets the file's text chunks.
+bool readPng(const std::string& path, Image& image, std::string& error, PngTexts* texts = nullptr,
+             uint32_t maxSide = kDefaultMaxPngSide);
 
 // PSNR is capped at kPsnrIdentical (identical images have infinite PSNR).
 constexpr double kPsnrIdentical = 100.0;

@@ -1,11 +1,16 @@
-// PNG text chunks: written into encoded PNG bytes (iTXt, uncompressed UTF-8) and read back from
-// them (tEXt and uncompressed iTXt), with PNG's CRC-32. oasis keeps its provenance there
-// (commands/provenance.h); decoders that do not know the chunks skip them.
+// PNG files: encoding with text chunks (iTXt, uncompressed UTF-8) and reading in two steps, the
+// header and text chunks first (what the file claims to be, its size and oasis's provenance,
+// commands/provenance.h), the pixels only after the caller has judged those. Natively libpng does
+// it (Debian's libpng-dev, render/png_libpng.cpp): it checks every chunk's CRC and, with the limits
+// set there, refuses a file whose header or chunks would need more memory than oasis allows before
+// it allocates any. The web build's own is src/web/web_png.cpp.
 #pragma once
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "render/printable_text.h"  // validUtf8: iTXt holds UTF-8 only
 
 namespace oasis {
 
@@ -18,35 +23,50 @@ struct PngText {
 constexpr size_t kMaxPngTexts = 64;
 constexpr size_t kMaxPngTextBytes = size_t(64) << 10;
 
-// CRC-32 as PNG (and zlib) compute it: polynomial 0xEDB88320 (reflected), initial and final value
-// 0xFFFFFFFF. `crc` continues an earlier call's result over more bytes.
-uint32_t crc32(const void* data, size_t size, uint32_t crc = 0);
-
 // Whether `keyword` is one PNG allows (the rule above); `why` says what is wrong otherwise.
 bool validPngKeyword(const std::string& keyword, std::string* why = nullptr);
 
-// `text` with every byte that is not part of valid UTF-8 replaced by U+FFFD (a path in a command
-// line may be in another encoding; iTXt holds UTF-8 only).
-std::string validUtf8(const std::string& text);
+// The PNG file's bytes for `width` x `height` 8-bit RGBA pixels (top row first), with one iTXt chunk
+// per text before the image data. False with `error` when a text's keyword is not valid, a text
+// exceeds kMaxPngTextBytes or libpng fails.
+bool encodePngBytes(const uint8_t* rgba, int width, int height, const std::vector<PngText>& texts, std::string& png,
+                    std::string& error);
 
-// One whole iTXt chunk (length, type, data, CRC) holding `text` uncompressed, with no language tag.
-// False with `error` when the keyword is not valid or the data would exceed kMaxPngTextBytes.
-bool pngTextChunk(const PngText& text, std::string& chunk, std::string& error);
-
-// Inserts one iTXt chunk per entry right after the IHDR chunk of the PNG bytes `png` (where the
-// format lets text chunks describe the image before its data). False with `error`, `png` as it
-// was, when `png` does not start with a signature and an IHDR chunk or a chunk cannot be made.
-bool insertPngTexts(std::string& png, const std::vector<PngText>& texts, std::string& error);
-
-// The text chunks of PNG bytes, in file order, and what was left out and why ("a tEXt chunk at
-// byte 33 fails its CRC", "a zTXt chunk (compressed) ...", "the chunk at byte N runs past the
-// end of the file"). Never throws: malformed input gives fewer texts and more reasons. A keyword
+// The text chunks of PNG bytes, in file order, and what was left out and why (a chunk that fails
+// its CRC, a compressed zTXt, past kMaxPngTexts, a repeated keyword: the first is kept). A keyword
 // that appears again is ignored after its first chunk, so a text has one value.
 struct PngTexts {
     std::vector<PngText> texts;
     std::vector<std::string> ignored;
     const PngText* find(const std::string& keyword) const;  // null when absent
 };
+
+// What the file says of itself before its pixels: its size and the text chunks before its image data.
+struct PngHeader {
+    uint32_t width = 0, height = 0;
+    PngTexts texts;
+};
+
+// The largest picture oasis decodes unless told otherwise (a reference this size renders for
+// minutes on llvmpipe), and the most it ever decodes (the --size domain, 1..32768 a side, and at
+// most 1 GiB of RGBA).
+constexpr uint32_t kDefaultMaxPngSide = 4096;
+constexpr uint32_t kMaxPngSide = 32768;
+constexpr uint64_t kMaxPngDecodedBytes = uint64_t(1) << 30;
+
+// Reads the signature, the header and every chunk before the image data of PNG bytes, decoding no
+// pixel. False with `error` (never empty: "not a PNG file", "its header says 16384x16384 pixels;
+// ...", "IHDR: CRC error", "the file ends inside its header") when they cannot be read or the
+// picture is larger than `maxSide` a side or the decoded-bytes cap.
+bool readPngHeader(const std::string& png, PngHeader& header, std::string& error, uint32_t maxSide = kDefaultMaxPngSide);
+// The texts alone (readPngHeader with the largest limits); a file that cannot be read gives no texts
+// and the reason among `ignored`.
 PngTexts readPngTexts(const std::string& png);
+
+// Decodes PNG bytes (any bit depth or colour type) to 8-bit RGBA, alpha 255 where it has none, after
+// the same checks as readPngHeader. False with `error` (never empty) on a bad CRC, cut data, a
+// picture over the limits.
+bool decodePngBytes(const std::string& png, std::vector<uint8_t>& rgba, uint32_t& width, uint32_t& height,
+                    std::string& error, uint32_t maxSide = kDefaultMaxPngSide);
 
 }  // namespace oasis

@@ -108,6 +108,7 @@ const std::vector<Flag>& flags() {
         // compare's set-ups: the fast llvmpipe ones (zink and softpipe cost seconds a case).
         {"--driver", Value::Choice, 0, 0, {"llvmpipe", "no-ssbo", "gl33", "no-dsa"}},
         {"--reference", Value::OutFile},  // mostly missing files: the parse and read errors
+        {"--allow-large", Value::None},  // compare --reference's: refused (exit 2) without --reference
         // Low limits kill the children mid-render (exit 1): the kill path, fuzzed.
         {"--driver-timeout", Value::Number, 0.1, 20},
         {"--quick", Value::None},

@@ -145,7 +145,7 @@ TEST(CheckDiff, RefusesWhatIsNotACheckReport) {
     EXPECT_FALSE(parseCheckRun("{\"schema\": \"oasis-check/1\", \"cases\": [{\"name\": \"a\", \"verdict\": \"maybe\"}]}", run, error));
     EXPECT_NE(error.find("case 1 (a) has verdict \"maybe\""), std::string::npos) << error;
     EXPECT_FALSE(parseCheckRun("{\"schema\": \"oasis-check/1\", \"cases\": [{\"verdict\": \"pass\"}]}", run, error));
-    EXPECT_NE(error.find("case 1 has no \"name\""), std::string::npos) << error;
+    EXPECT_NE(error.find("case 1 \"name\" is missing"), std::string::npos) << error;
     EXPECT_FALSE(parseCheckRun("{\"schema\": \"oasis-check/1\", \"cases\": [{\"name\": \"a\", \"verdict\": \"pass\", "
                                "\"psnr_db\": \"40\"}]}", run, error));
     EXPECT_NE(error.find("\"psnr_db\" is neither a number nor null"), std::string::npos) << error;
@@ -153,6 +153,49 @@ TEST(CheckDiff, RefusesWhatIsNotACheckReport) {
     twice.cases.push_back(twice.cases[0]);
     EXPECT_FALSE(parseCheckRun(checkReportJson(twice), run, error));
     EXPECT_NE(error.find("case regressed appears twice"), std::string::npos) << error;
+}
+
+// Issue 42, defect 6: numbers out of their field's range, wrong types, a key twice, a NUL and no
+// cases are exit 2 naming the key and why; strings reach the printed text escaped.
+TEST(CheckDiff, RefusesOutOfRangeNumbersWrongTypesAndNoCases) {
+    auto report = [](const std::string& fields) {
+        return "{\"schema\": \"oasis-check/1\", \"cases\": [{\"name\": \"a\", \"verdict\": \"pass\"" + fields + "}]}";
+    };
+    const std::pair<const char*, const char*> bad[] = {
+        {", \"max_abs\": 1e300", "\"max_abs\" is 1.0000000000000001e+300: out of its range (an integer in 0..255)"},
+        {", \"max_abs\": -1", "\"max_abs\" is -1: out of its range"},
+        {", \"max_abs\": 2.5", "\"max_abs\" is 2.5: out of its range (an integer"},
+        {", \"pixels_over\": -3", "\"pixels_over\" is -3: out of its range"},
+        {", \"pixels_over\": 0.5", "\"pixels_over\" is 0.5"},
+        {", \"psnr_db\": -1", "\"psnr_db\" is -1: out of its range (a number in 0..100)"},
+        {", \"psnr_db\": 1e300", "\"psnr_db\" is 1.0000000000000001e+300"},
+        {", \"reason\": 5", "\"reason\" is not a string"},
+        {", \"first_divergence\": {\"pixels\": -5}", "\"first_divergence\": \"pixels\" is -5"},
+        {", \"first_divergence\": 3", "\"first_divergence\" is neither an object nor null"},
+        {", \"verdict\": \"fail\"", "the key 'verdict' appears twice"},
+        {", \"reason\": \"a\\u0000b\"", "a string holds a NUL"},
+    };
+    CheckRun run;
+    std::string error;
+    for (const auto& [fields, why] : bad) {
+        EXPECT_FALSE(parseCheckRun(report(fields), run, error)) << fields;
+        EXPECT_NE(error.find(why), std::string::npos) << fields << " -> " << error;
+    }
+    EXPECT_TRUE(parseCheckRun(report(", \"max_abs\": 255, \"pixels_over\": 0, \"psnr_db\": 100"), run, error)) << error;
+    EXPECT_FALSE(parseCheckRun("{\"schema\": \"oasis-check/1\", \"cases\": []}", run, error));
+    EXPECT_NE(error.find("\"cases\" is empty"), std::string::npos) << error;
+    EXPECT_FALSE(parseCheckRun("{\"schema\": \"oasis-check/1\", \"cases\": [{\"name\": 3, \"verdict\": \"pass\"}]}", run, error));
+    EXPECT_NE(error.find("\"name\" is not a string"), std::string::npos) << error;
+
+    CheckReport a = before(), b = after();
+    b.cases[0].name = "regressed";
+    b.cases[0].reason = "fake\x1b[1A\x1b[2Kline\rover\x7f";
+    b.renderer = "evil\x1b]0;title\x07";
+    CheckRun runA = runOf(a, "a.json"), runB = runOf(b, "b\x1b[2J.json");
+    std::string text = checkDiffText(runA, runB, diffCheckRuns(runA, runB));
+    for (char raw : {'\x1b', '\r', '\x7f', '\x07'}) EXPECT_EQ(text.find(raw), std::string::npos) << text;
+    EXPECT_NE(text.find("fake\\u001B[1A\\u001B[2Kline\\rover\\u007F"), std::string::npos) << text;
+    EXPECT_NE(text.find("evil\\u001B]0;title\\u0007"), std::string::npos) << text;
 }
 
 std::string writeFile(const std::string& name, const std::string& text) {
