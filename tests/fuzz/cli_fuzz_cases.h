@@ -93,6 +93,8 @@ const std::vector<Flag>& flags() {
         {"--out-dir", Value::OutDir},
         {"--json", Value::None},
         {"--frames", Value::Integer, 1, 3},  // more frames only cost time: the extremes test the domain
+        {"--seed", Value::Integer, 0, 999999},
+        {"--until-ci", Value::Number, 20, 50},  // a tight target only costs rounds (up to 200): kept loose
         {"--passes", Value::None},
         {"--graph", Value::None},  // render: the frame's passes on stdout, no image
         {"--shading", Value::None},  // probe: the lighting's terms
@@ -274,7 +276,9 @@ std::vector<Args> sweepCases() {
     for (const Flag& flag : flags()) {
         if (flag.value != Value::Number && flag.value != Value::Integer) continue;
         const std::string name = flag.name;
-        std::string sub = name == "--frames" || name == "--driver-timeout" ? "compare" : "render";
+        std::string sub = name == "--frames" || name == "--seed" || name == "--until-ci" || name == "--driver-timeout"
+                              ? "compare"
+                              : "render";
         for (const std::string& value : kSweepNumbers) {
             Args args = {sub, flag.name, value, "--size", "32x18"};
             if (sub == "compare") args.insert(args.end(), {"--out-dir", "out"});
