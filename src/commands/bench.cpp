@@ -414,6 +414,13 @@ int runBenchCommand(const Options& options) {
         std::fprintf(tableOut, "ms med, 95%% interval, CV: the timed frames of every fixed frame together, the interval from "
                                "their order statistics (stats/timing_stats.h); pareto: a row is off its frontier only when "
                                "another's whole interval lies at or below its own, with no more error\n");
+        auto fewest = std::min_element(results.begin(), results.end(), [](const BenchResult& a, const BenchResult& b) {
+            return a.ms.confidence < b.ms.confidence;
+        });
+        if (fewest != results.end() && fewest->ms.confidence < kIntervalConfidence)
+            std::fprintf(tableOut, "*: from %d timed frames the interval is their range, which holds the median with %.0f%% "
+                                   "confidence only (95%% from %d frames: more --frames)\n",
+                         fewest->ms.count, 100.0 * fewest->ms.confidence, kMinRoundsForInterval);
         // The bench's B/px and compare's "bytes/pixel" count different targets (issue 44, item 7).
         std::fprintf(tableOut, "B/px: every target the frame writes (the G-buffer with its depth-stencil for deferred, the "
                                "depth-stencil for forward, plus radiance, reflection and final: bench.json's "

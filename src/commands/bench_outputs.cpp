@@ -45,7 +45,8 @@ std::string tableText(const std::vector<BenchResult>& results) {
         std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-*s %-*s %8.2f %-19s %5.1f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %8.1f %s\n",
                       sizeName(c.width, c.height).c_str(), c.lights, pipelineName(c.pipeline), layoutWidth,
                       layoutLabel(c).c_str(), variationWidth, r.variation.c_str(), r.msMedian,
-                      intervalText(r.ms.low, r.ms.high).c_str(), 100.0 * r.ms.cv, r.msOverFloor(), r.psnrDb, r.rmse,
+                      (intervalText(r.ms.low, r.ms.high) + (r.ms.confidence < kIntervalConfidence ? "*" : "")).c_str(),
+                      100.0 * r.ms.cv, r.msOverFloor(), r.psnrDb, r.rmse,
                       r.maxAbs, r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, r.trafficBytesPerPixel, pareto);
         text += line;
     }

@@ -138,7 +138,7 @@ std::vector<ImageFile> comparisonFiles(const Options& options, const Comparison&
 void printSummary(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
     const FrameSetup& frame = session.renderer->lastFrame();
-    std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel with its depth), depth %s, time %.2f s (%.2f h), on %s\n",
+    std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel: G-buffer and depth-stencil; bench's B/px adds the other targets), depth %s, time %.2f s (%.2f h), on %s\n",
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()),
                 session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, frame.hour,
@@ -154,8 +154,11 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     for (const auto& [pipeline, passes, traffic] :
          {std::tuple{"forward", &c.forwardPassStats, &c.forwardTraffic}, {"deferred", &c.deferredPassStats, &c.deferredTraffic}}) {
         if (passes->empty()) continue;
-        std::printf("  %s per pass (median ms and its 95%% interval over %d frames, %s)%s:\n", pipeline,
-                    passes->front().second.count, c.clock.gpuTimers ? "GPU timer queries" : "wall time, glFinish after each",
+        int frames = passes->front().second.count;
+        std::string interval = frames >= kMinRoundsForInterval ? "its 95% interval" : "the frames' range (no 95% interval under " +
+                               std::to_string(kMinRoundsForInterval) + ")";
+        std::printf("  %s per pass (median ms and %s over %d frames, %s)%s:\n", pipeline, interval.c_str(), frames,
+                    c.clock.gpuTimers ? "GPU timer queries" : "wall time, glFinish after each",
                     traffic->measured() ? trafficColumnsHeader().c_str() : "");
         for (const auto& [name, stats] : *passes)
             std::printf("    %-30s %7.2f %-17s%s\n", name.c_str(), stats.median, intervalText(stats.low, stats.high).c_str(),
@@ -234,7 +237,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     std::printf("\"pixels_differing\": %s, ", c.differing.json().c_str());
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"forward_floor_ratio\": %.4f, \"deferred_floor_ratio\": %.4f, "
-                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s%s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s%s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, \"gbuffer_bytes_per_pixel\": %d, "
                 "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
@@ -245,7 +248,8 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
                 c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(), timesStatsJson(c.times).c_str(),
                 targets.width(), targets.height(), targets.layout().name.c_str(),
-                gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
+                gbufferBytesPerPixel(targets.layout(), targets.depth()), gbufferBytesPerPixel(targets.layout(), targets.depth()),
+                targets.depth().name.c_str(),
                 session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, c.times.rounds, info.renderer.c_str(),
                 stencilViewPathName(session.renderer->views().stencilPath()), session.shaders->directory().c_str(),
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
@@ -392,6 +396,11 @@ int runRenderCommand(const Options& options) {
         if (options.capture) gl::armCaptures(1);
         renderer.renderFrame(session.scene, options.stopBefore);
         if (options.graph) {
+            // The header names the pipeline: one frame is printed, the other is --pipeline's other value.
+            std::printf("# the %s pipeline's frame, %dx%d, built for view %s (--pipeline %s prints the other)\n",
+                        pipelineName(options.pipeline), renderer.targets().width(), renderer.targets().height(),
+                        options.view.c_str(),
+                        options.pipeline == PipelineKind::Forward ? "deferred" : "forward");
             std::printf("%s", frameGraphText(renderer.frameGraph()).c_str());
             return 0;
         }

@@ -18,7 +18,8 @@ std::string streamLine(const char* name, const SampleStats& s, const std::string
 
 std::string overFloor(const RatioStats& r) {
     char text[96];
-    std::snprintf(text, sizeof(text), "%.2fx floor %s", r.ratio, intervalText(r.low, r.high).c_str());
+    if (!r.hasInterval()) std::snprintf(text, sizeof(text), "%.2fx floor, no interval from %d rounds", r.ratio, r.rounds);
+    else std::snprintf(text, sizeof(text), "%.2fx floor %s", r.ratio, intervalText(r.low, r.high).c_str());
     return text;
 }
 

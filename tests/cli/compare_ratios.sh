@@ -46,6 +46,8 @@ for key in ("forward_floor_ratio", "deferred_floor_ratio", "floor_ms", "forward_
 assert abs(j["forward_over_floor"] - j["forward_ms"] / j["floor_ms"]) < 1e-3 * j["forward_over_floor"], j
 assert j["noisy"] == (j["rounds_spread"] > j["noise_threshold"]), j
 assert j["seed"] == 44, j["seed"]
+# One name per quantity (issue 44, item 7): bytes_per_pixel here is the G-buffer alone, named as bench.json names it.
+assert j["gbuffer_bytes_per_pixel"] == j["bytes_per_pixel"], j
 for stream in ("forward", "deferred", "floor"):
     s = j[stream + "_stats"]
     assert set(s) == {"median_ms", "ci_ms", "cv", "outliers", "rounds", "warmup"}, s
