@@ -33,9 +33,9 @@ compare() {  # the before (an older build, when carried) and the after in turn, 
         --size $size --out-dir /tmp/b-$size; echo "--- after, $size"; fi
     timeout 90 "$B" compare --passes --frames 15 --size $size --out-dir /tmp/c-$size; done; }
 lights() { for m in volumes tiled; do timeout 60 "$B" compare --frames 9 --hour 21 --lights 4096 \
-  --light-method $m --out-dir /tmp/l-$m | grep -E "ms/frame|lights"; done; }
+  --light-method $m --out-dir /tmp/l-$m | grep -E "ms/frame|lights|than forward|no difference|no verdict"; done; }
 tiers() { for t in "--force gl33" "--api gles" "--api gles --force gles30" "--gbuffer full --depth reversed-z"; do
-  timeout 60 "$B" compare --frames 9 $t --out-dir /tmp/t | grep -E "PSNR|ms/frame|on "; done; }
+  timeout 60 "$B" compare --frames 9 $t --out-dir /tmp/t | grep -E "PSNR|ms/frame|on |than forward|no difference|no verdict"; done; }
 bench() { timeout 170 "$B" bench --out-dir /tmp/bench | tail -70; cp /tmp/bench/bench.csv "$OUT/" 2>/dev/null; }
 check() {
   timeout 150 "$B" check --references tests/check-references --out-dir /tmp/check; echo "rc=$?"

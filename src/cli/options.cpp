@@ -77,7 +77,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         options.givenFlags.push_back(flag);
         // The scene options' rows (cli/option_table.h), then the subcommands' own options.
         static const std::vector<std::string> kValueOptions = {
-            "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames", "--at",
+            "--pipeline", "--view", "--out", "--stencil-view", "--stop-before", "--out-dir", "--frames", "--seed", "--until-ci", "--at",
             "--view-exposure", "--water-scene", "--channel", "--range", "--overlay", "--legend", "--driver",
             "--reference", "--driver-timeout"};
         const OptionRow* row = findOption(flag);
@@ -101,7 +101,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.json = true;
             continue;
         }
-        bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes";
+        bool compareOnly = flag == "--json" || flag == "--frames" || flag == "--out-dir" || flag == "--passes" ||
+                           flag == "--seed" || flag == "--until-ci";
         if (compareOnly && (options.command == Command::Render || options.command == Command::Window ||
                             options.command == Command::Caps || options.command == Command::Probe))
             return fail("option " + flag + " belongs to `oasis compare`, `oasis bench` and the main job");
@@ -119,6 +120,8 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("option --depth is set by `oasis bench` itself (it times and compares the depth conventions)");
         if (flag == "--passes" && options.command == Command::Bench)
             return fail("option --passes belongs to `oasis compare` (bench always times each pass)");
+        if (flag == "--until-ci" && options.command == Command::Bench)
+            return fail("option --until-ci belongs to `oasis compare` and the main job (bench: --frames N)");
         static const std::vector<std::string> kSetByBench = {"--size", "--time", "--camera", "--gbuffer", "--reflections",
                                                              "--vegetation", "--vegetation-density", "--lights"};
         if (options.command == Command::Bench &&
@@ -166,7 +169,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("option " + flag + " belongs to `oasis compare`");
         // What a child `oasis render` of compare --driver needs to draw the same frame.
         static const std::vector<std::string> kNotForwarded = {"--driver", "--reference", "--driver-timeout", "--out-dir",
-                                                               "--frames"};
+                                                               "--frames", "--seed", "--until-ci"};
         if (options.command == Command::Compare &&
             std::find(kNotForwarded.begin(), kNotForwarded.end(), flag) == kNotForwarded.end()) {
             options.sceneArguments.push_back(flag);
@@ -266,6 +269,14 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             options.timingFramesGiven = true;
             std::string error;
             if (!parseIntInDomain(value, inputDomain(flag), options.timingFrames, error)) return fail(error);
+        } else if (flag == "--seed") {
+            int seed = 0;
+            std::string error;
+            if (!parseIntInDomain(value, inputDomain(flag), seed, error)) return fail(error);
+            options.seed = std::uint64_t(seed);
+        } else if (flag == "--until-ci") {
+            std::string error;
+            if (!parseInDomain(value, inputDomain(flag), options.untilCiPercent, error)) return fail(error);
         } else {
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         }
@@ -316,9 +327,10 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (options.driverTimeoutGiven && !options.comparesDrivers())
             return fail("option --driver-timeout belongs to `oasis compare --driver/--reference` (the pipeline "
                         "comparison runs no child)");
-        if (options.comparesDrivers() && (options.passTimes || options.timingFramesGiven || options.capture))
-            return fail("--passes, --frames and --capture belong to the pipeline comparison, not compare "
-                        "--driver/--reference (it times nothing)");
+        if (options.comparesDrivers() && (options.passTimes || options.timingFramesGiven || options.capture ||
+                                          options.seed || options.untilCiPercent > 0.0))
+            return fail("--passes, --frames, --seed, --until-ci and --capture belong to the pipeline comparison, not "
+                        "compare --driver/--reference (it times nothing)");
     }
     if (findEncodingErrorView(options.view) && options.viewControls.channel)
         return fail("--channel: the " + options.view + " view has one value a pixel (use --range)");

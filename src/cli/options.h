@@ -1,6 +1,7 @@
 // The command line: subcommands, the scene options every subcommand shares, and their parsing.
 // Parsing is GL-free and reports the first bad argument in words (the caller exits 2).
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -75,6 +76,11 @@ struct Options {
     bool passTimes = false;  // compare / main job: per-pass medians too
     int timingFrames = 9;
     bool timingFramesGiven = false;  // --frames on the command line (bench has its own default)
+    // --seed: the rounds' random order and the bootstrap's draws (unset: drawn at random, printed).
+    std::optional<std::uint64_t> seed;
+    // --until-ci: rounds added until the widest median interval's half-width is under this percent
+    // of its median (0: not asked; capped at RoundPlan::kMaxRounds, commands/session.h).
+    double untilCiPercent = 0.0;
     bool outDirGiven = false;        // --out-dir on the command line (bench writes to oasis-out/bench)
     bool quick = false;              // bench: the short smoke-test run
     std::optional<StencilViewPath> stencilView;

@@ -41,11 +41,19 @@ std::string usage(Command command) {
                    "                            writes, and why each culled pass was culled (the frame is\n"
                    "                            built for the --view asked for); no image\n" + scene;
         case Command::Compare:
-            return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N] [--passes]\n"
+            return "usage: oasis compare [scene options] [--out-dir DIR] [--json] [--frames N] [--seed N]\n"
+                   "                     [--until-ci PERCENT] [--passes]\n"
                    "  renders the frame in both pipelines; prints PSNR, max abs and RMSE over 8-bit RGB and the\n"
-                   "  median ms per frame of each (wall time around glFinish over N frames, default 9);\n"
-                   "  writes forward.png, deferred.png and difference.png to DIR (default oasis-out);\n"
+                   "  median ms per frame of each with its 95% interval, CV and outliers (wall time around\n"
+                   "  glFinish: 2 warm-up frames of each discarded, then N rounds, default 9, of a forward frame,\n"
+                   "  a deferred frame and the floor in a random order), deferred over forward with its interval\n"
+                   "  and a verdict the interval decides; writes forward.png, deferred.png and difference.png to\n"
+                   "  DIR (default oasis-out);\n"
                    "  --passes adds each pass's median ms (glFinish after every pass)\n"
+                   "  --seed N                  the rounds' order and the intervals' bootstrap (default: drawn at\n"
+                   "                            random and printed; the same seed repeats the order)\n"
+                   "  --until-ci PERCENT        add rounds (doubling, at most 200 in all) until every median's\n"
+                   "                            95% interval is within +-PERCENT of it; says whether it got there\n"
                    "  --capture                 under RenderDoc: capture the forward and the deferred frame whose\n"
                    "                            images are written (two captures); without RenderDoc, exit 1\n"
                    "       oasis compare --driver A --driver B [scene options] [--pipeline P] [--out-dir DIR] [--json]\n"
@@ -79,19 +87,20 @@ std::string usage(Command command) {
                    "  whether it is used here, what limits it when not (driver, forced tier or not asked for)\n"
                    "  and why\n" + scene;
         case Command::Bench:
-            return "usage: oasis bench [--quick] [--out-dir DIR] [--json] [--frames N] [scene options]\n"
+            return "usage: oasis bench [--quick] [--out-dir DIR] [--json] [--frames N] [--seed N] [scene options]\n"
                    "  times every configuration of pipeline x G-buffer layout x quality knob (grid, octaves,\n"
                    "  vegetation, reflections; each knob alone at each level) x size over fixed frames of the\n"
                    "  camera path, also with a few point-light counts (the default knobs only; each count its\n"
                    "  own reference and frontiers), and its error against the reference (full layout, every\n"
                    "  knob at its highest, the same lights):\n"
-                   "  median/min/max ms (wall time around glFinish), per-pass ms, ratio to the floor measured in\n"
+                   "  median ms with its 95% interval (wall time around glFinish), per-pass ms, ratio to the floor measured in\n"
                    "  the same run, PSNR, RMSE, max abs, SSIM, bytes per pixel, target memory, Pareto frontier.\n"
                    "  Prints a table; writes bench.csv, bench.json and bench.svg to DIR (default oasis-out/bench)\n"
                    "  --quick                   one frame at 320x180, each knob's cheapest level, the default and\n"
                    "                            the most lights, 3 timed frames\n"
                    "  --json                    print the JSON to stdout (the table goes to stderr)\n"
-                   "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"
+                   "  --frames N                timed frames per fixed frame (default 7, --quick 3)\n"                   "  --seed N                  each round's order of the configurations and the floor (default:\n"
+                   "                            drawn at random and printed)\n"
                    "  --capture                 under RenderDoc: capture the first timed frame (its time is then\n"
                    "                            one sample of the median); without RenderDoc, exit 1\n"
                    "  the bench sets --size, --time, --camera, --gbuffer, --lights and the knobs itself; other scene\n"
@@ -178,7 +187,9 @@ std::string usage(Command command) {
            "  check      a hardware-compatibility verdict: every path against references, a report to send\n"
            "  serve      the web build's page on 127.0.0.1 (runs oasis-serve: oasis serve --help)\n"
            "  oasis SUBCOMMAND --help for its options\n"
-           "  --out-dir DIR             where the main job writes (default oasis-out)\n" + scene;
+           "  --out-dir DIR             where the main job writes (default oasis-out)\n"
+           "  --frames N, --seed N, --until-ci PERCENT, --json, --passes  the main job's times, as compare's\n"
+           "                            (oasis compare --help)\n" + scene;
 }
 
 }  // namespace oasis

@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <memory>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -110,8 +111,9 @@ BenchResult measureError(Renderer& renderer, const SceneSettings& base, const Be
 }
 
 // Times the configurations of one knob setting together: at each fixed frame, after two warm-up
-// frames each, their timed frames interleave (one frame of each in turn, then the floor on
-// `floorRenderer`), so load that changes during the run reaches all of them and their floor alike:
+// frames each, their timed frames interleave (each round one frame of each and the floor on
+// `floorRenderer`, in an order drawn at random for the round from `random`), so load that changes
+// during the run reaches all of them and their floor alike, and none is always first or last:
 // each configuration's ratio is the median of its frames' own ratios to the floor of their round.
 // Then each one's per-pass frames.
 struct Timed {
@@ -131,7 +133,7 @@ void countTraffic(const std::vector<Timed>& group, Renderer& floorRenderer, cons
     }
 }
 void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, const SceneSettings& base,
-                     const std::vector<BenchFrame>& frames, const BenchPlan& plan) {
+                     const std::vector<BenchFrame>& frames, const BenchPlan& plan, std::mt19937_64& random) {
     const std::vector<QualityKnob>& knobs = qualityKnobs();
     std::vector<std::vector<double>> samples(group.size()), floorRatios(group.size());
     std::vector<double> floorSamples;
@@ -148,7 +150,16 @@ void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, c
         floorRenderer.renderFloor();
         glFinish();
         for (int i = 0; i < plan.timedFrames; ++i) {
-            for (size_t c = 0; c < group.size(); ++c) {
+            std::vector<double> roundMs(group.size() + 1);  // the configurations', then the floor's
+            for (int slot : roundOrder(random, int(group.size()) + 1)) {
+                size_t c = size_t(slot);
+                if (c == group.size()) {
+                    Clock::time_point start = Clock::now();
+                    floorRenderer.renderFloor();
+                    glFinish();
+                    roundMs[c] = elapsedMs(start);
+                    continue;
+                }
                 group[c].renderer->setPipeline(group[c].result->config.pipeline);
                 if (plan.captureFirstTimedFrame && !gCaptured) {
                     gl::armCaptures(1);
@@ -159,13 +170,13 @@ void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, c
                 Clock::time_point start = Clock::now();
                 group[c].renderer->renderFrame(scenes[c]);
                 glFinish();
-                samples[c].push_back(elapsedMs(start));
+                roundMs[c] = elapsedMs(start);
             }
-            Clock::time_point start = Clock::now();
-            floorRenderer.renderFloor();
-            glFinish();
-            floorSamples.push_back(elapsedMs(start));
-            for (size_t c = 0; c < group.size(); ++c) floorRatios[c].push_back(samples[c].back() / floorSamples.back());
+            floorSamples.push_back(roundMs.back());
+            for (size_t c = 0; c < group.size(); ++c) {
+                samples[c].push_back(roundMs[c]);
+                floorRatios[c].push_back(roundMs[c] / roundMs.back());
+            }
         }
         if (&frame == &frames.front()) countTraffic(group, floorRenderer, scenes);
         for (size_t c = 0; c < group.size(); ++c) {
@@ -187,7 +198,8 @@ void timeInterleaved(const std::vector<Timed>& group, Renderer& floorRenderer, c
     }
     for (size_t c = 0; c < group.size(); ++c) {
         BenchResult& result = *group[c].result;
-        result.msMedian = median(samples[c]);
+        result.ms = describeSamples(samples[c]);
+        result.msMedian = result.ms.median;
         result.floorMs = median(floorSamples);
         result.pairedFloorRatio = median(floorRatios[c]);
         result.msMin = *std::min_element(samples[c].begin(), samples[c].end());
@@ -254,6 +266,8 @@ int runBenchCommand(const Options& options) {
         BenchPlan plan = benchPlan(options);
         plan.captureFirstTimedFrame = options.capture;
         plan.clock = session.timingClock();
+        plan.seed = roundSeed(options);
+        std::mt19937_64 random(plan.seed);  // every group's rounds draw their orders from it in turn
         const std::vector<QualityKnob>& knobs = qualityKnobs();
         const GBufferLayout& reference = findGBufferLayout("full") ? *findGBufferLayout("full") : gbufferLayouts()[0];
         std::vector<std::string> layouts = {reference.name};  // first: the others are compared with it
@@ -280,11 +294,11 @@ int runBenchCommand(const Options& options) {
 
         std::FILE* tableOut = options.json ? stderr : stdout;
         std::fprintf(tableOut,
-                     "oasis bench: %zu configurations (%zu sizes x %zu light counts x %zu frames), %s\n  timing: %s\n"
-                     "  %s\n",
+                     "oasis bench: %zu configurations (%zu sizes x %zu light counts x %zu frames), %s\n  timing: %s; "
+                     "each round's order random (seed %llu; --seed repeats it)\n  %s\n",
                      configs.size(), plan.sizes.size(), plan.lightCounts.size(), frames.size(),
-                     queryContextInfo().summary().c_str(),
-                     timingNote(plan.clock).c_str(), describePlantAtlas(session).c_str());
+                     queryContextInfo().summary().c_str(), timingNote(plan.clock).c_str(),
+                     static_cast<unsigned long long>(plan.seed), describePlantAtlas(session).c_str());
         // A renderer per layout and depth convention (the session's for the default layout with
         // standard depth), so that configurations timed in turn never reallocate targets; forward
         // uses the default layout's.
@@ -362,7 +376,7 @@ int runBenchCommand(const Options& options) {
                     std::vector<Timed> group;
                     for (size_t i = groupStart; i < results.size(); ++i)
                         group.push_back({groupRenderers[i - groupStart], &results[i]});
-                    timeInterleaved(group, renderer, session.scene, frames, plan);
+                    timeInterleaved(group, renderer, session.scene, frames, plan, random);
                     for (size_t i = groupStart; i < results.size(); ++i) {
                         const BenchResult& result = results[i];
                         std::fprintf(stderr, "[%zu/%zu] %s %s %dx%d %s ... %.1f ms, %.2f dB (%.0f s)\n", i + 1,
@@ -398,6 +412,21 @@ int runBenchCommand(const Options& options) {
                                "deferred/%s with the same knobs and lights; pareto: per size and light count "
                                "(\"in pipeline\": only among its pipeline's configurations)\n",
                      defaultGBufferLayout().name.c_str(), reference.name.c_str(), reference.name.c_str());
+        std::fprintf(tableOut, "ms med, 95%% interval, CV: the timed frames of every fixed frame together, the interval from "
+                               "their order statistics (stats/timing_stats.h); pareto: a row is off its frontier only when "
+                               "another's whole interval lies at or below its own, with no more error\n");
+        auto fewest = std::min_element(results.begin(), results.end(), [](const BenchResult& a, const BenchResult& b) {
+            return a.ms.confidence < b.ms.confidence;
+        });
+        if (fewest != results.end() && fewest->ms.confidence < kIntervalConfidence)
+            std::fprintf(tableOut, "*: from %d timed frames the interval is their range, which holds the median with %.0f%% "
+                                   "confidence only (95%% from %d frames: more --frames)\n",
+                         fewest->ms.count, 100.0 * fewest->ms.confidence, kMinRoundsForInterval);
+        // The bench's B/px and compare's "bytes/pixel" count different targets (issue 44, item 7).
+        std::fprintf(tableOut, "B/px: every target the frame writes (the G-buffer with its depth-stencil for deferred, the "
+                               "depth-stencil for forward, plus radiance, reflection and final: bench.json's "
+                               "bytes_per_pixel); compare's \"bytes/pixel\" is the G-buffer with its depth alone "
+                               "(gbuffer_bytes_per_pixel)\n");
         if (!results.empty() && results.front().floorTrafficBytesPerPixel >= 0.0)
             std::fprintf(tableOut, "moved/px: bytes written and read per pixel of the first frame, counted by the driver's "
                                    "queries (docs/traffic.md); the floor moves %.1f B/px\n",

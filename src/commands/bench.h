@@ -1,6 +1,7 @@
 // `oasis bench`: time against error over pipeline x G-buffer layout x quality knob x size, on fixed
 // frames of the camera path, with the floor measured in the same run; table, CSV, JSON and SVG.
 #pragma once
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct BenchPlan {
     bool cheapestOnly = false;
     TimingClock clock;               // how passes are timed: measured at the run's start
     bool captureFirstTimedFrame = false;  // --capture: RenderDoc captures the run's first timed frame
+    std::uint64_t seed = 0;  // each round's order of the configurations and the floor (--seed; printed)
 };
 BenchPlan benchPlan(const Options& options);
 

@@ -13,13 +13,6 @@
 namespace oasis {
 namespace {
 
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    size_t middle = values.size() / 2;
-    std::nth_element(values.begin(), values.begin() + long(middle), values.end());
-    return values[middle];
-}
-
 // The far plane's window depth in either convention: nothing drawn there (depthAtFarPlane).
 bool atFarPlane(const FrameData& frame, float depth) {
     return frame.depthConvention.x != 0.0f ? depth <= 0.0f : depth >= 1.0f;

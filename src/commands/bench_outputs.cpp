@@ -1,6 +1,7 @@
 // `oasis bench`'s outputs from its results: the table, bench.json and bench.svg.
 #include "commands/bench_outputs.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -24,19 +25,29 @@ std::string layoutLabel(const BenchConfig& config) {
 }
 
 std::string tableText(const std::vector<BenchResult>& results) {
+    // The text columns as wide as their longest entry, so a long variation ("lights=4096
+    // reflections=off") shifts no column after it.
+    int layoutWidth = 6, variationWidth = 9;
+    for (const BenchResult& r : results) {
+        layoutWidth = std::max(layoutWidth, int(layoutLabel(r.config).size()));
+        variationWidth = std::max(variationWidth, int(r.variation.size()));
+    }
     std::string text;
-    char line[320];
-    std::snprintf(line, sizeof(line), "%-9s %6s %-8s %-19s %-19s %8s %8s %8s %6s %7s %7s %4s %6s %7s %5s %6s %8s %s\n", "size",
-                  "lights", "pipeline", "layout", "variation", "ms med", "ms min", "ms max", "xfloor", "PSNR dB", "RMSE", "max",
-                  "SSIM", "own dB", "B/px", "MiB", "moved/px", "pareto");
+    char line[512];
+    std::snprintf(line, sizeof(line), "%-9s %6s %-8s %-*s %-*s %8s %-19s %5s %6s %7s %7s %4s %6s %7s %5s %6s %8s %s\n",
+                  "size", "lights", "pipeline", layoutWidth, "layout", variationWidth, "variation", "ms med",
+                  "95% interval", "CV%", "xfloor", "PSNR dB", "RMSE", "max", "SSIM", "own dB", "B/px", "MiB", "moved/px",
+                  "pareto");
     text += line;
     for (const BenchResult& r : results) {
         const BenchConfig& c = r.config;
         const char* pareto = r.pareto ? "yes" : r.paretoInPipeline ? "in pipeline" : "";
-        std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-19s %-19s %8.2f %8.2f %8.2f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %8.1f %s\n",
-                      sizeName(c.width, c.height).c_str(), c.lights, pipelineName(c.pipeline), layoutLabel(c).c_str(),
-                      r.variation.c_str(), r.msMedian, r.msMin, r.msMax, r.msOverFloor(), r.psnrDb, r.rmse, r.maxAbs,
-                      r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, r.trafficBytesPerPixel, pareto);
+        std::snprintf(line, sizeof(line), "%-9s %6d %-8s %-*s %-*s %8.2f %-19s %5.1f %6.2f %7.2f %7.3f %4d %6.4f %7.2f %5d %6.1f %8.1f %s\n",
+                      sizeName(c.width, c.height).c_str(), c.lights, pipelineName(c.pipeline), layoutWidth,
+                      layoutLabel(c).c_str(), variationWidth, r.variation.c_str(), r.msMedian,
+                      (intervalText(r.ms.low, r.ms.high) + (r.ms.confidence < kIntervalConfidence ? "*" : "")).c_str(),
+                      100.0 * r.ms.cv, r.msOverFloor(), r.psnrDb, r.rmse,
+                      r.maxAbs, r.ssim, r.sameKnobsPsnrDb, r.bytesPerPixel, r.targetMiB, r.trafficBytesPerPixel, pareto);
         text += line;
     }
     return text;
@@ -61,7 +72,8 @@ std::string benchJson(const std::vector<BenchResult>& results, const std::vector
                        ", \"timing_note\": " + jsonString(timingNote(plan.clock)) +
                        ", \"frame_clock\": \"wall-glfinish\", \"pass_clock\": " + jsonString(plan.clock.name()) +
                        ", \"pass_clock_reason\": " + jsonString(plan.clock.reason) +
-                       ", \"quick\": " + (options.quick ? "true" : "false") +
+                       ", \"quick\": " + (options.quick ? "true" : "false") + ", \"seed\": " + std::to_string(plan.seed) +
+                       ", \"round_order\": \"random\"" +
                        ", \"timed_frames_per_frame\": " + std::to_string(plan.timedFrames) +
                        ", \"pass_frames_per_frame\": " + std::to_string(plan.passFrames) + ", \"frames\": [";
     for (size_t i = 0; i < frames.size(); ++i) {
@@ -110,11 +122,12 @@ std::string benchSvg(const std::vector<BenchResult>& results, const std::string&
             panels.push_back({size, {}});
         }
         std::string label = (r.config.layout == kNoLayout ? std::string() : layoutLabel(r.config) + " ") + r.variation;
-        panels[panelOf[size]].points.push_back(
-            {r.msMedian, r.rmse, pipelineName(r.config.pipeline), label, r.pareto, r.paretoInPipeline});
+        PlotPoint point{r.msMedian, r.rmse, pipelineName(r.config.pipeline), label, r.pareto, r.paretoInPipeline};
+        if (r.ms.count > 0) point.xLow = r.ms.low, point.xHigh = r.ms.high;
+        panels[panelOf[size]].points.push_back(point);
     }
     PlotText text{"oasis bench: time against error (Pareto frontiers per size and light count, and per pipeline)",
-                  "median ms per frame (wall time around glFinish)",
+                  "median ms per frame (wall time around glFinish), bars: its 95% interval",
                   "RMSE against the reference (8-bit RGB)",
                   "reference: deferred, full layout, every knob at its highest, the same lights; " + renderer};
     std::set<int> lightCounts;  // a row per size, a column per light count

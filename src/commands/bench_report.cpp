@@ -198,8 +198,8 @@ std::vector<bool> paretoFrontier(const std::vector<ParetoPoint>& points) {
     for (size_t i = 0; i < points.size(); ++i)
         for (size_t j = 0; j < points.size() && frontier[i]; ++j) {
             const ParetoPoint &a = points[i], &b = points[j];
-            bool noWorse = b.cost <= a.cost && b.error <= a.error;
-            bool better = b.cost < a.cost || b.error < a.error;
+            bool noWorse = b.high() <= a.low() && b.error <= a.error;
+            bool better = b.high() < a.low() || b.error < a.error;
             if (j != i && noWorse && better) frontier[i] = false;
         }
     return frontier;
@@ -219,7 +219,11 @@ void markParetoFrontiers(std::vector<BenchResult>& results) {
     auto mark = [&](const std::map<std::string, std::vector<size_t>>& groups, bool BenchResult::*flag) {
         for (const auto& [key, members] : groups) {
             std::vector<ParetoPoint> points;
-            for (size_t i : members) points.push_back({results[i].msMedian, results[i].rmse});
+            for (size_t i : members) {
+                const BenchResult& r = results[i];
+                bool interval = r.ms.count > 0;  // timed: its interval; else (tests' rows) the median alone
+                points.push_back({r.msMedian, r.rmse, interval ? r.ms.low : -1.0, interval ? r.ms.high : -1.0});
+            }
             std::vector<bool> frontier = paretoFrontier(points);
             for (size_t m = 0; m < members.size(); ++m) results[members[m]].*flag = frontier[m];
         }
@@ -252,7 +256,7 @@ std::string benchCsvHeader() {
     return "pipeline,layout,width,height,variation,knobs,lights,ms_median,ms_min,ms_max,floor_ms,floor_ratio,"
            "psnr_db,rmse,max_abs,ssim,same_knobs_psnr_db,same_knobs_max_abs,bytes_per_pixel,gbuffer_bytes_per_pixel,target_mib,pareto,"
            "pareto_in_pipeline,passes_ms,depth,light_method,traffic_bytes_per_pixel,cleared_bytes_per_pixel,"
-           "floor_traffic_bytes_per_pixel";
+           "floor_traffic_bytes_per_pixel,ms_ci_low,ms_ci_high,ms_cv,ms_outliers_mild,ms_outliers_severe";
 }
 
 std::string benchCsvRow(const BenchResult& r) {
@@ -266,7 +270,9 @@ std::string benchCsvRow(const BenchResult& r) {
            formatNumber("%.2f", r.targetMiB) + "," + (r.pareto ? "true" : "false") + "," +
            (r.paretoInPipeline ? "true" : "false") + "," + csvField(passesText(r)) + "," + csvField(c.depth) + "," +
            lightMethodName(c.lightMethod) + "," + formatNumber("%.4f", r.trafficBytesPerPixel) + "," +
-           formatNumber("%.4f", r.clearedBytesPerPixel) + "," + formatNumber("%.4f", r.floorTrafficBytesPerPixel);
+           formatNumber("%.4f", r.clearedBytesPerPixel) + "," + formatNumber("%.4f", r.floorTrafficBytesPerPixel) + "," +
+           formatNumber("%.3f", r.ms.low) + "," + formatNumber("%.3f", r.ms.high) + "," + formatNumber("%.4f", r.ms.cv) +
+           "," + std::to_string(r.ms.outliers.mild) + "," + std::to_string(r.ms.outliers.severe);
 }
 
 std::string benchConfigJson(const BenchResult& r) {
@@ -278,7 +284,10 @@ std::string benchConfigJson(const BenchResult& r) {
            ", \"variation\": " + jsonString(r.variation) + ", \"knobs\": " + jsonString(r.knobSettings) +
            ", \"lights\": " + std::to_string(c.lights) +
            ", \"light_method\": " + jsonString(lightMethodName(c.lightMethod)) + ", \"ms_median\": " + jsonNumber(r.msMedian) + ", \"ms_min\": " + jsonNumber(r.msMin) +
-           ", \"ms_max\": " + jsonNumber(r.msMax) + ", \"floor_ms\": " + jsonNumber(r.floorMs) +
+           ", \"ms_max\": " + jsonNumber(r.msMax) + ", \"ms_ci\": [" + jsonNumber(r.ms.low) + ", " + jsonNumber(r.ms.high) +
+           "], \"ms_cv\": " + jsonNumber(r.ms.cv) + ", \"ms_outliers\": {\"mild\": " + std::to_string(r.ms.outliers.mild) +
+           ", \"severe\": " + std::to_string(r.ms.outliers.severe) + "}, \"ms_samples\": " + std::to_string(r.ms.count) +
+           ", \"floor_ms\": " + jsonNumber(r.floorMs) +
            ", \"floor_ratio\": " + jsonNumber(r.floorRatio()) + ", \"ms_over_floor_ms\": " + jsonNumber(r.msOverFloor()) +
            ", \"ms_spread\": " + jsonNumber(r.msSpread()) + ", \"noisy\": " + (r.noisy() ? "true" : "false") +
            ", \"psnr_db\": " + jsonNumber(r.psnrDb) +

@@ -8,6 +8,7 @@
 
 #include "frame/pipeline.h"
 #include "render/frame_setup.h"
+#include "stats/timing_stats.h"
 
 namespace oasis {
 
@@ -79,11 +80,16 @@ std::vector<BenchConfig> benchConfigs(const std::vector<QualityKnob>& knobs, con
                                       const std::vector<std::pair<int, int>>& sizes, bool cheapestOnly,
                                       const std::vector<int>& lightCounts = {defaultLightCount()});
 
-// Minimise both: a point is on the frontier when no other point is at most as costly and at most as
-// wrong while better in one of them. Identical points are all on it (none beats another).
+// Minimise both: a point is off the frontier when another is at most as wrong and cheaper beyond
+// the noise: the other's whole cost interval at or below this one's (and better in one of the two).
+// Without intervals (low = high = cost) that is the plain rule: at most as costly and as wrong,
+// better in one. Identical points are all on it (none beats another).
 struct ParetoPoint {
     double cost = 0.0;
     double error = 0.0;
+    double costLow = -1.0, costHigh = -1.0;  // the cost's 95% interval; negative: none (the cost itself)
+    double low() const { return costLow >= 0.0 ? costLow : cost; }
+    double high() const { return costHigh >= 0.0 ? costHigh : cost; }
 };
 std::vector<bool> paretoFrontier(const std::vector<ParetoPoint>& points);
 
@@ -91,6 +97,7 @@ struct BenchResult {
     BenchConfig config;
     std::string variation, knobSettings;
     double msMedian = 0.0, msMin = 0.0, msMax = 0.0;
+    SampleStats ms;  // the timed frames' median with its 95% interval, CV and outliers (stats/timing_stats.h)
     double floorMs = 0.0;   // the floor (default layout, this size), median of the rounds timed with it
     double pairedFloorRatio = 0.0;  // median of its frames' ratios to their round's floor (0: not timed so)
     double psnrDb = 0.0, rmse = 0.0, ssim = 0.0;
@@ -123,7 +130,8 @@ struct BenchResult {
     bool noisy() const { return msSpread() > kNoiseSpread; }
 };
 
-// Marks `pareto` and `paretoInPipeline` (cost: median ms; error: RMSE, which orders like PSNR).
+// Marks `pareto` and `paretoInPipeline` (cost: median ms with its interval; error: RMSE, which
+// orders like PSNR).
 void markParetoFrontiers(std::vector<BenchResult>& results);
 
 std::string benchCsvHeader();

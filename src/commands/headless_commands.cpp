@@ -15,6 +15,7 @@
 #include "commands/probe_report.h"
 #include "commands/provenance.h"
 #include "commands/session.h"
+#include "commands/timing_report.h"
 #include "commands/traffic_report.h"
 #include "commands/view_mask.h"
 #include "context/gl_context.h"
@@ -38,6 +39,8 @@ struct Comparison {
     Image forward, deferred;
     using PassTimes = std::vector<std::pair<std::string, double>>;
     PassTimes forwardPasses, deferredPasses;  // only with --passes
+    using PassStats = std::vector<std::pair<std::string, SampleStats>>;
+    PassStats forwardPassStats, deferredPassStats;  // their intervals, in the same order
     TimingClock clock;                        // how the passes were timed (measured with --passes)
     std::string forwardGraph, deferredGraph;  // each frame's graph as JSON (frame/frame_graph.h)
     FrameTraffic forwardTraffic, deferredTraffic, floorTraffic;  // counted with --passes
@@ -57,7 +60,7 @@ Image renderFinal(Renderer& renderer, const SceneSettings& scene, PipelineKind k
 }
 
 // With `capture`, RenderDoc captures the forward and the deferred frame whose images are written.
-Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes, bool capture = false) {
+Comparison compareFrame(RenderSession& session, const RoundPlan& plan, bool passTimes, bool capture = false) {
     Renderer& renderer = *session.renderer;
     Comparison result;
     // Its frames are looked at through the final view (the images, the times, the traffic; a
@@ -74,13 +77,18 @@ Comparison compareFrame(RenderSession& session, int timingFrames, bool passTimes
     result.deferredGraph = frameGraphJson(renderer.frameGraph());
     result.difference = compareImages(result.forward, result.deferred);
     result.differing = countDifferingPixels(result.forward, result.deferred);
-    result.times = timePipelinesInTurn(renderer, session.scene, timingFrames);
+    result.times = timePipelinesInTurn(renderer, session.scene, plan);
     if (passTimes) {
         result.clock = session.timingClock();
-        std::vector<PassTimes> passes = medianPassMsInTurn(renderer, session.scene, timingFrames, result.clock,
-                                                           {PipelineKind::Forward, PipelineKind::Deferred});
+        std::mt19937_64 random(plan.seed + 3);  // the rounds' order as the frames', its own draws
+        std::vector<std::vector<PassTimes>> frames;
+        std::vector<PassTimes> passes = medianPassMsInTurn(renderer, session.scene, result.times.rounds, result.clock,
+                                                           {PipelineKind::Forward, PipelineKind::Deferred}, &random,
+                                                           &frames);
         result.forwardPasses = passes[0];
         result.deferredPasses = passes[1];
+        result.forwardPassStats = passSampleStats(frames[0]);
+        result.deferredPassStats = passSampleStats(frames[1]);
         renderer.setPipeline(PipelineKind::Forward);
         result.forwardTraffic = measureFrameTraffic(renderer, session.scene);
         renderer.setPipeline(PipelineKind::Deferred);
@@ -131,7 +139,7 @@ std::vector<ImageFile> comparisonFiles(const Options& options, const Comparison&
 void printSummary(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
     const FrameSetup& frame = session.renderer->lastFrame();
-    std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel with its depth), depth %s, time %.2f s (%.2f h), on %s\n",
+    std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel: G-buffer and depth-stencil; bench's B/px adds the other targets), depth %s, time %.2f s (%.2f h), on %s\n",
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()),
                 session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, frame.hour,
@@ -139,37 +147,38 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
     std::printf("  %s\n", c.differing.describe().c_str());
-    // Each "x floor" is the median ms over the median floor ms printed beside it, so the numbers a
-    // reader divides agree (issue 31, defect 5); the rounds' range and a noise flag say how far
-    // to trust a difference (JSON keeps the per-round ratios' medians too).
-    const PipelineTimes& t = c.times;
-    std::printf("  forward  %8.2f ms/frame  (%.2fx floor; rounds %.2f to %.2f ms)\n", t.forwardMs, t.forwardOverFloor,
-                t.forwardLowest, t.forwardHighest);
-    std::printf("  deferred %8.2f ms/frame  (%.2fx floor; rounds %.2f to %.2f ms)\n", t.deferredMs, t.deferredOverFloor,
-                t.deferredLowest, t.deferredHighest);
-    std::printf("  floor    %8.2f ms/frame  (full-screen G-buffer write + read, timed in turn with the frames; rounds "
-                "%.2f to %.2f ms)\n", t.floorMs, t.floorLowest, t.floorHighest);
-    std::printf("  medians of %d rounds (a forward frame, a deferred frame, the floor), wall time around glFinish; "
-                "x floor = median ms / median floor ms; terrain %d triangles\n",
-                t.rounds, session.renderer->geometry().terrainTriangles());
-    std::printf("  %s: the rounds spread by up to %.0f%% of their median (highest - lowest; noisy above %.0f%%%s)\n",
-                t.noisy() ? "NOISY" : "steady", 100.0 * t.spread, 100.0 * PipelineTimes::kNoiseSpread,
-                t.noisy() ? ": differences smaller than that are not measured; more --frames or an idle machine" : "");
+    std::printf("%s", timesText(c.times, session.renderer->geometry().terrainTriangles()).c_str());
     std::printf("  %s\n", describePlantAtlas(session).c_str());
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
     std::printf("  %s\n", describeReflectionBounds(*session.renderer, session.scene).c_str());
     for (const auto& [pipeline, passes, traffic] :
-         {std::tuple{"forward", &c.forwardPasses, &c.forwardTraffic}, {"deferred", &c.deferredPasses, &c.deferredTraffic}}) {
+         {std::tuple{"forward", &c.forwardPassStats, &c.forwardTraffic}, {"deferred", &c.deferredPassStats, &c.deferredTraffic}}) {
         if (passes->empty()) continue;
-        std::printf("  %s per pass (median ms, %s)%s:\n", pipeline,
+        int frames = passes->front().second.count;
+        std::string interval = frames >= kMinRoundsForInterval ? "its 95% interval" : "the frames' range (no 95% interval under " +
+                               std::to_string(kMinRoundsForInterval) + ")";
+        std::printf("  %s per pass (median ms and %s over %d frames, %s)%s:\n", pipeline, interval.c_str(), frames,
                     c.clock.gpuTimers ? "GPU timer queries" : "wall time, glFinish after each",
                     traffic->measured() ? trafficColumnsHeader().c_str() : "");
-        for (const auto& [name, ms] : *passes)
-            std::printf("    %-30s %7.2f%s\n", name.c_str(), ms, trafficColumns(*traffic, name).c_str());
+        for (const auto& [name, stats] : *passes)
+            std::printf("    %-30s %7.2f %-17s%s\n", name.c_str(), stats.median, intervalText(stats.low, stats.high).c_str(),
+                        trafficColumns(*traffic, name).c_str());
     }
     if (!c.forwardPasses.empty()) std::printf("  pass clock: %s\n", c.clock.describe().c_str());
     std::printf("%s", trafficSummary(c.forwardTraffic, c.deferredTraffic, c.floorTraffic).c_str());
+}
+
+// Each pass's interval: {"TerrainPass.forward": [lo, hi], ...} under `key` (with --passes).
+std::string passIntervalsJson(const char* key, const Comparison::PassStats& passes) {
+    if (passes.empty()) return {};
+    std::string json = std::string(", \"") + key + "\": {";
+    char numbers[64];
+    for (size_t i = 0; i < passes.size(); ++i) {
+        std::snprintf(numbers, sizeof(numbers), "[%.4f, %.4f]", passes[i].second.low, passes[i].second.high);
+        json += (i ? ", \"" : "\"") + passes[i].first + "\": " + numbers;
+    }
+    return json + "}";
 }
 
 std::string passTimesJson(const char* key, const Comparison::PassTimes& passes) {
@@ -198,6 +207,14 @@ std::string timingSpreadJson(const PipelineTimes& t) {
     return text;
 }
 
+RoundPlan roundPlan(const Options& options) {
+    RoundPlan plan;
+    plan.rounds = options.timingFrames;
+    plan.seed = roundSeed(options);
+    plan.untilCiPercent = options.untilCiPercent;
+    return plan;
+}
+
 // Which clock timed the passes and why (only with --passes: the check costs frames).
 std::string passClockJson(const Comparison& c) {
     if (c.forwardPasses.empty()) return {};
@@ -221,19 +238,20 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     std::printf("\"pixels_differing\": %s, ", c.differing.json().c_str());
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"forward_floor_ratio\": %.4f, \"deferred_floor_ratio\": %.4f, "
-                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s%s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, \"gbuffer_bytes_per_pixel\": %d, "
                 "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
                 "\"light_method\": \"%s\", \"light_method_reason\": \"%s\", "
-                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s%s%s%s%s}\n",
+                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s%s%s%s%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.times.forwardMs, c.times.deferredMs,
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
-                c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(),
+                c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(), timesStatsJson(c.times).c_str(),
                 targets.width(), targets.height(), targets.layout().name.c_str(),
-                gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
-                session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, options.timingFrames, info.renderer.c_str(),
+                gbufferBytesPerPixel(targets.layout(), targets.depth()), gbufferBytesPerPixel(targets.layout(), targets.depth()),
+                targets.depth().name.c_str(),
+                session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, c.times.rounds, info.renderer.c_str(),
                 stencilViewPathName(session.renderer->views().stencilPath()), session.shaders->directory().c_str(),
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
                 session.renderer->paths().lightsDrawn, lightsPathName(session.renderer->paths().lights.path),
@@ -241,6 +259,8 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 lightMethodName(session.renderer->paths().lightMethod.method), session.renderer->paths().lightMethod.reason.c_str(),
                 passClockJson(c).c_str(), passTimesJson("forward_passes_ms", c.forwardPasses).c_str(),
                 passTimesJson("deferred_passes_ms", c.deferredPasses).c_str(),
+                passIntervalsJson("forward_passes_ci_ms", c.forwardPassStats).c_str(),
+                passIntervalsJson("deferred_passes_ci_ms", c.deferredPassStats).c_str(),
                 pipelineTrafficJson("forward", c.forwardTraffic).c_str(),
                 pipelineTrafficJson("deferred", c.deferredTraffic).c_str(), floorTrafficJson(c.floorTraffic).c_str(),
                 graphJson(c).c_str());
@@ -388,6 +408,11 @@ int runRenderCommand(const Options& options) {
         std::FILE* report = stderr;
         Image image = renderRequestedImage(options, session, report);
         if (options.graph) {
+            // The header names the pipeline: one frame is printed, the other is --pipeline's other value.
+            std::printf("# the %s pipeline's frame, %dx%d, built for view %s (--pipeline %s prints the other)\n",
+                        pipelineName(options.pipeline), renderer.targets().width(), renderer.targets().height(),
+                        options.view.c_str(),
+                        options.pipeline == PipelineKind::Forward ? "deferred" : "forward");
             std::printf("%s", frameGraphText(renderer.frameGraph()).c_str());
             return 0;
         }
@@ -416,7 +441,7 @@ int runRenderCommand(const Options& options) {
 
 int runCompareCommand(const Options& options) {
     return withHeadlessSession(options, [&](RenderSession& session) {
-        Comparison c = compareFrame(session, options.timingFrames, options.passTimes, options.capture);
+        Comparison c = compareFrame(session, roundPlan(options), options.passTimes, options.capture);
         Image heat = differenceImage(c.forward, "forward", c.deferred, "deferred");
         std::vector<std::string> written;
         if (!writeImages(options.outDir, comparisonFiles(options, c, heat), written)) return 1;
@@ -436,7 +461,7 @@ int runMainJob(const Options& options) {
         std::FILE* report = stderr;
         std::fprintf(report, "oasis: no display, running the headless main job (stencil view: %s)\n",
                      session.stencilPathReason.c_str());
-        Comparison c = compareFrame(session, options.timingFrames, options.passTimes);
+        Comparison c = compareFrame(session, roundPlan(options), options.passTimes);
         session.renderer->views().render(kOverviewName);
         Image overview = readDisplay(*session.renderer);
         Image heat = differenceImage(c.forward, "forward", c.deferred, "deferred");

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "cli/input_domains.h"
 #include "cli/option_table.h"
 
 namespace oasis {
@@ -297,13 +298,6 @@ std::string describeLights(const Renderer& renderer) {
     return text;
 }
 
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 namespace {
 template <typename Work>
 double medianMs(int frames, Work work) {
@@ -322,7 +316,8 @@ double medianMs(int frames, Work work) {
 }  // namespace
 
 std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSettings& scene, int frames,
-                                          const TimingClock& clock, const std::vector<PipelineKind>& pipelines) {
+                                          const TimingClock& clock, const std::vector<PipelineKind>& pipelines,
+                                          std::mt19937_64* random, std::vector<std::vector<PassTimes>>* frameTimes) {
     const PipelineKind active = renderer.pipeline();
     for (PipelineKind kind : pipelines) {  // a warm-up each
         renderer.setPipeline(kind);
@@ -330,24 +325,31 @@ std::vector<PassTimes> medianPassMsInTurn(Renderer& renderer, const SceneSetting
     }
     const size_t count = pipelines.size();
     std::vector<std::vector<PassTimes>> timed(count);
+    auto order = [&] {
+        if (random) return roundOrder(*random, int(count));
+        std::vector<int> fixed;
+        for (size_t k = 0; k < count; ++k) fixed.push_back(int(k));
+        return fixed;
+    };
     if (clock.gpuTimers) {
         // Room for every frame of each: none dropped, read at the end.
         std::deque<PassTimerQueries> queries;  // not movable: a deque builds each in place
         for (size_t k = 0; k < count; ++k) queries.emplace_back(frames + 1);
         for (int i = 0; i < frames; ++i)
-            for (size_t k = 0; k < count; ++k) {
-                renderer.setPipeline(pipelines[k]);
-                queries[k].timeFrame(renderer, scene);
+            for (int k : order()) {
+                renderer.setPipeline(pipelines[size_t(k)]);
+                queries[size_t(k)].timeFrame(renderer, scene);
             }
         for (size_t k = 0; k < count; ++k) timed[k] = queries[k].drain();
     } else {
         for (int i = 0; i < frames; ++i)
-            for (size_t k = 0; k < count; ++k) {
-                renderer.setPipeline(pipelines[k]);
-                timed[k].push_back(renderFrameTimingPasses(renderer, scene));
+            for (int k : order()) {
+                renderer.setPipeline(pipelines[size_t(k)]);
+                timed[size_t(k)].push_back(renderFrameTimingPasses(renderer, scene));
             }
     }
     renderer.setPipeline(active);
+    if (frameTimes) *frameTimes = timed;
     std::vector<PassTimes> medians;
     for (const std::vector<PassTimes>& frameTimes : timed) medians.push_back(medianPassTimes(frameTimes));
     return medians;
@@ -361,7 +363,19 @@ double medianFloorMs(Renderer& renderer, int frames) {
     return medianMs(frames, [&] { renderer.renderFloor(); });
 }
 
-PipelineTimes timePipelinesInTurn(Renderer& renderer, const SceneSettings& scene, int rounds) {
+std::uint64_t roundSeed(const Options& options) {
+    if (options.seed) return *options.seed;
+    return std::random_device{}() % (std::uint64_t(inputDomain("--seed").high) + 1);  // one --seed accepts
+}
+
+std::vector<int> roundOrder(std::mt19937_64& random, int count) {
+    std::vector<int> order(size_t(std::max(count, 0)));
+    for (int i = 0; i < count; ++i) order[size_t(i)] = i;
+    for (int i = count - 1; i > 0; --i) std::swap(order[size_t(i)], order[size_t(random() % std::uint64_t(i + 1))]);
+    return order;
+}
+
+PipelineTimes timePipelinesInTurn(Renderer& renderer, const SceneSettings& scene, const RoundPlan& plan) {
     using Clock = std::chrono::steady_clock;
     const PipelineKind active = renderer.pipeline();
     auto frameOf = [&](PipelineKind kind) {
@@ -373,22 +387,45 @@ PipelineTimes timePipelinesInTurn(Renderer& renderer, const SceneSettings& scene
     const std::function<void()> work[3] = {frameOf(PipelineKind::Forward), frameOf(PipelineKind::Deferred),
                                             [&renderer] { renderer.renderFloor(); }};
     for (const auto& each : work)
-        for (int warm = 0; warm < 2; ++warm) each();
+        for (int warm = 0; warm < PipelineTimes::kWarmupFrames; ++warm) each();
     glFinish();
+    std::mt19937_64 random(plan.seed);
     std::vector<double> ms[3];
-    for (int round = 0; round < rounds; ++round)
-        for (int i = 0; i < 3; ++i) {
-            auto start = Clock::now();
-            work[i]();
-            glFinish();
-            ms[i].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-        }
+    auto runRounds = [&](int count) {
+        for (int round = 0; round < count; ++round)
+            for (int i : roundOrder(random, 3)) {
+                auto start = Clock::now();
+                work[i]();
+                glFinish();
+                ms[i].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+            }
+    };
+    runRounds(plan.rounds);
+    PipelineTimes times = summariseRounds(ms[0], ms[1], ms[2], plan.seed);
+    // --until-ci: double the rounds (all kept) until the widest interval is narrow enough or the cap.
+    while (plan.untilCiPercent > 0.0 && 100.0 * times.widestRelativeHalfWidth() >= plan.untilCiPercent &&
+           times.rounds < RoundPlan::kMaxRounds) {
+        runRounds(std::min(times.rounds, RoundPlan::kMaxRounds - times.rounds));
+        times = summariseRounds(ms[0], ms[1], ms[2], plan.seed);
+    }
+    times.untilCiPercent = plan.untilCiPercent;
+    times.untilCiReached = plan.untilCiPercent > 0.0 && 100.0 * times.widestRelativeHalfWidth() < plan.untilCiPercent;
+    times.warmup = PipelineTimes::kWarmupFrames;
     renderer.setPipeline(active);
-    return summariseRounds(ms[0], ms[1], ms[2]);
+    return times;
+}
+
+double PipelineTimes::widestRelativeHalfWidth() const {
+    return std::max({forward.relativeHalfWidth(), deferred.relativeHalfWidth(), floor.relativeHalfWidth()});
+}
+
+const char* PipelineTimes::widestStream() const {
+    double widest = widestRelativeHalfWidth();
+    return forward.relativeHalfWidth() == widest ? "forward" : deferred.relativeHalfWidth() == widest ? "deferred" : "floor";
 }
 
 PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::vector<double>& deferredMs,
-                              const std::vector<double>& floorMs) {
+                              const std::vector<double>& floorMs, std::uint64_t seed) {
     if (forwardMs.empty() || forwardMs.size() != deferredMs.size() || forwardMs.size() != floorMs.size())
         throw std::invalid_argument("summariseRounds: the three need one sample per round, at least one round");
     std::vector<double> forwardRatios, deferredRatios;
@@ -398,6 +435,14 @@ PipelineTimes summariseRounds(const std::vector<double>& forwardMs, const std::v
     }
     PipelineTimes times;
     times.rounds = int(floorMs.size());
+    times.seed = seed;
+    times.forward = describeSamples(forwardMs);
+    times.deferred = describeSamples(deferredMs);
+    times.floor = describeSamples(floorMs);
+    // Each ratio's bootstrap its own stream of the seed, so the three are not the same draws.
+    times.deferredOverForward = pairedMedianRatio(deferredMs, forwardMs, seed);
+    times.forwardOverFloorInterval = pairedMedianRatio(forwardMs, floorMs, seed + 1);
+    times.deferredOverFloorInterval = pairedMedianRatio(deferredMs, floorMs, seed + 2);
     times.forwardMs = median(forwardMs);
     times.deferredMs = median(deferredMs);
     times.floorMs = median(floorMs);

@@ -153,7 +153,8 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
         double xMin = 0, xMax = 0, yMin = 0, yMax = 0;
         for (size_t i = 0; i < panel.points.size(); ++i) {
             const PlotPoint& q = panel.points[i];
-            xMin = i ? std::min(xMin, q.x) : q.x; xMax = i ? std::max(xMax, q.x) : q.x;
+            double low = q.hasInterval() ? std::min(q.x, q.xLow) : q.x, high = q.hasInterval() ? std::max(q.x, q.xHigh) : q.x;
+            xMin = i ? std::min(xMin, low) : low; xMax = i ? std::max(xMax, high) : high;
             yMin = i ? std::min(yMin, q.y) : q.y; yMax = i ? std::max(yMax, q.y) : q.y;
         }
         Range xr = paddedRange(xMin, xMax), yr = paddedRange(yMin, yMax);
@@ -213,6 +214,14 @@ std::string scatterPlotSvg(const std::vector<PlotPanel>& panels, const PlotText&
             svg += "<polyline class=\"pareto\" fill=\"none\" stroke=\"#444\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\" points=\"";
             for (const PlotPoint* q : frontier) svg += number(sx(q->x)) + "," + number(sy(q->y)) + " ";
             svg += "\"/>\n";
+        }
+        // The time's 95% interval under each point: a bar with end ticks in the point's colour.
+        for (const PlotPoint& q : panel.points) {
+            if (!q.hasInterval()) continue;
+            double x0 = sx(q.xLow), x1 = sx(q.xHigh), y = sy(q.y);
+            svg += "<path class=\"error-bar\" stroke=\"" + colourOf[q.series] + "\" stroke-width=\"1\" fill=\"none\" d=\"M" +
+                   number(x0) + "," + number(y - 3) + "v6M" + number(x0) + "," + number(y) + "H" + number(x1) + "M" +
+                   number(x1) + "," + number(y - 3) + "v6\"/>\n";
         }
         for (const PlotPoint& q : panel.points) {
             const std::string& colour = colourOf[q.series];

@@ -1,5 +1,5 @@
 // A small SVG scatter-plot writer for the bench: side-by-side panels, axes with ticks, points
-// coloured by series with a legend, and marked frontiers (the panel's, and each series' own) whose
+// coloured by series with a legend, horizontal error bars for x's intervals, and marked frontiers (the panel's, and each series' own) whose
 // points are labelled without overlap (crowded labels are stacked with a leader line, or left out).
 #pragma once
 #include <string>
@@ -13,6 +13,9 @@ struct PlotPoint {
     std::string label;   // drawn beside frontier points (always in the point's tooltip)
     bool frontier = false;        // on the panel's frontier: outlined, joined by the dashed grey line
     bool seriesFrontier = false;  // on its series' own frontier: joined by a thin line of its colour
+    // x's 95% interval, drawn as an error bar (the bench's time); xLow > xHigh: none.
+    double xLow = 0.0, xHigh = -1.0;
+    bool hasInterval() const { return xLow <= xHigh; }
 };
 
 struct PlotPanel {

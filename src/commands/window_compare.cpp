@@ -22,12 +22,13 @@ void RollingMedian::add(double sample) {
     while (samples_.size() > capacity_) samples_.pop_front();
 }
 
-double RollingMedian::median() const {
-    if (samples_.empty()) return 0.0;
-    std::vector<double> sorted(samples_.begin(), samples_.end());
-    std::sort(sorted.begin(), sorted.end());
-    size_t n = sorted.size();
-    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+double RollingMedian::median() const { return oasis::median(samples()); }
+
+RatioStats WindowComparison::bOverA() const {
+    std::vector<double> a = msA.samples(), b = msB.samples();
+    if (a.empty() || a.size() != b.size()) return {};
+    // A fixed seed per call: the interval of the same frames does not flicker from frame to frame.
+    return pairedMedianRatio(b, a, seed, 500);
 }
 
 void WindowComparison::chooseSides(PipelineKind chosenPipeline, size_t chosenLayout) {

@@ -1,10 +1,13 @@
 // The window's live comparison: both sides (forward | deferred, or layout A | layout B) rendered
 // every frame, shown split at a movable divider or as their difference heat map, with PSNR / max
-// abs / RMSE of the displayed frame and each side's rolling median frame time (reset whenever
-// the configuration or the scene's settings change). GL-free but for the renderer it drives.
+// abs / RMSE of the displayed frame and each side's rolling median frame time with its 95% interval,
+// and B over A with its paired interval and verdict (reset whenever the configuration or the
+// scene's settings change); each frame draws the two sides in a random order. GL-free but for the renderer it drives.
 #pragma once
+#include <cstdint>
 #include <deque>
 #include <optional>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,6 +36,8 @@ public:
     void reset() { samples_.clear(); }
     double median() const;  // 0 with no samples
     size_t count() const { return samples_.size(); }
+    std::vector<double> samples() const { return {samples_.begin(), samples_.end()}; }
+    SampleStats stats() const { return describeSamples(samples()); }  // the median's interval, CV, outliers
 
 private:
     size_t capacity_;
@@ -53,7 +58,12 @@ struct WindowComparison {
     bool passTimes = false;     // time each pass for the table, by `clock`
     std::optional<TimingClock> clock;  // measured when the table is first asked for
     PassTimerQueries queriesA, queriesB;  // the sides' non-stalling queries, where `clock` trusts them
-    RollingMedian msA, msB;
+    RollingMedian msA, msB;     // added to together: sample i of each is one frame's pair
+    // Each frame's order of the two sides (a slow drift falls on neither side alone); the seed is shown.
+    std::uint64_t seed = std::random_device{}() % 1000000;
+    std::mt19937_64 order{seed};
+    // B's median over A's with its bootstrap interval over the paired frames (0 rounds: none yet).
+    RatioStats bOverA() const;
     std::string settingsKey;    // what the medians were measured for
     ImageDifference difference; // of the displayed sides
     std::vector<std::pair<std::string, double>> passesA, passesB;

@@ -105,7 +105,7 @@ void drawComparison(RenderSession& session, const Configuration& config, const S
     if (c.passTimes && !c.clock) c.clock = session.timingClock();  // once: a few frames of each clock
     Image images[2];
     state.frameMs = 0.0;
-    for (int s = 0; s < 2; ++s) {
+    for (int s : roundOrder(c.order, 2)) {
         Renderer& renderer = *renderers[s];
         renderer.setPipeline(sides[s]->pipeline);
         renderer.setDepthConvention(depthConventions()[config.depthIndex]);

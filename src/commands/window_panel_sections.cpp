@@ -41,8 +41,13 @@ void drawStatusOverlay(GLFWwindow* window, const WindowState& state) {
     if (c.mode == CompareMode::Off)
         std::snprintf(line, sizeof(line), "%s %.2f ms (avg %.2f)", pipelineName(shown.pipeline), state.frameMs,
                       state.smoothedMs);
-    else
-        std::snprintf(line, sizeof(line), "A %.2f ms, B %.2f ms (medians)", c.msA.median(), c.msB.median());
+    else {
+        SampleStats a = c.msA.stats(), b = c.msB.stats();
+        RatioStats ratio = c.bOverA();
+        std::snprintf(line, sizeof(line), "A %.2f ms %s, B %.2f ms %s (medians, 95%%), B/A %.2fx %s", a.median,
+                      intervalText(a.low, a.high).c_str(), b.median, intervalText(b.low, b.high).c_str(), ratio.ratio,
+                      ratio.hasInterval() ? intervalText(ratio.low, ratio.high).c_str() : "(no interval yet)");
+    }
     std::string text = line;
     if (state.paused) text += ", paused";
     if (state.inspector.frozen && !state.inspector.pinned.empty()) text += ", pins frozen";
@@ -95,10 +100,13 @@ void drawComparePanel(WindowState& state) {
     if (!showsDifference(c.mode)) ImGui::SliderFloat("divider (or drag it)", &c.divider, 0.0f, 1.0f, "%.2f");
     ImGui::Checkbox("per-pass times", &c.passTimes);
     if (c.passTimes && c.clock) ImGui::TextWrapped("pass clock: %s", c.clock->describe().c_str());
-    ImGui::TextWrapped("A %s: median %.2f ms", c.a.label.c_str(), c.msA.median());
-    ImGui::TextWrapped("B %s: median %.2f ms", c.b.label.c_str(), c.msB.median());
+    ImGui::TextWrapped("A %s: %s", c.a.label.c_str(), describeTime(c.msA.stats()).c_str());
+    ImGui::TextWrapped("B %s: %s", c.b.label.c_str(), describeTime(c.msB.stats()).c_str());
+    ImGui::TextWrapped("%s", describeRatio(c.bOverA(), "B", "A").c_str());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("medians of the last %zu frames each; reset when a setting changes", c.msA.count());
+    ImGui::TextWrapped("medians of the last %zu frames each with 95%% intervals, the sides in a random order each "
+                       "frame (seed %llu); reset when a setting changes", c.msA.count(),
+                       static_cast<unsigned long long>(c.seed));
     ImGui::PopStyleColor();
     ImGui::TextWrapped("displayed: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);

@@ -8,16 +8,10 @@
 #include <map>
 
 #include "frame/renderer.h"
+#include "stats/timing_stats.h"
 
 namespace oasis {
 namespace {
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 bool hasTimerQueries() {
     // OpenGL ES has timer queries only through GL_EXT_disjoint_timer_query (same enums and calls).
@@ -107,17 +101,31 @@ TimingClock measureTimingClock(Renderer& renderer, const SceneSettings& scene, i
     return judgeTimerQueries(medianPassTimes(queried), medianPassTimes(walled));
 }
 
-PassTimes medianPassTimes(const std::vector<PassTimes>& frames) {
-    std::vector<std::string> order;
-    std::map<std::string, std::vector<double>> samples;
+namespace {
+// Each pass's milliseconds over the frames, passes in the order they first appear.
+std::vector<std::pair<std::string, std::vector<double>>> samplesByPass(const std::vector<PassTimes>& frames) {
+    std::vector<std::pair<std::string, std::vector<double>>> byPass;
+    std::map<std::string, size_t> index;
     for (const PassTimes& frame : frames)
         for (const auto& [name, ms] : frame) {
-            if (!samples.count(name)) order.push_back(name);
-            samples[name].push_back(ms);
+            auto [it, added] = index.try_emplace(name, byPass.size());
+            if (added) byPass.push_back({name, {}});
+            byPass[it->second].second.push_back(ms);
         }
+    return byPass;
+}
+}  // namespace
+
+PassTimes medianPassTimes(const std::vector<PassTimes>& frames) {
     PassTimes medians;
-    for (const std::string& name : order) medians.emplace_back(name, median(samples[name]));
+    for (const auto& [name, samples] : samplesByPass(frames)) medians.emplace_back(name, median(samples));
     return medians;
+}
+
+std::vector<std::pair<std::string, SampleStats>> passSampleStats(const std::vector<PassTimes>& frames) {
+    std::vector<std::pair<std::string, SampleStats>> stats;
+    for (const auto& [name, samples] : samplesByPass(frames)) stats.emplace_back(name, describeSamples(samples));
+    return stats;
 }
 
 PassTimerQueries::Query::Query() { glGenQueries(1, &name); }

@@ -9,6 +9,7 @@
 // and uses the queries only where the two agree; elsewhere passes are timed by wall time with a
 // glFinish after each. The clock in use and the reason travel with every timing oasis prints.
 #pragma once
+#include "stats/timing_stats.h"
 #include <epoxy/gl.h>
 
 #include <deque>
@@ -54,6 +55,8 @@ TimingClock measureTimingClock(Renderer& renderer, const SceneSettings& scene, i
 
 // Each pass's median over frames, in the order the passes first appear.
 PassTimes medianPassTimes(const std::vector<PassTimes>& frames);
+// Each pass's 95% interval of its median over the frames, in the same order (stats/timing_stats.h).
+std::vector<std::pair<std::string, SampleStats>> passSampleStats(const std::vector<PassTimes>& frames);
 
 // Non-stalling per-pass timer: each frame's passes get one query each; a frame's results are read
 // only once the driver says they are available (a few frames later), never waited for, except by

@@ -29,7 +29,7 @@ public:
     bool writeFinalPng(PipelineKind kind, const std::string& path);
     // `oasis probe --at X,Y --json`'s object for the page's options' frame (x, y from the top left).
     std::string probeJson(PipelineKind kind, int x, int y);
-    // What the panel's radio buttons and view list choose (as Tab and 1..7 do).
+    // What the panel's radio buttons and view list choose (as Tab and 1..9 do).
     void setPipeline(PipelineKind kind);
     bool setView(const std::string& view);  // false for a name that is no view
     std::string capabilityJson();  // the context, every feature and the fallbacks

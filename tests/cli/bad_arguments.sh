@@ -112,7 +112,7 @@ EOF
 # Options that take a value (each is tried with its value missing).
 value_flags="--size --time --hour --camera --gbuffer --depth --reflections --reflection-bounds --reflection-resolution --reflection-plant-cull --tone-map --depth-read --shadows --shadow-quality --water-level --ripples --absorption
   --vegetation --vegetation-density --wind --lights --lights-path --light-method --force --pipeline --view --out --stencil-view
-  --stop-before --out-dir --frames --driver --reference --driver-timeout"
+  --stop-before --out-dir --frames --seed --until-ci --driver --reference --driver-timeout"
 
 for command in main render compare caps bench window; do
     [ "$part" = all ] || [ "$part" = "scene:$command" ] || continue
@@ -144,6 +144,8 @@ for command in compare caps bench window ""; do
 done
 for command in render window caps; do
     expect 2 $command --frames 3
+    expect 2 $command --seed 3
+    expect 2 $command --until-ci 3
     expect 2 $command --out-dir "$scratch/never"
     expect 2 $command --passes
 done
@@ -151,6 +153,7 @@ for command in render window; do expect 2 $command --json; done
 for command in "" render compare caps window; do expect 2 ${command:+"$command"} --quick; done
 for command in "" caps window probe; do expect 2 ${command:+"$command"} --capture; done
 expect 2 bench --passes
+expect 2 bench --until-ci 3
 expect 2 bench --depth standard
 expect 2 bench --size 64x36
 expect 2 bench --camera 0,50,0,0,0
@@ -172,7 +175,25 @@ for command in "" compare bench; do
     expect 2 "$@" --frames 1001
     expect 2 "$@" --frames many
     expect 2 "$@" --out-dir ""
+    # --seed: an integer in [0, 999999]; malformed, negative and huge values are refused.
+    expect 2 "$@" --seed -1
+    expect 2 "$@" --seed 1000000
+    expect 2 "$@" --seed 99999999999999999999
+    expect 2 "$@" --seed 1.5
+    expect 2 "$@" --seed many
 done
+# --until-ci: a percent in [0.5, 50] (compare and the main job).
+for command in "" compare; do
+    set -- ${command:+"$command"}
+    expect 2 "$@" --until-ci 0
+    expect 2 "$@" --until-ci 0.1
+    expect 2 "$@" --until-ci 51
+    expect 2 "$@" --until-ci -3
+    expect 2 "$@" --until-ci nan
+    expect 2 "$@" --until-ci 3%
+done
+expect 2 compare --driver llvmpipe --driver softpipe --seed 3
+expect 2 compare --driver llvmpipe --driver softpipe --until-ci 3
 [ -e "$scratch/x.jpg" ] && fail "render wrote a .jpg"
 
 # compare --driver / --reference: unknown set-ups (listing the valid ones), one or three set-ups,

@@ -19,7 +19,7 @@ def running(graph_text):
     """The names of the passes that run, from `render --graph`'s text: one pass a line, its name
     first, then `READS -> WRITES` or `culled: WHY`."""
     return [line.split()[0] for line in graph_text.splitlines()
-            if line and not line.startswith("invalid") and line.split()[1] != "culled:"]
+            if line and not line.startswith(("invalid", "#")) and line.split()[1] != "culled:"]
 
 
 def culled_for(graph_text, name):

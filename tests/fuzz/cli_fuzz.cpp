@@ -122,12 +122,16 @@ std::string checkImage(const fs::path& path, int width, int height, bool picture
     return problem;
 }
 
-// `render --graph`: one line a pass, from the first pass of every frame, each `NAME  READS -> WRITES`
-// or `NAME  culled: WHY`.
+// `render --graph`: a first line naming the pipeline ("# the deferred pipeline's frame, ..."), then
+// one line a pass, from the first pass of every frame, each `NAME  READS -> WRITES` or `NAME  culled: WHY`.
 std::string checkGraphText(const std::string& text) {
     static const std::regex kPassLine("[A-Z][A-Za-z]*Pass(\\.[a-z]+)* +(.* -> .+|culled: .+)");
-    if (text.rfind("TerrainHeightsPass ", 0) != 0) return "render --graph printed no pass list";
-    std::istringstream lines(text);
+    static const std::regex kHeader("# the (forward|deferred) pipeline's frame, [0-9]+x[0-9]+, built for view .+\n");
+    std::smatch header;
+    if (!std::regex_search(text, header, kHeader, std::regex_constants::match_continuous))
+        return "render --graph printed no header naming its pipeline";
+    if (text.compare(size_t(header.length()), 19, "TerrainHeightsPass ") != 0) return "render --graph printed no pass list";
+    std::istringstream lines(text.substr(size_t(header.length())));
     for (std::string line; std::getline(lines, line);)
         if (!std::regex_match(line, kPassLine)) return "render --graph printed a line that is not a pass: '" + line + "'";
     return {};

@@ -35,7 +35,7 @@ std::vector<std::string> argumentsFor(const InputDomain& domain, const std::stri
     }
     if (name == "--size W") return {"render", "--size", text + "x18"};
     if (name == "--size H") return {"render", "--size", "32x" + text};
-    if (name == "--frames") return {"compare", "--frames", text};
+    if (name == "--frames" || name == "--seed" || name == "--until-ci") return {"compare", name, text};
     if (name == "--driver-timeout") return {"compare", "--driver", "llvmpipe", "--driver", "zink", name, text};
     // The exposure scales the HDR views only (a rule refuses it on the final view: cli/option_rules.h).
     if (name == "--view-exposure") return {"render", "--view", "radiance", name, text};

@@ -1,8 +1,10 @@
-// Covers summariseRounds (src/commands/session.h), the statistics behind `oasis compare`'s times:
+// Covers summariseRounds and roundOrder (src/commands/session.h), the statistics behind `oasis compare`'s times:
 // each round's ratio to its own floor, so a machine that slows down between rounds moves the
 // milliseconds but not the ratios, and one slow floor moves only its own round's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -79,6 +81,33 @@ TEST(PipelineTimes, PrintedRatiosAreTheMediansOwnAndNoiseIsFlagged) {
     PipelineTimes steady = summariseRounds({100, 101, 99}, {50, 51, 50}, {10, 10.5, 10});
     EXPECT_FALSE(steady.noisy());
     EXPECT_NEAR(steady.spread, 0.05, 1e-12);  // the floor's 0.5 over its median 10
+}
+
+}  // namespace
+}  // namespace oasis
+
+namespace oasis {
+namespace {
+
+// Issue 44: each round's order is a permutation drawn from the seed, the same for the same seed,
+// and every stream comes first about a third of the time (so a drift cannot always land on one).
+TEST(RoundOrder, SeededPermutationsThatShareTheFirstPlace) {
+    std::mt19937_64 a(44), b(44);
+    int first[3] = {0, 0, 0};
+    for (int round = 0; round < 600; ++round) {
+        std::vector<int> order = roundOrder(a, 3);
+        ASSERT_EQ(order, roundOrder(b, 3));
+        std::vector<int> sorted = order;
+        std::sort(sorted.begin(), sorted.end());
+        ASSERT_EQ(sorted, (std::vector<int>{0, 1, 2}));
+        ++first[order[0]];
+    }
+    for (int stream = 0; stream < 3; ++stream) {
+        EXPECT_GT(first[stream], 150) << stream;  // 200 expected; 150 is over 4 sigma below
+        EXPECT_LT(first[stream], 250) << stream;
+    }
+    EXPECT_TRUE(roundOrder(a, 0).empty());
+    EXPECT_EQ(roundOrder(a, 1), std::vector<int>{0});
 }
 
 }  // namespace
