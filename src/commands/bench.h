@@ -22,6 +22,7 @@ struct BenchPlan {
     bool cheapestOnly = false;
     TimingClock clock;               // how passes are timed: measured at the run's start
     bool captureFirstTimedFrame = false;  // --capture: RenderDoc captures the run's first timed frame
+    std::string workarounds;  // the driver workarounds in effect ("a,b"; "" none): bench.json records them
 };
 BenchPlan benchPlan(const Options& options);
 
