@@ -314,7 +314,7 @@ std::vector<OptionRow> makeRows() {
               [](const SceneOptions& s) { return s.force.list(); }),
         other("--workarounds", "LIST",
               "the driver workarounds (docs/drivers.md): default (the table's, by\n"
-              "GL_RENDERER and GL_VERSION), none, all, or a list of: ",
+              "GL_RENDERER and GL_VERSION), none, all, or a comma-separated list of\n",
               [](const std::string& v, Options& o, Notes&, std::string& error) {
                   return gl::parseWorkaroundsValue(v, o.scene.workarounds, error);
               },
