@@ -27,6 +27,10 @@ void LightTilingPass::execute(PassContext& context) {
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightTileStorageBinding, tiles_.name(), 0, GLsizeiptr(bytes));
     bindGBufferInputs(targets);
     glUseProgram(context.shaders.program(targets.layout().program(mirroring_ == Mirroring::Mirrored ? "light.tiles.mirrored" : "light.tiles")));
+    // The G-buffer was drawn just now with its framebuffer still bound. GL needs no barrier here
+    // (drawn texels are visible to later commands' fetches), but softpipe's dispatch reads them
+    // stale from its render-target cache: the driver workaround flush-before-compute-read.
+    if (context.flushBeforeComputeRead) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     // One invocation per tile, 8x8 tiles a work group (light_tiles.comp).
     glDispatchCompute(GLuint((tilesAcross(targets.width()) + 7) / 8), GLuint((tilesAcross(targets.height()) + 7) / 8), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

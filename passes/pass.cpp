@@ -109,7 +109,7 @@ ReflectionContext::ReflectionContext(const PassContext& frame)
       context_{reduced_ ? *frame.reflectionTargets : frame.targets, frame.shaders, frame.geometry, frame.frame,
                frame.vegetation, frame.waterBounds, frame.shadowMaps, frame.waterSeen,
                frame.reflectionTargets, frame.reflectionFrameBlock, frame.frameBlock,
-               frame.drawDepthStencilReads, frame.depthClamp} {
+               frame.drawDepthStencilReads, frame.depthClamp, frame.flushBeforeComputeRead} {
     if (reduced_) glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame.reflectionFrameBlock);
 }
 

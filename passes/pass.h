@@ -47,6 +47,9 @@ struct PassContext {
     // tier forced without it (--force gles30, no-depth-clamp). The water plane and the light
     // volumes draw clamped where they can; the shadow casters' fallback is render/shadow_cascades.h's.
     bool depthClamp = true;
+    // The driver workaround flush-before-compute-read (gl/driver_workarounds.h): a dispatch that
+    // reads a texture drawn this frame is preceded by a texture-fetch barrier.
+    bool flushBeforeComputeRead = false;
 };
 
 // The context the reflection's passes draw with, for the scope's lifetime: at a reduced

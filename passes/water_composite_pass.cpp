@@ -2,6 +2,7 @@
 // tone map fused, blended in the shader and tone mapped into Final (Radiance keeps what is under).
 #include "passes/water_composite_pass.h"
 
+#include "passes/water_mask_pass.h"  // drawWaterSurface
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -22,15 +23,13 @@ void WaterCompositePass::execute(PassContext& context) {
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0x00);
     glEnable(GL_DEPTH_TEST);
-    if (context.depthClamp) glEnable(GL_DEPTH_CLAMP);  // as markWaterStencil (water_mask_pass.cpp)
     glDepthFunc(GL_ALWAYS);  // the mirrored scene's depths are behind us now; the water's replace them
     glDepthMask(GL_TRUE);
     if (!fused) glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glUseProgram(context.shaders.program(fused ? "water.composite.tonemapped" : "water.composite"));
-    context.geometry.drawWaterGrid();
+    // As markWaterStencil: the grid depth-clamped, else the plane found per fragment.
+    drawWaterSurface(context, fused ? "water.composite.tonemapped" : "water.composite");
     glDisable(GL_BLEND);
-    if (context.depthClamp) glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xFF);

@@ -7,18 +7,28 @@
 
 namespace oasis {
 
+void drawWaterSurface(PassContext& context, const std::string& program) {
+    if (!context.depthClamp) {
+        glUseProgram(context.shaders.program(program + ".fullscreen"));
+        context.geometry.drawFullscreenTriangle();
+        return;
+    }
+    glEnable(GL_DEPTH_CLAMP);
+    glUseProgram(context.shaders.program(program));
+    context.geometry.drawWaterGrid();
+    glDisable(GL_DEPTH_CLAMP);
+}
+
 void markWaterStencil(PassContext& context, const char* program) {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_ALWAYS, kStencilWater, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
     glStencilMask(0xFF);
-    // The plane must not be clipped by the near plane when the eye is at it. Without depth clamp
-    // it is: a camera nearer the water than about the near plane's distance sees none below it.
-    if (context.depthClamp) glEnable(GL_DEPTH_CLAMP);
-    glUseProgram(context.shaders.program(program));
-    context.geometry.drawWaterGrid();
-    if (context.depthClamp) glDisable(GL_DEPTH_CLAMP);
+    // The plane must not be clipped by the near plane when the eye is at it: the grid is drawn
+    // depth-clamped, and without depth clamp a full-screen triangle finds the plane per fragment
+    // (common/water_fragment.glsl), since the grid would lose the water nearer than the near plane.
+    drawWaterSurface(context, program);
     glDisable(GL_STENCIL_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }

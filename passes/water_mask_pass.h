@@ -10,9 +10,15 @@ namespace oasis {
 
 enum class WaterDepth { Written, Kept };
 
-// The water quad drawn with `program` into the bound framebuffer's stencil, marking kStencilWater
-// wherever a fragment survives the depth state the caller set; no colour, the plane not clipped by
-// the near plane (depth clamp). Shared by this pass and the reduced reflection's own mask.
+// The water surface drawn with `program` in the state the caller set, never clipped by the near
+// plane: the grid (water.vert) with depth clamp, or where the context has none the program's
+// ".fullscreen" variant over a full-screen triangle, finding the plane per fragment
+// (common/water_fragment.glsl). The water's mask and composite draw it.
+void drawWaterSurface(PassContext& context, const std::string& program);
+
+// The water surface drawn with `program` into the bound framebuffer's stencil, marking kStencilWater
+// wherever a fragment survives the depth state the caller set; no colour. Shared by this pass and
+// the reduced reflection's own mask.
 void markWaterStencil(PassContext& context, const char* program);
 
 class WaterMaskPass : public Pass {

@@ -72,14 +72,25 @@ void main() {
                 if (tileSurfaceAt(ivec2(x, y), position)) {
                     float at = lightSlicePosition(length(position), nearest, farthest);
                     int slice = lightSliceOf(at);
-                    lo[slice] = min(lo[slice], position);
-                    hi[slice] = max(hi[slice], position);
                     // Near a slice's edge: in the neighbour's box too (see lightSlicePosition).
                     float inSlice = at - float(slice);
                     int neighbour = inSlice < 1e-3 ? slice - 1 : inSlice > 1.0 - 1e-3 ? slice + 1 : slice;
                     neighbour = clamp(neighbour, 0, LIGHT_TILE_SLICES - 1);
+#if defined(OASIS_ARRAY_WRITE_BY_LOOP)
+                    // The driver workaround array-write-by-loop (gl/driver_workarounds.h): softpipe
+                    // lands a[i] = x with i differing per invocation in the element its first
+                    // invocation of four names; writes at constant indices land where they should.
+                    for (int k = 0; k < LIGHT_TILE_SLICES; ++k)
+                        if (k == slice || k == neighbour) {
+                            lo[k] = min(lo[k], position);
+                            hi[k] = max(hi[k], position);
+                        }
+#else
+                    lo[slice] = min(lo[slice], position);
+                    hi[slice] = max(hi[slice], position);
                     lo[neighbour] = min(lo[neighbour], position);
                     hi[neighbour] = max(hi[neighbour], position);
+#endif
                 }
     uint listed[LIGHT_TILE_SLICES];
     vec3 tileLo = vec3(3.0e38), tileHi = vec3(-3.0e38);

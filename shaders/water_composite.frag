@@ -6,18 +6,19 @@
 // it, and writes the display colour to Final; Radiance keeps the under-water value.
 #include "common/frame_block.glsl"
 #include "common/water_surface.glsl"
+#include "common/water_fragment.glsl"
 #if defined(TONE_MAP_FUSED)
 #include "common/output.glsl"
 uniform sampler2D radianceTexture;
 #endif
 
 uniform sampler2D sourceTexture;  // Reflection
-in vec3 vRelativePosition;
 layout(location = 0) out vec4 outColour;
 
 void main() {
+    vec3 relativePosition = waterFragmentPosition();  // WATER_FULLSCREEN: found per fragment (common/water_fragment.glsl)
     vec3 reflectedScene = reflectionsActive() ? texelFetch(sourceTexture, ivec2(gl_FragCoord.xy), 0).rgb : vec3(0.0);
-    vec4 water = waterSurface(vRelativePosition, reflectedScene);
+    vec4 water = waterSurface(relativePosition, reflectedScene);
 #if defined(TONE_MAP_FUSED)
     vec3 under = texelFetch(radianceTexture, ivec2(gl_FragCoord.xy), 0).rgb;
     outColour = finalColour(water.rgb + (1.0 - water.a) * under);

@@ -5,6 +5,7 @@
 #include "cli/input_domains.h"
 #include "cli/options.h"
 #include "cli/scene_arguments.h"
+#include "gl/driver_workarounds.h"
 #include "render/depth_convention.h"
 #include "render/gbuffer_layout.h"
 
@@ -311,6 +312,23 @@ std::vector<OptionRow> makeRows() {
                   return false;
               },
               [](const SceneOptions& s) { return s.force.list(); }),
+        other("--workarounds", "LIST",
+              "the driver workarounds (docs/drivers.md): default (the table's, by\n"
+              "GL_RENDERER and GL_VERSION), none, all, or a comma-separated list of\n",
+              [](const std::string& v, Options& o, Notes&, std::string& error) {
+                  return gl::parseWorkaroundsValue(v, o.scene.workarounds, error);
+              },
+              [](const SceneOptions& s) { return s.workarounds.value(); }),
+        other("--workarounds-file", "FILE",
+              "workarounds keyed by driver, one line each: NAME | RENDERER REGEX |\n"
+              "VERSION REGEX (-NAME: off); applied before --workarounds (default:\n"
+              "$OASIS_WORKAROUNDS)",
+              [](const std::string& v, Options& o, Notes&, std::string& error) {
+                  if (gl::readWorkaroundsFile(v, o.scene.workarounds, error)) return true;
+                  error = "--workarounds-file: " + error;
+                  return false;
+              },
+              [](const SceneOptions& s) { return s.workarounds.file; }),
         other("--api", "API",
               "gl (desktop OpenGL core, the default) or gles (an OpenGL ES 3.x context:\n"
               "ES 3.2 on Mesa; every command, the window included)",
@@ -347,9 +365,11 @@ std::vector<OptionRow> makeRows() {
     for (OptionRow& row : rows) {
         if (row.flag == std::string("--gbuffer"))
             row.helpTail = [] { return gbufferLayoutNames() + " (default " + kDefaultGBufferLayoutName + ")"; };
+        if (row.flag == std::string("--workarounds")) row.helpTail = [] { return gl::workaroundNames(); };
         if (row.flag == std::string("--no-compute") || row.flag == std::string("--gl-debug")) row.bare = true;
         // How this driver drew the picture, not what it shows; --gl-debug changes neither.
-        for (const char* driver : {"--api", "--force", "--no-compute", "--lights-path", "--light-method"})
+        for (const char* driver : {"--api", "--force", "--no-compute", "--lights-path", "--light-method", "--workarounds",
+                                   "--workarounds-file"})
             if (row.flag == std::string(driver)) row.provenance = SceneArgumentKind::Driver;
         if (row.flag == std::string("--gl-debug")) row.provenance = SceneArgumentKind::None;
     }

@@ -1,6 +1,8 @@
 // Command-line parsing; numbers are read against cli/input_domains.h (the help text: cli/usage.cpp).
 #include "cli/options.h"
 
+#include <cstdlib>
+
 #include <algorithm>
 #include <cctype>
 
@@ -281,6 +283,14 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
             return fail("unknown option '" + flag + "' (see oasis " + commandName(options.command) + " --help)");
         }
     }
+    // A workarounds file from the environment where the command line names none: every command,
+    // a compare's or check's children included (they inherit the variable), reads the same file.
+    if (options.scene.workarounds.file.empty())
+        if (const char* file = std::getenv(gl::kWorkaroundsEnvironment); file && *file) {
+            std::string error;
+            if (!gl::readWorkaroundsFile(file, options.scene.workarounds, error))
+                return fail("$" + std::string(gl::kWorkaroundsEnvironment) + ": " + error);
+        }
     if (options.scene.api == gl::Api::Gles) {
         if (options.scene.force.gl33) return fail("--force gl33 makes a desktop OpenGL 3.3 context: not with --api gles");
     } else if (options.scene.force.gles30) {

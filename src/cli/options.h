@@ -11,6 +11,7 @@
 #include "frame/pipeline.h"
 #include "frame/view_fill.h"
 #include "gl/capabilities.h"
+#include "gl/driver_workarounds.h"
 #include "render/frame_setup.h"
 #include "render/gbuffer_layout.h"
 #include "scene/camera.h"
@@ -34,6 +35,7 @@ struct SceneOptions {
     std::optional<LightsPath> lightsPath;    // forced light path; empty = from the context
     std::optional<LightMethod> lightMethod;  // forced deferred light method; empty = the default
     gl::ForcedFallbacks force;  // --force: capabilities switched off even where the driver has them
+    gl::WorkaroundRequest workarounds;  // --workarounds, --workarounds-file ($OASIS_WORKAROUNDS): gl/driver_workarounds.h
     gl::Api api = gl::Api::Gl;  // --api: desktop OpenGL core or OpenGL ES 3.x (headless commands)
 };
 

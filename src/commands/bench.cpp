@@ -218,6 +218,7 @@ std::vector<DepthPrecision> compareDepthPrecision(const RenderSession& session, 
     renderer.views().setPlantAtlas(session.plantAtlas.get());
     RendererCapabilities clipControl = renderer.paths().capabilities;
     clipControl.clipControl.available = session.caps.clipControlAvailable(&clipControl.clipControl.reason);
+    clipControl.workarounds = session.workarounds;  // the session's set, --workarounds applied
     renderer.setCapabilities(clipControl);
     std::vector<DepthPrecision> rows;
     for (const DepthConvention& depth : depthConventions()) {
@@ -264,6 +265,7 @@ int runBenchCommand(const Options& options) {
         Renderer& renderer = *session.renderer;
         std::string rendererName = queryContextInfo().renderer;
         BenchPlan plan = benchPlan(options);
+        plan.workarounds = session.workarounds.appliedList();
         plan.captureFirstTimedFrame = options.capture;
         plan.clock = session.timingClock();
         plan.seed = roundSeed(options);
@@ -295,10 +297,11 @@ int runBenchCommand(const Options& options) {
         std::FILE* tableOut = options.json ? stderr : stdout;
         std::fprintf(tableOut,
                      "oasis bench: %zu configurations (%zu sizes x %zu light counts x %zu frames), %s\n  timing: %s; "
-                     "each round's order random (seed %llu; --seed repeats it)\n  %s\n",
+                     "each round's order random (seed %llu; --seed repeats it)\n  %s\n  driver workarounds: %s\n",
                      configs.size(), plan.sizes.size(), plan.lightCounts.size(), frames.size(),
                      queryContextInfo().summary().c_str(), timingNote(plan.clock).c_str(),
-                     static_cast<unsigned long long>(plan.seed), describePlantAtlas(session).c_str());
+                     static_cast<unsigned long long>(plan.seed), describePlantAtlas(session).c_str(),
+                     plan.workarounds.empty() ? "none" : plan.workarounds.c_str());
         // A renderer per layout and depth convention (the session's for the default layout with
         // standard depth), so that configurations timed in turn never reallocate targets; forward
         // uses the default layout's.
@@ -310,6 +313,7 @@ int runBenchCommand(const Options& options) {
             extraRenderers.back()->views().setStencilPath(renderer.views().stencilPath());
             RendererCapabilities withClipControl = extraRenderers.back()->paths().capabilities;
             withClipControl.clipControl = {true, clipControlWhy};
+            withClipControl.workarounds = session.workarounds;  // the session's set, --workarounds applied
             extraRenderers.back()->setCapabilities(withClipControl);
             extraRenderers.back()->setDepthConvention(*findDepthConvention(depth));
             renderers[{layout, depth}] = extraRenderers.back().get();

@@ -24,6 +24,7 @@ struct BenchPlan {
     TimingClock clock;               // how passes are timed: measured at the run's start
     bool captureFirstTimedFrame = false;  // --capture: RenderDoc captures the run's first timed frame
     std::uint64_t seed = 0;  // each round's order of the configurations and the floor (--seed; printed)
+    std::string workarounds;  // the driver workarounds in effect ("a,b"; "" none): bench.json records them
 };
 BenchPlan benchPlan(const Options& options);
 

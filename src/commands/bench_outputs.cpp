@@ -72,6 +72,7 @@ std::string benchJson(const std::vector<BenchResult>& results, const std::vector
                        ", \"timing_note\": " + jsonString(timingNote(plan.clock)) +
                        ", \"frame_clock\": \"wall-glfinish\", \"pass_clock\": " + jsonString(plan.clock.name()) +
                        ", \"pass_clock_reason\": " + jsonString(plan.clock.reason) +
+                       ", \"workarounds\": " + jsonString(plan.workarounds) +
                        ", \"quick\": " + (options.quick ? "true" : "false") + ", \"seed\": " + std::to_string(plan.seed) +
                        ", \"round_order\": \"random\"" +
                        ", \"timed_frames_per_frame\": " + std::to_string(plan.timedFrames) +

@@ -79,6 +79,10 @@ void printText(const RenderSession& session) {
                     feature.used ? "yes" : "no", feature.limitedBy.empty() ? "-" : feature.limitedBy.c_str(),
                     feature.reason.c_str() + (prefixed ? notUsed.size() : 0));
     }
+    std::printf("driver workarounds (gl/driver_workarounds.h; --workarounds, --workarounds-file to change):\n");
+    std::printf("  %-30s %-7s %s\n", "workaround", "applied", "why");
+    for (const gl::WorkaroundState& state : session.workarounds.rows)
+        std::printf("  %-30s %-7s %s\n", state.name.c_str(), state.applied ? "yes" : "no", state.why.c_str());
 }
 
 void printJson(const RenderSession& session) {
@@ -116,6 +120,13 @@ void printJson(const RenderSession& session) {
     first = true;
     for (const std::string& line : session.fallbacks()) {
         json += (first ? "" : ", ") + jsonString(line);
+        first = false;
+    }
+    json += "], \"workarounds\": [";
+    first = true;
+    for (const gl::WorkaroundState& state : session.workarounds.rows) {
+        json += std::string(first ? "" : ", ") + "{\"name\": " + jsonString(state.name) +
+                ", \"applied\": " + (state.applied ? "true" : "false") + ", \"why\": " + jsonString(state.why) + "}";
         first = false;
     }
     std::printf("%s]}\n", json.c_str());

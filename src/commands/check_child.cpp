@@ -194,12 +194,13 @@ public:
             frame.context = {stringMember(*context, "gl_version"), stringMember(*context, "glsl_version"),
                              stringMember(*context, "renderer"), stringMember(*context, "api")};
         if (frame.rendered) {
-            std::string error, bytes;
-            if (!readPng(prefix + ".png", frame.image, error, &bytes)) {
+            std::string error;
+            PngTexts texts;
+            if (!readPng(prefix + ".png", frame.image, error, &texts)) {
                 run.outcome.error = "the child's frame cannot be read back: " + error;
                 frame.rendered = false;
             } else {
-                for (const PngText& text : readPngTexts(bytes).texts) frame.provenance.push_back(text);
+                frame.provenance = texts.texts;
             }
         }
         return run;

@@ -79,14 +79,14 @@ bool openReferenceSet(const std::string& dir, ReferenceSet& set, std::string& er
 
 ReferenceFrame readReferenceFrame(const std::string& dir, const std::string& caseName) {
     ReferenceFrame frame;
-    std::string path = dir + "/" + caseName + ".png", bytes;
+    std::string path = dir + "/" + caseName + ".png";
     struct stat info;
     if (stat(path.c_str(), &info) != 0) {
         frame.error = "no file " + path;
         return frame;
     }
-    if (!readPng(path, frame.image, frame.error, &bytes)) return frame;
-    PngTexts texts = readPngTexts(bytes);
+    PngTexts texts;
+    if (!readPng(path, frame.image, frame.error, &texts)) return frame;
     frame.renderer = textOf(texts, "oasis:renderer");
     frame.driverRelease = driverRelease(textOf(texts, "oasis:gl-version"));
     frame.readable = true;

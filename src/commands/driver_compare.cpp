@@ -45,6 +45,7 @@ struct Side {
     bool reference = false;
     std::string path;      // the PNG (a set-up's: in the staging directory until the set is written)
     std::string renderer;  // GL_RENDERER the child reported
+    std::string workarounds;  // the driver workarounds the child applied ("none"; "" for a reference)
     Image image;
     std::string bytes;     // a set-up's PNG file as its child wrote it
 };
@@ -78,13 +79,13 @@ std::string indented(const std::string& text) {
     return out;
 }
 
-// The renderer the child's `oasis render` reported ("oasis: renderer: NAME; GL VERSION"), or "".
-std::string reportedRenderer(const std::string& output) {
-    const std::string marker = "oasis: renderer: ";
+// The value of the child's `oasis render` line that starts with `marker`, up to the first of
+// `ends` or the line's end, or "": "oasis: renderer: NAME; GL VERSION", "oasis: workarounds: a,b".
+std::string reportedValue(const std::string& output, const std::string& marker, const char* ends) {
     size_t at = output.find(marker);
     if (at == std::string::npos) return {};
     size_t start = at + marker.size();
-    return output.substr(start, output.find_first_of(";\n", start) - start);
+    return output.substr(start, output.find_first_of(ends, start) - start);
 }
 
 std::string sizeText(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
@@ -152,7 +153,8 @@ int renderSide(const Options& options, Side& side, const std::vector<std::string
                      indented(child.output).c_str());
         return code == 2 ? 2 : 1;  // a usage error stays one (e.g. a reference's size outside --size's domain)
     }
-    side.renderer = reportedRenderer(child.output);
+    side.renderer = reportedValue(child.output, "oasis: renderer: ", ";\n");
+    side.workarounds = reportedValue(child.output, "oasis: workarounds: ", "\n");  // the driver workarounds applied
     const bool anyRenderer = side.setup && side.setup->rendererPrefix.empty();  // native: whatever this machine gives
     if (side.setup && !anyRenderer && side.renderer.rfind(side.setup->rendererPrefix, 0) != 0) {
         // Mesa falls back to another driver rather than failing: the frame is not the set-up's.
@@ -438,7 +440,8 @@ int runDriverCompare(const Options& given) {
         auto side = [](const Side& s) {
             return "{\"name\": " + jsonString(s.label) + ", \"kind\": " +
                    jsonString(s.reference ? "reference" : s.setup ? "set-up" : "here") + ", \"image\": " +
-                   jsonString(s.path) + ", \"renderer\": " + jsonString(s.renderer) + "}";
+                   jsonString(s.path) + ", \"renderer\": " + jsonString(s.renderer) + ", \"workarounds\": " +
+                   jsonString(s.workarounds) + "}";
         };
         std::printf("{\"a\": %s, \"b\": %s, \"width\": %d, \"height\": %d, \"pipeline\": \"%s\", \"options\": %s, "
                     "\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"pixels_differing\": %s, \"identical\": %s, "
@@ -457,7 +460,7 @@ int runDriverCompare(const Options& given) {
     for (const Side* s : {&a, &b})
         std::printf("  %-12s %s\n", (s->label + ":").c_str(),
                     printableText(s->reference ? "saved image " + s->path + (s->renderer.empty() ? "" : ", drawn on " + s->renderer)
-                                               : s->renderer + ", " + s->path).c_str());
+                                               : s->renderer + ", workarounds " + s->workarounds + ", " + s->path).c_str());
     std::fprintf(stderr, "  wrote %s\n", printableText(differencePath).c_str());  // a log line: stderr, as every command's
     return 0;
 }

@@ -430,6 +430,9 @@ int runRenderCommand(const Options& options) {
         // compare --driver reads this line to tell whether the set-up got the driver it asked for.
         ContextInfo context = queryContextInfo();
         std::fprintf(report, "oasis: renderer: %s; GL %s\n", context.renderer.c_str(), context.version.c_str());
+        // compare --driver records this line in its report: the driver workarounds that drew the frame.
+        const std::string applied = session.workarounds.appliedList();
+        std::fprintf(report, "oasis: workarounds: %s\n", applied.empty() ? "none" : applied.c_str());
         std::fprintf(report, "oasis: %s\n", describePlantAtlas(session).c_str());
         std::fprintf(report, "oasis: %s\n", describeVegetation(renderer).c_str());
         std::fprintf(report, "oasis: %s\n", describeLights(renderer).c_str());

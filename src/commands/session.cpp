@@ -6,6 +6,7 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <set>
 #include <cstdio>
 #include <stdexcept>
 #include <vector>
@@ -21,8 +22,10 @@ SceneSettings sceneSettingsFrom(const SceneOptions& options) {
     return scene;
 }
 
-RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const SceneSettings& scene) {
+RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const SceneSettings& scene,
+                                          const gl::WorkaroundSet& workarounds) {
     RendererCapabilities c;
+    c.workarounds = workarounds;
     c.ssbo.available = caps.ssboAvailable(&c.ssbo.reason);
     c.compute.available = caps.computeAvailable(&c.compute.reason);
     c.clipControl.available = caps.clipControlAvailable(&c.clipControl.reason);
@@ -51,6 +54,15 @@ StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optiona
 }
 
 namespace {
+// "oasis: workaround: NAME (WHY)" on stderr for each applied workaround, once a process: a check
+// or a bench makes many sessions on one driver, and the set is the same in each.
+void reportWorkaroundsOnce(const gl::WorkaroundSet& set) {
+    static std::set<std::string> printed;
+    for (const gl::WorkaroundState& state : set.rows) {
+        std::string line = "oasis: workaround: " + state.name + " (" + state.why + ")";
+        if (state.applied && printed.insert(line).second) std::fprintf(stderr, "%s\n", line.c_str());
+    }
+}
 // A report row: `can` says whether the driver has the feature and whether --force leaves it.
 gl::FeatureReport reportOf(std::string name, bool used, std::string reason, const gl::Availability& can) {
     return {std::move(name), used, std::move(reason), can.driver, gl::limitedBy(used, can)};
@@ -119,7 +131,10 @@ std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
 }
 
 RenderSession::RenderSession(const Options& options, Shaders need)
-    : caps(gl::measureCapabilities(options.scene.force)), scene(sceneSettingsFrom(options.scene)) {
+    : caps(gl::measureCapabilities(options.scene.force)),
+      workarounds(gl::resolveWorkarounds(options.scene.workarounds, caps.renderer, caps.version)),
+      scene(sceneSettingsFrom(options.scene)) {
+    reportWorkaroundsOnce(workarounds);
     std::string searched;
     std::string directory = findShaderDirectory(&searched);
     if (directory.empty() && need == Shaders::Required)
@@ -132,7 +147,7 @@ RenderSession::RenderSession(const Options& options, Shaders need)
         dialect.defines.push_back(noDepthClamp);
     shaders = std::make_unique<ShaderLibrary>(directory, dialect);
     renderer = std::make_unique<Renderer>(*shaders, scene);
-    rendererCaps = rendererCapabilities(caps, scene);
+    rendererCaps = rendererCapabilities(caps, scene, workarounds);
     renderer->setCapabilities(rendererCaps);
     renderer->setDepthConvention(*findDepthConvention(options.scene.depth));
     renderer->configure(options.scene.width, options.scene.height, *findGBufferLayout(options.scene.gbuffer));

@@ -29,13 +29,18 @@ StencilViewPath chooseStencilViewPath(const gl::Capabilities& caps, std::optiona
 MaxGlVersion maxGlVersionFor(const SceneOptions& options);
 
 // What the context offers a renderer (frame/render_paths.h), measured once with --force applied.
-RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const SceneSettings& scene);
+// `workarounds`: the driver workarounds in effect (gl/driver_workarounds.h), the session's.
+RendererCapabilities rendererCapabilities(const gl::Capabilities& caps, const SceneSettings& scene,
+                                          const gl::WorkaroundSet& workarounds);
 
 // Everything a command renders with, on the current context. Throws std::runtime_error with a
 // readable message when the shaders cannot be found (or OASIS_SHADER_DIR is bad) or the targets
 // cannot be allocated.
 struct RenderSession {
     gl::Capabilities caps;  // measured once from the context, with --force applied
+    // The driver workarounds in effect: the table's for this GL_RENDERER / GL_VERSION, the
+    // --workarounds-file's ($OASIS_WORKAROUNDS) rules and --workarounds applied, each with why.
+    gl::WorkaroundSet workarounds;
     RendererCapabilities rendererCaps;  // from caps: what every renderer of the session is given
     std::unique_ptr<ShaderLibrary> shaders;
     std::unique_ptr<Renderer> renderer;

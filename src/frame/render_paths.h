@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "gl/driver_workarounds.h"
 #include "render/depth_convention.h"
 #include "render/gbuffer_layout.h"
 #include "render/light_method.h"
@@ -26,6 +27,9 @@ struct RendererCapabilities {
     Feature norm16Targets;
     std::optional<LightsPath> forcedLightsPath;
     std::optional<LightMethod> forcedLightMethod;
+    // The driver workarounds in effect (gl/driver_workarounds.h): the table's default for this
+    // context's GL_RENDERER until a session gives the set its request resolved to.
+    gl::WorkaroundSet workarounds;
 };
 
 // The renderer's capabilities and its choices from them and the scene: those of the last frame

@@ -34,6 +34,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     given.ssbo.reason = ssboMissingReason_;
     given.forcedLightsPath = scene.lights.path;
     given.forcedLightMethod = scene.lights.method;
+    // The table's driver workarounds for this context; a session gives its request's set instead.
+    given.workarounds = gl::resolveWorkarounds({}, caps.renderer, caps.version);
     GLint maxBlockSize = 16384, maxVertexBlocks = 12, maxFragmentBlocks = 12;
     glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &maxBlockSize);
     glGetIntegerv(GL_MAX_VERTEX_UNIFORM_BLOCKS, &maxVertexBlocks);
@@ -126,6 +128,7 @@ PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup&
                         frame_.waterBounded ? waterSeen_.name() : 0u};
     context.drawDepthStencilReads = !paths_.capabilities.depthStencilRead.available;
     context.depthClamp = shadowMaps_.depthClamp();  // the dialect's answer (OASIS_NO_DEPTH_CLAMP)
+    context.flushBeforeComputeRead = paths_.capabilities.workarounds.has(gl::Workaround::FlushBeforeComputeRead);
     return context;
 }
 

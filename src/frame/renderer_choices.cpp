@@ -103,6 +103,8 @@ void Renderer::chooseWaterBounds() {
     std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(paths_.uboLights.capacity),
                                         "LIGHTS_UBO_BLOCKS " + std::to_string(paths_.uboLights.blocks)};
     if (paths_.waterBoundsAvailable) defines.push_back("WATER_BOUNDS 1");
+    // The driver workarounds that live in shaders (OASIS_ARRAY_WRITE_BY_LOOP): a #define each.
+    for (const std::string& define : paths_.capabilities.workarounds.defines()) defines.push_back(define);
     if (defines != shaders_.contextDefines()) shaders_.setContextDefines(defines);
 }
 

@@ -65,6 +65,13 @@ std::vector<ProgramVariant> fixedVariants() {
         {"water.mask.plane", "water.vert", "water_mask.frag", {"WATER_PLANE_ONLY"}},
         {"reflection.upsample", "fullscreen.vert", "reflection_upsample.frag", {"WATER_BOUNDED"}},
         {"water.composite", "water.vert", "water_composite.frag", {}},
+        // The water without depth clamp: a full-screen triangle finding the plane per fragment
+        // (common/water_fragment.glsl), where the grid would lose the water nearer than the near plane.
+        {"water.mask.fullscreen", "fullscreen.vert", "water_mask.frag", {"WATER_FULLSCREEN"}},
+        {"water.mask.plane.fullscreen", "fullscreen.vert", "water_mask.frag", {"WATER_PLANE_ONLY", "WATER_FULLSCREEN"}},
+        {"water.composite.fullscreen", "fullscreen.vert", "water_composite.frag", {"WATER_FULLSCREEN"}},
+        {"water.composite.tonemapped.fullscreen", "fullscreen.vert", "water_composite.frag",
+         {"TONE_MAP_FUSED", "WATER_FULLSCREEN"}},
         // The tone map fused into the pass that writes a pixel's colour last (docs/architecture.md: the
         // full-screen passes): ".tonemapped" variants also write Final; "tonemap" is the separate pass.
         {"water.composite.tonemapped", "water.vert", "water_composite.frag", {"TONE_MAP_FUSED"}},

@@ -29,7 +29,7 @@ const std::vector<Arguments> kRenderOptionValues = {
     {"--vegetation", "off"}, {"--vegetation-density", "2"}, {"--wind", "0"}, {"--billboards", "whole"},
     {"--tone-map", "separate"}, {"--depth-read", "copy"}, {"--no-compute"}, {"--gl-debug"}, {"--lights", "16"},
     {"--lights-path", "ubo"}, {"--light-method", "tiled"}, {"--force", "no-ssbo"}, {"--api", "gles"},
-    {"--depth", "reversed-z"}, {"--gbuffer", "full"}, {"--gbuffer", "standard"}, {"--pipeline", "forward"},
+    {"--workarounds", "all"}, {"--workarounds-file", "/dev/null"}, {"--depth", "reversed-z"}, {"--gbuffer", "full"}, {"--gbuffer", "standard"}, {"--pipeline", "forward"},
     {"--view", "albedo"}, {"--view", "radiance"}, {"--view", "overview"}, {"--view", "stencil"},
     {"--view", "normal-error"}, {"--view-exposure", "2"}, {"--channel", "r"}, {"--range", "0,1"},
     {"--overlay", "negative"}, {"--legend", "off"}, {"--stencil-view", "read-back"}, {"--water-scene", "mirrored"},

@@ -24,7 +24,7 @@ namespace {
 std::string exampleValue(const OptionRow& row) {
     static const std::vector<std::pair<std::string, std::string>> kUnsetByDefault = {
         {"--hour", "18"}, {"--camera", "1,20,3,45,-10"}, {"--lights-path", "ubo"},
-        {"--light-method", "tiled"}, {"--force", "no-ssbo"}};
+        {"--light-method", "tiled"}, {"--force", "no-ssbo"}, {"--workarounds-file", "/dev/null"}};
     for (const auto& [flag, value] : kUnsetByDefault)
         if (flag == row.flag) return value;
     return optionValue(row, SceneOptions{});

@@ -24,6 +24,7 @@ const std::map<std::string, std::string> kExamples = {
     {"--depth-read", "copy"},      {"--shadows", "off"},        {"--shadow-quality", "high"},
     {"--lights", "64"},            {"--api", "gles"},           {"--force", "no-ssbo,no-dsa"},
     {"--no-compute", ""},          {"--lights-path", "ubo"},    {"--light-method", "tiled"},
+    {"--workarounds", "none"},     {"--workarounds-file", "/dev/null"},  // an empty file: no rules
 };
 
 SceneOptions parsed(const std::vector<std::string>& arguments) {
@@ -79,7 +80,8 @@ TEST(SceneArguments, AllAtOnceInTheTablesOrder) {
     std::vector<std::string> line = written(scene);
     EXPECT_EQ(line, given);
     EXPECT_EQ(joinArguments(sceneArguments(scene, SceneArgumentKind::Driver)),
-              "--no-compute --lights-path ubo --light-method tiled --force no-ssbo,no-dsa --api gles");
+              "--no-compute --lights-path ubo --light-method tiled --force no-ssbo,no-dsa --workarounds none "
+              "--workarounds-file /dev/null --api gles");
     SceneOptions again = parsed(line);
     EXPECT_EQ(again.camera->position.y, 14.25);
     EXPECT_EQ(again.camera->pitchDegrees, -10.0f);
@@ -90,7 +92,8 @@ TEST(SceneArguments, AllAtOnceInTheTablesOrder) {
 TEST(SceneArguments, KindsSplitPictureFromDriver) {
     for (const char* flag : {"--size", "--hour", "--camera", "--gbuffer", "--lights", "--shadows"})
         EXPECT_EQ(findSceneArgument(flag)->kind, SceneArgumentKind::Picture) << flag;
-    for (const char* flag : {"--api", "--force", "--no-compute", "--lights-path", "--light-method"})
+    for (const char* flag : {"--api", "--force", "--no-compute", "--lights-path", "--light-method", "--workarounds",
+                             "--workarounds-file"})
         EXPECT_EQ(findSceneArgument(flag)->kind, SceneArgumentKind::Driver) << flag;
     for (const char* flag : {"--view", "--out", "--pipeline", "--legend", "--gl-debug", "--reference"})
         EXPECT_EQ(findSceneArgument(flag), nullptr) << flag;

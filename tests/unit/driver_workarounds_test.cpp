@@ -1,0 +1,76 @@
+// The driver workarounds' table and how a request resolves against a driver (gl/driver_workarounds.h):
+// the table's default by GL_RENDERER, the file's rules, --workarounds last, each with why.
+#include <gtest/gtest.h>
+
+#include "gl/driver_workarounds.h"
+
+namespace oasis::gl {
+namespace {
+
+const char* kSoftpipe = "softpipe";
+const char* kLlvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)";
+const char* kVersion = "3.3 (Core Profile) Mesa 22.3.6";
+
+TEST(DriverWorkarounds, TableRowsAreComplete) {
+    ASSERT_EQ(workaroundTable().size(), 2u);
+    for (const WorkaroundRow& row : workaroundTable()) {
+        EXPECT_EQ(findWorkaround(row.name), &row);
+        for (const char* field : {row.bug, row.renderer, row.instead, row.cost, row.test}) EXPECT_STRNE(field, "");
+    }
+}
+
+TEST(DriverWorkarounds, DefaultAppliesTheTableBySoftpipesRenderer) {
+    WorkaroundSet softpipe = resolveWorkarounds({}, kSoftpipe, kVersion);
+    EXPECT_TRUE(softpipe.has(Workaround::FlushBeforeComputeRead));
+    EXPECT_TRUE(softpipe.has(Workaround::ArrayWriteByLoop));
+    EXPECT_EQ(softpipe.defines(), std::vector<std::string>{"OASIS_ARRAY_WRITE_BY_LOOP 1"});
+    EXPECT_EQ(softpipe.rows[0].why, "table: GL_RENDERER /softpipe/");
+    WorkaroundSet llvmpipe = resolveWorkarounds({}, kLlvmpipe, kVersion);
+    EXPECT_EQ(llvmpipe.appliedList(), "");
+    EXPECT_EQ(llvmpipe.rows[1].why, "table: no match: GL_RENDERER /softpipe/");
+}
+
+TEST(DriverWorkarounds, CommandLineValueOverridesTheTable) {
+    WorkaroundRequest request;
+    std::string error;
+    ASSERT_TRUE(parseWorkaroundsValue("none", request, error));
+    EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).appliedList(), "");
+    ASSERT_TRUE(parseWorkaroundsValue("all", request, error));
+    EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).appliedList(), "flush-before-compute-read,array-write-by-loop");
+    ASSERT_TRUE(parseWorkaroundsValue("array-write-by-loop", request, error));
+    WorkaroundSet one = resolveWorkarounds(request, kSoftpipe, kVersion);
+    EXPECT_EQ(one.appliedList(), "array-write-by-loop");
+    EXPECT_EQ(one.rows[0].why, "--workarounds array-write-by-loop (not listed)");
+    EXPECT_FALSE(parseWorkaroundsValue("no-such", request, error));
+    EXPECT_NE(error.find("got 'no-such'"), std::string::npos);
+}
+
+TEST(DriverWorkarounds, FileRulesMatchRendererAndVersion) {
+    WorkaroundRequest request;
+    std::string error;
+    ASSERT_TRUE(parseWorkaroundRules("# comment\n-array-write-by-loop | softpipe | Mesa 22\\.3\n"
+                                     "flush-before-compute-read | llvmpipe\n",
+                                     "w.txt", request.rules, error))
+        << error;
+    WorkaroundSet softpipe = resolveWorkarounds(request, kSoftpipe, kVersion);
+    EXPECT_EQ(softpipe.appliedList(), "flush-before-compute-read");  // the table's, the file switched one off
+    EXPECT_EQ(softpipe.rows[1].why, "w.txt:2: off for GL_RENDERER /softpipe/, GL_VERSION /Mesa 22\\.3/");
+    EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, "3.3 Mesa 23.1").appliedList(),
+              "flush-before-compute-read,array-write-by-loop");  // another version: the table's
+    EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).appliedList(), "flush-before-compute-read");
+    EXPECT_FALSE(parseWorkaroundRules("bogus | x\n", "w.txt", request.rules, error));
+    EXPECT_EQ(error, "w.txt:1: unknown workaround 'bogus' (one of: flush-before-compute-read, array-write-by-loop)");
+    EXPECT_FALSE(parseWorkaroundRules("array-write-by-loop | (\n", "w.txt", request.rules, error));
+}
+
+TEST(DriverWorkarounds, TheTableAsAFileReadsBackToTheTable) {
+    WorkaroundRequest request;
+    std::string error;
+    ASSERT_TRUE(parseWorkaroundRules(workaroundTableText(), "table", request.rules, error)) << error;
+    EXPECT_EQ(request.rules.size(), workaroundTable().size());
+    EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).appliedList(),
+              resolveWorkarounds({}, kSoftpipe, kVersion).appliedList());
+}
+
+}  // namespace
+}  // namespace oasis::gl
