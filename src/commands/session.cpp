@@ -130,8 +130,22 @@ std::unique_ptr<Renderer> RenderSession::makeRenderer() const {
     return second;
 }
 
+// --force, and the forced fallbacks a workarounds file or --workarounds names (a profile `oasis
+// check` proposed): resolved against the context's own strings before the capabilities are
+// measured with them.
+static gl::ForcedFallbacks forcedFallbacksOf(const Options& options) {
+    gl::ForcedFallbacks forced = options.scene.force;
+    ContextInfo context = queryContextInfo();
+    for (const std::string& name : gl::resolveWorkarounds(options.scene.workarounds, context.renderer, context.version)
+                                       .forcedFallbacks()) {
+        std::string error;
+        gl::parseForcedFallbacks(name, forced, error);  // the table's own names: they parse
+    }
+    return forced;
+}
+
 RenderSession::RenderSession(const Options& options, Shaders need)
-    : caps(gl::measureCapabilities(options.scene.force)),
+    : caps(gl::measureCapabilities(forcedFallbacksOf(options))),
       workarounds(gl::resolveWorkarounds(options.scene.workarounds, caps.renderer, caps.version)),
       scene(sceneSettingsFrom(options.scene)) {
     reportWorkaroundsOnce(workarounds);

@@ -24,6 +24,18 @@ std::string keyText(const std::string& renderer, const std::string& version) {
     return "GL_RENDERER /" + renderer + "/" + (version.empty() ? std::string() : ", GL_VERSION /" + version + "/");
 }
 
+WorkaroundRow forcedFallbackRow(const char* name, const char* fallback, const char* leavesOut) {
+    WorkaroundRow row{Workaround::ForcedFallback, name,
+                      "crashes, hangs or draws wrong on the path this fallback leaves out (what oasis check proposes "
+                      "in oasis-check/workarounds for such a driver)",
+                      "", "", leavesOut,
+                      "the fallback's own (docs/compatibility.md: every forced fallback draws the unforced image on "
+                      "llvmpipe)",
+                      "cli.check_driver_crash", ""};
+    row.forces = fallback;
+    return row;
+}
+
 }  // namespace
 
 const std::vector<WorkaroundRow>& workaroundTable() {
@@ -46,6 +58,16 @@ const std::vector<WorkaroundRow>& workaroundTable() {
          "four compares per tile pixel in LightTilingPass; on llvmpipe (not applied there) the frame is "
          "bit-identical with it and the pass's time the same within this machine's noise (docs/drivers.md)",
          "driver_bug.indexed_array_write.softpipe", "OASIS_ARRAY_WRITE_BY_LOOP 1"},
+        // The forced fallbacks a profile may name (commands/check_profile.h): a driver that
+        // crashes, hangs or draws wrong on a path is given the fallback that leaves the path out.
+        forcedFallbackRow("force-no-compute", "no-compute", "compute shaders: the plants interpreted and the lights tiled on the CPU's side"),
+        forcedFallbackRow("force-no-ssbo", "no-ssbo", "storage buffers: the UBO light list, volume lights"),
+        forcedFallbackRow("force-no-stencil-texturing", "no-stencil-texturing", "stencil texturing: the stencil view read back"),
+        forcedFallbackRow("force-no-depth-clamp", "no-depth-clamp", "depth clamp: the shadow casters and the water without it"),
+        forcedFallbackRow("force-no-clip-control", "no-clip-control", "clip control: standard depth"),
+        forcedFallbackRow("force-no-read-only-depth", "no-read-only-depth", "sampling a depth buffer also bound for testing: a copy"),
+        forcedFallbackRow("force-no-dsa", "no-dsa", "direct state access: bind-to-edit"),
+        forcedFallbackRow("force-gl33", "gl33", "everything past OpenGL 3.3: the gl33 tier"),
     };
     return rows;
 }
@@ -170,6 +192,15 @@ std::vector<std::string> WorkaroundSet::defines() const {
     return list;
 }
 
+std::vector<std::string> WorkaroundSet::forcedFallbacks() const {
+    std::vector<std::string> names;
+    for (const WorkaroundState& state : rows) {
+        const WorkaroundRow* row = findWorkaround(state.name);
+        if (state.applied && row && *row->forces) names.push_back(row->forces);
+    }
+    return names;
+}
+
 std::string WorkaroundSet::appliedList() const {
     std::string list;
     for (const WorkaroundState& state : rows)
@@ -182,8 +213,11 @@ WorkaroundSet resolveWorkarounds(const WorkaroundRequest& request, const std::st
     WorkaroundSet set;
     for (const WorkaroundRow& row : workaroundTable()) {
         WorkaroundState state{row.name, false, {}};
-        state.applied = keyMatches(row.renderer, renderer) && keyMatches(row.version, version);
-        state.why = std::string("table: ") + (state.applied ? "" : "no match: ") + keyText(row.renderer, row.version);
+        bool forced = *row.forces != 0;
+        state.applied = !forced && keyMatches(row.renderer, renderer) && keyMatches(row.version, version);
+        state.why = forced ? std::string("table: only where a workarounds file or --workarounds names it (--force ") +
+                                 row.forces + ")"
+                           : std::string("table: ") + (state.applied ? "" : "no match: ") + keyText(row.renderer, row.version);
         for (const WorkaroundRule& rule : request.rules)
             if (rule.name == row.name && keyMatches(rule.renderer, renderer) && keyMatches(rule.version, version)) {
                 state.applied = rule.on;
@@ -191,7 +225,7 @@ WorkaroundSet resolveWorkarounds(const WorkaroundRequest& request, const std::st
             }
         using Mode = WorkaroundRequest::Mode;
         if (request.mode == Mode::None || request.mode == Mode::All) {
-            state.applied = request.mode == Mode::All;
+            state.applied = request.mode == Mode::All && !forced;
             state.why = "--workarounds " + request.value();
         } else if (request.mode == Mode::List) {
             state.applied = false;
@@ -206,7 +240,8 @@ WorkaroundSet resolveWorkarounds(const WorkaroundRequest& request, const std::st
 std::string workaroundTableText() {
     std::string text = "# oasis driver workarounds: NAME | GL_RENDERER regex | GL_VERSION regex (-NAME: off)\n";
     for (const WorkaroundRow& row : workaroundTable())
-        text += std::string(row.name) + " | " + row.renderer + (*row.version ? std::string(" | ") + row.version : "") + "\n";
+        if (!*row.forces)  // a forced-fallback row has no driver of its own to key it by
+            text += std::string(row.name) + " | " + row.renderer + (*row.version ? std::string(" | ") + row.version : "") + "\n";
     return text;
 }
 

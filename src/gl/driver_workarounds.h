@@ -13,6 +13,7 @@ namespace oasis::gl {
 enum class Workaround {
     FlushBeforeComputeRead,  // glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT) before a dispatch that reads a drawn texture
     ArrayWriteByLoop,        // local arrays written through a loop over constant indices (a shader #define)
+    ForcedFallback,          // a --force fallback, applied only where a file or --workarounds names it
 };
 
 struct WorkaroundRow {
@@ -25,6 +26,10 @@ struct WorkaroundRow {
     const char* cost;      // measured cost where it is applied, and elsewhere
     const char* test;      // the ctest that shows the bug and the mend (tests/driver_bugs/)
     const char* define;    // the #define the shaders get where it is applied ("" none)
+    // A forced-fallback row (`oasis check`'s proposed profiles are made of them): the --force name it
+    // applies. Such a row has no driver of its own: it is applied only where a workarounds file or
+    // --workarounds NAME asks, never by default nor by --workarounds all.
+    const char* forces = "";
 };
 
 // Every row, in a fixed order.
@@ -76,6 +81,7 @@ struct WorkaroundSet {
     bool has(Workaround id) const;
     std::vector<std::string> defines() const;  // the applied rows' shader #defines ("NAME 1")
     std::string appliedList() const;           // "flush-before-compute-read,array-write-by-loop" ("" none)
+    std::vector<std::string> forcedFallbacks() const;  // the applied forced-fallback rows' --force names
 };
 
 // The table's default for this driver, then the file's matching rules in order, then the

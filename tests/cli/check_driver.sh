@@ -6,7 +6,9 @@
 #                case that dispatches is `crash`, naming the signal and where it died (PlantAtlas,
 #                LightTilingPass), the case without compute passes with a note that the main path
 #                crashed, the driver's report is re-measured without compute; JUnit has one failure
-#                per crash; `render --no-compute` draws on the same driver
+#                per crash; `render --no-compute` draws on the same driver; the check proposes the
+#                profile --force no-compute (oasis-check/workarounds), and with it applied
+#                ($OASIS_WORKAROUNDS, --workarounds-file) render and the main job succeed there
 #   hang         glDispatchCompute never returns: those cases are `timeout` after --case-timeout,
 #                their process groups killed; the run ends within its bound and writes its report
 #   flake        glDispatchCompute aborts in one process only (the second to call it: the driver's
@@ -87,6 +89,18 @@ print("crash: %d crash, %d pass" % (report["summary"]["crash"], report["summary"
         fail "no stdout line naming the crash, its blame and where: $(head -n 5 out.txt)"
     broken glDispatchCompute abort render --no-compute --size 160x90 --out nocompute.png 2> render.err ||
         fail "render --no-compute on the same driver: exit $?"
+    # The proposed profile, applied to every command, makes them work on this driver.
+    grep -q "^force-no-compute | ^llvmpipe" out/workarounds || fail "no profile proposed: $(cat out/workarounds 2>&1)"
+    grep -q "^  proposed: --force no-compute mends every crash and failure" out.txt || fail "no proposal on stdout"
+    report_says out/report.json 'p = report["proposed_workarounds"]; assert p["found"] and p["fallbacks"] == ["no-compute"], p'
+    OASIS_WORKAROUNDS=out/workarounds broken glDispatchCompute abort render --size 160x90 --out profiled.png \
+        2> profiled.err || fail "render with the proposed profile: exit $?: $(tail -n 3 profiled.err)"
+    grep -q "^oasis: workaround: force-no-compute (out/workarounds:4: " profiled.err ||
+        fail "render did not say it applied the profile: $(grep workaround profiled.err)"
+    broken glDispatchCompute abort --workarounds-file out/workarounds --size 320x180 --frames 3 --out-dir main \
+        > main.txt 2> main.err || fail "the main job with the proposed profile: exit $?: $(tail -n 3 main.err)"
+    broken glDispatchCompute abort render --size 160x90 --out unprofiled.png 2> /dev/null &&
+        fail "the stand-in driver no longer crashes without the profile"
     echo "check_driver crash: OK in $(($(date +%s) - start)) s" ;;
 hang)
     broken glDispatchCompute hang check --case '0[45]-*' --case-timeout 4 --retries 0 --references "$references" \

@@ -2,6 +2,7 @@
 // the table's default by GL_RENDERER, the file's rules, --workarounds last, each with why.
 #include <gtest/gtest.h>
 
+#include "gl/capabilities.h"
 #include "gl/driver_workarounds.h"
 
 namespace oasis::gl {
@@ -12,10 +13,19 @@ const char* kLlvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)";
 const char* kVersion = "3.3 (Core Profile) Mesa 22.3.6";
 
 TEST(DriverWorkarounds, TableRowsAreComplete) {
-    ASSERT_EQ(workaroundTable().size(), 2u);
+    ASSERT_EQ(workaroundTable().size(), 10u);  // two driver bugs, eight forced fallbacks
     for (const WorkaroundRow& row : workaroundTable()) {
         EXPECT_EQ(findWorkaround(row.name), &row);
-        for (const char* field : {row.bug, row.renderer, row.instead, row.cost, row.test}) EXPECT_STRNE(field, "");
+        for (const char* field : {row.bug, row.instead, row.cost, row.test}) EXPECT_STRNE(field, "");
+        // A bug's row names its drivers; a forced fallback's its --force name, and no driver.
+        if (*row.forces) {
+            EXPECT_STREQ(row.renderer, "") << row.name;
+            std::string error;
+            ForcedFallbacks parsed;
+            EXPECT_TRUE(parseForcedFallbacks(row.forces, parsed, error)) << row.forces << ": " << error;
+        } else {
+            EXPECT_STRNE(row.renderer, "") << row.name;
+        }
     }
 }
 
@@ -59,15 +69,34 @@ TEST(DriverWorkarounds, FileRulesMatchRendererAndVersion) {
               "flush-before-compute-read,array-write-by-loop");  // another version: the table's
     EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).appliedList(), "flush-before-compute-read");
     EXPECT_FALSE(parseWorkaroundRules("bogus | x\n", "w.txt", request.rules, error));
-    EXPECT_EQ(error, "w.txt:1: unknown workaround 'bogus' (one of: flush-before-compute-read, array-write-by-loop)");
+    EXPECT_EQ(error.rfind("w.txt:1: unknown workaround 'bogus' (one of: flush-before-compute-read, array-write-by-loop, "
+                          "force-no-compute", 0), 0u) << error;
     EXPECT_FALSE(parseWorkaroundRules("array-write-by-loop | (\n", "w.txt", request.rules, error));
+}
+
+TEST(DriverWorkarounds, ForcedFallbacksApplyOnlyWhereAFileOrTheListNamesThem) {
+    EXPECT_TRUE(resolveWorkarounds({}, kSoftpipe, kVersion).forcedFallbacks().empty());
+    WorkaroundRequest request;
+    std::string error;
+    ASSERT_TRUE(parseWorkaroundsValue("all", request, error));
+    EXPECT_TRUE(resolveWorkarounds(request, kLlvmpipe, kVersion).forcedFallbacks().empty());
+    // A proposed profile (oasis check's oasis-check/workarounds) keyed by this renderer and release.
+    ASSERT_TRUE(parseWorkaroundRules("force-no-compute | ^llvmpipe \\(LLVM 15\\.0\\.6, 256 bits\\)$ | Mesa 22\\.3\\.6$\n",
+                                     "profile", request.rules, error))
+        << error;
+    request.mode = WorkaroundRequest::Mode::Default;
+    WorkaroundSet here = resolveWorkarounds(request, kLlvmpipe, kVersion);
+    EXPECT_EQ(here.forcedFallbacks(), std::vector<std::string>{"no-compute"});
+    EXPECT_EQ(here.appliedList(), "force-no-compute");
+    EXPECT_TRUE(resolveWorkarounds(request, kLlvmpipe, "3.3 (Core Profile) Mesa 23.0.1").forcedFallbacks().empty());
+    EXPECT_TRUE(resolveWorkarounds(request, kSoftpipe, kVersion).forcedFallbacks().empty());
 }
 
 TEST(DriverWorkarounds, TheTableAsAFileReadsBackToTheTable) {
     WorkaroundRequest request;
     std::string error;
     ASSERT_TRUE(parseWorkaroundRules(workaroundTableText(), "table", request.rules, error)) << error;
-    EXPECT_EQ(request.rules.size(), workaroundTable().size());
+    EXPECT_EQ(request.rules.size(), 2u);  // the driver bugs' rows: a forced fallback has no key
     EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).appliedList(),
               resolveWorkarounds({}, kSoftpipe, kVersion).appliedList());
 }
