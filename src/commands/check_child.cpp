@@ -108,6 +108,10 @@ int childDriver(const Options& options) {
                     (row.available ? "true" : "false") + ", \"used\": " + (row.used ? "true" : "false") +
                     ", \"reason\": " + jsonString(row.reason) + ", \"limited_by\": " + jsonString(row.limitedBy) + "}";
         }
+        json += "], \"workarounds\": [";
+        for (size_t i = 0; i < driver.workarounds.size(); ++i)
+            json += std::string(i ? ", " : "") + "{\"name\": " + jsonString(driver.workarounds[i].first) +
+                    ", \"why\": " + jsonString(driver.workarounds[i].second) + "}";
         json += "], \"error\": \"\"}";
     } catch (const std::exception& error) {
         json = "{\"error\": " + jsonString(error.what()) + "}";
@@ -240,6 +244,9 @@ public:
             for (const JsonValue& row : caps->items)
                 driver.caps.push_back({stringMember(row, "feature"), boolMember(row, "available"), boolMember(row, "used"),
                                        stringMember(row, "reason"), stringMember(row, "limited_by")});
+        if (const JsonValue* workarounds = answer.find("workarounds"); workarounds && workarounds->isArray())
+            for (const JsonValue& row : workarounds->items)
+                driver.workarounds.push_back({stringMember(row, "name"), stringMember(row, "why")});
         return run;
     }
 

@@ -117,6 +117,9 @@ std::string summary(const CheckReport& report) {
             fact("cases ran in", report.isolation) +
             fact("reference set", report.referenceDir.empty() ? "" : report.referenceDir + " (" + report.referenceHash + ")");
     if (!report.baselineDir.empty()) html += fact("baseline", report.baselineDir);
+    std::string workarounds;
+    for (const auto& [name, why] : report.workarounds) workarounds += (workarounds.empty() ? "" : "; ") + name + " (" + why + ")";
+    html += fact("workarounds", workarounds.empty() ? "none" : workarounds);
     for (const std::string& note : report.notes) html += fact("note", note);
     html += "</table>\n</header>\n";
     return html;

@@ -156,6 +156,8 @@ CheckReport driverReport(const std::vector<std::string>& arguments) {
     report.api = caps.es ? "OpenGL ES" : "OpenGL";
     for (const gl::FeatureReport& feature : session.features())
         report.caps.push_back({feature.name, feature.available, feature.used, feature.reason, feature.limitedBy});
+    for (const gl::WorkaroundState& state : session.workarounds.rows)
+        if (state.applied) report.workarounds.push_back({state.name, state.why});
     return report;
 }
 

@@ -168,7 +168,11 @@ std::string checkReportJson(const CheckReport& report) {
     json += ", \"oasis\": {\"version\": " + jsonString(report.oasisVersion) + ", \"commit\": " + jsonString(report.oasisCommit) + "}";
     json += ", \"driver\": {\"vendor\": " + jsonString(report.vendor) + ", \"renderer\": " + jsonString(report.renderer) +
             ", \"version\": " + jsonString(report.glVersion) + ", \"glsl_version\": " + jsonString(report.glslVersion) +
-            ", \"api\": " + jsonString(report.api) + "}";
+            ", \"api\": " + jsonString(report.api) + ", \"workarounds\": [";
+    for (size_t i = 0; i < report.workarounds.size(); ++i)
+        json += std::string(i ? ", " : "") + "{\"name\": " + jsonString(report.workarounds[i].first) + ", \"applied\": true, \"why\": " +
+                jsonString(report.workarounds[i].second) + "}";
+    json += "]}";
     json += ", \"caps\": [";
     for (size_t i = 0; i < report.caps.size(); ++i) json += (i ? ", " : "") + capabilityJson(report.caps[i]);
     json += "], \"cases\": [";

@@ -83,6 +83,9 @@ struct CheckReport {
     std::string oasisVersion, oasisCommit;
     std::string vendor, renderer, glVersion, glslVersion, api;  // the driver's strings
     std::vector<CapabilityRow> caps;
+    // The driver workarounds in effect for the cases (gl/driver_workarounds.h): the applied rows'
+    // names with why, as the driver's report measured them.
+    std::vector<std::pair<std::string, std::string>> workarounds;
     std::vector<CaseResult> cases;
     bool quick = false;
     double seconds = 0.0;
