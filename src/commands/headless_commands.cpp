@@ -238,8 +238,8 @@ void printJson(const Options& options, const RenderSession& session, const Compa
     std::printf("\"pixels_differing\": %s, ", c.differing.json().c_str());
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "
                 "\"floor_ms\": %.4f, \"forward_floor_ratio\": %.4f, \"deferred_floor_ratio\": %.4f, "
-                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s%s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, \"gbuffer_bytes_per_pixel\": %d, "
-                "\"depth\": \"%s\", \"depth_reason\": \"%s\", "
+                "\"deferred_floor_ratio_lowest\": %.4f, \"deferred_floor_ratio_highest\": %.4f, %s%s\"width\": %d, \"height\": %d, \"gbuffer\": \"%s\", \"bytes_per_pixel\": %d, "
+                "\"depth\": \"%s\", \"depth_reason\": \"%s\", \"gbuffer_bytes_per_pixel\": %d, "
                 "\"time\": %.4f, \"frames\": %d, \"renderer\": \"%s\", \"stencil_view\": \"%s\", "
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
@@ -249,9 +249,9 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
                 c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(), timesStatsJson(c.times).c_str(),
                 targets.width(), targets.height(), targets.layout().name.c_str(),
-                gbufferBytesPerPixel(targets.layout(), targets.depth()), gbufferBytesPerPixel(targets.layout(), targets.depth()),
-                targets.depth().name.c_str(),
-                session.renderer->paths().depthReason.c_str(), options.scene.timeSeconds, c.times.rounds, info.renderer.c_str(),
+                gbufferBytesPerPixel(targets.layout(), targets.depth()), targets.depth().name.c_str(),
+                session.renderer->paths().depthReason.c_str(), gbufferBytesPerPixel(targets.layout(), targets.depth()),
+                options.scene.timeSeconds, c.times.rounds, info.renderer.c_str(),
                 stencilViewPathName(session.renderer->views().stencilPath()), session.shaders->directory().c_str(),
                 plantInterpretationName(session.plantAtlas->path()), session.plantAtlas->totalMs(),
                 session.renderer->paths().lightsDrawn, lightsPathName(session.renderer->paths().lights.path),
