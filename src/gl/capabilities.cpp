@@ -325,9 +325,9 @@ std::string Capabilities::clipDistanceDirective() const {
 bool Capabilities::depthClampAvailable(std::string* reason) const {
     std::string from = source(*this, kDepthClamp);
     const char* fallback = "fallback: each shadow cascade's depth reaches towards the sun to the highest caster (one "
-                           "past that flattened onto its front); the water plane and the light volumes are drawn "
-                           "unclamped: with the camera nearer the water than the near plane's distance, the water "
-                           "nearest it is lost (";
+                           "past that flattened onto its front); the water mask and composite are drawn from a "
+                           "full-screen triangle that finds the water plane per fragment (its depth written, clamped); "
+                           "the light volumes are drawn unclamped (";
     if (forced.noDepthClamp) return answer(false, reason, fallback + std::string("switched off by --force no-depth-clamp)"));
     if (from.empty()) return answer(false, reason, fallback + missing(*this, kDepthClamp) + ")");
     return answer(true, reason, "GL_DEPTH_CLAMP present (" + from + ")");
