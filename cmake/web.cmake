@@ -19,5 +19,5 @@ if(OASIS_WEB_TESTS OR EXISTS ${OASIS_WEB_DIR}/oasis.html)
            COMMAND node --experimental-websocket --no-warnings ${CMAKE_CURRENT_SOURCE_DIR}/tests/web/web_test.mjs
                    ${CMAKE_BINARY_DIR} ${OASIS_WEB_DIR} ${CMAKE_BINARY_DIR}/web-out 320x180)
   add_test(NAME web.size_under_3mb_gzipped COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/tests/web/size.sh ${OASIS_WEB_DIR})
-  set_tests_properties(web.page_draws_and_matches_native web.size_under_3mb_gzipped PROPERTIES LABELS web TIMEOUT 480)
+  set_tests_properties(web.page_draws_and_matches_native web.size_under_3mb_gzipped PROPERTIES LABELS web TIMEOUT 660)
 endif()

@@ -56,7 +56,7 @@ const finish = async (code) => {
   if (left.length) console.log(`web: processes still in the test's groups: ${left.join(', ')}`);
   process.exit(code);
 };
-setTimeout(() => { console.log('FAIL: the web test ran past 420 s'); finish(1); }, 420000).unref();
+setTimeout(() => { console.log('FAIL: the web test ran past 600 s'); finish(1); }, 600000).unref();
 // The server and the browser never outlive the test, whatever ends it: an error, a rejection, a
 // signal (ctest's timeout, ^C), or process.exit from anywhere (the last resort: kill, no wait).
 process.on('exit', killChildren);
