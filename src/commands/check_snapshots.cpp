@@ -84,7 +84,7 @@ std::string encodeSnapshots(const std::vector<PassSnapshot>& snapshots) {
         for (const auto& [label, values] : snapshot.targets) {
             putText(out, label);
             putCount(out, uint32_t(values.size()));
-            out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+            if (!values.empty()) out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
         }
     }
     return out;
@@ -106,7 +106,7 @@ bool decodeSnapshots(const std::string& bytes, std::vector<PassSnapshot>& snapsh
             uint32_t count = 0;
             if (!in.text(label) || !in.count(count) || (bytes.size() - in.at) / sizeof(float) < count) return false;
             std::vector<float> values(count);
-            std::memcpy(values.data(), bytes.data() + in.at, size_t(count) * sizeof(float));
+            if (count) std::memcpy(values.data(), bytes.data() + in.at, size_t(count) * sizeof(float));  // data() may be null
             in.at += size_t(count) * sizeof(float);
             snapshot.targets.push_back({label, std::move(values)});
         }
