@@ -31,6 +31,7 @@
 #include "commands/check_report.h"
 #include "commands/check_runner.h"
 #include "commands/provenance.h"
+#include "render/file_input.h"
 #include "render/file_output.h"
 #include "render/shader_library.h"
 
@@ -121,14 +122,6 @@ std::vector<CheckCase> selectCases(const std::vector<CheckCase>& cases, const Ch
     return chosen;
 }
 
-std::string readFile(const std::string& path, bool& ok) {
-    std::ifstream file(path, std::ios::binary);
-    std::stringstream bytes;
-    bytes << file.rdbuf();
-    ok = bool(file) || file.eof();
-    ok = ok && file.is_open();
-    return bytes.str();
-}
 
 // The report's files as one set (written whole or not at all): report.json, report.html, the
 // JUnit file if asked for, and for each case that did not pass its frames and error mask.
@@ -315,9 +308,10 @@ int runCheckCommand(const Options& options) {
         }
         std::vector<Expectation> expectations;
         if (!check.expectations.empty()) {
-            bool ok = false;
-            std::string text = readFile(check.expectations, ok), error;
-            if (!ok) return std::fprintf(stderr, "oasis: check: cannot read --expectations %s\n", check.expectations.c_str()), 2;
+            std::string text, error;
+            // A regular file of at most 1 MiB (render/file_input.h): a FIFO or a device is refused, not read forever.
+            if (!readRegularFile(check.expectations, size_t(1) << 20, text, error))
+                return std::fprintf(stderr, "oasis: check: --expectations: %s\n", error.c_str()), 2;
             if (!parseExpectations(text, expectations, error))
                 return std::fprintf(stderr, "oasis: check: --expectations %s: %s\n", check.expectations.c_str(), error.c_str()), 2;
         }
