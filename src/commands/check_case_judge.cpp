@@ -60,8 +60,9 @@ std::vector<std::string> checkCaseArguments(const CheckCase& c, const Options& o
 }
 
 const ImageRule& mainPathRule(const CheckCase& c) {
-    bool rounded = c.value("tier").name == "gles30" || c.value("light-method").name == "tiled";
-    return imageRule(rounded ? "same-driver-fallback" : "identical");
+    if (c.value("tier").name == "gles30") return imageRule("same-driver-geometry");
+    if (c.value("light-method").name == "tiled") return imageRule("same-driver-fallback");
+    return imageRule("identical");
 }
 
 bool CaseJudge::useBaseline(const std::string& dir, std::string& error) {

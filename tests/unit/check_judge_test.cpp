@@ -2,6 +2,8 @@
 // numbers, and the error mask marks exactly the pixels above the rule's level.
 #include <gtest/gtest.h>
 
+#include "commands/check_case_judge.h"
+#include "commands/check_cases.h"
 #include "commands/check_judge.h"
 
 namespace oasis {
@@ -44,6 +46,40 @@ TEST(CheckJudge, TheMaskMarksThePixelsOverTheLevel) {
     Image mask = errorMask(result, reference, rule);
     for (int y = 0; y < 4; ++y)
         for (int x = 0; x < 8; ++x) EXPECT_EQ(mask.pixel(x, y)[0] == 255, x == 3 && y == 2) << x << "," << y;
+}
+
+// The ES 3.0 tier draws the water and the shadow cascades by other geometry than its main path: a
+// few shore pixels far apart pass (SwiftShader's 5 pixels at 211 levels), a frame 3% too bright does not.
+TEST(CheckJudge, OtherGeometryPassesAtTheShoreNotAShiftedFrame) {
+    const ImageRule& rule = imageRule("same-driver-geometry");
+    Image reference = flat(256, 144, 150), result = reference;
+    for (int i = 0; i < 5; ++i) result.pixel(40 + i, 60)[0] = 150 - 140;
+    EXPECT_TRUE(judge(result, reference, rule).pass) << judge(result, reference, rule).summary;
+    EXPECT_FALSE(judge(result, reference, imageRule("same-driver-fallback")).pass);
+    Image brighter = reference;
+    for (size_t i = 0; i < brighter.rgba.size(); ++i)
+        if (i % 4 != 3) brighter.rgba[i] = uint8_t(150 * 103 / 100);
+    EXPECT_FALSE(judge(brighter, reference, rule).pass) << judge(brighter, reference, rule).summary;
+}
+
+TEST(CheckJudge, EachCaseIsHeldToItsMainPathByWhatItsPathPromises) {
+    int es30 = 0, tiled = 0, same = 0;
+    for (const CheckCase& c : coveringCases()) {
+        const std::string& rule = mainPathRule(c).name;
+        if (c.value("tier").name == "gles30") {
+            EXPECT_EQ(rule, "same-driver-geometry") << c.name();
+            ++es30;
+        } else if (c.value("light-method").name == "tiled") {
+            EXPECT_EQ(rule, "same-driver-fallback") << c.name();
+            ++tiled;
+        } else {
+            EXPECT_EQ(rule, "identical") << c.name();
+            ++same;
+        }
+    }
+    EXPECT_GT(es30, 0);
+    EXPECT_GT(tiled, 0);
+    EXPECT_GT(same, 0);
 }
 
 TEST(CheckJudge, SizesMustAgree) {
