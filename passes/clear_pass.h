@@ -15,6 +15,7 @@ public:
     std::string name() const override { return std::string("ClearPass.") + surfaceOutputName(output_); }
     std::vector<Access> accesses(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return "clear"; }
+    bool clearsWholeTargets(const FrameSetup&) const override { return true; }
 
 protected:
     void execute(PassContext& context) override;

@@ -108,6 +108,13 @@ public:
     // it renders conditionally on the water mask's occlusion query, so a frame with no water in
     // view pays nothing for it (Pipeline::run).
     virtual bool reflectionWork() const { return false; }
+    // Whether what it draws lands in the reflection's targets (maybe reduced): the mirrored passes,
+    // and the reflection's clear, which binds them itself.
+    virtual bool drawsInReflectionTargets() const { return reflectionWork(); }
+    // Whether the pass clears every pixel of the targets it writes (glClear, no stencil, scissor or
+    // clip): the pixel history then knows it wrote a pixel without asking an occlusion query, which
+    // a clear never passes. A stencil-masked full-screen draw is not such a clear.
+    virtual bool clearsWholeTargets(const FrameSetup&) const { return false; }
 
     void run(PassContext& context) {
         gl::DebugGroup group(name().c_str());

@@ -18,6 +18,12 @@ public:
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
     std::vector<Access> accesses(const FrameSetup& frame) const override;
     bool active(const FrameSetup& frame) const override;
+    // Only the reduced reflection's own targets are cleared whole (markReducedWater); the frame's
+    // are reset inside the water alone, by a stencil-masked draw.
+    bool drawsInReflectionTargets() const override { return runsIn_ == RunsIn::Frame; }
+    bool clearsWholeTargets(const FrameSetup& frame) const override {
+        return runsIn_ == RunsIn::Frame && frame.reflectionDivisor > 1;
+    }
 protected:
     void execute(PassContext& context) override;
 

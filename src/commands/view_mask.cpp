@@ -8,8 +8,9 @@
 namespace oasis {
 
 bool masksUndrawn(const DebugView& view) {
+    // Depth too: its cleared far plane is the sky's "nothing drawn", as the probe says ("cleared").
     return view.source == ViewSource::Albedo || view.source == ViewSource::Normal ||
-           view.source == ViewSource::Position;
+           view.source == ViewSource::Position || view.source == ViewSource::Depth;
 }
 
 DrawnPixels drawnPixels(Renderer& renderer, const DebugView& view) {

@@ -24,7 +24,7 @@ struct PixelPlace {
 // Where a pass's writes land for this pixel: the frame's targets, or the reduced reflection's.
 const FrameTargets& targetsOf(const Renderer& renderer, const Pass& pass, PixelPlace& place) {
     const FrameTargets* reduced = renderer.reflectionTargets();
-    if (pass.reflectionWork() && reduced && renderer.lastFrame().reflectionDivisor > 1) {
+    if (pass.drawsInReflectionTargets() && reduced && renderer.lastFrame().reflectionDivisor > 1) {
         int divisor = renderer.lastFrame().reflectionDivisor;
         place = {place.glX / divisor, place.glY / divisor};
         return *reduced;
@@ -52,12 +52,10 @@ bool changedKnownValues(const std::vector<StoredTexel>& after, const std::vector
     return false;
 }
 
-bool isClear(const Pass& pass) { return pass.name().find("Clear") != std::string::npos; }
-
 // Why a pass that ran left the pixel alone, as far as the pass's kind and the pixel's stencil say.
 std::string whyUntouched(const Pass& pass, int stencilBefore) {
     const std::string name = pass.name();
-    if (pass.reflectionWork())
+    if (pass.drawsInReflectionTargets())
         return (stencilBefore & 0x7f) == kStencilWater
                    ? "no sample passed here: nothing of its mirrored draw covers this water pixel (or a nearer one did)"
                    : "stencil test: the mirrored scene is drawn only on water pixels, and this one is not water";
@@ -100,13 +98,13 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
         PassAtPixel entry{pass.name(), true, false, "", readWrites(renderer, pass, pixel)};
         std::vector<StoredTexel> previous;
         for (const StoredTexel& texel : entry.targets) {
-            auto found = current.find(texel.target + (pass.reflectionWork() ? "@reflection" : ""));
+            auto found = current.find(texel.target + (pass.drawsInReflectionTargets() ? "@reflection" : ""));
             previous.push_back(found != current.end() ? found->second : StoredTexel{texel.target, "", "", {}});
         }
         before[&pass] = previous;
         stencilBefore[&pass] = current.count("depth-stencil") ? int(current["depth-stencil"].values.back()) : 0;
         for (const StoredTexel& texel : entry.targets)
-            current[texel.target + (pass.reflectionWork() ? "@reflection" : "")] = texel;
+            current[texel.target + (pass.drawsInReflectionTargets() ? "@reflection" : "")] = texel;
         seen[&pass] = entry;
         ran.push_back(&pass);
     });
@@ -119,7 +117,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
             entry.reason = "writes none of the frame's targets (buffers, transform feedback or the shadow maps)";
             continue;
         }
-        if (isClear(*pass)) {
+        if (pass->clearsWholeTargets(renderer.lastFrame())) {
             entry.wrote = true;
             entry.reason = "a clear: every pixel of the targets it clears";
             continue;

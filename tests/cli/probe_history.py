@@ -44,6 +44,12 @@ def check_finished_frame(oasis, kind, x, y, pipeline, extra):
             failures.append(f"{where}: {entry['pass']} ran, did not write, and gives no reason")
         if not entry["ran"] and entry["targets"]:
             failures.append(f"{where}: {entry['pass']} did not run but has values")
+    # Issue 43, item 7: a pass wrote the pixel only where it did. The reflection's clear is a
+    # stencil-masked draw at the frame's size (the default full-resolution reflection): it writes
+    # the water's pixels and no other (it once said "a clear: every pixel" at every pixel).
+    for entry in history:
+        if entry["pass"].startswith("ReflectionClearPass") and entry["ran"] and entry["wrote"] != (kind == "water"):
+            failures.append(f"{where}: {entry['pass']} wrote {entry['wrote']} at a {kind} pixel: {entry['reason']}")
     final = last_writes(history)
     stored = {name: texel["values"] for name, texel in result["stored"].items()}
     # Final is what the frame displays; off the water (where the views' fill redraws the G-buffer
