@@ -58,6 +58,17 @@ const std::vector<WorkaroundRow>& workaroundTable() {
          "four compares per tile pixel in LightTilingPass; on llvmpipe (not applied there) the frame is "
          "bit-identical with it and the pass's time the same within this machine's noise (docs/drivers.md)",
          "driver_bug.indexed_array_write.softpipe", "OASIS_ARRAY_WRITE_BY_LOOP 1"},
+        // A bug whose mend is a fallback oasis already has: the row applies --force no-depth-clamp.
+        {Workaround::DepthClampOff, "depth-clamp-off",
+         "with GL_DEPTH_CLAMP and a polygon offset, a triangle crossing the near or far plane gets depths that "
+         "fit its vertices' depths offset and clamped to [0, 1] before interpolation: the unclamped part too far "
+         "(ShadowPass's casters nearer the sun than a cascade's box)",
+         "softpipe", "",
+         "no depth clamp anywhere, as on a driver without it (--force no-depth-clamp): the cascades' boxes reach "
+         "towards the sun up to the highest caster, the water is found per fragment, the light volumes unclamped",
+         "the no-depth-clamp tier's own (its water a full-screen pass; on llvmpipe, not applied there, the "
+         "forced fallback draws within the ES 3.0 tier's rule of the clamped frame: docs/compatibility.md)",
+         "driver_bug.depth_clamp.softpipe", "", "no-depth-clamp"},
         // The forced fallbacks a profile may name (commands/check_profile.h): a driver that
         // crashes, hangs or draws wrong on a path is given the fallback that leaves the path out.
         forcedFallbackRow("force-no-compute", "no-compute", "compute shaders: the plants interpreted and the lights tiled on the CPU's side"),
@@ -213,7 +224,7 @@ WorkaroundSet resolveWorkarounds(const WorkaroundRequest& request, const std::st
     WorkaroundSet set;
     for (const WorkaroundRow& row : workaroundTable()) {
         WorkaroundState state{row.name, false, {}};
-        bool forced = *row.forces != 0;
+        bool forced = row.forcedOnly();
         state.applied = !forced && keyMatches(row.renderer, renderer) && keyMatches(row.version, version);
         state.why = forced ? std::string("table: only where a workarounds file or --workarounds names it (--force ") +
                                  row.forces + ")"
@@ -240,7 +251,7 @@ WorkaroundSet resolveWorkarounds(const WorkaroundRequest& request, const std::st
 std::string workaroundTableText() {
     std::string text = "# oasis driver workarounds: NAME | GL_RENDERER regex | GL_VERSION regex (-NAME: off)\n";
     for (const WorkaroundRow& row : workaroundTable())
-        if (!*row.forces)  // a forced-fallback row has no driver of its own to key it by
+        if (!row.forcedOnly())  // a forced-fallback row has no driver of its own to key it by
             text += std::string(row.name) + " | " + row.renderer + (*row.version ? std::string(" | ") + row.version : "") + "\n";
     return text;
 }

@@ -13,6 +13,7 @@ namespace oasis::gl {
 enum class Workaround {
     FlushBeforeComputeRead,  // glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT) before a dispatch that reads a drawn texture
     ArrayWriteByLoop,        // local arrays written through a loop over constant indices (a shader #define)
+    DepthClampOff,           // the no-depth-clamp fallback on a driver whose depth clamp is wrong (row.forces)
     ForcedFallback,          // a --force fallback, applied only where a file or --workarounds names it
 };
 
@@ -26,10 +27,13 @@ struct WorkaroundRow {
     const char* cost;      // measured cost where it is applied, and elsewhere
     const char* test;      // the ctest that shows the bug and the mend (tests/driver_bugs/)
     const char* define;    // the #define the shaders get where it is applied ("" none)
-    // A forced-fallback row (`oasis check`'s proposed profiles are made of them): the --force name it
-    // applies. Such a row has no driver of its own: it is applied only where a workarounds file or
-    // --workarounds NAME asks, never by default nor by --workarounds all.
+    // The --force name a row applies ("" none). A forced-fallback row (`oasis check`'s proposed
+    // profiles are made of them) has no driver of its own: it is applied only where a workarounds
+    // file or --workarounds NAME asks, never by default nor by --workarounds all. A bug's row may
+    // apply a fallback too (depth-clamp-off: no-depth-clamp); keyed by its driver, it is applied as
+    // the other bugs' rows are.
     const char* forces = "";
+    bool forcedOnly() const { return *forces && !*renderer; }  // a forced-fallback row, no driver
 };
 
 // Every row, in a fixed order.
@@ -81,7 +85,7 @@ struct WorkaroundSet {
     bool has(Workaround id) const;
     std::vector<std::string> defines() const;  // the applied rows' shader #defines ("NAME 1")
     std::string appliedList() const;           // "flush-before-compute-read,array-write-by-loop" ("" none)
-    std::vector<std::string> forcedFallbacks() const;  // the applied forced-fallback rows' --force names
+    std::vector<std::string> forcedFallbacks() const;  // the applied rows' --force names (row.forces)
 };
 
 // The table's default for this driver, then the file's matching rules in order, then the

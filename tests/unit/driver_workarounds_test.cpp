@@ -13,13 +13,14 @@ const char* kLlvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)";
 const char* kVersion = "3.3 (Core Profile) Mesa 22.3.6";
 
 TEST(DriverWorkarounds, TableRowsAreComplete) {
-    ASSERT_EQ(workaroundTable().size(), 10u);  // two driver bugs, eight forced fallbacks
+    ASSERT_EQ(workaroundTable().size(), 11u);  // three driver bugs, eight forced fallbacks
     for (const WorkaroundRow& row : workaroundTable()) {
         EXPECT_EQ(findWorkaround(row.name), &row);
         for (const char* field : {row.bug, row.instead, row.cost, row.test}) EXPECT_STRNE(field, "");
-        // A bug's row names its drivers; a forced fallback's its --force name, and no driver.
+        // A bug's row names its drivers; a forced fallback's its --force name, and no driver. A bug's
+        // row may apply a fallback too (depth-clamp-off), keyed by its driver.
         if (*row.forces) {
-            EXPECT_STREQ(row.renderer, "") << row.name;
+            EXPECT_EQ(row.forcedOnly(), row.id == Workaround::ForcedFallback) << row.name;
             std::string error;
             ForcedFallbacks parsed;
             EXPECT_TRUE(parseForcedFallbacks(row.forces, parsed, error)) << row.forces << ": " << error;
@@ -33,6 +34,8 @@ TEST(DriverWorkarounds, DefaultAppliesTheTableBySoftpipesRenderer) {
     WorkaroundSet softpipe = resolveWorkarounds({}, kSoftpipe, kVersion);
     EXPECT_TRUE(softpipe.has(Workaround::FlushBeforeComputeRead));
     EXPECT_TRUE(softpipe.has(Workaround::ArrayWriteByLoop));
+    EXPECT_TRUE(softpipe.has(Workaround::DepthClampOff));
+    EXPECT_EQ(softpipe.forcedFallbacks(), std::vector<std::string>{"no-depth-clamp"});  // the row's fallback
     EXPECT_EQ(softpipe.defines(), std::vector<std::string>{"OASIS_ARRAY_WRITE_BY_LOOP 1"});
     EXPECT_EQ(softpipe.rows[0].why, "table: GL_RENDERER /softpipe/");
     WorkaroundSet llvmpipe = resolveWorkarounds({}, kLlvmpipe, kVersion);
@@ -46,7 +49,8 @@ TEST(DriverWorkarounds, CommandLineValueOverridesTheTable) {
     ASSERT_TRUE(parseWorkaroundsValue("none", request, error));
     EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).appliedList(), "");
     ASSERT_TRUE(parseWorkaroundsValue("all", request, error));
-    EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).appliedList(), "flush-before-compute-read,array-write-by-loop");
+    EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).appliedList(),
+              "flush-before-compute-read,array-write-by-loop,depth-clamp-off");
     ASSERT_TRUE(parseWorkaroundsValue("array-write-by-loop", request, error));
     WorkaroundSet one = resolveWorkarounds(request, kSoftpipe, kVersion);
     EXPECT_EQ(one.appliedList(), "array-write-by-loop");
@@ -63,23 +67,26 @@ TEST(DriverWorkarounds, FileRulesMatchRendererAndVersion) {
                                      "w.txt", request.rules, error))
         << error;
     WorkaroundSet softpipe = resolveWorkarounds(request, kSoftpipe, kVersion);
-    EXPECT_EQ(softpipe.appliedList(), "flush-before-compute-read");  // the table's, the file switched one off
+    EXPECT_EQ(softpipe.appliedList(), "flush-before-compute-read,depth-clamp-off");  // the table's, the file switched one off
     EXPECT_EQ(softpipe.rows[1].why, "w.txt:2: off for GL_RENDERER /softpipe/, GL_VERSION /Mesa 22\\.3/");
     EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, "3.3 Mesa 23.1").appliedList(),
-              "flush-before-compute-read,array-write-by-loop");  // another version: the table's
+              "flush-before-compute-read,array-write-by-loop,depth-clamp-off");  // another version: the table's
     EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).appliedList(), "flush-before-compute-read");
     EXPECT_FALSE(parseWorkaroundRules("bogus | x\n", "w.txt", request.rules, error));
     EXPECT_EQ(error.rfind("w.txt:1: unknown workaround 'bogus' (one of: flush-before-compute-read, array-write-by-loop, "
-                          "force-no-compute", 0), 0u) << error;
+                          "depth-clamp-off, force-no-compute", 0), 0u) << error;
     EXPECT_FALSE(parseWorkaroundRules("array-write-by-loop | (\n", "w.txt", request.rules, error));
 }
 
 TEST(DriverWorkarounds, ForcedFallbacksApplyOnlyWhereAFileOrTheListNamesThem) {
-    EXPECT_TRUE(resolveWorkarounds({}, kSoftpipe, kVersion).forcedFallbacks().empty());
+    // By default only the bug row depth-clamp-off's fallback, on its driver.
+    EXPECT_EQ(resolveWorkarounds({}, kSoftpipe, kVersion).forcedFallbacks(), std::vector<std::string>{"no-depth-clamp"});
+    EXPECT_TRUE(resolveWorkarounds({}, kLlvmpipe, kVersion).forcedFallbacks().empty());
     WorkaroundRequest request;
     std::string error;
     ASSERT_TRUE(parseWorkaroundsValue("all", request, error));
-    EXPECT_TRUE(resolveWorkarounds(request, kLlvmpipe, kVersion).forcedFallbacks().empty());
+    EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).forcedFallbacks(),
+              std::vector<std::string>{"no-depth-clamp"});  // every bug's row, no forced-fallback row
     // A proposed profile (oasis check's oasis-check/workarounds) keyed by this renderer and release.
     ASSERT_TRUE(parseWorkaroundRules("force-no-compute | ^llvmpipe \\(LLVM 15\\.0\\.6, 256 bits\\)$ | Mesa 22\\.3\\.6$\n",
                                      "profile", request.rules, error))
@@ -89,14 +96,15 @@ TEST(DriverWorkarounds, ForcedFallbacksApplyOnlyWhereAFileOrTheListNamesThem) {
     EXPECT_EQ(here.forcedFallbacks(), std::vector<std::string>{"no-compute"});
     EXPECT_EQ(here.appliedList(), "force-no-compute");
     EXPECT_TRUE(resolveWorkarounds(request, kLlvmpipe, "3.3 (Core Profile) Mesa 23.0.1").forcedFallbacks().empty());
-    EXPECT_TRUE(resolveWorkarounds(request, kSoftpipe, kVersion).forcedFallbacks().empty());
+    EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).forcedFallbacks(),
+              std::vector<std::string>{"no-depth-clamp"});  // the table's row, not the profile's
 }
 
 TEST(DriverWorkarounds, TheTableAsAFileReadsBackToTheTable) {
     WorkaroundRequest request;
     std::string error;
     ASSERT_TRUE(parseWorkaroundRules(workaroundTableText(), "table", request.rules, error)) << error;
-    EXPECT_EQ(request.rules.size(), 2u);  // the driver bugs' rows: a forced fallback has no key
+    EXPECT_EQ(request.rules.size(), 3u);  // the driver bugs' rows: a forced fallback has no key
     EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).appliedList(),
               resolveWorkarounds({}, kSoftpipe, kVersion).appliedList());
 }
