@@ -161,6 +161,11 @@ std::string ForcedFallbacks::list() const {
     return text;
 }
 
+std::string ForcedFallbacks::forcedBy(const std::string& name) const {
+    auto found = byWorkaround.find(name);
+    return found != byWorkaround.end() ? "the driver workaround " + found->second : "--force " + name;
+}
+
 const char* forcedFallbackNames() {
     return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33, gles30, no-depth-clamp, "
            "no-read-only-depth";
@@ -216,6 +221,12 @@ bool Capabilities::driverHasFloatRenderTargets() const {
 Capabilities Capabilities::unforced() const {
     Capabilities own = *this;
     own.forced = {};
+    // A driver workaround's fallback stays: the driver's bug is the driver's limit, not a tier's.
+    for (const auto& [name, row] : forced.byWorkaround) {
+        std::string error;
+        parseForcedFallbacks(name, own.forced, error);
+        own.forced.byWorkaround[name] = row;
+    }
     if (beforeTier) {
         own.major = beforeTier->major;
         own.minor = beforeTier->minor;
@@ -240,7 +251,7 @@ std::string limitedBy(bool used, const Availability& availability) {
 }
 
 bool Capabilities::ssboAvailable(std::string* reason) const {
-    if (forced.noSsbo) return answer(false, reason, "switched off by --force no-ssbo");
+    if (forced.noSsbo) return answer(false, reason, "switched off by " + forced.forcedBy("no-ssbo"));
     std::string from = source(*this, kSsbo);
     if (from.empty()) return answer(false, reason, missing(*this, kSsbo));
     // ES 3.1 has SSBOs but may allow none in fragment shaders, where the light list is read.
@@ -250,7 +261,7 @@ bool Capabilities::ssboAvailable(std::string* reason) const {
 }
 
 bool Capabilities::computeAvailable(std::string* reason) const {
-    if (forced.noCompute) return answer(false, reason, "switched off by --force no-compute");
+    if (forced.noCompute) return answer(false, reason, "switched off by " + forced.forcedBy("no-compute"));
     std::string from = source(*this, kCompute);
     if (from.empty()) return answer(false, reason, missing(*this, kCompute));
     std::string ssboReason;
@@ -273,14 +284,14 @@ bool Capabilities::computeAvailable(std::string* reason) const {
 }
 
 bool Capabilities::stencilTexturingAvailable(std::string* reason) const {
-    if (forced.noStencilTexturing) return answer(false, reason, "switched off by --force no-stencil-texturing");
+    if (forced.noStencilTexturing) return answer(false, reason, "switched off by " + forced.forcedBy("no-stencil-texturing"));
     std::string from = source(*this, kStencilTexturing);
     if (from.empty()) return answer(false, reason, missing(*this, kStencilTexturing));
     return answer(true, reason, "stencil texturing present (" + from + ")");
 }
 
 bool Capabilities::dsaAvailable(std::string* reason) const {
-    if (forced.noDsa) return answer(false, reason, "switched off by --force no-dsa");
+    if (forced.noDsa) return answer(false, reason, "switched off by " + forced.forcedBy("no-dsa"));
     std::string from = source(*this, kDsa);
     if (from.empty()) return answer(false, reason, missing(*this, kDsa));
     return answer(true, reason, "direct state access present (" + from + ")");
@@ -305,7 +316,7 @@ bool Capabilities::floatRenderTargetsAvailable(std::string* reason) const {
 }
 
 bool Capabilities::clipControlAvailable(std::string* reason) const {
-    if (forced.noClipControl) return answer(false, reason, "switched off by --force no-clip-control");
+    if (forced.noClipControl) return answer(false, reason, "switched off by " + forced.forcedBy("no-clip-control"));
     std::string from = source(*this, kClipControl);
     if (from.empty()) return answer(false, reason, missing(*this, kClipControl));
     return answer(true, reason, "clip control present (" + from + ")");
@@ -328,7 +339,7 @@ bool Capabilities::depthClampAvailable(std::string* reason) const {
                            "past that flattened onto its front); the water mask and composite are drawn from a "
                            "full-screen triangle that finds the water plane per fragment (its depth written, clamped); "
                            "the light volumes are drawn unclamped (";
-    if (forced.noDepthClamp) return answer(false, reason, fallback + std::string("switched off by --force no-depth-clamp)"));
+    if (forced.noDepthClamp) return answer(false, reason, fallback + std::string("switched off by ") + forced.forcedBy("no-depth-clamp") + ")");
     if (from.empty()) return answer(false, reason, fallback + missing(*this, kDepthClamp) + ")");
     return answer(true, reason, "GL_DEPTH_CLAMP present (" + from + ")");
 }
@@ -361,7 +372,7 @@ bool Capabilities::norm16TargetsAvailable(std::string* reason) const {
 bool Capabilities::readOnlyDepthAvailable(std::string* reason) const {
     const char* fallback = "fallback: the compact lighting that samples depth in place shades every pixel, the sky "
                            "drawn over its sky pixels (";
-    if (forced.noReadOnlyDepth) return answer(false, reason, fallback + std::string("switched off by --force no-read-only-depth)"));
+    if (forced.noReadOnlyDepth) return answer(false, reason, fallback + std::string("switched off by ") + forced.forcedBy("no-read-only-depth") + ")");
     if (es) return answer(false, reason, fallback + std::string("not relied on under OpenGL ES)"));
     std::string from = source(*this, kReadOnlyDepth);
     if (from.empty()) return answer(false, reason, fallback + missing(*this, kReadOnlyDepth) + ")");

@@ -2,6 +2,7 @@
 // combined with the fallbacks forced on the command line (--force). Every capability-dependent
 // path choice asks this one object, so a user's driver can be reproduced by switching features off.
 #pragma once
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -25,12 +26,17 @@ struct ForcedFallbacks {
     bool gles30 = false;  // --api gles: treat the ES context as OpenGL ES 3.0 (core features alone)
     bool noDepthClamp = false;  // the shadow casters flattened in the shader, as on ES 3.0
     bool noReadOnlyDepth = false;  // the lighting shades every pixel instead of testing a depth it samples
+    // The fallbacks a driver workaround forced rather than --force: the fallback's name -> the row's
+    // (gl/driver_workarounds.h), so a reason names what really switched the feature off.
+    std::map<std::string, std::string> byWorkaround;
 
     bool any() const {
         return noSsbo || noCompute || noStencilTexturing || noDsa || noClipControl || gl33 || gles30 || noDepthClamp ||
                noReadOnlyDepth;
     }
     std::string list() const;  // "no-ssbo,gl33" ("" when none)
+    // What forced the fallback NAME: "--force no-ssbo" or "the driver workaround depth-clamp-off".
+    std::string forcedBy(const std::string& name) const;
 };
 // The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa,
 // no-clip-control, gl33, gles30, no-depth-clamp, no-read-only-depth".

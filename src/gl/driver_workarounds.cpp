@@ -203,13 +203,13 @@ std::vector<std::string> WorkaroundSet::defines() const {
     return list;
 }
 
-std::vector<std::string> WorkaroundSet::forcedFallbacks() const {
-    std::vector<std::string> names;
+std::vector<std::pair<std::string, std::string>> WorkaroundSet::forcedFallbacks() const {
+    std::vector<std::pair<std::string, std::string>> fallbacks;
     for (const WorkaroundState& state : rows) {
         const WorkaroundRow* row = findWorkaround(state.name);
-        if (state.applied && row && *row->forces) names.push_back(row->forces);
+        if (state.applied && row && *row->forces) fallbacks.push_back({row->forces, row->name});
     }
-    return names;
+    return fallbacks;
 }
 
 std::string WorkaroundSet::appliedList() const {

@@ -85,7 +85,8 @@ struct WorkaroundSet {
     bool has(Workaround id) const;
     std::vector<std::string> defines() const;  // the applied rows' shader #defines ("NAME 1")
     std::string appliedList() const;           // "flush-before-compute-read,array-write-by-loop" ("" none)
-    std::vector<std::string> forcedFallbacks() const;  // the applied rows' --force names (row.forces)
+    // The applied rows' fallbacks: {--force name (row.forces), the row's name}.
+    std::vector<std::pair<std::string, std::string>> forcedFallbacks() const;
 };
 
 // The table's default for this driver, then the file's matching rules in order, then the

@@ -83,7 +83,7 @@ const std::vector<Flag>& flags() {
         {"--light-method", Value::Choice, 0, 0, {"volumes", "tiled"}},
         {"--force", Value::ForceList},
         {"--api", Value::Choice, 0, 0, {"gl", "gles"}},
-        {"--workarounds", Value::Choice, 0, 0, {"default", "none", "all", "flush-before-compute-read", "array-write-by-loop"}},
+        {"--workarounds", Value::Choice, 0, 0, {"default", "none", "all", "flush-before-compute-read", "array-write-by-loop", "depth-clamp-off"}},
         {"--workarounds-file", Value::Choice, 0, 0, {"/dev/null", "no-such-workarounds-file"}},  // empty, or exit 2
         {"--depth", Value::Choice, 0, 0, {"standard", "reversed-z"}},
         {"--gbuffer", Value::Choice},

@@ -11,6 +11,7 @@ namespace {
 const char* kSoftpipe = "softpipe";
 const char* kLlvmpipe = "llvmpipe (LLVM 15.0.6, 256 bits)";
 const char* kVersion = "3.3 (Core Profile) Mesa 22.3.6";
+using Fallbacks = std::vector<std::pair<std::string, std::string>>;  // {--force name, row}
 
 TEST(DriverWorkarounds, TableRowsAreComplete) {
     ASSERT_EQ(workaroundTable().size(), 11u);  // three driver bugs, eight forced fallbacks
@@ -35,7 +36,7 @@ TEST(DriverWorkarounds, DefaultAppliesTheTableBySoftpipesRenderer) {
     EXPECT_TRUE(softpipe.has(Workaround::FlushBeforeComputeRead));
     EXPECT_TRUE(softpipe.has(Workaround::ArrayWriteByLoop));
     EXPECT_TRUE(softpipe.has(Workaround::DepthClampOff));
-    EXPECT_EQ(softpipe.forcedFallbacks(), std::vector<std::string>{"no-depth-clamp"});  // the row's fallback
+    EXPECT_EQ(softpipe.forcedFallbacks(), (Fallbacks{{"no-depth-clamp", "depth-clamp-off"}}));  // the row's fallback
     EXPECT_EQ(softpipe.defines(), std::vector<std::string>{"OASIS_ARRAY_WRITE_BY_LOOP 1"});
     EXPECT_EQ(softpipe.rows[0].why, "table: GL_RENDERER /softpipe/");
     WorkaroundSet llvmpipe = resolveWorkarounds({}, kLlvmpipe, kVersion);
@@ -80,24 +81,24 @@ TEST(DriverWorkarounds, FileRulesMatchRendererAndVersion) {
 
 TEST(DriverWorkarounds, ForcedFallbacksApplyOnlyWhereAFileOrTheListNamesThem) {
     // By default only the bug row depth-clamp-off's fallback, on its driver.
-    EXPECT_EQ(resolveWorkarounds({}, kSoftpipe, kVersion).forcedFallbacks(), std::vector<std::string>{"no-depth-clamp"});
+    EXPECT_EQ(resolveWorkarounds({}, kSoftpipe, kVersion).forcedFallbacks(), (Fallbacks{{"no-depth-clamp", "depth-clamp-off"}}));
     EXPECT_TRUE(resolveWorkarounds({}, kLlvmpipe, kVersion).forcedFallbacks().empty());
     WorkaroundRequest request;
     std::string error;
     ASSERT_TRUE(parseWorkaroundsValue("all", request, error));
     EXPECT_EQ(resolveWorkarounds(request, kLlvmpipe, kVersion).forcedFallbacks(),
-              std::vector<std::string>{"no-depth-clamp"});  // every bug's row, no forced-fallback row
+              (Fallbacks{{"no-depth-clamp", "depth-clamp-off"}}));  // every bug's row, no forced-fallback row
     // A proposed profile (oasis check's oasis-check/workarounds) keyed by this renderer and release.
     ASSERT_TRUE(parseWorkaroundRules("force-no-compute | ^llvmpipe \\(LLVM 15\\.0\\.6, 256 bits\\)$ | Mesa 22\\.3\\.6$\n",
                                      "profile", request.rules, error))
         << error;
     request.mode = WorkaroundRequest::Mode::Default;
     WorkaroundSet here = resolveWorkarounds(request, kLlvmpipe, kVersion);
-    EXPECT_EQ(here.forcedFallbacks(), std::vector<std::string>{"no-compute"});
+    EXPECT_EQ(here.forcedFallbacks(), (Fallbacks{{"no-compute", "force-no-compute"}}));
     EXPECT_EQ(here.appliedList(), "force-no-compute");
     EXPECT_TRUE(resolveWorkarounds(request, kLlvmpipe, "3.3 (Core Profile) Mesa 23.0.1").forcedFallbacks().empty());
     EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).forcedFallbacks(),
-              std::vector<std::string>{"no-depth-clamp"});  // the table's row, not the profile's
+              (Fallbacks{{"no-depth-clamp", "depth-clamp-off"}}));  // the table's row, not the profile's
 }
 
 TEST(DriverWorkarounds, TheTableAsAFileReadsBackToTheTable) {
@@ -107,6 +108,17 @@ TEST(DriverWorkarounds, TheTableAsAFileReadsBackToTheTable) {
     EXPECT_EQ(request.rules.size(), 3u);  // the driver bugs' rows: a forced fallback has no key
     EXPECT_EQ(resolveWorkarounds(request, kSoftpipe, kVersion).appliedList(),
               resolveWorkarounds({}, kSoftpipe, kVersion).appliedList());
+}
+
+// A reason names what switched a feature off: --force, or the driver workaround whose row applies
+// the fallback (caps said "--force no-depth-clamp" on softpipe, where depth-clamp-off did it).
+TEST(DriverWorkarounds, AFallbackSaysWhatForcedIt) {
+    ForcedFallbacks forced;
+    std::string error;
+    ASSERT_TRUE(parseForcedFallbacks("no-ssbo,no-depth-clamp", forced, error));
+    forced.byWorkaround["no-depth-clamp"] = "depth-clamp-off";
+    EXPECT_EQ(forced.forcedBy("no-ssbo"), "--force no-ssbo");
+    EXPECT_EQ(forced.forcedBy("no-depth-clamp"), "the driver workaround depth-clamp-off");
 }
 
 }  // namespace
