@@ -27,6 +27,10 @@ struct Judgement {
     double psnrDb = 0;
     int maxAbs = 0;
     long pixelsOver = 0;
+    // The mean of result minus reference over every pixel's R, G and B, in levels of 1/255: a
+    // shift of the whole frame or of a large part (a term too bright) where rasterisers' edge
+    // differences, of either sign, average out. Measured and reported; no rule bounds it yet.
+    double meanSigned = 0;
     std::string summary;  // "PSNR 41.2 dB, max abs 38, 12 pixels over 16 (rule cross-driver: ...)"
 };
 // Throws std::invalid_argument when the sizes differ.

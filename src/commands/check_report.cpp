@@ -32,17 +32,20 @@ std::string caseJson(const CaseResult& c) {
     json += ", \"psnr_db\": " + (judged ? number(c.psnrDb) : "null");
     json += ", \"max_abs\": " + (judged ? std::to_string(c.maxAbs) : "null");
     json += ", \"pixels_over\": " + (judged ? std::to_string(c.pixelsOver) : "null");
+    json += ", \"mean_signed\": " + (judged ? number(c.meanSigned, "%.4f") : "null");
     json += ", \"reference_rule\": " + jsonString(c.referenceRule);
     json += ", \"main_path\": ";
     json += c.mainPathCompared ? "{\"rule\": " + jsonString(c.mainPathRule) + ", \"psnr_db\": " + number(c.mainPathPsnrDb) +
                                      ", \"max_abs\": " + std::to_string(c.mainPathMaxAbs) +
-                                     ", \"pixels_over\": " + std::to_string(c.mainPathPixelsOver) + "}"
+                                     ", \"pixels_over\": " + std::to_string(c.mainPathPixelsOver) +
+                                     ", \"mean_signed\": " + number(c.mainPathMeanSigned, "%.4f") + "}"
                                : std::string("null");
     json += ", \"main_path_against_reference\": ";
     json += c.mainPathReferenceCompared
                 ? "{\"psnr_db\": " + number(c.mainPathReferencePsnrDb) + ", \"max_abs\": " +
                       std::to_string(c.mainPathReferenceMaxAbs) + ", \"pixels_over\": " +
-                      std::to_string(c.mainPathReferencePixelsOver) + ", \"pass\": " +
+                      std::to_string(c.mainPathReferencePixelsOver) + ", \"mean_signed\": " +
+                      number(c.mainPathReferenceMeanSigned, "%.4f") + ", \"pass\": " +
                       (c.mainPathMatchesReference ? "true" : "false") + "}"
                 : std::string("null");
     json += ", \"blame\": " + (c.blame.empty() ? std::string("null") : jsonString(c.blame));

@@ -43,15 +43,18 @@ struct CaseResult {
     double psnrDb = 0.0;  // against the reference frame
     int maxAbs = 0;
     long pixelsOver = 0;  // pixels whose largest channel difference exceeds the rule's level
+    double meanSigned = 0.0;  // levels: the frame's mean of result minus reference (check_judge.h)
     double mainPathPsnrDb = 0.0;
     int mainPathMaxAbs = 0;
     long mainPathPixelsOver = 0;
+    double mainPathMeanSigned = 0.0;
     bool mainPathCompared = false;
     // The main path against the reference frame (the third comparison: it decides the blame).
     bool mainPathReferenceCompared = false;
     double mainPathReferencePsnrDb = 0.0;
     int mainPathReferenceMaxAbs = 0;
     long mainPathReferencePixelsOver = 0;
+    double mainPathReferenceMeanSigned = 0.0;
     bool mainPathMatchesReference = false;
     std::optional<FirstDivergence> firstDivergence;
     double seconds = 0.0;

@@ -216,8 +216,11 @@ blame)
     report_says ssbo-out/report.json '
 for c in report["cases"]:
     lit = "-far-" not in c["name"] and "-stencil-" not in c["name"]
+    # The ES 3.0 tier is held to its main path by same-driver-geometry (PSNR 40 dB), which the
+    # main path with its 1.25x light list (67 dB) passes: that case passes without the note.
+    loose = c["name"].endswith("-gles30")
     if "-ubo-" in c["name"] and lit:
-        assert c["verdict"] == "pass" and "the main path is off" in c["reason"], (c["name"], c["reason"])
+        assert c["verdict"] == "pass" and (loose or "the main path is off" in c["reason"]), (c["name"], c["reason"])
     elif "-ssbo" in c["name"] and lit:
         assert c["verdict"] == "fail" and c["blame"] == "the main path", (c["name"], c["verdict"], c["blame"], c["reason"])
 print("blame: ssbo cases blame the main path, ubo cases pass")'

@@ -82,6 +82,25 @@ TEST(CheckJudge, EachCaseIsHeldToItsMainPathByWhatItsPathPromises) {
     EXPECT_GT(same, 0);
 }
 
+// The mean signed difference sees a shift that the per-pixel tests let through, and edge
+// differences of both signs cancel in it.
+TEST(CheckJudge, TheMeanSignedDifferenceIsTheShiftNotTheEdges) {
+    Image reference = flat(64, 36, 100), shifted = reference, edges = reference;
+    for (size_t i = 0; i < shifted.rgba.size(); ++i)
+        if (i % 4 != 3) shifted.rgba[i] = 103;
+    Judgement shift = judge(shifted, reference, imageRule("cross-driver"));
+    EXPECT_TRUE(shift.pass);  // 3 levels everywhere passes the cross-driver rule's per-pixel tests
+    EXPECT_DOUBLE_EQ(shift.meanSigned, 3.0);
+    for (int x = 0; x < 64; ++x) {
+        edges.pixel(x, 10)[0] = 200;  // one row brighter by 100 in red,
+        edges.pixel(x, 20)[0] = 0;    // one darker by 100
+    }
+    Judgement edge = judge(edges, reference, imageRule("cross-driver"));
+    EXPECT_EQ(edge.maxAbs, 100);
+    EXPECT_DOUBLE_EQ(edge.meanSigned, 0.0);
+    EXPECT_NE(shift.summary.find("mean +3.000 levels"), std::string::npos) << shift.summary;
+}
+
 TEST(CheckJudge, SizesMustAgree) {
     EXPECT_THROW(judge(flat(4, 4, 0), flat(4, 5, 0), imageRule("identical")), std::invalid_argument);
     EXPECT_THROW(imageRule("no-such-rule"), std::invalid_argument);
