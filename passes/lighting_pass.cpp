@@ -8,10 +8,14 @@
 
 namespace oasis {
 
+DepthRead LightingPass::depthRead(const FrameSetup& frame) const {
+    return mirroring_ == Mirroring::Direct && frame.work.depthReadInPlace ? DepthRead::FromTarget : DepthRead::FromCopy;
+}
+
 bool LightingPass::testsSurfaces(const FrameSetup& frame) const {
-    // Mirrored, the depth comes from the copy; a layout that stores position reads no depth; the
-    // compact layout's in-place read may also test where the context allows it (read-only depth).
-    bool samplesTheTarget = mirroring_ == Mirroring::Direct && frame.work.depthReadInPlace && frame.positionFromDepth;
+    // A layout that stores position reads no depth; the compact layout's read of the target it
+    // would test is allowed only where the context has read-only depth.
+    bool samplesTheTarget = depthRead(frame) == DepthRead::FromTarget && frame.positionFromDepth;
     return !samplesTheTarget || frame.readOnlyDepth;
 }
 
@@ -22,8 +26,7 @@ static bool addsTiledLights(const FrameSetup& frame) {
 }
 
 std::vector<Access> LightingPass::accesses(const FrameSetup& frame) const {
-    bool inPlace = mirroring_ == Mirroring::Direct && frame.work.depthReadInPlace;
-    std::vector<Access> used = gbufferSamples(frame, inPlace ? DepthRead::FromTarget : DepthRead::FromCopy);
+    std::vector<Access> used = gbufferSamples(frame, depthRead(frame));
     for (Target target : surfaceOutputTargets(frame, SurfaceOutput::Forward, mirroring_))
         used.push_back({target, Use::Write});
     // Tested, never written; mirrored, the stencil keeps it inside the water.
@@ -47,8 +50,7 @@ void LightingPass::execute(PassContext& context) {
     } else {
         glDisable(GL_DEPTH_TEST);
     }
-    bool inPlace = !mirrored && context.frame.work.depthReadInPlace;
-    bindGBufferInputs(context.targets, inPlace ? DepthRead::FromTarget : DepthRead::FromCopy);
+    bindGBufferInputs(context.targets, depthRead(context.frame));
     beginMirroredDraw(mirroring_);
     if (mirrored) beginWaterBoundedDraw(context);
     std::string program = mirrored ? "lighting.mirrored" : fused ? "lighting.tonemapped" : "lighting";

@@ -38,4 +38,23 @@ set(OASIS_SANITIZE_SKIPPED_CLI_TESTS
   # the broken driver's cases preload their own stand-in library and render in dozens of children:
   # the child-process code runs sanitized in cli.check_quick and cli.check_driver_references
   cli.check_driver_crash cli.check_driver_hang cli.check_driver_flake cli.check_driver_expectations
-  cli.check_driver_farm cli.check_driver_blame)
+  cli.check_driver_farm cli.check_driver_blame
+  # frame comparisons between paths, tiers and set-ups of llvmpipe: their frames come from the
+  # renderer code the sanitized GPU suite draws (every path, tier and layout), and what they add
+  # (comparing two images, a JSON) the kept compare, caps, probe and output tests run sanitized;
+  # sanitized they cost minutes of CI's 90 (the normal tree runs them all)
+  cli.compare_ratios_agree cli.compare_pass_times cli.pass_clock_llvmpipe_untrusted
+  cli.render_atlas_no_compute cli.render_atlas_without_compute_context cli.compare_json_without_compute_context
+  cli.compare_json_plants_on_gpu cli.compare_json_vegetation cli.compare_json_vegetation_off cli.compare_json_lights
+  cli.compare_lights_without_ssbo_context cli.compare_json_light_method_tiled cli.compare_light_method_forced_no_compute
+  cli.compare_light_method_without_compute_context cli.compare_light_method_tiled_on_ubo_path
+  cli.compare_json_reversed_z cli.gles_without_depth_clamp cli.water_without_depth_clamp cli.gles_frames_equal_desktop
+  cli.gles31_frames_equal_gles cli.gles_probe_equals_desktop cli.depth_stencil_drawn
+  cli.force_gl33_draws_the_unforced_image cli.norm16_fallback_render cli.norm16_fallback_check
+  cli.driver_compare_forced cli.driver_compare_native cli.driver_compare_altered
+  cli.frame_graph_order cli.frame_graph_docs cli.render_validated_frames
+  cli.caps_gles31 cli.caps_gles31_without_gpu_shader5 cli.caps_gles_without_norm16 cli.caps_forced_gl33_tier
+  cli.caps_no_ssbo_compute
+  # the output limit's bench case: the limit's code runs sanitized in its compare case, the bench's
+  # writers in cli.bench_quick_smoke
+  cli.output_size-limit-bench)
