@@ -241,6 +241,8 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
         result.pixelsOver = j.pixelsOver;
         result.meanSigned = j.meanSigned;
         caseMatchesReference = j.pass;
+        if (!sameDriver)
+            if (std::string shift = meanShiftNote(j); !shift.empty()) notes.push_back(shift);
         if (!j.pass) {
             failures.push_back("against the reference frame: " + j.summary);
             result.errorMask = errorMask(result.result, reference.image, referenceRule);

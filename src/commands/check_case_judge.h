@@ -25,7 +25,7 @@ constexpr const char* kCheckSize = "256x144";
 std::vector<std::string> checkCaseArguments(const CheckCase& c, const Options& options, bool mainPath = false);
 
 // The rule a case is held to against its own main path on the same driver: identical, except where
-// a fallback's rounding was measured to differ (the ES 3.0 tier, tiled lights).
+// a fallback's rounding was measured to differ (tiled lights) or its geometry (the ES 3.0 tier).
 const ImageRule& mainPathRule(const CheckCase& c);
 
 class CaseJudge {

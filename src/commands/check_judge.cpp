@@ -73,6 +73,15 @@ Judgement judge(const Image& result, const Image& reference, const ImageRule& ru
     return j;
 }
 
+std::string meanShiftNote(const Judgement& judgement) {
+    if (std::fabs(judgement.meanSigned) <= kMeanShiftNote) return {};
+    char text[200];
+    std::snprintf(text, sizeof(text), "its mean signed difference from the reference frame is %+.2f levels, beyond "
+                  "every measured driver's (%.1f): a term too %s?", judgement.meanSigned, kMeanShiftNote,
+                  judgement.meanSigned > 0 ? "bright" : "dark");
+    return text;
+}
+
 Image errorMask(const Image& result, const Image& reference, const ImageRule& rule) {
     Image mask(result.width, result.height);
     for (int y = 0; y < result.height; ++y)

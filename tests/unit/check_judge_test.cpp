@@ -99,6 +99,10 @@ TEST(CheckJudge, TheMeanSignedDifferenceIsTheShiftNotTheEdges) {
     EXPECT_EQ(edge.maxAbs, 100);
     EXPECT_DOUBLE_EQ(edge.meanSigned, 0.0);
     EXPECT_NE(shift.summary.find("mean +3.000 levels"), std::string::npos) << shift.summary;
+    // The note on a shift beyond every measured driver's: the shift has it, the edges do not.
+    EXPECT_NE(meanShiftNote(shift).find("+3.00 levels"), std::string::npos) << meanShiftNote(shift);
+    EXPECT_NE(meanShiftNote(shift).find("too bright"), std::string::npos);
+    EXPECT_EQ(meanShiftNote(edge), "");
 }
 
 TEST(CheckJudge, SizesMustAgree) {
