@@ -137,12 +137,8 @@ static gl::ForcedFallbacks forcedFallbacksOf(const Options& options) {
     gl::ForcedFallbacks forced = options.scene.force;
     ContextInfo context = queryContextInfo();
     for (const auto& [name, row] : gl::resolveWorkarounds(options.scene.workarounds, context.renderer, context.version)
-                                       .forcedFallbacks()) {
-        if (("," + forced.list() + ",").find("," + name + ",") != std::string::npos) continue;  // --force asked already
-        std::string error;
-        gl::parseForcedFallbacks(name, forced, error);  // the table's own names: they parse
-        forced.byWorkaround[name] = row;
-    }
+                                       .forcedFallbacks())
+        forced.forceByWorkaround(name, row);
     return forced;
 }
 

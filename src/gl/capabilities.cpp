@@ -166,6 +166,16 @@ std::string ForcedFallbacks::forcedBy(const std::string& name) const {
     return found != byWorkaround.end() ? "the driver workaround " + found->second : "--force " + name;
 }
 
+bool ForcedFallbacks::has(const std::string& name) const {
+    return ("," + list() + ",").find("," + name + ",") != std::string::npos;
+}
+
+void ForcedFallbacks::forceByWorkaround(const std::string& name, const std::string& row) {
+    if (has(name)) return;  // --force asked for it already
+    std::string error;
+    if (parseForcedFallbacks(name, *this, error)) byWorkaround[name] = row;  // the table's own names parse
+}
+
 const char* forcedFallbackNames() {
     return "no-ssbo, no-compute, no-stencil-texturing, no-dsa, no-clip-control, gl33, gles30, no-depth-clamp, "
            "no-read-only-depth";
@@ -222,11 +232,7 @@ Capabilities Capabilities::unforced() const {
     Capabilities own = *this;
     own.forced = {};
     // A driver workaround's fallback stays: the driver's bug is the driver's limit, not a tier's.
-    for (const auto& [name, row] : forced.byWorkaround) {
-        std::string error;
-        parseForcedFallbacks(name, own.forced, error);
-        own.forced.byWorkaround[name] = row;
-    }
+    for (const auto& [name, row] : forced.byWorkaround) own.forced.forceByWorkaround(name, row);
     if (beforeTier) {
         own.major = beforeTier->major;
         own.minor = beforeTier->minor;

@@ -37,6 +37,9 @@ struct ForcedFallbacks {
     std::string list() const;  // "no-ssbo,gl33" ("" when none)
     // What forced the fallback NAME: "--force no-ssbo" or "the driver workaround depth-clamp-off".
     std::string forcedBy(const std::string& name) const;
+    bool has(const std::string& name) const;  // the fallback NAME is forced, by either
+    // Forces the fallback NAME (a --force name) for the workaround ROW, unless already forced.
+    void forceByWorkaround(const std::string& name, const std::string& row);
 };
 // The accepted names, for help and errors: "no-ssbo, no-compute, no-stencil-texturing, no-dsa,
 // no-clip-control, gl33, gles30, no-depth-clamp, no-read-only-depth".

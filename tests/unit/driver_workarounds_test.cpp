@@ -119,6 +119,14 @@ TEST(DriverWorkarounds, AFallbackSaysWhatForcedIt) {
     forced.byWorkaround["no-depth-clamp"] = "depth-clamp-off";
     EXPECT_EQ(forced.forcedBy("no-ssbo"), "--force no-ssbo");
     EXPECT_EQ(forced.forcedBy("no-depth-clamp"), "the driver workaround depth-clamp-off");
+    // A workaround forces what --force did not; what --force asked stays --force's.
+    ForcedFallbacks byRow;
+    ASSERT_TRUE(parseForcedFallbacks("no-ssbo", byRow, error));
+    byRow.forceByWorkaround("no-ssbo", "force-no-ssbo");
+    byRow.forceByWorkaround("no-compute", "force-no-compute");
+    EXPECT_TRUE(byRow.has("no-compute") && byRow.has("no-ssbo") && !byRow.has("no-dsa"));
+    EXPECT_EQ(byRow.forcedBy("no-ssbo"), "--force no-ssbo");
+    EXPECT_EQ(byRow.forcedBy("no-compute"), "the driver workaround force-no-compute");
 }
 
 }  // namespace
