@@ -304,6 +304,13 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
         }
     }
 
+    // 5. The shading oracle: the driver's radiance against the CPU's shading of the inputs it read.
+    result.oracle = run.frame.oracle;
+    const bool oracleFailed = result.oracle.ran && result.oracle.verdict == "fail";
+    const bool onlyTheOracle = oracleFailed && failures.empty();
+    if (oracleFailed)
+        failures.push_back("shading oracle: " + result.oracle.differingTerm + " differs (" + result.oracle.detail + ")");
+
     // The verdict and whom it blames.
     bool referenceOk = reference.readable && caseMatchesReference;
     if (referenceOk && !mainRendered) {
@@ -350,7 +357,8 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
     result.reason = joined(failures);
     // Also where a loose rule (the ES 3.0 tier's same-driver-geometry) let the case match its main
     // path and this path is blamed: the search still finds where the two part above the rule's level.
-    if (result.observed == Verdict::Fail && mainRendered && (!caseMatchesMain || result.blame == "this path"))
+    // Not where the oracle alone failed: its frame matches its main path, and it names the term.
+    if (result.observed == Verdict::Fail && mainRendered && !onlyTheOracle && (!caseMatchesMain || result.blame == "this path"))
         findDivergence(c, result);
     return result.observed;
 }

@@ -21,6 +21,7 @@
 #include "commands/child_process.h"
 #include "commands/check_snapshots.h"
 #include "commands/json_value.h"
+#include "commands/oracle_report.h"
 #include "gl/objects.h"
 #include "render/file_output.h"
 #include "render/interruption.h"
@@ -70,7 +71,7 @@ int childFrame(const Options& options) {
         json = "{\"rendered\": " + std::string(frame.rendered ? "true" : "false") +
                ", \"skip_reason\": " + jsonString(frame.skipReason) + ", \"limited_by\": " + jsonString(frame.limitedBy) +
                ", \"drawn_with\": " + jsonString(frame.drawnWith) + ", \"context\": " + contextJson(frame.context) +
-               ", \"error\": \"\"}";
+               ", \"oracle\": " + shadingOracleJson(frame.oracle) + ", \"error\": \"\"}";
     } catch (const std::exception& error) {
         json = "{\"rendered\": false, \"error\": " + jsonString(error.what()) + "}";
     }
@@ -194,6 +195,7 @@ public:
         frame.skipReason = stringMember(answer, "skip_reason");
         frame.limitedBy = stringMember(answer, "limited_by");
         frame.drawnWith = stringMember(answer, "drawn_with");
+        if (const JsonValue* oracle = answer.find("oracle")) frame.oracle = shadingOracleFromJson(*oracle);
         if (const JsonValue* context = answer.find("context"); context && context->isObject())
             frame.context = {stringMember(*context, "gl_version"), stringMember(*context, "glsl_version"),
                              stringMember(*context, "renderer"), stringMember(*context, "api")};

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "commands/oracle_report.h"
 #include "render/decimal_text.h"
 
 namespace oasis {
@@ -208,6 +209,7 @@ std::string caseDetails(const CaseResult& c, size_t index, bool withImages) {
         html += detailLine("first divergence", htmlEscape(c.firstDivergence->pass) + " &rarr; " +
                                                    htmlEscape(c.firstDivergence->target) + " (" +
                                                    std::to_string(c.firstDivergence->pixels) + " px)");
+    if (c.oracle.ran) html += detailLine("shading oracle", htmlEscape(shadingOracleLine(c.oracle)));
     if (!c.expectation.empty()) html += detailLine("expectation", htmlEscape(c.expectation));
     if (!c.context.renderer.empty())
         html += detailLine("context", htmlEscape((c.context.glVersion.rfind("OpenGL", 0) == 0 ? "" : c.context.api + " ") +

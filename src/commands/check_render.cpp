@@ -106,6 +106,21 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
     return {};
 }
 
+// The shading oracle over the frame just drawn. Inputs that cannot be read at all leave every
+// sampled pixel out, saying why: the case is then judged by its images alone.
+ShadingOracle oracleOf(Renderer& renderer) {
+    try {
+        return runShadingOracle(renderer);
+    } catch (const std::exception& error) {
+        ShadingOracle oracle;
+        oracle.ran = true;
+        oracle.bound = shadingOracleBound();
+        oracle.verdict = "none";
+        oracle.leftOut.push_back({std::string("inputs unreadable: ") + error.what(), 0});
+        return oracle;
+    }
+}
+
 }  // namespace
 
 CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants, bool quiet) {
@@ -134,6 +149,7 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
     std::FILE* sink = std::fopen("/dev/null", "w");
     frame.image = renderRequestedImage(options, session, sink ? sink : stderr);
     if (sink) std::fclose(sink);
+    if (options.view == "final" && options.stopBefore.empty()) frame.oracle = oracleOf(renderer);
     frame.provenance = provenanceTexts(pictureProvenance(options, options.view, pipelineName(options.pipeline),
                                                          frame.image.height, frame.image.height));
     frame.rendered = true;

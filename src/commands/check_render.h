@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands/check_report.h"
+#include "commands/shading_oracle.h"
 #include "render/image.h"
 #include "render/png_text.h"
 
@@ -29,6 +30,8 @@ struct CaseFrame {
     Image image;
     std::vector<PngText> provenance;  // what made it (commands/provenance.h), for the PNGs the check writes
     CaseContext context;  // empty where no context was made
+    // A shaded frame's (the final view's) shading oracle over the frame just drawn; not run otherwise.
+    ShadingOracle oracle;
 };
 
 // Renders `oasis render ARGUMENTS` (the final view or the one asked for, no legend) and checks that

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "commands/bench_report.h"
+#include "commands/oracle_report.h"
 
 namespace oasis {
 namespace {
@@ -56,6 +57,7 @@ std::string caseJson(const CaseResult& c) {
             jsonString(c.context.api) + "}";
     json += ", \"reproduce\": " + jsonString(c.reproduce);
     json += ", \"child_output\": " + (c.childTail.empty() ? std::string("null") : jsonString(c.childTail));
+    json += ", \"oracle\": " + shadingOracleJson(c.oracle);
     json += ", \"first_divergence\": " + divergence + ", \"seconds\": " + number(c.seconds, "%.3f") + "}";
     return json;
 }

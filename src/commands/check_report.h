@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "commands/shading_oracle.h"
 #include "render/image.h"
 
 namespace oasis {
@@ -57,6 +58,7 @@ struct CaseResult {
     double mainPathReferenceMeanSigned = 0.0;
     bool mainPathMatchesReference = false;
     std::optional<FirstDivergence> firstDivergence;
+    ShadingOracle oracle;  // a shaded case's: its radiance against the CPU's shading of its inputs
     double seconds = 0.0;
     // Who is to blame when it did not pass: "this path", "the main path", "the driver against the
     // reference", or "" (passed, skipped).

@@ -14,6 +14,9 @@ namespace oasis {
 // The renderer's internals these reads need, and nothing else of it (a friend of Renderer).
 struct ReadbackAccess {
     static GLuint waterBounds(const Renderer& renderer) { return renderer.waterBounds_.name(); }
+    static GLuint frameBlock(const Renderer& renderer) { return renderer.frameUniforms_.name(); }
+    static GLuint lightList(const Renderer& renderer) { return renderer.lightList_.name(); }
+    static GLuint lightCount(const Renderer& renderer) { return renderer.lightCount_.name(); }
     static FloatReadback& positions(Renderer& renderer) { return renderer.positionsReadback_; }
     static void fillSurfacesWithTheirDepth(Renderer& renderer) { renderer.fillSurfacesWithTheirDepth(); }
     // The depth and stencil read-backs may draw (render/depth_stencil_readback.h): a const read
@@ -28,6 +31,25 @@ glm::ivec4 readWaterBounds(const Renderer& renderer) {
     gl::readBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(bounds), &bounds);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     return bounds;
+}
+
+FrameData readFrameBlock(const Renderer& renderer) {
+    FrameData data;
+    glBindBuffer(GL_UNIFORM_BUFFER, ReadbackAccess::frameBlock(renderer));
+    gl::readBufferData(GL_UNIFORM_BUFFER, sizeof(data), &data);
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    return data;
+}
+
+std::vector<PointLight> readLightList(const Renderer& renderer) {
+    GLuint count[4] = {0, 0, 0, 0};
+    glBindBuffer(GL_UNIFORM_BUFFER, ReadbackAccess::lightCount(renderer));
+    gl::readBufferData(GL_UNIFORM_BUFFER, sizeof(count), count);
+    std::vector<PointLight> lights(count[0]);
+    glBindBuffer(GL_UNIFORM_BUFFER, ReadbackAccess::lightList(renderer));
+    gl::readBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(lights.size() * sizeof(PointLight)), lights.data());
+    glBindBuffer(GL_UNIFORM_BUFFER, 0);
+    return lights;
 }
 
 Image readDisplay(const Renderer& renderer) {

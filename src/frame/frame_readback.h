@@ -27,6 +27,10 @@ std::vector<float> readTarget(Renderer& renderer, Target target);
 std::vector<float> readSurfacePositions(Renderer& renderer);
 std::vector<float> readDepth(const Renderer& renderer);
 std::vector<uint8_t> readStencil(const Renderer& renderer);
+// The frame's uniform block and its point lights as the driver holds them, read back from their
+// buffers (the light list's length from its count buffer): what the shaders read, not the CPU's copy.
+FrameData readFrameBlock(const Renderer& renderer);
+std::vector<PointLight> readLightList(const Renderer& renderer);
 // The last frame's rectangle of visible water in pixels (x0, y0, x1, y1 inclusive, rows bottom-up;
 // empty: x0 > x1) as the GPU recorded it (RenderPaths::waterBoundsAvailable; empty without).
 glm::ivec4 readWaterBounds(const Renderer& renderer);
