@@ -126,9 +126,10 @@ double oracleRebuiltPositionError(const OracleInputs& in, int x, int y) {
     if (!in.compact) return 0.0;
     // A float rounding is 2^-24 of its result; the reconstruction takes a dozen of them (the depth's
     // conversion, the inverse matrix's products and sums, the division and scale): 2^-20 for them
-    // all. In the standard convention the two roundings before the cancellation (f + n and
-    // ndc (f - n)) grow by its gain, (f + n + |ndc| (f - n)) over what is left: 2^-22 for them.
-    constexpr double kRoundings = 1.0 / 1048576.0, kCancelled = 1.0 / 4194304.0;
+    // all. In the standard convention what comes before the cancellation (f + n, ndc (f - n) and
+    // the depth's own conversion, each 2^-24 at most) grows by its gain, (f + n + |ndc| (f - n))
+    // over what is left: 2^-23 of that bounds the three together.
+    constexpr double kRoundings = 1.0 / 1048576.0, kCancelled = 1.0 / 8388608.0;
     if (in.depthReversed) return kRoundings;
     double nearPlane = in.frame.depthRange.x, farPlane = in.frame.depthRange.y;
     double ndc = double(in.depth[size_t(y) * size_t(in.width) + size_t(x)]) * 2.0 - 1.0;

@@ -44,22 +44,48 @@ struct GlPixel {
     int x = 0, y = 0;  // GL's window coordinates, bottom row 0
 };
 
-// `count` distinct pixels a pixel in from the frame's edges, the same for every driver and run
-// (a 32-bit LCG, not the standard library's distributions, which differ between libraries).
-std::vector<GlPixel> samplePixels(int width, int height, int count) {
-    std::vector<GlPixel> pixels;
-    if (width < 3 || height < 3) return pixels;
-    const int64_t interior = int64_t(width - 2) * int64_t(height - 2);
-    count = int(std::min<int64_t>(count, interior));
-    std::set<int64_t> taken;
-    uint32_t state = kSampleSeed;
-    while (int(pixels.size()) < count) {
+// `count` distinct pixels of `from`, the same for every driver and run (a 32-bit LCG, not the
+// standard library's distributions, which differ between libraries); none already `taken`.
+std::vector<GlPixel> seededChoice(const std::vector<GlPixel>& from, int count, uint32_t seed,
+                                  std::set<std::pair<int, int>>& taken) {
+    std::vector<GlPixel> chosen;
+    std::set<size_t> tried;
+    uint32_t state = seed;
+    while (int(chosen.size()) < count && tried.size() < from.size()) {
         state = state * 1664525u + 1013904223u;
-        int64_t k = int64_t((uint64_t(state) * uint64_t(interior)) >> 32);
-        if (!taken.insert(k).second) continue;
-        pixels.push_back({1 + int(k % (width - 2)), 1 + int(k / (width - 2))});
+        size_t k = size_t((uint64_t(state) * uint64_t(from.size())) >> 32);
+        if (!tried.insert(k).second || !taken.insert({from[k].x, from[k].y}).second) continue;
+        chosen.push_back(from[k]);
     }
+    return chosen;
+}
+
+// Pixels a pixel in from the frame's edges; with `pointLit`, only those whose surface (not water)
+// lies inside some point light's sphere as the CPU reads the inputs.
+std::vector<GlPixel> interiorPixels(const OracleInputs& in, bool pointLit) {
+    std::vector<GlPixel> pixels;
+    for (int y = 1; y + 1 < in.height; ++y)
+        for (int x = 1; x + 1 < in.width; ++x) {
+            OracleSurface s;
+            if (pointLit && (oracleWaterAt(in, x, y) || !oracleSurfaceAt(in, x, y, s))) continue;
+            if (pointLit && std::none_of(in.lights.begin(), in.lights.end(), [&](const PointLight& light) {
+                    return glm::distance(glm::dvec3(light.positionRadius), oracleLitPosition(in.frame, s)) <
+                           double(light.positionRadius.w);
+                }))
+                continue;
+            pixels.push_back({x, y});
+        }
     return pixels;
+}
+
+// The sample: three quarters over the whole interior, a quarter among the pixels the point lights
+// reach (a few percent of a frame: a uniform sample alone could miss them all).
+std::vector<GlPixel> samplePixels(const OracleInputs& in, int count) {
+    std::set<std::pair<int, int>> taken;
+    std::vector<GlPixel> sample = seededChoice(interiorPixels(in, false), count - count / 4, kSampleSeed, taken);
+    std::vector<GlPixel> lit = seededChoice(interiorPixels(in, true), count - int(sample.size()), kSampleSeed + 1, taken);
+    sample.insert(sample.end(), lit.begin(), lit.end());
+    return sample;
 }
 
 void countLeftOut(ShadingOracle& result, const std::string& kind) {
@@ -193,7 +219,7 @@ ShadingOracle runShadingOracle(Renderer& renderer, int samples) {
     result.inputs = in.source;
     GlPixel worst;
     PixelShading worstShading;
-    for (GlPixel p : samplePixels(in.width, in.height, samples)) {
+    for (GlPixel p : samplePixels(in, samples)) {
         ++result.pixelsSampled;
         PixelShading shading;
         int stores = 1;

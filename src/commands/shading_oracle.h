@@ -33,7 +33,7 @@ struct ShadingOracle {
 double shadingOracleBound();
 
 // The oracle over the renderer's last whole frame (deferred or forward), `samples` pixels chosen
-// by a fixed seed. Throws std::runtime_error where an input cannot be read at all.
+// by a fixed seed: three quarters over the frame, a quarter among those the point lights reach. Throws std::runtime_error where an input cannot be read at all.
 ShadingOracle runShadingOracle(Renderer& renderer, int samples = 256);
 
 }  // namespace oasis
