@@ -10,6 +10,7 @@
 #include "frame/renderer.h"
 #include "passes/pass.h"
 #include "render/pixel_readback.h"
+#include "render/texture_units.h"
 
 namespace oasis {
 namespace {
@@ -42,13 +43,43 @@ void readSurfaces(Renderer& renderer, OracleInputs& in) {
                            : std::string("surfaces: the ") + surfaces.layout().name + " G-buffer's texels, decoded on the CPU";
 }
 
-// The cascades' depths, layer by layer, where the frame drew them and the context reads depth.
-void readShadowMaps(const Renderer& renderer, OracleInputs& in) {
+// One layer's depths drawn into a float target and read back, where the context cannot read depth
+// (OpenGL ES without GL_NV_read_depth_stencil): texelFetch of the stored float, compare mode off.
+void drawShadowLayer(Renderer& renderer, int layer, float* out) {
+    const ShadowMaps& maps = renderer.shadowMaps();
+    const int size = maps.mapSize();
+    gl::Texture colour = gl::createTargetTexture("shading oracle: a shadow map layer", GL_R32F, size, size);
+    gl::Framebuffer framebuffer = gl::createFramebuffer("shading oracle: a shadow map layer");
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour.name(), 0);
+    GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &drawBuffer);
+    glViewport(0, 0, size, size);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_BLEND);
+    maps.bind();
+    glActiveTexture(GL_TEXTURE0 + kUnitShadowMap);  // the parameter is the bound array's
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    GLuint program = renderer.shaders().program("readback.shadow-layer");
+    glUseProgram(program);
+    glUniform1i(glGetUniformLocation(program, "shadowLayer"), layer);
+    renderer.geometry().drawFullscreenTriangle();
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glActiveTexture(GL_TEXTURE0);
+    std::vector<float> rgba(size_t(size) * size_t(size) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, rgba.data());
+    for (size_t i = 0; i < size_t(size) * size_t(size); ++i) out[i] = rgba[4 * i];
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// The cascades' depths, layer by layer, where the frame drew them: read by glReadPixels where the
+// context reads depth, else drawn out.
+void readShadowMaps(Renderer& renderer, OracleInputs& in) {
     if (in.frame.shadow.x == 0.0f) return;
-    if (!renderer.paths().capabilities.depthStencilRead.available) {
-        in.shadowMapsUnreadable = "this context cannot read depth back: " + renderer.paths().capabilities.depthStencilRead.reason;
-        return;
-    }
+    const bool drawn = !renderer.paths().capabilities.depthStencilRead.available;
     const ShadowMaps& maps = renderer.shadowMaps();
     ShadowMapDepths& out = in.shadowMaps;
     out.size = maps.mapSize();
@@ -57,14 +88,20 @@ void readShadowMaps(const Renderer& renderer, OracleInputs& in) {
     while (glGetError() != GL_NO_ERROR) {
     }
     for (int layer = 0; layer < out.layers; ++layer) {
+        float* depths = out.depths.data() + size_t(layer) * size_t(out.size) * size_t(out.size);
+        if (drawn) {
+            drawShadowLayer(renderer, layer, depths);
+            continue;
+        }
         glBindFramebuffer(GL_READ_FRAMEBUFFER, maps.framebuffer(layer));
-        glReadPixels(0, 0, out.size, out.size, GL_DEPTH_COMPONENT, GL_FLOAT,
-                     out.depths.data() + size_t(layer) * size_t(out.size) * size_t(out.size));
+        glReadPixels(0, 0, out.size, out.size, GL_DEPTH_COMPONENT, GL_FLOAT, depths);
     }
     if (GLenum error = glGetError(); error != GL_NO_ERROR) {
-        in.shadowMapsUnreadable = "glReadPixels of the 32-bit float shadow maps failed (GL error " + std::to_string(error) + ")";
+        in.shadowMapsUnreadable = "reading the 32-bit float shadow maps failed (GL error " + std::to_string(error) + ")";
         out = ShadowMapDepths();
+        return;
     }
+    in.shadowMapsHow = drawn ? "drawn out (this context cannot read depth back)" : "read back";
 }
 
 glm::dvec4 texel(const std::vector<float>& values, const OracleInputs& in, int x, int y) {
@@ -116,7 +153,7 @@ OracleInputs readOracleInputs(Renderer& renderer) {
     in.source += "; depth, stencil and Radiance (RGBA16F) of the frame; the frame's uniform block and light list read back "
                  "from their buffers";
     in.source += in.frame.shadow.x == 0.0f ? "; no shadow maps this frame"
-                 : in.shadowMapsUnreadable.empty() ? "; the shadow maps' depths read back"
+                 : in.shadowMapsUnreadable.empty() ? "; the shadow maps' depths " + in.shadowMapsHow
                                                    : "; the shadow maps unreadable (" + in.shadowMapsUnreadable + ")";
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return in;

@@ -30,6 +30,7 @@ struct OracleInputs {
     std::vector<PointLight> lights;
     ShadowMapDepths shadowMaps;  // empty where the frame drew none, or they cannot be read here
     std::string shadowMapsUnreadable;  // why they cannot, where the frame drew them
+    std::string shadowMapsHow;         // "read back", or "drawn out (...)" where depth cannot be read
     std::string source;          // where each input came from, for the report
 };
 

@@ -85,6 +85,7 @@ std::vector<ProgramVariant> fixedVariants() {
         // Depth and stencil read by drawing where glReadPixels cannot (render/depth_stencil_readback.h).
         {"readback.depth", "fullscreen.vert", "depth_stencil_read.frag", {"READ_DEPTH"}},
         {"readback.stencil", "fullscreen.vert", "depth_stencil_read.frag", {"READ_STENCIL_BIT"}},
+        {"readback.shadow-layer", "fullscreen.vert", "depth_stencil_read.frag", {"READ_SHADOW_LAYER"}},
         // `probe --shading`: the lighting GLSL with its terms recorded (common/shading_terms.glsl).
         {"probe.shading", "fullscreen.vert", "probe_shading.frag", {"SHADING_RECORD"}},
         {"depth.copy", "fullscreen.vert", "depth_copy.frag", {}},
