@@ -59,7 +59,7 @@ ShadingOracle shadingOracleFromJson(const JsonValue& object) {
 }
 
 std::string shadingOracleLine(const ShadingOracle& oracle) {
-    std::string line = "shading oracle: " + oracle.verdict + ", " + std::to_string(oracle.pixelsChecked) + " of " +
+    std::string line = oracle.verdict + ", " + std::to_string(oracle.pixelsChecked) + " of " +
                        std::to_string(oracle.pixelsSampled) + " sampled pixels checked, max " +
                        scientific(oracle.maxRelativeError) + " relative per half-float store (bound " +
                        scientific(oracle.bound) + ")";

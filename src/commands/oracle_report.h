@@ -12,7 +12,8 @@ namespace oasis {
 // "verdict", "differing_term" (failing), "detail", "inputs"}; "null" where the oracle did not run.
 std::string shadingOracleJson(const ShadingOracle& oracle);
 ShadingOracle shadingOracleFromJson(const JsonValue& object);
-// "oracle: pass, 143 of 256 pixels, max 3.1e-04 relative (bound 1.1e-03); left out: sky 80, ..."
+// report.html's line beside "shading oracle": "pass, 143 of 256 sampled pixels checked, max 9.3e-04
+// relative per half-float store (bound 1.1e-03); left out: sky 53, ..."
 std::string shadingOracleLine(const ShadingOracle& oracle);
 
 }  // namespace oasis
