@@ -46,13 +46,19 @@ std::vector<T> asValues(const std::vector<uint8_t>& bytes) {
 // The lights as the frame's own light path reads them: lights_decode.frag draws lightAt(i) into
 // column i (row 0 position and radius, row 1 colour and intensity) and lightCount() at (0, 2).
 // A list longer than the count the shaders see is cut to it, so a count gone wrong shows too.
-std::vector<float> decodedLights(Renderer& renderer) {
+// False where the context cannot draw into a float target (OpenGL ES without
+// EXT_color_buffer_float): that path's lights are then not compared, rather than taken as none.
+bool decodeLights(Renderer& renderer, std::vector<float>& lights) {
     const FrameSetup& frame = renderer.lastFrame();
     int uploaded = int(frame.lights.size());
-    if (uploaded == 0) return {};  // nothing to read: an SSBO path binds no list then
+    lights.clear();
+    if (uploaded == 0) return true;  // nothing to read: an SSBO path binds no list then
     FloatReadback target;  // made and dropped while the context is current
     target.bindForDrawing(uploaded, 3);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) return {};
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        return false;
+    }
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
@@ -62,12 +68,11 @@ std::vector<float> decodedLights(Renderer& renderer) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     size_t width = size_t(uploaded);
     int seen = std::clamp(int(pixels[width * 8]), 0, uploaded);
-    std::vector<float> lights;
     for (size_t i = 0; i < size_t(seen); ++i) {
         lights.insert(lights.end(), pixels.begin() + long(i * 4), pixels.begin() + long(i * 4 + 4));
         lights.insert(lights.end(), pixels.begin() + long((width + i) * 4), pixels.begin() + long((width + i) * 4 + 4));
     }
-    return lights;
+    return true;
 }
 
 // Whether the light reaches the surface at `p` by more than a part in 10^3 of its radius: the
@@ -78,7 +83,7 @@ bool reaches(const float* light, const float* p) {
     return dx * dx + dy * dy + dz * dz < radius * radius;
 }
 
-bool listed(const std::vector<uint32_t>& words, size_t sliceBase, uint32_t light) {
+bool inSliceList(const std::vector<uint32_t>& words, size_t sliceBase, uint32_t light) {
     uint32_t count = std::min<uint32_t>(words[sliceBase], OASIS_LIGHT_TILE_MAX_LIGHTS);
     for (uint32_t k = 0; k < count; ++k)
         if (words[sliceBase + 1 + k] == light) return true;
@@ -122,7 +127,7 @@ std::vector<float> lightTileFaults(const std::vector<uint32_t>& tileWords, const
                 if (!reaches(&lights[i], p)) continue;
                 bool found = false;
                 for (int slice : slices)
-                    found = found || listed(tileWords, base + 2 + size_t(slice) * kSliceStride, uint32_t(i / kLightFloats));
+                    found = found || inSliceList(tileWords, base + 2 + size_t(slice) * kSliceStride, uint32_t(i / kLightFloats));
                 missing += !found;
             }
             faults[pixel] = float(missing);
@@ -158,8 +163,8 @@ void snapshotWrittenBuffers(Renderer& renderer, const Pass& pass, const std::vec
 
 PassSnapshot snapshotFrameInputs(Renderer& renderer) {
     PassSnapshot snapshot{kFrameInputsStep, {}};
-    std::vector<float> lights = decodedLights(renderer);
-    snapshot.buffers.push_back({resourceName(Buffer::LightList), uint32_t(kLightFloats), false, std::move(lights)});
+    if (std::vector<float> lights; decodeLights(renderer, lights))
+        snapshot.buffers.push_back({resourceName(Buffer::LightList), uint32_t(kLightFloats), false, std::move(lights)});
     const VegetationBuffers& plants = renderer.vegetationBuffers();
     size_t count = plants.count(Mirroring::Direct) + plants.count(Mirroring::Mirrored);
     std::vector<float> instances =

@@ -25,8 +25,9 @@ void snapshotWrittenBuffers(Renderer& renderer, const Pass& pass, const std::vec
                             PassSnapshot& into);
 // The frame's inputs as the last frame uploaded them: LightList decoded through the frame's light
 // path's own GLSL (lightCount(), lightAt(i) of common/lights.glsl), so an SSBO and a UBO list that
-// the shaders read alike compare equal; PlantInstances as stored, each instance's 9 floats, compared
-// as a multiset. Named kFrameInputsStep.
+// the shaders read alike compare equal (left out where the context cannot draw into a float target:
+// a buffer one path lacks is not compared); PlantInstances as stored, each instance's 9 floats,
+// compared as a multiset. Named kFrameInputsStep.
 PassSnapshot snapshotFrameInputs(Renderer& renderer);
 
 // Per pixel (bottom row first, `width` x `height`), how many lights reach the surface there (by
