@@ -15,6 +15,7 @@ public:
     }
     std::vector<Access> accesses(const FrameSetup& frame) const override {
         std::vector<Access> used = gbufferSamples(frame, DepthRead::FromTarget);
+        used.push_back({Buffer::LightList, Use::Sample});
         used.push_back({Buffer::LightTiles, Use::Replace});  // its own tile-list buffer
         return used;
     }
@@ -24,6 +25,8 @@ public:
     // Screen tiles across and down a frame, and the bytes of their lists.
     static int tilesAcross(int pixels);
     static size_t listBytes(int width, int height);
+    // The tile lists of its last dispatch (common/light_tiles.glsl's layout), 0 before one.
+    GLuint ownBuffer(Buffer buffer) const override { return buffer == Buffer::LightTiles ? tiles_.name() : 0; }
 
 protected:
     void execute(PassContext& context) override;

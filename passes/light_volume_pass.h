@@ -22,6 +22,7 @@ public:
         std::vector<Access> used = gbufferSamples(frame, DepthRead::FromCopy);
         used.push_back({mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Use::Write});
         appendDepthStencil(used, {Use::DepthTest, Use::StencilTest, Use::StencilWrite});
+        used.push_back({Buffer::LightList, Use::Sample});  // a volume per light, shaded by it
         if (frame.shadowsActive) used.push_back({Buffer::ShadowMaps, Use::Sample});
         return used;
     }

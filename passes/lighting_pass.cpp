@@ -32,7 +32,10 @@ std::vector<Access> LightingPass::accesses(const FrameSetup& frame) const {
     // Tested, never written; mirrored, the stencil keeps it inside the water.
     if (testsSurfaces(frame)) appendDepthStencil(used, {Use::DepthTest});
     if (mirroring_ == Mirroring::Mirrored) appendDepthStencil(used, {Use::StencilTest});
-    if (addsTiledLights(frame)) used.push_back({Buffer::LightTiles, Use::Sample});
+    if (addsTiledLights(frame)) {
+        used.push_back({Buffer::LightTiles, Use::Sample});
+        used.push_back({Buffer::LightList, Use::Sample});
+    }
     if (frame.shadowsActive) used.push_back({Buffer::ShadowMaps, Use::Sample});
     return used;
 }

@@ -15,6 +15,8 @@ const char* bufferName(Buffer buffer) {
         case Buffer::TerrainHeights: return "TerrainHeights";
         case Buffer::ShadowMaps: return "ShadowMaps";
         case Buffer::LightTiles: return "LightTiles";
+        case Buffer::LightList: return "LightList";
+        case Buffer::PlantInstances: return "PlantInstances";
     }
     return "?";
 }
@@ -157,6 +159,8 @@ std::vector<Access> SurfacePass::accesses(const FrameSetup& frame) const {
     else  // inside the water only (beginMirroredDraw)
         appendDepthStencil(used, {Use::DepthTest, Use::DepthWrite, Use::StencilTest});
     if (output_ == SurfaceOutput::Forward && frame.shadowsActive) used.push_back({Buffer::ShadowMaps, Use::Sample});
+    // Shaded here: the fragments loop over the point lights.
+    if (output_ == SurfaceOutput::Forward) used.push_back({Buffer::LightList, Use::Sample});
     return used;
 }
 

@@ -10,6 +10,12 @@ class VegetationPass : public SurfacePass {
 public:
     VegetationPass(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct)
         : SurfacePass("VegetationPass", output, mirroring) {}
+    // The billboards are drawn from the instances the renderer uploaded for this frame.
+    std::vector<Access> accesses(const FrameSetup& frame) const override {
+        std::vector<Access> used = SurfacePass::accesses(frame);
+        used.push_back({Buffer::PlantInstances, Use::Sample});
+        return used;
+    }
     bool active(const FrameSetup& frame) const override {
         return frame.vegetationEnabled && SurfacePass::active(frame);
     }

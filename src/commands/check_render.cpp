@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "cli/options.h"
+#include "commands/check_buffers.h"
 #include "commands/headless_commands.h"
 #include "commands/provenance.h"
 #include "commands/session.h"
@@ -121,6 +122,38 @@ ShadingOracle oracleOf(Renderer& renderer) {
     }
 }
 
+// Whether a buffer's per-pixel check counts differently in the two paths at a pixel of `where` (a
+// check one path lacks counts 0 there: that path has no such buffer to get wrong); which, and at
+// how many pixels.
+bool pixelCheckDiffers(const PassSnapshot& reference, const PassSnapshot& candidate, const std::vector<bool>& where,
+                       std::string& name, long& pixels) {
+    std::vector<std::string> names;
+    for (const PassSnapshot* side : {&reference, &candidate})
+        for (const auto& check : side->pixelChecks)
+            if (std::find(names.begin(), names.end(), check.first) == names.end()) names.push_back(check.first);
+    auto valuesOf = [](const PassSnapshot& side, const std::string& wanted) -> const std::vector<float>* {
+        for (const auto& [label, values] : side.pixelChecks)
+            if (label == wanted) return &values;
+        return nullptr;
+    };
+    for (const std::string& wanted : names) {
+        const std::vector<float>* a = valuesOf(reference, wanted);
+        const std::vector<float>* b = valuesOf(candidate, wanted);
+        size_t count = std::max(a ? a->size() : 0, b ? b->size() : 0);
+        if (a && b && a->size() != b->size()) continue;  // not the same pixels: nothing to compare
+        pixels = 0;
+        for (size_t p = 0; p < count; ++p) {
+            if (p < where.size() && !where[p]) continue;
+            pixels += (a ? (*a)[p] : 0.0f) != (b ? (*b)[p] : 0.0f);
+        }
+        if (pixels > 0) {
+            name = wanted;
+            return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants, bool quiet) {
@@ -193,9 +226,15 @@ std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& argum
         // The frame after pass k is the frame stopped before pass k + 1 (a pass that does not run
         // this frame leaves the targets as they were).
         renderer.renderFrame(session.scene, k + 1 < passes.size() ? passes[k + 1]->name() : std::string());
-        for (const Resource& resource : passes[k]->writes(renderer.lastFrame()))
+        // The buffers the renderer uploaded before the first pass, once: the search's first step.
+        if (k == 0) snapshots.push_back(snapshotFrameInputs(renderer));
+        std::vector<Resource> writes = passes[k]->writes(renderer.lastFrame());
+        for (const Resource& resource : writes)
             if (const Target* target = std::get_if<Target>(&resource)) written.insert(*target);
         PassSnapshot snapshot{passes[k]->name(), {}};
+        // Read before the views, which may refill the G-buffer the tile lists are checked against;
+        // the renderer's own pass, which holds the buffers it wrote (the list here is GL-free).
+        snapshotWrittenBuffers(renderer, *renderer.activePipeline().passes()[k], writes, snapshot);
         for (const TargetView& target : kTargetViews)
             if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.views().readValues(target.view)});
         snapshots.push_back(std::move(snapshot));
@@ -207,6 +246,21 @@ bool firstDivergence(const std::vector<PassSnapshot>& reference, const std::vect
                      const std::vector<bool>& where, Divergence& found) {
     for (size_t k = 0; k < reference.size() && k < candidate.size(); ++k) {
         if (reference[k].pass != candidate[k].pass) break;  // the lists part: nothing more to compare
+        // What the pass wrote of the buffers first: the targets of the passes that read them follow.
+        for (const BufferSnapshot& a : reference[k].buffers) {
+            auto other = std::find_if(candidate[k].buffers.begin(), candidate[k].buffers.end(),
+                                      [&](const BufferSnapshot& b) { return b.name == a.name; });
+            if (other == candidate[k].buffers.end() || other->stride != a.stride) continue;
+            if (long entries = bufferDifferences(a, *other, level); entries > 0) {
+                found = {reference[k].pass, a.name, entries};
+                return true;
+            }
+        }
+        std::string buffer;
+        if (long pixels = 0; pixelCheckDiffers(reference[k], candidate[k], where, buffer, pixels)) {
+            found = {reference[k].pass, buffer, pixels};
+            return true;
+        }
         for (const auto& [label, a] : reference[k].targets) {
             auto other = std::find_if(candidate[k].targets.begin(), candidate[k].targets.end(),
                                       [&name = label](const auto& target) { return target.first == name; });

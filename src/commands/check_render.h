@@ -3,6 +3,7 @@
 // draws it, which paths the session really took and why, and, for a failing case, the frame pass
 // by pass to find where two paths part.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -43,11 +44,25 @@ struct CaseFrame {
 // output is its parent's to keep).
 CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPlants, bool quiet = true);
 
-// The frame after each pass, for every target the views can read (albedo ... final): a name per
-// pass in order and, per pass, each target's values.
+// A buffer read back whole and decoded (commands/check_buffers.h): entries of `stride` floats,
+// compared in order, or as a multiset where the order is no part of what it means.
+struct BufferSnapshot {
+    std::string name;  // the resource's name (LightList, PlantInstances)
+    uint32_t stride = 1;
+    bool unordered = false;
+    std::vector<float> values;
+};
+
+// The frame after each pass, for every target the views can read (albedo ... final) and the
+// buffers the pass writes (commands/check_buffers.h): a name per pass in order and, per pass, each
+// target's values; per pixel, a buffer's check (LightTiles: the lights its lists miss there, one
+// float a pixel; a path without the buffer misses none); whole buffers decoded. The search's
+// first step, kFrameInputsStep, holds the buffers uploaded before the passes.
 struct PassSnapshot {
     std::string pass;
     std::vector<std::pair<std::string, std::vector<float>>> targets;  // target name, RGBA floats
+    std::vector<std::pair<std::string, std::vector<float>>> pixelChecks = {};  // buffer name, a count a pixel
+    std::vector<BufferSnapshot> buffers = {};
 };
 std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& arguments, bool quiet = true);
 
@@ -59,7 +74,10 @@ struct Divergence {
     std::string pass, target;
     long pixels = 0;
 };
-// The first pass after which a target of `candidate` differs from `reference` beyond the level
+// The first pass after which a buffer or a target of `candidate` differs from `reference` beyond the
+// level: a decoded buffer (`pixels`: the entries that differ), then a buffer's per-pixel check
+// (`pixels`: those whose counts differ, a check one path lacks counting as 0), then a target
+// (`pixels`: those that differ); the level is
 // (levels of 1/255, relative above 1) at a pixel of `where` (the pixels whose final colours differ,
 // bottom row first as the views read: a difference a later pass overwrites, such as a tier's
 // lighting leaving the sky black for the sky pass, is not the one the frame shows), or none.

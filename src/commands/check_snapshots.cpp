@@ -12,7 +12,7 @@
 namespace oasis {
 namespace {
 
-constexpr char kSnapshotsMagic[] = "OASISPASSES1\n";
+constexpr char kSnapshotsMagic[] = "OASISPASSES2\n";
 constexpr uint32_t kMaxCount = 1u << 28;  // more values than any frame of the check's size has
 
 void putCount(std::string& out, uint32_t value) { out.append(reinterpret_cast<const char*>(&value), sizeof(value)); }
@@ -37,7 +37,21 @@ struct Reader {
         at += size;
         return true;
     }
+    bool namedValues(std::string& name, std::vector<float>& values) {
+        uint32_t size = 0;
+        if (!text(name) || !count(size) || (bytes.size() - at) / sizeof(float) < size) return false;
+        values.resize(size);
+        if (size) std::memcpy(values.data(), bytes.data() + at, size_t(size) * sizeof(float));  // data() may be null
+        at += size_t(size) * sizeof(float);
+        return true;
+    }
 };
+
+void putNamedValues(std::string& out, const std::string& name, const std::vector<float>& values) {
+    putText(out, name);
+    putCount(out, uint32_t(values.size()));
+    if (!values.empty()) out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+}
 
 }  // namespace
 
@@ -64,15 +78,20 @@ bool readPixelMask(const std::string& path, std::vector<bool>& where, int& width
     return true;
 }
 
+// Keeps the values of the pixels of `where`, `channels` floats a pixel.
+void keepPixelsOf(std::vector<float>& values, const std::vector<bool>& where, size_t channels) {
+    std::vector<float> kept;
+    for (size_t p = 0; p < where.size() && (p + 1) * channels <= values.size(); ++p)
+        if (where[p]) kept.insert(kept.end(), values.begin() + long(p * channels), values.begin() + long((p + 1) * channels));
+    values = std::move(kept);
+}
+
 void keepPixels(std::vector<PassSnapshot>& snapshots, const std::vector<bool>& where) {
     if (where.empty()) return;
-    for (PassSnapshot& snapshot : snapshots)
-        for (auto& [label, values] : snapshot.targets) {
-            std::vector<float> kept;
-            for (size_t p = 0; p < where.size() && p * 4 + 3 < values.size(); ++p)
-                if (where[p]) kept.insert(kept.end(), values.begin() + long(p * 4), values.begin() + long(p * 4 + 4));
-            values = std::move(kept);
-        }
+    for (PassSnapshot& snapshot : snapshots) {
+        for (auto& target : snapshot.targets) keepPixelsOf(target.second, where, 4);
+        for (auto& check : snapshot.pixelChecks) keepPixelsOf(check.second, where, 1);
+    }
 }
 
 std::string encodeSnapshots(const std::vector<PassSnapshot>& snapshots) {
@@ -81,10 +100,14 @@ std::string encodeSnapshots(const std::vector<PassSnapshot>& snapshots) {
     for (const PassSnapshot& snapshot : snapshots) {
         putText(out, snapshot.pass);
         putCount(out, uint32_t(snapshot.targets.size()));
-        for (const auto& [label, values] : snapshot.targets) {
-            putText(out, label);
-            putCount(out, uint32_t(values.size()));
-            if (!values.empty()) out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float));
+        for (const auto& [label, values] : snapshot.targets) putNamedValues(out, label, values);
+        putCount(out, uint32_t(snapshot.pixelChecks.size()));
+        for (const auto& [label, values] : snapshot.pixelChecks) putNamedValues(out, label, values);
+        putCount(out, uint32_t(snapshot.buffers.size()));
+        for (const BufferSnapshot& buffer : snapshot.buffers) {
+            putCount(out, buffer.stride);
+            putCount(out, buffer.unordered ? 1u : 0u);
+            putNamedValues(out, buffer.name, buffer.values);
         }
     }
     return out;
@@ -103,12 +126,28 @@ bool decodeSnapshots(const std::string& bytes, std::vector<PassSnapshot>& snapsh
         if (!in.text(snapshot.pass) || !in.count(targets)) return false;
         for (uint32_t t = 0; t < targets; ++t) {
             std::string label;
-            uint32_t count = 0;
-            if (!in.text(label) || !in.count(count) || (bytes.size() - in.at) / sizeof(float) < count) return false;
-            std::vector<float> values(count);
-            if (count) std::memcpy(values.data(), bytes.data() + in.at, size_t(count) * sizeof(float));  // data() may be null
-            in.at += size_t(count) * sizeof(float);
+            std::vector<float> values;
+            if (!in.namedValues(label, values)) return false;
             snapshot.targets.push_back({label, std::move(values)});
+        }
+        uint32_t checks = 0;
+        if (!in.count(checks)) return false;
+        for (uint32_t c = 0; c < checks; ++c) {
+            std::string label;
+            std::vector<float> values;
+            if (!in.namedValues(label, values)) return false;
+            snapshot.pixelChecks.push_back({label, std::move(values)});
+        }
+        uint32_t buffers = 0;
+        if (!in.count(buffers)) return false;
+        for (uint32_t b = 0; b < buffers; ++b) {
+            BufferSnapshot buffer;
+            uint32_t unordered = 0;
+            if (!in.count(buffer.stride) || !in.count(unordered) || unordered > 1 ||
+                !in.namedValues(buffer.name, buffer.values))
+                return false;
+            buffer.unordered = unordered == 1;
+            snapshot.buffers.push_back(std::move(buffer));
         }
         snapshots.push_back(std::move(snapshot));
     }

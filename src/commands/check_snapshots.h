@@ -1,5 +1,6 @@
 // The pass-by-pass search's data between the check and its child processes: the mask of pixels to
-// look at (the ones whose final colours part), and each pass's targets' values at those pixels only,
+// look at (the ones whose final colours part), and each pass's targets' values at those pixels only
+// (with its buffers: per-pixel checks there too, decoded buffers whole),
 // in a small binary form of oasis's own (length-prefixed, checked on reading).
 #pragma once
 #include <string>
@@ -13,7 +14,8 @@ namespace oasis {
 bool writePixelMask(const std::string& path, const std::vector<bool>& where, int width, int height, std::string& error);
 bool readPixelMask(const std::string& path, std::vector<bool>& where, int& width, int& height, std::string& error);
 
-// Keeps each target's values at the pixels of `where` only (all of them where `where` is empty).
+// Keeps each target's values and each buffer's per-pixel check at the pixels of `where` only (all
+// of them where `where` is empty); decoded buffers are kept whole.
 void keepPixels(std::vector<PassSnapshot>& snapshots, const std::vector<bool>& where);
 
 std::string encodeSnapshots(const std::vector<PassSnapshot>& snapshots);

@@ -64,8 +64,11 @@ std::vector<Resource> everyResource() {
     std::vector<Resource> all = frameOutputs();
     all.push_back(Target::SceneDepth);
     all.push_back(Buffer::LightTiles);
+    for (const Resource& input : frameInputs()) all.push_back(input);
     return all;
 }
+
+std::vector<Resource> frameInputs() { return {Buffer::LightList, Buffer::PlantInstances}; }
 
 namespace {
 
@@ -110,6 +113,7 @@ std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const 
 FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                            const std::vector<Resource>& sinks, const std::vector<Resource>& inputs) {
     FrameGraph graph = stepsOf(passes, frame);
+    graph.inputs = inputs;
     std::set<Resource> live(sinks.begin(), sinks.end());
     cullBackFrom(graph, frame, live);
     // Forward: every read of a running pass has a writer before it or is an input.
@@ -126,6 +130,53 @@ FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSe
     return graph;
 }
 
+namespace {
+
+// Each buffer the running passes touch, in the order the frame first touches it, with its writers
+// and readers: "# LightTiles  LightTilingPass -> LightingPass" (each pass's line above names the
+// targets it reads and writes; a target's line here would repeat most of the frame).
+std::string buffersText(const FrameGraph& graph) {
+    struct Uses {
+        Resource resource;
+        std::vector<std::string> writers, readers;
+    };
+    std::vector<Uses> uses;
+    auto usesOf = [&](const Resource& resource) -> Uses& {
+        for (Uses& known : uses)
+            if (known.resource == resource) return known;
+        uses.push_back({resource, {}, {}});
+        return uses.back();
+    };
+    for (const GraphStep& step : graph.steps) {
+        if (!step.runs) continue;
+        for (const Resource& read : step.reads) {
+            if (!std::holds_alternative<Buffer>(read)) continue;
+            Uses& entry = usesOf(read);
+            if (entry.writers.empty() && contains(graph.inputs, read)) entry.writers.push_back("(before the passes)");
+            entry.readers.push_back(step.pass->name());
+        }
+        for (const Resource& write : step.writes)
+            if (std::holds_alternative<Buffer>(write)) usesOf(write).writers.push_back(step.pass->name());
+    }
+    if (uses.empty()) return {};
+    size_t column = 0;
+    for (const Uses& known : uses) column = std::max(column, resourceName(known.resource).size());
+    auto names = [](const std::vector<std::string>& list) {
+        std::string text;
+        for (const std::string& name : list) text += (text.empty() ? "" : ", ") + name;
+        return text.empty() ? std::string("-") : text;
+    };
+    std::string text = "# buffers: written by -> read by (the passes that run)\n";
+    for (const Uses& known : uses) {
+        std::string name = resourceName(known.resource);
+        text += "# " + name + std::string(column + 2 - name.size(), ' ') + names(known.writers) + " -> " +
+                names(known.readers) + "\n";
+    }
+    return text;
+}
+
+}  // namespace
+
 std::string frameGraphText(const FrameGraph& graph) {
     // One pass a line, its name in a column: "NAME  reads -> writes", or "NAME  culled: why".
     size_t column = 0;
@@ -141,7 +192,7 @@ std::string frameGraphText(const FrameGraph& graph) {
         text += "\n";
     }
     for (const std::string& problem : graph.problems) text += "invalid: " + problem + "\n";
-    return text;
+    return text + buffersText(graph);
 }
 
 std::string frameGraphJson(const FrameGraph& graph) {

@@ -20,6 +20,7 @@ struct FrameGraph {
     std::vector<GraphStep> steps;
     // Reads with no writer earlier in the frame and no input to hold them: empty when valid.
     std::vector<std::string> problems;
+    std::vector<Resource> inputs;  // what holds values before the first pass (frameInputs())
     bool runs(const std::string& passName) const;
 };
 
@@ -30,6 +31,9 @@ struct FrameGraph {
 std::vector<Resource> frameOutputs();
 // What holds values before a fill of a finished frame: everything the frame left.
 std::vector<Resource> everyResource();
+// What the renderer uploads before a frame's first pass, which its passes then read: the point
+// lights (LightList) and the plants' instances (PlantInstances).
+std::vector<Resource> frameInputs();
 
 // Culls, walking back from `sinks`, every active pass whose writes no later pass (or sink) reads;
 // a Replace write ends what was written before it. Then checks that every read of a running pass
@@ -43,7 +47,9 @@ FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSe
 std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                                   const std::vector<Resource>& sinks);
 
-// The graph in order, one pass a line with its reads and writes, culled passes with their reason.
+// The graph in order, one pass a line with its reads and writes, culled passes with their reason;
+// then, in lines that open with "# ", each buffer the running passes touch with who writes it
+// ("(before the passes)" for an input) and who reads it.
 std::string frameGraphText(const FrameGraph& graph);
 // The same as a JSON array of {name, reads, writes, culled, reason}.
 std::string frameGraphJson(const FrameGraph& graph);

@@ -23,7 +23,7 @@ Pipeline::Pipeline(PipelineKind kind)
 FrameGraph Pipeline::graph(const FrameSetup& frame, const std::vector<Resource>& sinks) const {
     std::vector<const Pass*> passes;
     for (const auto& pass : passes_) passes.push_back(pass.get());
-    return buildFrameGraph(passes, frame, sinks);
+    return buildFrameGraph(passes, frame, sinks, frameInputs());
 }
 
 bool Pipeline::run(PassContext& context, const std::string& stopBefore,

@@ -99,6 +99,10 @@ public:
     ShaderLibrary& shaders() { return shaders_; }
     const SceneGeometry& geometry() const { return geometry_; }
     const ShadowMaps& shadowMaps() const { return shadowMaps_; }
+    // The active pipeline's passes, as its frames run them (the GL objects a pass owns in them).
+    const Pipeline& activePipeline() const { return pipelineOf(active_); }
+    // The plants' instances the last frame uploaded (PlantInstances, frame/frame_graph.h's inputs).
+    const VegetationBuffers& vegetationBuffers() const { return vegetationBuffers_; }
 
 
 private:

@@ -130,6 +130,8 @@ std::vector<ProgramVariant> fixedVariants() {
         variants.push_back({"light.shade" + suffix, "light_volume.vert", "light_volume.frag", {define}});
         variants.push_back({"light.shade.mirrored" + suffix, "light_volume.vert", "light_volume.frag",
                             {"MIRRORED", define}});
+        // The light list as this path reads it, for the check's pass-by-pass search (lights_decode.frag).
+        variants.push_back({"lights.decode" + suffix, "fullscreen.vert", "lights_decode.frag", {define}});
         // `probe --shading`'s point lights, read through the frame's own path (probe_shading.frag).
         variants.push_back({"probe.shading.lights" + suffix, "fullscreen.vert", "probe_shading.frag",
                             {"SHADING_RECORD", "SHADING_LIGHTS", define}});

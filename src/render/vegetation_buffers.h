@@ -21,6 +21,8 @@ public:
     // Binds the atlas and its sampler to the plant-atlas unit and draws one list as 4-vertex strips.
     void draw(Mirroring mirroring) const;
     size_t count(Mirroring mirroring) const { return mirroring == Mirroring::Direct ? directCount_ : mirroredCount_; }
+    // The instances of both lists (direct first), PlantDrawInstance each: the frame's PlantInstances.
+    GLuint instanceBuffer() const { return instances_.name(); }
     int atlasColumns() const { return columns_; }
     int atlasRows() const { return rows_; }
 

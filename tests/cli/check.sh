@@ -7,9 +7,13 @@
 #              frame bit for bit, a --quick run against the baseline passing; then a copy of the
 #              shaders whose UBO light list returns each light 4x as bright: the check of the UBO
 #              cases and four others fails exactly the cases that draw lights through the UBO path into the final
-#              frame (not the far lands, out of the lights' sight) and names for each a pass that adds
-#              or carries the lights; every other case passes; --diff against the clean run lists
-#              those cases as regressions and exits 1
+#              frame (not the far lands, out of the lights' sight) and names for each the light list as
+#              the shaders decode it, before any pass ("(before the passes)" / LightList); every
+#              other case passes; --diff against the clean run lists those cases as regressions and exits 1
+#   tiles      a copy of the shaders whose tiling compute pass writes each tile's lists one tile on
+#              (the last wrapping to the first), the lighting reading them where they belong: every
+#              tiled case that draws the final frame fails, each naming LightTilingPass / LightTiles
+#              (the lights its lists miss at the differing pixels), not the lighting that follows
 #   usage      bad arguments: exit 2
 # usage: check.sh OASIS SHADER_DIR REFERENCES WORK_DIR CASE
 set -u
@@ -99,17 +103,17 @@ import json, sys
 clean, perturbed = (json.load(open(path)) for path in sys.argv[1:3])
 names = [c["name"] for c in perturbed["cases"]]
 assert [c["name"] for c in clean["cases"] if c["name"] in names] == names and len(names) >= 14, names
-lit_passes = ("LightVolumePass", "LightingPass", "TerrainPass.forward", "VegetationPass.forward", "ReflectionUpsamplePass")
 expected = 0
 for c in perturbed["cases"]:
     on_path = "-ubo-" in c["name"] and "-final-" in c["name"] and "-far-" not in c["name"]
     expected += on_path
     assert (c["verdict"] == "fail") == on_path, (c["name"], c["verdict"], c["reason"])
     if on_path:
+        # The lights the shaders decode differ from the main path's (every one 4x as bright): named
+        # before the first pass that reads them, in both pipelines.
         divergence = c["first_divergence"]
-        assert divergence and divergence["pass"].startswith(lit_passes) and divergence["pixels"] > 0, (c["name"], divergence)
-        if "-deferred-" in c["name"] and "-volumes-" in c["name"] and "-reflections-off-" in c["name"]:
-            assert divergence["pass"] == "LightVolumePass" and divergence["target"] == "Radiance", (c["name"], divergence)
+        assert divergence and divergence["pass"] == "(before the passes)" and divergence["target"] == "LightList" \
+            and divergence["pixels"] > 0, (c["name"], divergence)
 assert expected >= 5, expected
 print("perturbed: %d cases on the UBO path failed, each naming its pass; %d others passed" % (expected, len(perturbed["cases"]) - expected))
 EOF
@@ -119,6 +123,34 @@ EOF
     grep -q "^regressions ([1-9]" diff.txt || fail "--diff lists no regressions: $(head -n 20 diff.txt)"
     "$oasis" check --diff clean/report.json clean/report.json > same.txt || fail "--diff of a report with itself: exit $?"
     echo "check perturbed: OK ($(grep '^regressions' diff.txt))" ;;
+tiles)
+    cp -r "$shaders" shaders || fail "cannot copy the shaders"
+    # The writer's tile index one on (wrapped, so every write stays inside the buffer); the readers
+    # (common/light_tiles.glsl's lightTileOf in the lighting) are left as they are.
+    sed -i 's|^    int tileBase = lightTileOf(first, frameSize) \* LIGHT_TILE_STRIDE;|    int tileBase = ((lightTileOf(first, frameSize) + 1) % (tiles.x * tiles.y)) * LIGHT_TILE_STRIDE;|' shaders/light_tiles.comp
+    grep -q '(lightTileOf(first, frameSize) + 1)' shaders/light_tiles.comp || fail "the perturbation did not apply"
+    OASIS_SHADER_DIR=$work/shaders "$oasis" check --case '*-tiled-*' --references "$references" \
+        --out-dir perturbed > perturbed.txt 2> perturbed.err
+    code=$?
+    [ $code -eq 1 ] || fail "the perturbed check: exit $code, expected 1: $(tail -n 5 perturbed.txt perturbed.err)"
+    verdicts=$(python3 - perturbed/report.json << 'EOF'
+import json, sys
+cases = json.load(open(sys.argv[1]))["cases"]
+assert len(cases) >= 3 and all("-tiled-" in c["name"] for c in cases), [c["name"] for c in cases]
+named = 0
+for c in cases:
+    if c["verdict"] == "skip":
+        continue
+    assert c["verdict"] == "fail", (c["name"], c["verdict"], c["reason"])
+    divergence = c["first_divergence"]
+    assert divergence and divergence["pass"] == "LightTilingPass" and divergence["target"] == "LightTiles" \
+        and divergence["pixels"] > 0, (c["name"], divergence, c["reason"])
+    named += 1
+assert named >= 3, named
+print("%d tiled cases failed, each naming LightTilingPass / LightTiles" % named)
+EOF
+) || fail "the perturbed check's verdicts: $verdicts"
+    echo "check tiles: OK ($verdicts)" ;;
 usage)
     for args in "--quick --frames 3" "--diff a.json" "--out-dir" "--size 64x36" "--api vulkan"; do
         # shellcheck disable=SC2086

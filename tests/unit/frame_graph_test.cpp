@@ -92,7 +92,8 @@ TEST(FrameGraph, AViewOfTheGBufferCullsTheShading) {
     std::vector<Resource> frameSink = readsBefore(fill.passes(WaterScene::Direct, frame), frame,
                                                   {Target::Albedo, Target::Normal, Target::Info, Target::DepthStencil});
     std::sort(frameSink.begin(), frameSink.end());
-    EXPECT_EQ(frameSink, (std::vector<Resource>{Target::Albedo, Target::Normal, Target::Info}));
+    // The plants' instances too: the fill draws the billboards the renderer uploaded for the frame.
+    EXPECT_EQ(frameSink, (std::vector<Resource>{Target::Albedo, Target::Normal, Target::Info, Buffer::PlantInstances}));
     Pipeline deferred(PipelineKind::Deferred);
     FrameGraph graph = deferred.graph(frame, frameSink);
     for (const char* runs : {"ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer",
@@ -103,8 +104,38 @@ TEST(FrameGraph, AViewOfTheGBufferCullsTheShading) {
         EXPECT_FALSE(stepNamed(graph, culled).runs) << culled;
     EXPECT_EQ(stepNamed(graph, "LightingPass").culled, "nothing later reads what it writes (radiance)");
     EXPECT_TRUE(graph.problems.empty());
-    // Nothing of the frame reaches the depth view: the fill draws all of its depth.
-    EXPECT_TRUE(readsBefore(fill.passes(WaterScene::Mirrored, frame), frame, {Target::DepthStencil}).empty());
+    // Nothing a pass of the frame writes reaches the depth view: the fill draws all of its depth
+    // (from the plants' instances the renderer uploaded).
+    EXPECT_EQ(readsBefore(fill.passes(WaterScene::Mirrored, frame), frame, {Target::DepthStencil}),
+              (std::vector<Resource>{Buffer::PlantInstances}));
+}
+
+// The buffers are resources like the targets: the light list and the plants' instances are the
+// frame's inputs (uploaded before the first pass), the tile lists LightTilingPass's; the printed
+// graph lists each with its writers and readers.
+TEST(FrameGraph, TheBuffersAreResourcesWithWritersAndReaders) {
+    Pipeline deferred(PipelineKind::Deferred);
+    FrameSetup frame = compactFrame(LightMethod::Tiled, true);
+    frame.vegetationEnabled = true;
+    frame.reflectionsActive = false;
+    FrameGraph graph = deferred.graph(frame);
+    EXPECT_TRUE(graph.problems.empty());
+    const GraphStep& tiling = stepNamed(graph, "LightTilingPass");
+    EXPECT_EQ(std::count(tiling.reads.begin(), tiling.reads.end(), Resource(Buffer::LightList)), 1);
+    EXPECT_EQ(std::count(tiling.writes.begin(), tiling.writes.end(), Resource(Buffer::LightTiles)), 1);
+    const GraphStep& plants = stepNamed(graph, "VegetationPass.gbuffer");
+    EXPECT_EQ(std::count(plants.reads.begin(), plants.reads.end(), Resource(Buffer::PlantInstances)), 1);
+    std::string text = frameGraphText(graph);
+    EXPECT_NE(text.find("\n# LightTiles      LightTilingPass -> LightingPass\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\n# LightList       (before the passes) -> LightTilingPass, LightingPass\n"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("\n# PlantInstances  (before the passes) -> VegetationPass.gbuffer\n"), std::string::npos) << text;
+    // Without the inputs the same reads have no writer.
+    std::vector<const Pass*> passes;
+    for (const auto& pass : deferred.passes()) passes.push_back(pass.get());
+    FrameGraph noInputs = buildFrameGraph(passes, frame, frameOutputs());
+    ASSERT_FALSE(noInputs.problems.empty());
+    EXPECT_EQ(noInputs.problems.front(), "VegetationPass.gbuffer reads PlantInstances, which no pass wrote before it");
 }
 
 // A pass that samples the depth copy with nothing before it to make it.
