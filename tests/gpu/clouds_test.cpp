@@ -10,7 +10,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 // What the sky pixels (stencil 0) of a frame hold.
 struct SkyPixels {
@@ -29,10 +28,10 @@ protected:
         EXPECT_TRUE(hasContent(image));
         const std::vector<uint8_t> stencil = readStencil(renderer);  // rows bottom first
         SkyPixels s;
-        for (int y = 0; y < kHeight; ++y)
-            for (int x = 0; x < kWidth; ++x) {
-                if (stencil[size_t(kHeight - 1 - y) * kWidth + size_t(x)] != kStencilSky) continue;
-                const uint8_t* p = &image.rgba[(size_t(y) * kWidth + size_t(x)) * 4];
+        for (int y = 0; y < kMediumHeight; ++y)
+            for (int x = 0; x < kMediumWidth; ++x) {
+                if (stencil[size_t(kMediumHeight - 1 - y) * kMediumWidth + size_t(x)] != kStencilSky) continue;
+                const uint8_t* p = &image.rgba[(size_t(y) * kMediumWidth + size_t(x)) * 4];
                 double r = p[0] / 255.0, g = p[1] / 255.0, b = p[2] / 255.0;
                 ++s.count;
                 s.meanLuminance += 0.2126 * r + 0.7152 * g + 0.0722 * b;
@@ -53,7 +52,7 @@ SceneSettings lookingUp(double x, double z, double hour, double time) {
 
 TEST_F(Clouds, DayHasDriftingCloudsNightHidesStarsBehindDarkOnes) {
     Renderer renderer(*shaders_, SceneSettings{});
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
         SCOPED_TRACE(pipelineName(kind));
         renderer.setPipeline(kind);
@@ -61,7 +60,7 @@ TEST_F(Clouds, DayHasDriftingCloudsNightHidesStarsBehindDarkOnes) {
         SkyPixels day = sky(renderer, lookingUp(435.0, 140.0, 12.0, 0.0), &noon);
         SkyPixels drifted = sky(renderer, lookingUp(435.0, 140.0, 12.0, 120.0), &later);
         SkyPixels night = sky(renderer, lookingUp(435.0, 140.0, 23.0, 0.0));
-        ASSERT_GT(day.count, kWidth * kHeight / 2) << "the pose should look at the sky";
+        ASSERT_GT(day.count, kMediumWidth * kMediumHeight / 2) << "the pose should look at the sky";
         double cloudShare = double(day.bright) / double(day.count);
         std::printf("[clouds] %s: day %.1f%% of %ld sky pixels cloud-white (mean luminance %.3f), night %.1f%% "
                     "(mean %.3f)\n",
@@ -85,7 +84,7 @@ TEST_F(Clouds, DayHasDriftingCloudsNightHidesStarsBehindDarkOnes) {
 // no frozen or NaN sky): its cover stays in the same band.
 TEST_F(Clouds, FarAwayAndLongAfterTheDeckLooksTheSame) {
     Renderer renderer(*shaders_, SceneSettings{});
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     renderer.setPipeline(PipelineKind::Deferred);
     for (auto [x, z, time] : {std::tuple{435.0, 140.0, 0.0}, std::tuple{1e5, 1e5, 0.0}, std::tuple{435.0, 140.0, 1e6},
                               std::tuple{-3e6, 2e6, 4e6}}) {
@@ -110,10 +109,10 @@ std::vector<glm::dvec3> skyRadianceWhere(Renderer& renderer, const SceneSettings
     const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
     const std::vector<uint8_t> stencil = readStencil(renderer);
     std::vector<glm::dvec3> kept;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x)
-            if (stencil[size_t(y) * kWidth + size_t(x)] == kStencilSky && keep(f, pixelRay(f, kWidth, kHeight, x, y)))
-                kept.push_back(glm::dvec3(rgbAt(radiance, kWidth, x, y)));
+    for (int y = 0; y < kMediumHeight; ++y)
+        for (int x = 0; x < kMediumWidth; ++x)
+            if (stencil[size_t(y) * kMediumWidth + size_t(x)] == kStencilSky && keep(f, pixelRay(f, kMediumWidth, kMediumHeight, x, y)))
+                kept.push_back(glm::dvec3(rgbAt(radiance, kMediumWidth, x, y)));
     return kept;
 }
 
@@ -123,7 +122,7 @@ std::vector<glm::dvec3> skyRadianceWhere(Renderer& renderer, const SceneSettings
 // cell: the sun's radiance, reddened when low, plus the sky's zenith and horizon colours).
 TEST_F(Clouds, LitByTheLowSunsColourAtDawnAndDusk) {
     Renderer renderer(*shaders_, SceneSettings{});
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto thick = [](const FrameData& f, glm::dvec3 ray) { return cloudCoverCpu(f, ray).x > 0.8; };
     for (PipelineKind kind : {PipelineKind::Deferred, PipelineKind::Forward}) {
         SCOPED_TRACE(pipelineName(kind));
@@ -156,7 +155,7 @@ TEST_F(Clouds, LitByTheLowSunsColourAtDawnAndDusk) {
 // Measured: clear stars' luminance about 0.3-0.6, covered ones at the cloud's own (about 0.02).
 TEST_F(Clouds, StarsShineWhereClearAndNotThroughThickCloud) {
     Renderer renderer(*shaders_, SceneSettings{});
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     SceneSettings night = lookingUp(435.0, 140.0, 23.0, 0.0);
     night.camera->pitchDegrees = 50.0f;  // the whole frame sky, the stars at full strength
     auto star = [](const FrameData& f, glm::dvec3 ray) { return starCpu(f, ray) > 0.3; };

@@ -15,14 +15,13 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 struct GBufferRead {
     std::vector<float> albedo, normal, info, position;
 };
 
 GBufferRead renderGBuffer(Renderer& renderer, const SceneSettings& scene, const std::string& layout) {
-    renderer.configure(kWidth, kHeight, layoutNamed(layout));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed(layout));
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(scene);
     return {readTarget(renderer, Target::Albedo), readTarget(renderer, Target::Normal),
@@ -48,21 +47,21 @@ TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
     // pixels past half a level): one level there, which still catches a wrong channel or encoding.
     const float albedoTolerance = (cpuRasteriser() ? 0.5f : 1.0f) / 255.0f + 1e-6f;
     std::string firstPositionOff;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            glm::vec4 infoFull = texel(reference.info, kWidth, x, y), infoCompact = texel(packed.info, kWidth, x, y);
+    for (int y = 0; y < kMediumHeight; ++y)
+        for (int x = 0; x < kMediumWidth; ++x) {
+            glm::vec4 infoFull = texel(reference.info, kMediumWidth, x, y), infoCompact = texel(packed.info, kMediumWidth, x, y);
             unsigned flags = full.storedFlags(infoFull);
             // Where nothing was drawn compact's info is not cleared: its sky is the depth at the far
             // plane, which its rebuilt positions mark with w = 0 (gbuffer_positions.frag).
             if (flags & kSurfaceSky) {
-                if (texel(packed.position, kWidth, x, y).w != 0.0f) ++flagsDiffer;
+                if (texel(packed.position, kMediumWidth, x, y).w != 0.0f) ++flagsDiffer;
                 continue;
             }
             if (compact.storedFlags(infoCompact) != flags) ++flagsDiffer;
             ++surfaces;
             mirrored += (flags & kSurfaceReflected) ? 1 : 0;
             // Power and intensity are multiples of 1/255 from the material: exact in both.
-            glm::vec4 albedoFull = texel(reference.albedo, kWidth, x, y), albedoCompact = texel(packed.albedo, kWidth, x, y);
+            glm::vec4 albedoFull = texel(reference.albedo, kMediumWidth, x, y), albedoCompact = texel(packed.albedo, kMediumWidth, x, y);
             if (std::lround(infoFull.r * 255.0f) != std::lround(infoCompact.r * 255.0f) ||
                 std::fabs(infoFull.g - albedoCompact.a) > 1e-6f)
                 ++materialDiffers;
@@ -71,13 +70,13 @@ TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
             worstAlbedo = std::max(worstAlbedo, double(albedoWorstChannel));
             if (albedoWorstChannel > albedoTolerance) ++albedoOff;
 
-            glm::dvec3 n(full.storedNormal(texel(reference.normal, kWidth, x, y)));
-            glm::dvec3 m(compact.storedNormal(texel(packed.normal, kWidth, x, y)));
+            glm::dvec3 n(full.storedNormal(texel(reference.normal, kMediumWidth, x, y)));
+            glm::dvec3 m(compact.storedNormal(texel(packed.normal, kMediumWidth, x, y)));
             double angle = std::atan2(glm::length(glm::cross(n, m)), glm::dot(n, m));
             worstAngle = std::max(worstAngle, angle);
             normalOff += angle > 1e-4 ? 1 : 0;
 
-            glm::dvec3 stored(texel(reference.position, kWidth, x, y)), rebuilt(texel(packed.position, kWidth, x, y));
+            glm::dvec3 stored(texel(reference.position, kMediumWidth, x, y)), rebuilt(texel(packed.position, kMediumWidth, x, y));
             double distance = glm::length(stored), error = glm::length(rebuilt - stored);
             double tolerance = reconstructionTolerance(distance, nearPlane, farPlane);
             worstSteps = std::max(worstSteps, error / depthStep(distance, nearPlane, farPlane));
@@ -89,13 +88,13 @@ TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
     std::printf("[compact] %s: %d surface pixels (%d mirrored), worst normal %.2e rad, worst position %.2f depth "
                 "steps (%.0f%% of the tolerance), worst albedo %.2f levels\n",
                 pose.name.c_str(), surfaces, mirrored, worstAngle, worstSteps, 100.0 * worstFraction, worstAlbedo * 255.0);
-    EXPECT_GT(surfaces, kWidth * kHeight / 10);
+    EXPECT_GT(surfaces, kMediumWidth * kMediumHeight / 10);
     EXPECT_EQ(flagsDiffer, 0) << "surface flags differ from the full layout's";
     EXPECT_EQ(materialDiffers, 0) << "specular power or intensity differ";
     EXPECT_EQ(albedoOff, 0) << "albedo beyond 8-bit rounding (worst " << worstAlbedo * 255.0 << " levels)";
     EXPECT_EQ(normalOff, 0) << "normals more than 1e-4 rad off (worst " << worstAngle << ")";
     EXPECT_EQ(positionOff, 0) << "reconstructed positions beyond the depth tolerance; first " << firstPositionOff;
-    if (pose.name == "lakeMirror") EXPECT_GT(mirrored, kWidth * kHeight / 20) << "the lake's mirrored scene";
+    if (pose.name == "lakeMirror") EXPECT_GT(mirrored, kMediumWidth * kMediumHeight / 20) << "the lake's mirrored scene";
 }
 
 INSTANTIATE_TEST_SUITE_P(Poses, CompactLayout, ::testing::Values("default", "meadow", "lakeMirror", "down", "sunset"),
@@ -108,19 +107,19 @@ TEST_F(GpuTest, CompactWithReversedDepthReconstructsToFloatPrecision) {
     const NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    renderer.configure(kWidth, kHeight, layoutNamed("full"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("full"));
     renderer.setDepthConvention(*findDepthConvention("reversed-z"));
     ASSERT_EQ(renderer.targets().depth().name, "reversed-z");
     const GBufferRead reference = renderGBuffer(renderer, pose.scene, "full");
     const GBufferRead packed = renderGBuffer(renderer, pose.scene, "compact");
     std::vector<double> relative;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            if (layoutNamed("full").storedFlags(texel(reference.info, kWidth, x, y)) & kSurfaceSky) continue;
-            glm::dvec3 stored(texel(reference.position, kWidth, x, y)), rebuilt(texel(packed.position, kWidth, x, y));
+    for (int y = 0; y < kMediumHeight; ++y)
+        for (int x = 0; x < kMediumWidth; ++x) {
+            if (layoutNamed("full").storedFlags(texel(reference.info, kMediumWidth, x, y)) & kSurfaceSky) continue;
+            glm::dvec3 stored(texel(reference.position, kMediumWidth, x, y)), rebuilt(texel(packed.position, kMediumWidth, x, y));
             relative.push_back(glm::length(rebuilt - stored) / glm::length(stored));
         }
-    ASSERT_GT(relative.size(), size_t(kWidth * kHeight / 10));
+    ASSERT_GT(relative.size(), size_t(kMediumWidth * kMediumHeight / 10));
     std::sort(relative.begin(), relative.end());
     double median = relative[relative.size() / 2], worst = relative.back();
     std::printf("[compact] reversed-z: %zu surface pixels, relative position error median %.1e, worst %.1e\n",
@@ -135,9 +134,9 @@ TEST_F(GpuTest, CompactFrameAgreesWithTheFullLayoutAndStoresNoPosition) {
     const NamedPose pose = poseNamed("meadow");
     Renderer renderer(*shaders_, pose.scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    renderer.configure(kWidth, kHeight, layoutNamed("full"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("full"));
     Image full = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     Image compact = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
     dumpImage("compact-meadow-deferred", compact);
     ImageDifference difference = compareImages(full, compact);

@@ -7,7 +7,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 // The atlas view samples the plant atlas (nearest) rather than a frame target: of the atlas texels
 // at and next to where pixel (x, y) of a width x height view samples (the sample position may round
@@ -34,7 +33,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
     const GBufferLayout& layout = layoutNamed(GetParam());
-    renderer.configure(kWidth, kHeight, layout);
+    renderer.configure(kMediumWidth, kMediumHeight, layout);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     const Image atlasImage = atlas->read();
     renderer.setPipeline(PipelineKind::Deferred);
@@ -62,11 +61,11 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     // Nothing drawn (gbufferSkyAt): the compact layout tells it by depth at the far plane, its colour
     // targets not cleared there; the others by Info's SKY flag. The views show the flags SKY there.
     auto skyAt = [&](int x, int y) {
-        if (layout.positionFromDepth()) return depth[size_t(y) * kWidth + size_t(x)] >= 1.0f;
-        return (layout.storedFlags(texel(info, kWidth, x, y)) & kSurfaceSky) != 0u;
+        if (layout.positionFromDepth()) return depth[size_t(y) * kMediumWidth + size_t(x)] >= 1.0f;
+        return (layout.storedFlags(texel(info, kMediumWidth, x, y)) & kSurfaceSky) != 0u;
     };
-    auto flagsAt = [&](int x, int y) { return skyAt(x, y) ? kSurfaceSky : layout.storedFlags(texel(info, kWidth, x, y)); };
-    auto normalAt = [&](int x, int y) { return layout.storedNormal(texel(normal, kWidth, x, y)); };
+    auto flagsAt = [&](int x, int y) { return skyAt(x, y) ? kSurfaceSky : layout.storedFlags(texel(info, kMediumWidth, x, y)); };
+    auto normalAt = [&](int x, int y) { return layout.storedNormal(texel(normal, kMediumWidth, x, y)); };
 
     std::map<std::string, Image> images;
     for (const DebugView& view : debugViews()) {
@@ -84,12 +83,12 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     std::map<std::string, std::function<std::pair<glm::ivec3, int>(int, int)>> expected;
     expected["atlas"] = [&](int x, int y) {  // y from the bottom
         glm::ivec3 got = displayPixel(images["atlas"], x, y);
-        return std::make_pair(atlasTexelFor(atlasImage, x, kHeight - 1 - y, kWidth, kHeight, got), 0);
+        return std::make_pair(atlasTexelFor(atlasImage, x, kMediumHeight - 1 - y, kMediumWidth, kMediumHeight, got), 0);
     };
-    expected["final"] = [&](int x, int y) { return std::make_pair(to8bit(glm::vec3(texel(final, kWidth, x, y))), 0); };
+    expected["final"] = [&](int x, int y) { return std::make_pair(to8bit(glm::vec3(texel(final, kMediumWidth, x, y))), 0); };
     expected["albedo"] = [&](int x, int y) {
         if (skyAt(x, y)) return std::make_pair(glm::ivec3(0), 0);  // black where nothing was drawn
-        glm::vec3 a(texel(albedo, kWidth, x, y));
+        glm::vec3 a(texel(albedo, kMediumWidth, x, y));
         return std::make_pair(to8bit(glm::pow(glm::clamp(a, 0.0f, 1.0f), glm::vec3(1.0f / 2.2f))), 1);
     };
     expected["normal"] = [&](int x, int y) {
@@ -98,28 +97,28 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         return std::make_pair(to8bit(0.5f + 0.5f * glm::clamp(n, -1.0f, 1.0f)), 1);
     };
     expected["position"] = [&](int x, int y) {
-        glm::vec4 p = texel(position, kWidth, x, y);
+        glm::vec4 p = texel(position, kMediumWidth, x, y);
         if (p.w == 0.0f) return std::make_pair(glm::ivec3(0), 0);
         glm::vec3 v(p);
         glm::vec3 scaled = glm::sign(v) * glm::log(1.0f + glm::abs(v)) / std::log(1.0f + viewDistance);
         return std::make_pair(to8bit(0.5f + 0.5f * glm::clamp(scaled, -1.0f, 1.0f)), 1);
     };
     expected["info"] = [&](int x, int y) {
-        glm::vec4 i = texel(info, kWidth, x, y);
+        glm::vec4 i = texel(info, kMediumWidth, x, y);
         if (flagsAt(x, y) & kSurfaceSky) return std::make_pair(glm::ivec3(0, 0, 204), 0);
         float flagMarks = ((flagsAt(x, y) & kSurfaceReflected) ? 0.5f : 0.0f) + ((flagsAt(x, y) & kSurfacePlant) ? 0.25f : 0.0f);
-        float intensity = layout.encoding == GBufferEncoding::Compact ? texel(albedo, kWidth, x, y).a : i.g;
+        float intensity = layout.encoding == GBufferEncoding::Compact ? texel(albedo, kMediumWidth, x, y).a : i.g;
         return std::make_pair(to8bit({std::round(i.r * 255.0f) / 64.0f, intensity / 0.25f, flagMarks}), 1);
     };
     expected["depth"] = [&](int x, int y) {
-        float d = depth[size_t(y) * kWidth + size_t(x)];
+        float d = depth[size_t(y) * kMediumWidth + size_t(x)];
         if (d >= 1.0f) return std::make_pair(glm::ivec3(0), 0);
         float ndc = d * 2.0f - 1.0f;
         float eye = 2.0f * nearPlane * farPlane / (farPlane + nearPlane - ndc * (farPlane - nearPlane));
         return std::make_pair(to8bit(ramp(std::log(eye / nearPlane) / std::log(farPlane / nearPlane))), 1);
     };
     expected["stencil"] = [&](int x, int y) {
-        uint8_t s = stencil[size_t(y) * kWidth + size_t(x)];
+        uint8_t s = stencil[size_t(y) * kMediumWidth + size_t(x)];
         if (s == 0) return std::make_pair(glm::ivec3(0), 0);
         if (s == 2) return std::make_pair(glm::ivec3(38, 115, 242), 2);  // water (0.15, 0.45, 0.95)
         if (s == 3) return std::make_pair(glm::ivec3(51, 217, 89), 2);   // plants (0.20, 0.85, 0.35)
@@ -129,7 +128,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     expected["vegetation"] = [&](int x, int y) {
         unsigned flags = flagsAt(x, y);
         bool plant = (flags & kSurfacePlant) && !(flags & kSurfaceReflected);
-        return std::make_pair(plant ? to8bit(glm::vec3(texel(final, kWidth, x, y))) : glm::ivec3(0), 0);
+        return std::make_pair(plant ? to8bit(glm::vec3(texel(final, kMediumWidth, x, y))) : glm::ivec3(0), 0);
     };
     expected["light-volumes"] = [&](int x, int y) {
         // No lights in this frame: dark grey by the normal's slope on surfaces, black sky.
@@ -144,7 +143,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     int shadowValuesWrong = 0;
     expected["shadow"] = [&](int x, int y) {
         if (flagsAt(x, y) & kSurfaceSky) return std::make_pair(glm::ivec3(0), 0);
-        glm::vec4 v = texel(shadowValues, kWidth, x, y);
+        glm::vec4 v = texel(shadowValues, kMediumWidth, x, y);
         int cascade = int(std::lround(v.y));
         glm::vec3 n = glm::normalize(normalAt(x, y));
         if (v.x < 0.0f || v.x > 1.0f || cascade < -1 || cascade >= OASIS_SHADOW_MAX_CASCADES ||
@@ -157,8 +156,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     // Reflection is not cleared (written at the water's pixels only): its views read it inside the
     // water (stencil 2) and are black elsewhere.
     auto reflectionAt = [&](int x, int y) {
-        bool water = stencil[size_t(y) * kWidth + size_t(x)] == kStencilWater;
-        return water ? texel(reflection, kWidth, x, y) : glm::vec4(0.0f);
+        bool water = stencil[size_t(y) * kMediumWidth + size_t(x)] == kStencilWater;
+        return water ? texel(reflection, kMediumWidth, x, y) : glm::vec4(0.0f);
     };
     expected["reflection"] = [&](int x, int y) {
         // Tone-mapped like Final (shaders/common/output.glsl); black outside the water.
@@ -171,13 +170,13 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     auto hdr = [](glm::vec4 light) {
         return to8bit(glm::pow(glm::clamp(glm::vec3(light), 0.0f, 1.0f), glm::vec3(1.0f / 2.2f)));
     };
-    expected["radiance"] = [&](int x, int y) { return std::make_pair(hdr(texel(radiance, kWidth, x, y)), 1); };
+    expected["radiance"] = [&](int x, int y) { return std::make_pair(hdr(texel(radiance, kMediumWidth, x, y)), 1); };
     expected["reflection-raw"] = [&](int x, int y) { return std::make_pair(hdr(reflectionAt(x, y)), 1); };
 
     int reflectionViewOutsideWater = 0, stencilWater = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            bool water = stencil[size_t(y) * kWidth + size_t(x)] == kStencilWater;
+    for (int y = 0; y < kMediumHeight; ++y)
+        for (int x = 0; x < kMediumWidth; ++x) {
+            bool water = stencil[size_t(y) * kMediumWidth + size_t(x)] == kStencilWater;
             stencilWater += water ? 1 : 0;
             for (const char* view : {"reflection", "reflection-raw"})
                 if (!water && displayPixel(images[view], x, y) != glm::ivec3(0)) ++reflectionViewOutsideWater;
@@ -189,8 +188,8 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
         ASSERT_TRUE(expected.count(view.name)) << "no semantic check for view " << view.name;
         int wrong = 0, black = 0;
         std::string first;
-        for (int y = 0; y < kHeight; ++y) {
-            for (int x = 0; x < kWidth; ++x) {
+        for (int y = 0; y < kMediumHeight; ++y) {
+            for (int x = 0; x < kMediumWidth; ++x) {
                 auto [want, tolerance] = expected[view.name](x, y);
                 glm::ivec3 got = displayPixel(images[view.name], x, y);
                 if (got == glm::ivec3(0)) ++black;
@@ -216,9 +215,9 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     Image brighter = readDisplay(renderer);
     renderer.views().setExposure(0.0f);
     int exposureOff = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x)
-            if (maxChannelDifference(displayPixel(brighter, x, y), hdr(4.0f * texel(radiance, kWidth, x, y))) > 1)
+    for (int y = 0; y < kMediumHeight; ++y)
+        for (int x = 0; x < kMediumWidth; ++x)
+            if (maxChannelDifference(displayPixel(brighter, x, y), hdr(4.0f * texel(radiance, kMediumWidth, x, y))) > 1)
                 ++exposureOff;
     EXPECT_EQ(exposureOff, 0) << "radiance view at +2 stops";
     EXPECT_GT(compareImages(brighter, images["radiance"]).maxAbs, 20) << "the exposure changed nothing";

@@ -7,7 +7,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 
 // The overview's grid, as debug/debug_view_pass.cpp lays it out (top-down image coordinates).
@@ -85,16 +84,16 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
     SceneSettings noReflections = pose.scene;
     noReflections.water.reflections = false;
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
     const std::vector<uint8_t> stencil = readStencil(renderer);
-    auto inWater = [&](int x, int yUp) { return stencil[size_t(yUp) * kWidth + size_t(x)] == kStencilWater; };
+    auto inWater = [&](int x, int yUp) { return stencil[size_t(yUp) * kMediumWidth + size_t(x)] == kStencilWater; };
     const int waterPixels = int(std::count(stencil.begin(), stencil.end(), kStencilWater));
-    ASSERT_GT(waterPixels, kWidth * kHeight / 20) << "the default frame should show the lake";
+    ASSERT_GT(waterPixels, kMediumWidth * kMediumHeight / 20) << "the default frame should show the lake";
 
-    std::vector<OverviewTile> tiles = overviewTiles(kWidth, kHeight);
+    std::vector<OverviewTile> tiles = overviewTiles(kMediumWidth, kMediumHeight);
     for (const std::string& name : allViewNames()) {
         SCOPED_TRACE("view " + name);
         Image deferredOff = renderView(renderer, noReflections, PipelineKind::Deferred, name);
@@ -116,8 +115,8 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
                         difference.maxAbs);
             EXPECT_GE(difference.psnrDb, 45.0) << name << " view: forward and deferred disagree";
             if (name == "reflection" || name == "reflection-raw") {
-                DifferingPixels lit = differingPixels(deferred, Image(kWidth, kHeight), inWater);
-                EXPECT_EQ(differingPixels(forward, Image(kWidth, kHeight), inWater).elsewhere, 0)
+                DifferingPixels lit = differingPixels(deferred, Image(kMediumWidth, kMediumHeight), inWater);
+                EXPECT_EQ(differingPixels(forward, Image(kMediumWidth, kMediumHeight), inWater).elsewhere, 0)
                     << "forward reflection view not black outside the water";
                 EXPECT_EQ(lit.elsewhere, 0) << "deferred reflection view not black outside the water";
                 EXPECT_GT(lit.where, waterPixels / 2) << "deferred reflection view mostly black in the water";
@@ -165,7 +164,7 @@ TEST_F(DebugViews, EveryViewHasContentInBothPipelinesAndForwardEqualsDeferred) {
 TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     Image before = renderView(renderer, pose.scene, PipelineKind::Forward, "final");
     std::vector<float> depthBefore = readDepth(renderer);
     std::vector<uint8_t> stencilBefore = readStencil(renderer);
@@ -191,7 +190,7 @@ TEST_F(DebugViews, GBufferViewOfForwardFrameKeepsFinalDepthAndStencil) {
 TEST_F(DebugViews, GBufferViewOfStoppedForwardFrameKeepsDepthAndStencil) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     renderer.setPipeline(PipelineKind::Forward);
     for (const std::string& stop : {std::string("WaterMaskPass"), std::string("TerrainPass.forward")}) {
         SCOPED_TRACE("forward frame stopped before " + stop);
@@ -220,7 +219,7 @@ TEST_F(DebugViews, GBufferViewOfStoppedForwardFrameKeepsDepthAndStencil) {
 TEST_F(DebugViews, OverviewTilesShowEveryViewWithLabels) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.setPipeline(PipelineKind::Deferred);
     renderer.renderFrame(pose.scene);
@@ -233,7 +232,7 @@ TEST_F(DebugViews, OverviewTilesShowEveryViewWithLabels) {
     renderer.views().render(kOverviewName);
     Image overview = readDisplay(renderer);
     dumpImage("overview", overview);
-    std::vector<OverviewTile> tiles = overviewTiles(kWidth, kHeight);
+    std::vector<OverviewTile> tiles = overviewTiles(kMediumWidth, kMediumHeight);
     ASSERT_EQ(tiles.size(), views.size());
 
     for (size_t i = 0; i < tiles.size(); ++i) {

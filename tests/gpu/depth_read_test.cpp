@@ -12,7 +12,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
 
 struct DepthReadRun {
     std::vector<std::string> passes;
@@ -40,8 +39,8 @@ DepthReadRun renderWith(Renderer& renderer, SceneSettings scene, bool inPlace) {
         // What the direct lighting read: the copy against the target it was made from (the water
         // mask writes the water's depth into the target after this).
         if (pass.name() != "LightingPass" || !targets.framebuffer({}, Target::SceneDepth) || inPlace) return;
-        std::vector<uint32_t> target = depthSteps(targets.framebuffer({}, Target::DepthStencil), kWidth, kHeight);
-        std::vector<uint32_t> copy = depthSteps(targets.framebuffer({}, Target::SceneDepth), kWidth, kHeight);
+        std::vector<uint32_t> target = depthSteps(targets.framebuffer({}, Target::DepthStencil), kSmallWidth, kSmallHeight);
+        std::vector<uint32_t> copy = depthSteps(targets.framebuffer({}, Target::SceneDepth), kSmallWidth, kSmallHeight);
         for (size_t i = 0; i < target.size(); ++i) run.copyOff.push_back(int(copy[i]) - int(target[i]));
     });
     EXPECT_EQ(renderer.lastFrame().work.depthReadInPlace, inPlace);
@@ -94,7 +93,7 @@ class DepthReadInPlace : public GpuTest {};
 
 TEST_F(DepthReadInPlace, EveryPoseEqualsTheCopiedDepthsFrameWithoutTheDirectCopy) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
     renderer.setPipeline(PipelineKind::Deferred);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     for (const NamedPose& pose : allPoses())
@@ -120,7 +119,7 @@ TEST_F(DepthReadInPlace, LightsTiledReadInPlaceAndTheVolumesKeepTheCopy) {
     pose.scene.lights.count = 16;
     pose.scene.hour = 21.0;
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
     renderer.setPipeline(PipelineKind::Deferred);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     std::vector<LightMethod> methods = {LightMethod::Volumes};
@@ -142,7 +141,7 @@ TEST_F(DepthReadInPlace, LightsTiledReadInPlaceAndTheVolumesKeepTheCopy) {
 // A layout that stores positions never copies depth, in place or not.
 TEST_F(DepthReadInPlace, LayoutsThatStorePositionsNeverCopy) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("standard"));
     renderer.setPipeline(PipelineKind::Deferred);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     for (bool inPlace : {false, true}) {

@@ -12,7 +12,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
 
 struct DomainCase {
     std::string name;
@@ -112,7 +111,7 @@ TEST_P(DomainEnds, FiniteAgreeingAndPlantsOnTheTerrain) {
     const DomainCase& c = GetParam();
     Renderer renderer(*shaders_, c.scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("standard"));
     Image forward = renderFinal(renderer, c.scene, PipelineKind::Forward);
     // Where the frame wrote them (countNonFiniteWritten: nothing clears the rest).
     for (Target target : {Target::Radiance, Target::Reflection, Target::Final})

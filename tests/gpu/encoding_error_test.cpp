@@ -12,18 +12,17 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
 
 TEST_F(GpuTest, EncodingErrorOfEachLayoutAgainstFull) {
     const SceneSettings scene = defaultPose().scene;
     Renderer renderer(*shaders_, scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
     EXPECT_THROW(measureEncodingError(renderer, scene, layoutNamed("full")), std::invalid_argument);
 
     EncodingError compact = measureEncodingError(renderer, scene, renderer.targets().layout());
     EXPECT_EQ(renderer.targets().layout().name, "compact") << "left configured for the layout";
-    EXPECT_GT(compact.surfaces, kWidth * kHeight / 2);
+    EXPECT_GT(compact.surfaces, kSmallWidth * kSmallHeight / 2);
     ErrorSummary normals = summarizeError(compact.normalDegrees), steps = summarizeError(compact.positionSteps);
     std::printf("[encoding] compact: normal median %.2e max %.2e degrees; position median %.3f max %.3f depth steps\n",
                 normals.median, normals.max, steps.median, steps.max);
@@ -49,11 +48,11 @@ TEST_F(GpuTest, EncodingErrorOfEachLayoutAgainstFull) {
     EXPECT_EQ(standardPositions.count, standard.surfaces);
 
     // The probe at a terrain pixel reports the map's numbers there.
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
     renderer.renderFrame(scene);
     PixelProbe probe = probePixel(renderer, 80, 80);
     addEncodingError(probe, compact);
-    size_t i = size_t(kHeight - 1 - 80) * kWidth + 80;
+    size_t i = size_t(kSmallHeight - 1 - 80) * kSmallWidth + 80;
     ASSERT_TRUE(probe.hasEncodingError);
     ASSERT_TRUE(std::isfinite(compact.normalDegrees[i])) << "pixel 80,80 should be terrain";
     EXPECT_EQ(probe.normalErrorDegrees, compact.normalDegrees[i]);

@@ -13,7 +13,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 96, kHeight = 54;
 
 // Water, terrain, plants and sky from the lake's shore; `night`: 21:00 with four point lights
 // added by volumes (LightVolumePass, the separate ToneMapPass), else 10:00 with the tone map fused.
@@ -62,7 +61,7 @@ TEST_F(FrameSink, EveryViewIsTheSameAfterItsOwnFrameAsAfterAWholeFrame) {
         decoy.lights = scene.lights;
         Renderer renderer(*shaders_, scene);
         auto atlas = attachPlantAtlas(*shaders_, renderer);
-        renderer.configure(kWidth, kHeight, layoutNamed(c.layout));
+        renderer.configure(kTinyWidth, kTinyHeight, layoutNamed(c.layout));
         renderer.views().setWaterScene(c.water);
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
             renderer.setPipeline(kind);
@@ -113,7 +112,7 @@ TEST_F(FrameSink, EachViewRunsThePassesItsReadsNeed) {
         const SceneSettings scene = lakeScene(night);
         Renderer renderer(*shaders_, scene);
         auto atlas = attachPlantAtlas(*shaders_, renderer);
-        renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+        renderer.configure(kTinyWidth, kTinyHeight, layoutNamed("compact"));
         auto runsFor = [&](PipelineKind kind, const std::string& view) {
             renderer.setPipeline(kind);
             renderer.views().setSink(view.empty() ? std::vector<std::string>{} : std::vector<std::string>{view});
@@ -160,7 +159,7 @@ TEST_F(FrameSink, EachViewRunsThePassesItsReadsNeed) {
 TEST_F(FrameSink, AViewTheFrameWasNotBuiltForIsRefused) {
     const SceneSettings scene = lakeScene(false);
     Renderer renderer(*shaders_, scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kTinyWidth, kTinyHeight, layoutNamed("compact"));
     renderer.views().setSink({"albedo"});
     renderer.renderFrame(scene);
     EXPECT_NO_THROW(renderer.views().render("albedo"));

@@ -13,7 +13,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 // The water's depth came from one quad spanning +-viewDistance (4000 units) around the camera,
 // clipped by the near plane and interpolated in float32 from vertices thousands of units away:
@@ -49,7 +48,7 @@ protected:
         scene.water.reflections = reflections;
         const std::string label = pose.name + " " + layout + (reflections ? "" : " reflections-off");
         SCOPED_TRACE(label);
-        renderer.configure(kWidth, kHeight, layoutNamed(layout));
+        renderer.configure(kMediumWidth, kMediumHeight, layoutNamed(layout));
         renderer.setPipeline(PipelineKind::Deferred);
         renderer.renderFrame(scene);
         const std::vector<float> albedo = readTarget(renderer, Target::Albedo);
@@ -85,16 +84,16 @@ protected:
         FirstFailures failures;
         int skyPixels = 0, surfacePixels = 0, waterPixels = 0, reflectedPixels = 0, stencilSky = 0, plantPixels = 0;
         double worstNormal = 0.0, worstRatio = 0.0, worstSteps = 0.0, worstWaterRatio = 0.0;
-        for (int y = 0; y < kHeight; ++y) {
-            for (int x = 0; x < kWidth; ++x) {
-                size_t i = size_t(y) * kWidth + size_t(x);
-                glm::vec4 a = texel(albedo, kWidth, x, y);
-                glm::vec4 p = texel(position, kWidth, x, y);
-                glm::vec4 n = texel(normal, kWidth, x, y);
-                glm::vec4 in = texel(info, kWidth, x, y);
+        for (int y = 0; y < kMediumHeight; ++y) {
+            for (int x = 0; x < kMediumWidth; ++x) {
+                size_t i = size_t(y) * kMediumWidth + size_t(x);
+                glm::vec4 a = texel(albedo, kMediumWidth, x, y);
+                glm::vec4 p = texel(position, kMediumWidth, x, y);
+                glm::vec4 n = texel(normal, kMediumWidth, x, y);
+                glm::vec4 in = texel(info, kMediumWidth, x, y);
                 unsigned flags = infoFlags(in);
                 const uint8_t s = stencil[i];
-                const glm::dvec3 ray = pixelRay(data, kWidth, kHeight, x, y);
+                const glm::dvec3 ray = pixelRay(data, kMediumWidth, kMediumHeight, x, y);
                 if (s > kStencilPlant) failures.note("stencil value other than 0, 1, 2, 3", at(x, y) + ": " + std::to_string(s));
                 if ((depth[i] == 1.0f) != (s == kStencilSky))
                     failures.note("depth 1 <=> stencil 0 fails",
@@ -129,7 +128,7 @@ protected:
                     if (s == kStencilPlant && flags != kSurfacePlant)
                         failures.note("plant (stencil 3) flags != PLANT", at(x, y) + ": " + std::to_string(flags));
                     if (flags == kSurfaceSky) continue;
-                    glm::dvec3 reconstructed = unproject(data, kWidth, kHeight, x, y, depth[i]);
+                    glm::dvec3 reconstructed = unproject(data, kMediumWidth, kMediumHeight, x, y, depth[i]);
                     glm::dvec3 stored(p);
                     double distance = glm::length(stored);
                     double error = glm::length(reconstructed - stored);
@@ -149,7 +148,7 @@ protected:
                         continue;
                     }
                     double hitDistance = glm::length(hit);
-                    glm::dvec3 reconstructed = unproject(data, kWidth, kHeight, x, y, depth[i]);
+                    glm::dvec3 reconstructed = unproject(data, kMediumWidth, kMediumHeight, x, y, depth[i]);
                     double waterError = glm::length(reconstructed - hit);
                     double waterTolerance = waterDepthTolerance(hitDistance, nearPlane, farPlane);
                     worstWaterRatio = std::max(worstWaterRatio, waterError / waterTolerance);
@@ -202,7 +201,7 @@ protected:
                     worstSteps, worstRatio, worstWaterRatio);
         for (const auto& [what, count] : failures.count)
             ADD_FAILURE() << what << " at " << count << " pixels; first " << failures.first[what];
-        EXPECT_EQ(skyPixels + surfacePixels, kWidth * kHeight) << "pixels that are neither sky nor a surface";
+        EXPECT_EQ(skyPixels + surfacePixels, kMediumWidth * kMediumHeight) << "pixels that are neither sky nor a surface";
         if (pose.name == "default" || pose.name == "meadow") EXPECT_GT(plantPixels, 0) << "no plants in view";
         if (pose.expectSky) EXPECT_GT(skyPixels, 0) << "no sky in view";
         else EXPECT_EQ(skyPixels, 0) << "sky visible where only terrain should be (a hole in the terrain?)";

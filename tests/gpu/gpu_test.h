@@ -29,6 +29,12 @@
 
 namespace oasis::gputest {
 
+// The frame sizes the tests draw at, one name for each size (the test files compile in unity
+// batches, where a file-local kWidth would be defined twice).
+inline constexpr int kTinyWidth = 96, kTinyHeight = 54;
+inline constexpr int kSmallWidth = 160, kSmallHeight = 90;
+inline constexpr int kMediumWidth = 320, kMediumHeight = 180;
+
 // The one context of the process and what went wrong making it (main.cpp owns both).
 struct GpuState {
     std::unique_ptr<HeadlessContext> context;

@@ -15,8 +15,7 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
-constexpr long long kPixels = (long long)kWidth * kHeight;
+constexpr long long kPixels = (long long)kSmallWidth * kSmallHeight;
 
 struct CoverageRun {
     Image final;
@@ -78,7 +77,7 @@ TEST_F(LightingCoverage, SurfacesOnlyEqualsEveryPixelAndTheSkyShadesTheRest) {
     for (auto [layout, inPlace, depth] : setups) {
         Renderer renderer(*shaders_, defaultPose().scene);
         renderer.setDepthConvention(*findDepthConvention(depth));
-        renderer.configure(kWidth, kHeight, layoutNamed(layout));
+        renderer.configure(kSmallWidth, kSmallHeight, layoutNamed(layout));
         if (renderer.paths().depth->name != depth) GTEST_SKIP() << renderer.paths().depthReason;
         renderer.setPipeline(PipelineKind::Deferred);
         auto atlas = attachPlantAtlas(*shaders_, renderer);
@@ -110,7 +109,7 @@ TEST_F(LightingCoverage, SurfacesOnlyEqualsEveryPixelAndTheSkyShadesTheRest) {
 // The default frame shows sky: the surfaces-only lighting shades fewer than every pixel there.
 TEST_F(LightingCoverage, TheDefaultFrameLeavesItsSkyToSkyPass) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
     renderer.setPipeline(PipelineKind::Deferred);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     const CoverageRun run = renderWith(renderer, defaultPose().scene, true);
@@ -123,7 +122,7 @@ TEST_F(LightingCoverage, TheDefaultFrameLeavesItsSkyToSkyPass) {
 // whichever way the lighting kept off the sky, even after a whole frame drew the sky there.
 TEST_F(LightingCoverage, AFrameStoppedBeforeTheSkyShowsItBlack) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
     renderer.setPipeline(PipelineKind::Deferred);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     SceneSettings scene = defaultPose().scene;

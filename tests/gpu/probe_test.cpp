@@ -11,7 +11,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
 
 // Still water in front of a shore with plants, at 21:00 with lights over the land and the lake:
 // every kind of pixel the probe explains is in this frame.
@@ -68,7 +67,7 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     Renderer renderer(*shaders_, scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     const GBufferLayout& layout = layoutNamed(layoutName);
-    renderer.configure(kWidth, kHeight, layout);
+    renderer.configure(kSmallWidth, kSmallHeight, layout);
     renderer.setPipeline(pipeline);
     // Both water scenes are checked: the mirrored one in deferred, the direct one (the lakebed) in forward.
     renderer.views().setWaterScene(pipeline == PipelineKind::Deferred ? WaterScene::Mirrored : WaterScene::Direct);
@@ -84,10 +83,10 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     // targets are not cleared there, by Info's SKY flag in the others. The probe shows the texels
     // no pass wrote (those, and Reflection outside the water) as the clear used to leave them.
     auto flagsAt = [&](int x, int y) {
-        if (layout.positionFromDepth() ? cpu.depth[size_t(y) * kWidth + size_t(x)] >= 1.0f
-                                       : (layout.storedFlags(texel(cpu.info, kWidth, x, y)) & kSurfaceSky) != 0u)
+        if (layout.positionFromDepth() ? cpu.depth[size_t(y) * kSmallWidth + size_t(x)] >= 1.0f
+                                       : (layout.storedFlags(texel(cpu.info, kSmallWidth, x, y)) & kSurfaceSky) != 0u)
             return unsigned(kSurfaceSky);
-        return layout.storedFlags(texel(cpu.info, kWidth, x, y));
+        return layout.storedFlags(texel(cpu.info, kSmallWidth, x, y));
     };
 
     // Up to four pixels of each kind, spread over the frame (GL rows, bottom 0).
@@ -96,9 +95,9 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     auto take = [&](PixelKind kind, int x, int y) {
         if (found[int(kind)]++ % 7 == 0 && found[int(kind)] <= 22) pixels.push_back({kind, {x, y}});
     };
-    for (int y = 1; y < kHeight - 1; y += 3)
-        for (int x = 1; x < kWidth - 1; x += 3) {
-            size_t i = size_t(y) * kWidth + size_t(x);
+    for (int y = 1; y < kSmallHeight - 1; y += 3)
+        for (int x = 1; x < kSmallWidth - 1; x += 3) {
+            size_t i = size_t(y) * kSmallWidth + size_t(x);
             unsigned flags = flagsAt(x, y);
             int stencil = cpu.stencil[i];
             if (stencil == kStencilNothing) take(PixelKind::Sky, x, y);
@@ -107,7 +106,7 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
             if (stencil == kStencilWater)
                 take((flags & kSurfaceReflected) ? PixelKind::WaterMirrored : PixelKind::WaterDirect, x, y);
             if (!(flags & kSurfaceSky)) {
-                glm::dvec3 p = glm::dvec3(texel(cpu.positions, kWidth, x, y));
+                glm::dvec3 p = glm::dvec3(texel(cpu.positions, kSmallWidth, x, y));
                 if (flags & kSurfaceReflected) p.y = 2.0 * (double(scene.water.level) - frame.view.pose.position.y) - p.y;
                 bool ambiguous = false;
                 if (lightsReaching(frame, p, ambiguous) > 0 && !ambiguous) take(PixelKind::Lit, x, y);
@@ -122,35 +121,35 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     int checked = 0;
     for (const auto& [kind, pixel] : pixels) {
         int x = pixel.x, yFromBottom = pixel.y;
-        PixelProbe probe = probePixel(renderer, x, kHeight - 1 - yFromBottom);
-        size_t i = size_t(yFromBottom) * kWidth + size_t(x);
+        PixelProbe probe = probePixel(renderer, x, kSmallHeight - 1 - yFromBottom);
+        size_t i = size_t(yFromBottom) * kSmallWidth + size_t(x);
         std::string where = std::string(kindName(kind)) + " pixel " + std::to_string(x) + "," +
-                            std::to_string(kHeight - 1 - yFromBottom);
-        glm::vec4 info = texel(cpu.info, kWidth, x, yFromBottom);
+                            std::to_string(kSmallHeight - 1 - yFromBottom);
+        glm::vec4 info = texel(cpu.info, kSmallWidth, x, yFromBottom);
         unsigned flags = flagsAt(x, yFromBottom);
         const bool reflectionWritten = frame.reflectionsActive && cpu.stencil[i] == kStencilWater;
         EXPECT_EQ(probe.flags, flags) << where;
         EXPECT_EQ(probe.sky, (flags & kSurfaceSky) != 0) << where;
         EXPECT_EQ(probe.stencil, int(cpu.stencil[i])) << where;
         EXPECT_NEAR(probe.depth, double(cpu.depth[i]), 1e-7) << where;  // glReadPixels' float of the same bits
-        EXPECT_EQ(probe.radiance, texel(cpu.radiance, kWidth, x, yFromBottom)) << where;
-        EXPECT_EQ(probe.reflection, reflectionWritten ? texel(cpu.reflection, kWidth, x, yFromBottom) : glm::vec4(0.0f))
+        EXPECT_EQ(probe.radiance, texel(cpu.radiance, kSmallWidth, x, yFromBottom)) << where;
+        EXPECT_EQ(probe.reflection, reflectionWritten ? texel(cpu.reflection, kSmallWidth, x, yFromBottom) : glm::vec4(0.0f))
             << where;
-        EXPECT_EQ(probe.final, glm::ivec4(glm::round(texel(cpu.final, kWidth, x, yFromBottom) * 255.0f))) << where;
+        EXPECT_EQ(probe.final, glm::ivec4(glm::round(texel(cpu.final, kSmallWidth, x, yFromBottom) * 255.0f))) << where;
         EXPECT_EQ(probe.waterScene.empty(), cpu.stencil[i] != kStencilWater) << where;
         // The stored albedo bytes are the target's (every layout's albedo is RGBA8 except full's floats).
         const StoredTexel& albedoTexel = probe.stored.front();
         ASSERT_EQ(albedoTexel.target, "albedo");
-        glm::vec4 albedo = (flags & kSurfaceSky) ? glm::vec4(0.0f) : texel(cpu.albedo, kWidth, x, yFromBottom);
+        glm::vec4 albedo = (flags & kSurfaceSky) ? glm::vec4(0.0f) : texel(cpu.albedo, kSmallWidth, x, yFromBottom);
         for (int c = 0; c < 4; ++c)
             EXPECT_EQ(albedoTexel.values[size_t(c)],
                       albedoTexel.format == "RGBA8" ? double(std::lround(albedo[c] * 255.0f)) : double(albedo[c]))
                 << where << " albedo channel " << c;
         if (flags & kSurfaceSky) continue;
         EXPECT_NEAR(glm::distance(probe.albedo, glm::vec3(albedo)), 0.0f, 1e-6f) << where;
-        glm::vec3 normal = layout.storedNormal(texel(cpu.normal, kWidth, x, yFromBottom));
+        glm::vec3 normal = layout.storedNormal(texel(cpu.normal, kSmallWidth, x, yFromBottom));
         EXPECT_NEAR(glm::distance(probe.normal, normal), 0.0f, 2e-5f) << where;
-        glm::vec3 position = glm::vec3(texel(cpu.positions, kWidth, x, yFromBottom));
+        glm::vec3 position = glm::vec3(texel(cpu.positions, kSmallWidth, x, yFromBottom));
         EXPECT_NEAR(glm::distance(probe.relativePosition, position), 0.0f, 1e-5f * (1.0f + glm::length(position)))
             << where;
         EXPECT_EQ(probe.specularPower, std::round(info.r * 255.0f)) << where;
@@ -196,9 +195,9 @@ TEST_F(GpuTest, ProbeSaysHowTheReflectionWasDrawn) {
         scene.water.reflections = c.reflections;
         scene.water.reflectionDivisor = c.divisor;
         Renderer renderer(*shaders_, scene);
-        renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+        renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
         renderer.renderFrame(scene);
-        PixelProbe probe = probePixel(renderer, kWidth / 2, kHeight - 5);
+        PixelProbe probe = probePixel(renderer, kSmallWidth / 2, kSmallHeight - 5);
         SCOPED_TRACE(std::string("divisor ") + std::to_string(c.divisor) + (c.reflections ? "" : ", reflections off") +
                      ", camera at " + std::to_string(c.cameraHeight));
         EXPECT_EQ(probe.reflectionResolution, c.name);

@@ -10,7 +10,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 // Shader invocations (`statistic`: GL_VERTEX_SHADER_INVOCATIONS_ARB, ...) of every pass that only
 // draws the reflection (Pass::reflectionWork: mirrored surfaces, copies, lighting, sky; the
@@ -56,7 +55,7 @@ class ReflectionBounds : public GpuTest {};
 TEST_F(ReflectionBounds, FrameWithoutWaterInViewPaysNothingForTheReflection) {
     NamedPose pose = vegetationPoses()[0];
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     if (reflectionWorkInvocations(renderer, pose.scene, GL_VERTEX_SHADER_INVOCATIONS_ARB) < 0)
@@ -101,7 +100,7 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
         if (pose.name == "down" || pose.name == "up") poses.push_back(pose);
     for (const std::string layout : {"standard", "compact"}) {
         Renderer renderer(*shaders_, defaultPose().scene);
-        renderer.configure(kWidth, kHeight, layoutNamed(layout));
+        renderer.configure(kMediumWidth, kMediumHeight, layoutNamed(layout));
         auto atlas = attachPlantAtlas(*shaders_, renderer);
         if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
         for (const NamedPose& pose : poses)
@@ -125,10 +124,10 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
 
                 // Every water pixel inside, and each edge of the rectangle on a water pixel.
                 long water = 0, outside = 0;
-                glm::ivec4 seen(kWidth, kHeight, -1, -1);
-                for (int y = 0; y < kHeight; ++y)
-                    for (int x = 0; x < kWidth; ++x) {
-                        if (stencil[size_t(y) * kWidth + size_t(x)] != kStencilWater) continue;
+                glm::ivec4 seen(kMediumWidth, kMediumHeight, -1, -1);
+                for (int y = 0; y < kMediumHeight; ++y)
+                    for (int x = 0; x < kMediumWidth; ++x) {
+                        if (stencil[size_t(y) * kMediumWidth + size_t(x)] != kStencilWater) continue;
                         ++water;
                         if (x < rect.x || x > rect.z || y < rect.y || y > rect.w) ++outside;
                         seen = glm::ivec4(std::min(seen.x, x), std::min(seen.y, y), std::max(seen.z, x),
@@ -149,7 +148,7 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
                 std::printf("[reflection bounds] %s %s %s: water %.1f%% of the frame, %s; reflection fragments "
                             "%lld bounded, %lld whole screen; frames %.2f dB apart (max abs %d)\n",
                             pose.name.c_str(), pipelineName(kind), layout.c_str(),
-                            100.0 * double(water) / double(kWidth * kHeight), size.c_str(), fragmentsBounded,
+                            100.0 * double(water) / double(kMediumWidth * kMediumHeight), size.c_str(), fragmentsBounded,
                             fragmentsUnbounded, difference.psnrDb, difference.maxAbs);
                 // The mirrored lighting or sky shades every water pixel: a count below that is a
                 // driver's counter that does not count shaded fragments (zink over lavapipe's).
@@ -173,7 +172,7 @@ TEST_F(ReflectionBounds, RectangleHoldsEveryWaterPixelAndTheFrameIsTheUnboundedO
 TEST_F(ReflectionBounds, MirroredBillboardsMissingTheWaterAreDropped) {
     NamedPose pose = vegetationPoses()[0];
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     auto mirroredPlants = [](const Pass& pass) {
@@ -206,7 +205,7 @@ TEST_F(ReflectionBounds, MirroredBillboardsMissingTheWaterAreDropped) {
 TEST_F(ReflectionBounds, WithoutStorageBlocksTheWholeScreenIsUsedAndSaysWhy) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     renderer.setPipeline(PipelineKind::Deferred);

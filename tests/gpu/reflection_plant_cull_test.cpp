@@ -10,7 +10,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 std::vector<NamedPose> culledPoses() {
     std::vector<NamedPose> poses{defaultPose(), vegetationPoses()[0]};
@@ -36,7 +35,7 @@ class ReflectionPlantCull : public GpuTest {};
 
 TEST_F(ReflectionPlantCull, SameFramesBitForBitWithFewerMirroredPlants) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     size_t culledPlants = 0, mirroredWithout = 0;
     for (const NamedPose& pose : culledPoses()) {
@@ -80,7 +79,7 @@ TEST_F(ReflectionPlantCull, SameFramesBitForBitWithFewerMirroredPlants) {
 
 TEST_F(ReflectionPlantCull, StandsAsideAtReducedResolutionAndWithoutReflections) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     SceneSettings scene = defaultPose().scene;
     scene.water.reflectionDivisor = 2;
@@ -99,7 +98,7 @@ TEST_F(ReflectionPlantCull, StandsAsideAtReducedResolutionAndWithoutReflections)
 // the next frame of the same view on; and stops when it moves again.
 TEST_F(ReflectionPlantCull, AutoCullsWhileTheCameraStandsStill) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     SceneSettings scene = defaultPose().scene;
     ASSERT_EQ(scene.work.mirroredPlantCull, MirroredPlantCull::Auto);

@@ -11,7 +11,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 SceneSettings atResolution(SceneSettings scene, int divisor) {
     scene.water.reflectionDivisor = divisor;
@@ -51,7 +50,7 @@ class ReflectionResolution : public GpuTest {};
 // 320x180 on llvmpipe: 33.4-49.7 and 30.7-42.9 dB; the grazing view of the lake is the worst).
 TEST_F(ReflectionResolution, OnlyTheWaterChangesWithinBoundedError) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     for (const NamedPose& pose : posesWithWater())
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
@@ -64,10 +63,10 @@ TEST_F(ReflectionResolution, OnlyTheWaterChangesWithinBoundedError) {
                 SCOPED_TRACE(pose.name + ", " + pipelineName(kind) + ", 1/" + std::to_string(divisor));
                 const Image reduced = renderFinal(renderer, atResolution(pose.scene, divisor), kind);
                 int changedWater = 0, changedElsewhere = 0;
-                for (int y = 0; y < kHeight; ++y)
-                    for (int x = 0; x < kWidth; ++x) {
+                for (int y = 0; y < kMediumHeight; ++y)
+                    for (int x = 0; x < kMediumWidth; ++x) {
                         bool changed = maxChannelDifference(displayPixel(full, x, y), displayPixel(reduced, x, y)) > 0;
-                        bool isWater = stencil[size_t(y) * kWidth + size_t(x)] == kStencilWater;
+                        bool isWater = stencil[size_t(y) * kMediumWidth + size_t(x)] == kStencilWater;
                         (isWater ? changedWater : changedElsewhere) += changed ? 1 : 0;
                     }
                 const ImageDifference difference = compareImages(full, reduced);
@@ -89,7 +88,7 @@ TEST_F(ReflectionResolution, ReflectionTargetIsTheReducedTargetReadBilinearly) {
             for (int divisor : {2, 4}) {
                 SCOPED_TRACE(layout + ", " + pipelineName(kind) + ", 1/" + std::to_string(divisor));
                 Renderer renderer(*shaders_, defaultPose().scene);
-                renderer.configure(kWidth, kHeight, layoutNamed(layout));
+                renderer.configure(kMediumWidth, kMediumHeight, layoutNamed(layout));
                 auto atlas = attachPlantAtlas(*shaders_, renderer);
                 renderer.setPipeline(kind);
                 // Nothing clears Reflection: zeroed first, what is not 0 outside the water after
@@ -99,23 +98,23 @@ TEST_F(ReflectionResolution, ReflectionTargetIsTheReducedTargetReadBilinearly) {
                 ASSERT_NE(renderer.reflectionTargets(), nullptr);
                 const int reducedWidth = renderer.reflectionTargets()->width();
                 const int reducedHeight = renderer.reflectionTargets()->height();
-                EXPECT_EQ(reducedWidth, kWidth / divisor);
-                EXPECT_EQ(reducedHeight, kHeight / divisor);
+                EXPECT_EQ(reducedWidth, kMediumWidth / divisor);
+                EXPECT_EQ(reducedHeight, kMediumHeight / divisor);
                 const std::vector<uint8_t> stencil = readStencil(renderer);
                 const std::vector<float> reduced = readReducedReflection(renderer);
                 const std::vector<float> frame = readTarget(renderer, Target::Reflection);
                 EXPECT_EQ(countNonFinite(reduced), 0);
                 int water = 0, off = 0, lit = 0, outsideNotCleared = 0;
                 double worst = 0.0;
-                for (int y = 0; y < kHeight; ++y)
-                    for (int x = 0; x < kWidth; ++x) {
-                        glm::dvec3 stored(rgbAt(frame, kWidth, x, y));
-                        if (stencil[size_t(y) * kWidth + size_t(x)] != kStencilWater) {
+                for (int y = 0; y < kMediumHeight; ++y)
+                    for (int x = 0; x < kMediumWidth; ++x) {
+                        glm::dvec3 stored(rgbAt(frame, kMediumWidth, x, y));
+                        if (stencil[size_t(y) * kMediumWidth + size_t(x)] != kStencilWater) {
                             outsideNotCleared += glm::length(stored) > 0.0 ? 1 : 0;
                             continue;
                         }
                         ++water;
-                        glm::dvec2 uv((x + 0.5) / kWidth, (y + 0.5) / kHeight);
+                        glm::dvec2 uv((x + 0.5) / kMediumWidth, (y + 0.5) / kMediumHeight);
                         glm::dvec3 expected = bilinear(reduced, reducedWidth, reducedHeight, uv);
                         lit += glm::length(expected) > 0.01 ? 1 : 0;
                         // RGBA16F keeps 11 significant bits; the filter's weights may be 8-bit on
@@ -140,7 +139,7 @@ TEST_F(ReflectionResolution, BoundedFrameIsTheUnboundedOne) {
     poses.push_back(waterPoses()[0]);  // a still mirror
     poses.push_back({"eyeAtWater", sceneAtHeight(470.0, 0.0, 150.0, 30.0f, -1.0f), true, true, false});
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     if (!renderer.paths().waterBoundsAvailable) GTEST_SKIP() << renderer.paths().waterBoundsReason;
     for (const NamedPose& pose : poses)
@@ -160,7 +159,7 @@ TEST_F(ReflectionResolution, BoundedFrameIsTheUnboundedOne) {
 // pipelines read the same reduced reflection; measured: within 0.02 dB, 0.5 dB better grazing).
 TEST_F(ReflectionResolution, PipelinesAgreeAtEveryResolution) {
     Renderer renderer(*shaders_, defaultPose().scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     for (const NamedPose& pose : posesWithWater()) {
         double fullPsnr = 0.0;

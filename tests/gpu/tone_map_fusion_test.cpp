@@ -9,7 +9,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
 
 // The passes a frame ran, the fragment-shader invocations of each (empty without the statistics
 // query; a query spans each pass, ended and restarted after every pass that ran) and their sum.
@@ -61,7 +60,7 @@ class ToneMapFusion : public GpuTest {};
 TEST_F(ToneMapFusion, FusedFrameEqualsTheSeparatePassAndRadianceStaysWhole) {
     for (const std::string layout : {"standard", "compact"}) {
         Renderer renderer(*shaders_, defaultPose().scene);
-        renderer.configure(kWidth, kHeight, layoutNamed(layout));
+        renderer.configure(kSmallWidth, kSmallHeight, layoutNamed(layout));
         auto atlas = attachPlantAtlas(*shaders_, renderer);
         for (const NamedPose& pose : allPoses())
             for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
@@ -101,7 +100,7 @@ TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
     NamedPose pose = defaultPose();
     pose.scene.lights.count = 16;
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     struct Case {
         PipelineKind kind;
@@ -135,7 +134,7 @@ TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
 TEST_F(ToneMapFusion, FusedFrameRunsNoToneMapPassAndShadesAFullScreenFewer) {
     for (const NamedPose& pose : {defaultPose(), waterPoses()[0]}) {
         Renderer renderer(*shaders_, pose.scene);
-        renderer.configure(kWidth, kHeight, layoutNamed("compact"));
+        renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
         auto atlas = attachPlantAtlas(*shaders_, renderer);
         for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
             SCOPED_TRACE(pose.name + ", " + pipelineName(kind));
@@ -155,7 +154,7 @@ TEST_F(ToneMapFusion, FusedFrameRunsNoToneMapPassAndShadesAFullScreenFewer) {
             std::printf("[tone map fusion] %s %s: %lld fragments shaded fused, %lld separate (ToneMapPass %lld)\n",
                         pose.name.c_str(), pipelineName(kind), fused.fragments, separate.fragments, toneMap);
             // zink's counter does not count shaded fragments (ReflectionBounds says the same).
-            if (toneMap < (long long)kWidth * kHeight) continue;
+            if (toneMap < (long long)kSmallWidth * kSmallHeight) continue;
             std::vector<long long> others(separate.passFragments.begin(), separate.passFragments.end() - 1);
             if (cpuRasteriser()) {
                 EXPECT_EQ(fused.passFragments, others);

@@ -10,7 +10,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 180;
 
 class Vegetation : public GpuTest {
 protected:
@@ -29,7 +28,7 @@ size_t countValue(const std::vector<uint8_t>& values, uint8_t value) {
 TEST_F(Vegetation, PlantBasesLieOnTheTerrainTheGpuDraws) {
     NamedPose pose = poseNamed("meadow");
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.renderFrame(pose.scene);
     std::vector<PlantInstance> plants = renderer.vegetation().placedPlants();
@@ -59,7 +58,7 @@ TEST_F(Vegetation, ToggleChangesOnlyPlantAndWaterPixels) {
     SceneSettings off = pose.scene;
     off.vegetation.enabled = false;
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     // The plants' sun shadows fall on the ground beside them (tests/gpu/shadows_test.cpp): without
     // them, everything but the plants and the water must stay the same.
@@ -78,12 +77,12 @@ TEST_F(Vegetation, ToggleChangesOnlyPlantAndWaterPixels) {
         EXPECT_EQ(renderer.vegetation().stats().plantsDrawn, 0u) << "plants drawn with vegetation off";
         EXPECT_EQ(countValue(stencilOff, kStencilPlant), 0u) << "plant stencil marks with vegetation off";
         size_t plantPixels = countValue(stencilOn, kStencilPlant);
-        EXPECT_GT(plantPixels, size_t(kWidth * kHeight / 20)) << "the meadow shows few plants";
+        EXPECT_GT(plantPixels, size_t(kMediumWidth * kMediumHeight / 20)) << "the meadow shows few plants";
         // Outside plants (and the water, which reflects them) the two frames are the same bit for bit.
         size_t changedElsewhere = 0, changedInWater = 0;
-        for (int y = 0; y < kHeight; ++y)
-            for (int x = 0; x < kWidth; ++x) {
-                uint8_t s = stencilOn[size_t(y) * kWidth + size_t(x)];
+        for (int y = 0; y < kMediumHeight; ++y)
+            for (int x = 0; x < kMediumWidth; ++x) {
+                uint8_t s = stencilOn[size_t(y) * kMediumWidth + size_t(x)];
                 bool differs = displayPixel(on, x, y) != displayPixel(offImage, x, y);
                 if (s == kStencilWater) changedInWater += differs;
                 else if (s != kStencilPlant) changedElsewhere += differs;
@@ -96,18 +95,18 @@ TEST_F(Vegetation, ToggleChangesOnlyPlantAndWaterPixels) {
 TEST_F(Vegetation, ReflectedPlantsInBothPipelines) {
     NamedPose pose = poseNamed("meadow");
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("full"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("full"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     // Deferred: the water pixels of the G-buffer hold the mirrored scene, plants among it.
     std::vector<uint8_t> stencil = stencilOf(renderer, pose.scene, PipelineKind::Deferred);
     std::vector<float> info = readTarget(renderer, Target::Info);
     size_t reflectedPlants = 0, misplaced = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            unsigned flags = infoFlags(texel(info, kWidth, x, y));
+    for (int y = 0; y < kMediumHeight; ++y)
+        for (int x = 0; x < kMediumWidth; ++x) {
+            unsigned flags = infoFlags(texel(info, kMediumWidth, x, y));
             if ((flags & kSurfacePlant) && (flags & kSurfaceReflected)) {
                 ++reflectedPlants;
-                misplaced += stencil[size_t(y) * kWidth + size_t(x)] != kStencilWater;
+                misplaced += stencil[size_t(y) * kMediumWidth + size_t(x)] != kStencilWater;
             }
         }
     EXPECT_GT(reflectedPlants, 20u) << "no reflected plants in the deferred G-buffer's water";
@@ -129,7 +128,7 @@ TEST_F(Vegetation, WindMovesPlantsAndStillAirDoesNot) {
     pose.scene.hour = 10.0;  // the sky must not change with time
     pose.scene.water.reflections = false;
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     auto plantMask = [&](float wind, double time) {
         SceneSettings scene = pose.scene;
@@ -155,7 +154,7 @@ TEST_F(Vegetation, CpuAtlasDrawsTheSameFrame) {
     if (!contextHasComputeShaders()) GTEST_SKIP() << "no compute shaders on this context: only the CPU path exists";
     NamedPose pose = poseNamed("meadow");
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     PlantAtlas gpuAtlas(*shaders_, PlantInterpretation::Gpu), cpuAtlas(*shaders_, PlantInterpretation::Cpu);
     renderer.views().setPlantAtlas(&gpuAtlas);
     Image gpu = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
@@ -187,7 +186,7 @@ long long fragmentInvocations(Renderer& renderer, const SceneSettings& scene) {
 TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
     NamedPose pose = poseNamed("meadow");
     Renderer renderer(*shaders_, pose.scene);
-    renderer.configure(kWidth, kHeight, layoutNamed("standard"));
+    renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
 
     const std::vector<glm::vec4>& bounds = atlas->drawnBounds();
@@ -235,14 +234,14 @@ TEST_F(Vegetation, TrimmedBillboardsDrawTheSamePlantsWithFewerFragments) {
         for (size_t i = 0; i < reference.rgba.size(); i += 4)
             if (std::memcmp(&reference.rgba[i], &trimmed.rgba[i], 3) != 0) ++differing;
         std::printf("[vegetation] %s: trimmed vs whole billboards PSNR %.2f dB, %ld of %d pixels differ\n",
-                    pipelineName(kind), difference.psnrDb, differing, kWidth * kHeight);
+                    pipelineName(kind), difference.psnrDb, differing, kMediumWidth * kMediumHeight);
         // Measured: 84-89 dB, 6-12 edge pixels at 320x180 (a trimmed corner's atlas coordinates
         // interpolate a little differently from the whole cell's; the mip level is the billboard's
         // own, the same at every corner).
         // A GPU interpolates the two quads' coordinates with its own precision, and an alpha test
         // at a cut edge flips whole pixels (H100: 29-55 pixels, 47.8 dB): 40 dB there.
         EXPECT_GE(difference.psnrDb, cpuRasteriser() ? 60.0 : 40.0) << pipelineName(kind);
-        EXPECT_LE(differing, long(kWidth * kHeight / 200)) << pipelineName(kind) << ": more than 0.5% of pixels";
+        EXPECT_LE(differing, long(kMediumWidth * kMediumHeight / 200)) << pipelineName(kind) << ": more than 0.5% of pixels";
         if (trimmedCount < 0) {
             std::printf("[vegetation] no pipeline statistics query here: fragment counts not checked\n");
             continue;

@@ -10,7 +10,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
 
 class ViewValues : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
@@ -18,7 +17,7 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     NamedPose pose = defaultPose();
     Renderer renderer(*shaders_, pose.scene);
     const GBufferLayout& layout = layoutNamed(GetParam());
-    renderer.configure(kWidth, kHeight, layout);
+    renderer.configure(kSmallWidth, kSmallHeight, layout);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.renderFrame(pose.scene);
     renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
@@ -37,29 +36,29 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     const std::vector<float> stencilValues = renderer.views().readValues("stencil");
     const std::vector<float> radianceValues = renderer.views().readValues("radiance");
     int positionOff = 0, normalOff = 0, depthOff = 0, stencilOff = 0, radianceOff = 0, surfaces = 0;
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x) {
-            size_t i = size_t(y) * kWidth + size_t(x);
-            bool sky = nothingDrawn(layout, texel(info, kWidth, x, y), depth[i], renderer.targets().depth().farPlaneWindowDepth);
-            glm::vec4 p = texel(positions, kWidth, x, y), pv = texel(positionValues, kWidth, x, y);
+    for (int y = 0; y < kSmallHeight; ++y)
+        for (int x = 0; x < kSmallWidth; ++x) {
+            size_t i = size_t(y) * kSmallWidth + size_t(x);
+            bool sky = nothingDrawn(layout, texel(info, kSmallWidth, x, y), depth[i], renderer.targets().depth().farPlaneWindowDepth);
+            glm::vec4 p = texel(positions, kSmallWidth, x, y), pv = texel(positionValues, kSmallWidth, x, y);
             if (sky ? pv != glm::vec4(0.0f)
                     : glm::distance(glm::vec3(p), glm::vec3(pv)) > 1e-5f * (1.0f + glm::length(glm::vec3(p))) ||
                           std::fabs(pv.w - glm::length(glm::vec3(p))) > 1e-4f * (1.0f + pv.w))
                 ++positionOff;
             if (!sky) {
                 ++surfaces;
-                glm::vec3 n = layout.storedNormal(texel(normal, kWidth, x, y));
-                if (glm::distance(n, glm::vec3(texel(normalValues, kWidth, x, y))) > 2e-5f) ++normalOff;
+                glm::vec3 n = layout.storedNormal(texel(normal, kSmallWidth, x, y));
+                if (glm::distance(n, glm::vec3(texel(normalValues, kSmallWidth, x, y))) > 2e-5f) ++normalOff;
             }
             // Depth: eye distance along the view axis (standard depth: the NDC formula), window depth.
             double d = depth[i], ndc = d * 2.0 - 1.0;
             double eye = 2.0 * nearPlane * farPlane / (farPlane + nearPlane - ndc * (farPlane - nearPlane));
-            glm::vec4 dv = texel(depthValues, kWidth, x, y);
+            glm::vec4 dv = texel(depthValues, kSmallWidth, x, y);
             if (std::fabs(dv.x - eye) > 1e-3 * eye || std::fabs(dv.y - d) > 1e-7) ++depthOff;
-            if (texel(stencilValues, kWidth, x, y).x != float(stencil[i])) ++stencilOff;
-            if (texel(radianceValues, kWidth, x, y) != texel(radiance, kWidth, x, y)) ++radianceOff;
+            if (texel(stencilValues, kSmallWidth, x, y).x != float(stencil[i])) ++stencilOff;
+            if (texel(radianceValues, kSmallWidth, x, y) != texel(radiance, kSmallWidth, x, y)) ++radianceOff;
         }
-    EXPECT_GT(surfaces, kWidth * kHeight / 2);
+    EXPECT_GT(surfaces, kSmallWidth * kSmallHeight / 2);
     EXPECT_EQ(positionOff, 0);
     EXPECT_EQ(normalOff, 0);
     EXPECT_EQ(depthOff, 0);

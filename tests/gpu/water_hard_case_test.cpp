@@ -9,11 +9,11 @@ namespace {
 // Hard cases, each in both layouts and both pipelines: no NaN/Inf in any target, Reflection zero
 // outside the water, sky reflections equal the sky along the mirrored ray, forward and deferred
 // agree (full >= 55 dB, standard >= 45 dB).
-struct HardCase {
+struct HardWaterPose {
     std::string name;
     SceneSettings scene;
 };
-std::vector<HardCase> hardCases() {
+std::vector<HardWaterPose> hardWaterPoses() {
     // Over the lake's deep part (bed about -11.8 at (490, 100)), water level 0.
     auto at = [](double y, float pitch) { return sceneAtHeight(490.0, y, 100.0, 30.0f, pitch); };
     return {
@@ -28,8 +28,8 @@ std::vector<HardCase> hardCases() {
 class WaterHardCase : public GpuTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(WaterHardCase, FiniteReflectionOnlyInWaterAndPipelinesAgree) {
-    HardCase hard;
-    for (const HardCase& c : hardCases())
+    HardWaterPose hard;
+    for (const HardWaterPose& c : hardWaterPoses())
         if (c.name == GetParam()) hard = c;
     ASSERT_FALSE(hard.name.empty());
     Renderer renderer(*shaders_, hard.scene);

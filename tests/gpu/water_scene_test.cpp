@@ -12,7 +12,6 @@
 namespace oasis::gputest {
 namespace {
 
-constexpr int kWidth = 160, kHeight = 90;
 
 // Across the lake from the western shore: water reflecting hills, plants and sky.
 SceneSettings lakeScene() {
@@ -67,7 +66,7 @@ TEST_P(WaterSceneTest, EachSceneIsTheDeferredFramesOwnAndBothPipelinesShowIt) {
     Renderer renderer(*shaders_, scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     const GBufferLayout& layout = layoutNamed(GetParam());
-    renderer.configure(kWidth, kHeight, layout);
+    renderer.configure(kSmallWidth, kSmallHeight, layout);
 
     const Surfaces beforeLighting = deferredBefore(renderer, scene, "LightingPass");
     const Surfaces beforeMirroredLighting = deferredBefore(renderer, scene, "LightingPass.mirrored");
@@ -113,7 +112,7 @@ TEST_P(WaterSceneTest, MirroredWithoutReflectionsShowsTheDirectSceneAndSaysWhy) 
     SceneSettings scene = lakeScene();
     Renderer renderer(*shaders_, scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    renderer.configure(kWidth, kHeight, layoutNamed(GetParam()));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed(GetParam()));
     const Surfaces direct = filled(renderer, scene, PipelineKind::Deferred, WaterScene::Direct);
     scene.water.reflections = false;
     const Surfaces asked = filled(renderer, scene, PipelineKind::Deferred, WaterScene::Mirrored);
@@ -127,7 +126,7 @@ TEST_P(WaterSceneTest, AFrameStoppedEarlyIsShownAsItWasLeft) {
     const SceneSettings scene = lakeScene();
     Renderer renderer(*shaders_, scene);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
-    renderer.configure(kWidth, kHeight, layoutNamed(GetParam()));
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed(GetParam()));
     const Surfaces stopped = deferredBefore(renderer, scene, "WaterCompositePass");
     renderer.views().setWaterScene(WaterScene::Direct);
     renderer.views().render("albedo");

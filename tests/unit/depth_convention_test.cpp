@@ -19,7 +19,7 @@ CameraView viewWith(const DepthConvention& depth) {
     return view;
 }
 
-glm::vec3 toNdc(const glm::mat4& viewProjection, glm::vec3 relative) {
+glm::vec3 relativeToNdc(const glm::mat4& viewProjection, glm::vec3 relative) {
     glm::vec4 clip = viewProjection * glm::vec4(relative, 1.0f);
     return glm::vec3(clip) / clip.w;
 }
@@ -50,8 +50,8 @@ TEST(DepthConventionTable, NearAndFarPlanesWhereTheRowSays) {
         CameraView view = viewWith(depth);
         glm::mat4 vp = view.viewProjection();
         glm::vec3 forward = view.pose.forward();
-        float nearZ = toNdc(vp, forward * view.projection.nearPlane).z;
-        float farZ = toNdc(vp, forward * view.projection.farPlane).z;
+        float nearZ = relativeToNdc(vp, forward * view.projection.nearPlane).z;
+        float farZ = relativeToNdc(vp, forward * view.projection.farPlane).z;
         EXPECT_NEAR(nearZ, depth.nearPlaneNdcZ, 1e-4f);
         EXPECT_NEAR(farZ, depth.farPlaneNdcZ, 1e-4f);
         EXPECT_FLOAT_EQ(windowDepth(depth, depth.farPlaneNdcZ), depth.farPlaneWindowDepth);

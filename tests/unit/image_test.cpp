@@ -16,8 +16,12 @@
 
 #include <stb_image.h>
 
+#include "unit_support.h"
+
 namespace oasis {
 namespace {
+
+using namespace unittest;
 
 // An image with every pixel (r, g, b, a).
 Image solid(int w, int h, uint8_t r, uint8_t g, uint8_t b, uint8_t a = 255) {
@@ -27,15 +31,6 @@ Image solid(int w, int h, uint8_t r, uint8_t g, uint8_t b, uint8_t a = 255) {
             uint8_t* p = image.pixel(x, y);
             p[0] = r; p[1] = g; p[2] = b; p[3] = a;
         }
-    return image;
-}
-
-// A deterministic varied image (so flips and comparisons see distinct pixels).
-Image pattern(int w, int h) {
-    Image image(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 4; ++c) image.pixel(x, y)[c] = uint8_t((x * 7 + y * 31 + c * 64) & 255);
     return image;
 }
 

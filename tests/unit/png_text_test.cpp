@@ -15,16 +15,12 @@
 
 #include <stb_image.h>
 
+#include "unit_support.h"
+
 namespace oasis {
 namespace {
 
-Image pattern(int w, int h) {
-    Image image(w, h);
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-            for (int c = 0; c < 4; ++c) image.pixel(x, y)[c] = uint8_t((x * 7 + y * 31 + c * 64) & 255);
-    return image;
-}
+using namespace unittest;
 
 void appendBigEndian32(std::string& bytes, uint32_t value) {
     for (int shift = 24; shift >= 0; shift -= 8) bytes.push_back(char(uint8_t(value >> shift)));

@@ -16,14 +16,12 @@
 #include "render/shader_library.h"
 #include "render/shader_variants.h"
 
+#include "unit_support.h"
+
 namespace oasis {
 namespace {
 
-// The whole program table: the fixed programs and the debug views' (which debug/ adds).
-const std::deque<ProgramVariant>& everyProgramVariant() {
-    registerDebugViewPrograms();
-    return programVariants();
-}
+using namespace unittest;
 
 std::vector<std::string> splitLines(const std::string& text) {
     std::vector<std::string> lines;
@@ -31,13 +29,6 @@ std::vector<std::string> splitLines(const std::string& text) {
     std::string line;
     while (std::getline(in, line)) lines.push_back(line);
     return lines;
-}
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 size_t countOccurrences(const std::string& text, const std::string& needle) {

@@ -18,14 +18,12 @@
 #include "render/shader_library.h"
 #include "render/shader_variants.h"
 
+#include "unit_support.h"
+
 namespace oasis {
 namespace {
 
-// The whole program table: the fixed programs and the debug views' (which debug/ adds).
-const std::deque<ProgramVariant>& everyProgramVariant() {
-    registerDebugViewPrograms();
-    return programVariants();
-}
+using namespace unittest;
 
 // Bytes per pixel of a sized internal format, from the GL specification's format tables.
 int formatBytes(GLenum internalFormat) {
@@ -39,13 +37,6 @@ int formatBytes(GLenum internalFormat) {
         case 0: return 0;  // not stored
         default: return -1;
     }
-}
-
-std::string readText(const std::string& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 TEST(GBufferLayoutTable, NamesUniqueAndFindable) {
