@@ -15,11 +15,6 @@ using glm::dvec3;
 
 dvec3 rgb(const glm::vec4& v) { return dvec3(v.x, v.y, v.z); }
 
-double smoothstepOf(double edge0, double edge1, double x) {
-    double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
-
 bool isReflected(const OracleSurface& s) { return (s.flags & OASIS_SURFACE_REFLECTED) != 0u; }
 
 // The eye ray to the surface: a reflected surface is seen from the mirrored camera.

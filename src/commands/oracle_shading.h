@@ -14,6 +14,13 @@
 
 namespace oasis {
 
+// GLSL's smoothstep, in double (the shadow fade and the terrain's grid fade use it).
+inline double smoothstepOf(double edge0, double edge1, double x) {
+    double t = (x - edge0) / (edge1 - edge0);
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    return t * t * (3.0 - 2.0 * t);
+}
+
 // A surface as readGBuffer() returns it (common/surface.glsl's Surface).
 struct OracleSurface {
     glm::dvec3 albedo{0.0};

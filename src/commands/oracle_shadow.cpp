@@ -1,6 +1,8 @@
 // The CPU twin of sunShadow() (commands/oracle_shadow.h).
 #include "commands/oracle_shadow.h"
 
+#include "commands/oracle_shading.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,11 +21,6 @@ constexpr double kDepthTie = 1.0 / 65536.0;
 constexpr double kClipEdge = 1.0 / 16384.0;
 // How far the tap positions' texel may move between the two evaluations (texels).
 constexpr double kTexelSlack = 1.0 / 1024.0;
-
-double smoothstepOf(double edge0, double edge1, double x) {
-    double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
-    return t * t * (3.0 - 2.0 * t);
-}
 
 bool near(double value, double bound, double tolerance) { return std::fabs(value - bound) < tolerance; }
 
