@@ -2,10 +2,10 @@
 # `web`, registered only where the web build exists (build-web/oasis.html, made by
 # `bash .ci/setup-web`) or OASIS_WEB_TESTS is on; the web build itself is src/web/CMakeLists.txt.
 # Its HTTP is cpp-httplib's (Debian's libcpp-httplib-dev: a compiled library with a pkg-config file);
-# it shares only render/printable_text.cpp with oasis (the escaping of what it logs).
+# it shares only io/printable_text.cpp with oasis (the escaping of what it logs).
 pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
 add_executable(oasis-serve ${CMAKE_CURRENT_SOURCE_DIR}/src/serve/serve_main.cpp
-               ${CMAKE_CURRENT_SOURCE_DIR}/src/render/printable_text.cpp)
+               ${CMAKE_CURRENT_SOURCE_DIR}/src/io/printable_text.cpp)
 target_include_directories(oasis-serve PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
 target_compile_options(oasis-serve PRIVATE -Wall -Wextra)
 target_link_libraries(oasis-serve PRIVATE PkgConfig::HTTPLIB Threads::Threads)

@@ -22,7 +22,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from png_max_abs import read_png  # noqa: E402
 
 # The check's note on a frame shifted beyond every measured driver (kMeanShiftNote in
-# src/commands/check_case_judge.cpp): twice the largest |mean signed| of zink, softpipe and SwiftShader.
+# src/check/check_case_judge.cpp): twice the largest |mean signed| of zink, softpipe and SwiftShader.
 MEAN_NOTE = 0.1
 
 # Each class: the file under the shader tree, the line as it is, the line with the error.

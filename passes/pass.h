@@ -70,7 +70,7 @@ private:
 
 // The buffers passes hand each other besides the frame's targets: declared like targets so the
 // frame graph sees who produces and who consumes them, and the check's pass-by-pass search reads
-// what a pass wrote (commands/check_buffers.h). LightList (the point lights, SSBO or UBO) and
+// what a pass wrote (check/check_buffers.h). LightList (the point lights, SSBO or UBO) and
 // PlantInstances (the billboards' instance attributes) are uploaded by the renderer before the
 // first pass: the frame's inputs (frame/frame_graph.h's frameInputs), read by the passes.
 enum class Buffer { TerrainHeights, ShadowMaps, LightTiles, LightList, PlantInstances };
@@ -119,7 +119,7 @@ public:
     // a clear never passes. A stencil-masked full-screen draw is not such a clear.
     virtual bool clearsWholeTargets(const FrameSetup&) const { return false; }
     // The GL buffer that holds `buffer` as this pass last wrote it, where the pass owns it (the
-    // tile lists), else 0: what the check's pass-by-pass search reads (commands/check_buffers.h).
+    // tile lists), else 0: what the check's pass-by-pass search reads (check/check_buffers.h).
     virtual GLuint ownBuffer(Buffer) const { return 0; }
 
     void run(PassContext& context) {

@@ -1,5 +1,5 @@
 // The light list as the frame's light path reads it, for the check's pass-by-pass search
-// (src/commands/check_buffers.h): column i holds lightAt(i), its position and radius in row 0 and
+// (src/check/check_buffers.h): column i holds lightAt(i), its position and radius in row 0 and
 // its colour and intensity in row 1; pixel (0, 2) holds lightCount(). Compared between paths, an
 // SSBO list and a UBO list that the shaders read alike agree, and one read wrong is named.
 #include "common/lights.glsl"

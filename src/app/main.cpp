@@ -11,16 +11,16 @@
 
 #include "cli/options.h"
 #include "commands/caps_command.h"
-#include "commands/check.h"
-#include "commands/bench.h"
+#include "check/check.h"
+#include "bench/bench.h"
 #include "commands/driver_compare.h"
 #include "commands/headless_commands.h"
-#include "commands/window_app.h"
+#include "window/window_app.h"
 #include "context/gl_context.h"
 #include "context/runtime_dir.h"
 #include "gl/frame_capture.h"
-#include "render/interruption.h"
-#include "render/printable_text.h"
+#include "io/interruption.h"
+#include "io/printable_text.h"
 
 namespace {
 int runCommand(const oasis::Options& options) {

@@ -15,7 +15,7 @@
 #include "debug/debug_views.h"
 #include "frame/encoding_error.h"
 #include "render/depth_convention.h"
-#include "render/file_output.h"
+#include "io/file_output.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {
@@ -108,7 +108,7 @@ ParseResult parseCommandLine(const std::vector<std::string>& arguments) {
         if (compareOnly && (options.command == Command::Render || options.command == Command::Window ||
                             options.command == Command::Caps || options.command == Command::Probe))
             return fail("option " + flag + " belongs to `oasis compare`, `oasis bench` and the main job");
-        if (flag == "--allow-large") {  // a --reference over 4096 a side (render/png_text.h)
+        if (flag == "--allow-large") {  // a --reference over 4096 a side (io/png_text.h)
             if (options.command != Command::Compare) return fail("option --allow-large belongs to `oasis compare --reference`");
             options.allowLarge = true;
             continue;

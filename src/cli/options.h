@@ -42,18 +42,18 @@ struct SceneOptions {
 enum class Command { Default, Window, Render, Compare, Caps, Bench, Probe, Check };
 
 // `oasis check`'s own options beyond the references and --diff (cli/check_options.cpp parses them;
-// commands/check.h says what each does).
+// check/check.h says what each does).
 struct CheckOptions {
     std::vector<std::string> caseGlobs;  // --case GLOB (repeatable): only the cases whose names match
     int shardIndex = 1, shardCount = 1;  // --shard I/N: the cases whose 1-based number is I modulo N
     int retries = 1;                     // --retries N: a failing case runs again up to N times
     double caseTimeoutSeconds = 60.0;    // --case-timeout S: a case's child still running is stopped
     int jobs = 0;                        // --jobs N: children at a time (0: this machine's cores, at most 4)
-    std::string expectations;            // --expectations FILE (commands/check_expectations.h)
+    std::string expectations;            // --expectations FILE (check/check_expectations.h)
     std::string junit;                   // --junit FILE
     std::string expectRenderer;          // --expect-renderer REGEX: refuse any other driver
     std::string baseline;                // --baseline DIR: this driver's own frames, judged identical
-    // The child process a case renders in (commands/check_child.h); never typed by a user.
+    // The child process a case renders in (check/check_child.cpp); never typed by a user.
     std::string child;                   // --child frame|passes|driver
     std::string childOut;                // --child-out PREFIX: PREFIX.json, .png, .bin
     std::string childWhere;              // --where FILE: the pixels a pass-by-pass search looks at
@@ -101,12 +101,12 @@ struct Options {
     std::string reference;
     std::vector<std::string> sceneArguments;
     bool sizeGiven = false;  // --size on the command line (else a --reference's size is used)
-    bool allowLarge = false;  // --allow-large: a --reference up to 32768 a side, not 4096 (render/png_text.h)
+    bool allowLarge = false;  // --allow-large: a --reference up to 32768 a side, not 4096 (io/png_text.h)
     // --driver-timeout: a child render still running after this many seconds is killed (exit 1).
     double driverTimeoutSeconds = 300.0;
     bool driverTimeoutGiven = false;
     bool pipelineGiven = false;
-    // check (commands/check.h): the reference frames' directory (empty: found beside the shaders),
+    // check (check/check.h): the reference frames' directory (empty: found beside the shaders),
     // --write-references DIR, and --diff A.json B.json.
     std::string checkReferences, writeReferences;
     std::vector<std::string> diffReports;

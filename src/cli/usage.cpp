@@ -8,7 +8,7 @@
 #include "debug/debug_views.h"
 #include "frame/encoding_error.h"
 #include "render/depth_convention.h"
-#include "render/file_output.h"
+#include "io/file_output.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {

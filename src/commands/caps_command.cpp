@@ -9,30 +9,10 @@
 
 #include "commands/session.h"
 #include "context/gl_context.h"
+#include "io/json_text.h"
 
 namespace oasis {
 namespace {
-
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char escaped[8];
-                    std::snprintf(escaped, sizeof(escaped), "\\u%04x", c);
-                    out += escaped;
-                } else {
-                    out += c;
-                }
-        }
-    }
-    return out + "\"";
-}
 
 std::vector<std::pair<std::string, std::string>> limitRows(const gl::Limits& l) {
     auto triple = [](const int v[3]) {

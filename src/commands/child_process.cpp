@@ -15,7 +15,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "render/interruption.h"
+#include "io/interruption.h"
 
 namespace oasis {
 namespace {

@@ -15,7 +15,7 @@ struct ChildResult {
 
 // Runs `arguments` (argv[0] first) as /proc/self/exe with `environment` in a process group of its
 // own (so a hang is stopped whole: whatever the driver started too), collecting its output; after
-// `limitSeconds`, or on an ending signal (held meanwhile: render/interruption.h), the group is
+// `limitSeconds`, or on an ending signal (held meanwhile: io/interruption.h), the group is
 // stopped and the result says it timed out. Throws std::runtime_error when it cannot be started.
 ChildResult runChild(const std::vector<std::string>& arguments, const std::vector<std::string>& environment,
                      double limitSeconds);

@@ -21,15 +21,15 @@
 #include "cli/driver_setups.h"
 #include "cli/input_domains.h"
 #include "cli/scene_arguments.h"
-#include "commands/bench_report.h"
+#include "io/json_text.h"
 #include "commands/child_process.h"
 #include "commands/headless_commands.h"
 #include "commands/provenance.h"
 #include "context/gl_context.h"
-#include "render/file_output.h"
+#include "io/file_output.h"
 #include "render/image.h"
-#include "render/interruption.h"
-#include "render/printable_text.h"
+#include "io/interruption.h"
+#include "io/printable_text.h"
 
 extern char** environ;
 
@@ -207,7 +207,7 @@ std::string valueIn(const std::vector<std::pair<std::string, std::string>>& pair
 // saying why); otherwise `run` gets its options (all of them when no scene option was given, and
 // its pipeline when --pipeline was not) and 0 is returned.
 int adoptReference(const Options& options, const PngHeader& header, Side& reference, Options& run) {
-    // Every text of the file is printed escaped (render/printable_text.h): it came from outside.
+    // Every text of the file is printed escaped (io/printable_text.h): it came from outside.
     const std::string shownPath = printableText(options.reference);
     const char* path = shownPath.c_str();
     Provenance provenance;

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "commands/bench_report.h"
+#include "io/json_text.h"
 #include "commands/overview_overlay.h"
 #include "commands/probe_report.h"
 #include "commands/provenance.h"
@@ -26,8 +26,8 @@
 #include "frame/frame_readback.h"
 #include "frame/pixel_probe.h"
 #include "gl/frame_capture.h"
-#include "render/file_output.h"
-#include "render/printable_text.h"
+#include "io/file_output.h"
+#include "io/printable_text.h"
 
 namespace oasis {
 namespace {
@@ -107,7 +107,7 @@ struct ImageFile {
     Provenance provenance;
 };
 
-// Writes the images as one set (render/file_output.h): all of them or, on a failure, none, so the
+// Writes the images as one set (io/file_output.h): all of them or, on a failure, none, so the
 // directory never mixes this run's images with an earlier run's. On failure the message names the
 // file; a path is reported written only once it is complete under its name.
 bool writeImages(const std::string& directory, const std::vector<ImageFile>& images, std::vector<std::string>& written) {

@@ -7,7 +7,7 @@
 
 #include <set>
 
-#include "render/printable_text.h"
+#include "io/printable_text.h"
 
 namespace oasis {
 namespace {

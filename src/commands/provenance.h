@@ -1,4 +1,4 @@
-// Provenance: what made a PNG oasis writes, kept in the PNG's text chunks (render/png_text.h) under
+// Provenance: what made a PNG oasis writes, kept in the PNG's text chunks (io/png_text.h) under
 // one table of keys: oasis's version, the options that made the picture, its view and pipeline,
 // whether a legend strip is stacked under the frame, the renderer and GL version, the command.
 // compare --reference reads it to render the sender's frame or refuse a reference that cannot be
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/png_text.h"
+#include "io/png_text.h"
 
 namespace oasis {
 

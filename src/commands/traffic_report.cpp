@@ -3,7 +3,7 @@
 
 #include <cstdio>
 
-#include "commands/bench_report.h"
+#include "io/json_text.h"
 
 namespace oasis {
 namespace {

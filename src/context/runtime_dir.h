@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "render/interruption.h"
+#include "io/interruption.h"
 
 namespace oasis {
 

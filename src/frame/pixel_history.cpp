@@ -12,7 +12,7 @@
 #include "gl/objects.h"
 #include "passes/pass.h"
 #include "render/frame_setup.h"
-#include "render/json_text.h"
+#include "io/json_text.h"
 
 namespace oasis {
 namespace {
@@ -201,12 +201,12 @@ std::string historyJson(const std::vector<PassAtPixel>& history) {
     std::string json = "[";
     for (size_t i = 0; i < history.size(); ++i) {
         const PassAtPixel& entry = history[i];
-        json += (i ? ", " : "") + std::string("{\"pass\": ") + jsonQuoted(entry.pass) + ", \"ran\": " +
+        json += (i ? ", " : "") + std::string("{\"pass\": ") + jsonString(entry.pass) + ", \"ran\": " +
                 (entry.ran ? "true" : "false") + ", \"wrote\": " + (entry.wrote ? "true" : "false") +
-                ", \"reason\": " + jsonQuoted(entry.reason) + ", \"targets\": {";
+                ", \"reason\": " + jsonString(entry.reason) + ", \"targets\": {";
         for (size_t t = 0; t < entry.targets.size(); ++t) {
             const StoredTexel& texel = entry.targets[t];
-            json += (t ? ", " : "") + jsonQuoted(texel.target) + ": {\"format\": " + jsonQuoted(texel.format) +
+            json += (t ? ", " : "") + jsonString(texel.target) + ": {\"format\": " + jsonString(texel.format) +
                     ", \"stored\": [" + numberList(texel.values, ", ", "%.9g", true) + "], \"decoded\": [" +
                     numberList(decodedValues(texel), ", ", "%.9g", true) + "]}";
         }

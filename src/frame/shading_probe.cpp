@@ -16,7 +16,7 @@
 #include "passes/pass.h"
 #include "render/float_readback.h"
 #include "render/gbuffer_layout.h"
-#include "render/json_text.h"
+#include "io/json_text.h"
 #include "render/light_paths.h"
 #include "render/texture_units.h"
 
@@ -241,11 +241,11 @@ std::string shadingJson(const std::vector<ShadedSurface>& shading) {
     std::string json = "{";
     for (size_t s = 0; s < shading.size(); ++s) {
         const ShadedSurface& surface = shading[s];
-        json += (s ? ", " : "") + jsonQuoted(surface.name) + ": {\"what\": " + jsonQuoted(surface.what) + ", \"terms\": {";
+        json += (s ? ", " : "") + jsonString(surface.name) + ": {\"what\": " + jsonString(surface.what) + ", \"terms\": {";
         for (size_t t = 0; t < surface.terms.size(); ++t) {
             const ShadingTerm& term = surface.terms[t];
-            json += (t ? ", " : "") + jsonQuoted(term.name) + ": {\"value\": [" + numberList(term.values, ", ", "%.6g", true) +
-                    "], \"unit\": " + jsonQuoted(term.unit) + "}";
+            json += (t ? ", " : "") + jsonString(term.name) + ": {\"value\": [" + numberList(term.values, ", ", "%.6g", true) +
+                    "], \"unit\": " + jsonString(term.unit) + "}";
         }
         json += "}}";
     }

@@ -69,7 +69,7 @@ const std::vector<WorkaroundRow>& workaroundTable() {
          "the no-depth-clamp tier's own (its water a full-screen pass; on llvmpipe, not applied there, the "
          "forced fallback draws within the ES 3.0 tier's rule of the clamped frame: docs/compatibility.md)",
          "driver_bug.depth_clamp.softpipe", "", "no-depth-clamp"},
-        // The forced fallbacks a profile may name (commands/check_profile.h): a driver that
+        // The forced fallbacks a profile may name (check/check_profile.h): a driver that
         // crashes, hangs or draws wrong on a path is given the fallback that leaves the path out.
         forcedFallbackRow("force-no-compute", "no-compute", "compute shaders: the plants interpreted and the lights tiled on the CPU's side"),
         forcedFallbackRow("force-no-ssbo", "no-ssbo", "storage buffers: the UBO light list, volume lights"),

@@ -1,9 +1,9 @@
-// Image output (PNG encoded in memory through libpng, render/png_text.h, written whole), input and comparison.
+// Image output (PNG encoded in memory through libpng, io/png_text.h, written whole), input and comparison.
 #include "render/image.h"
 
-#include "render/file_input.h"
-#include "render/file_output.h"
-#include "render/printable_text.h"
+#include "io/file_input.h"
+#include "io/file_output.h"
+#include "io/printable_text.h"
 
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/png_text.h"
+#include "io/png_text.h"
 
 namespace oasis {
 
@@ -22,20 +22,20 @@ struct Image {
 };
 
 // The PNG file's bytes, encoded in memory by libpng, with `texts` as iTXt chunks before the image
-// data (render/png_text.h); false, with `why` if given, if the encoder fails (no memory, an empty
+// data (io/png_text.h); false, with `why` if given, if the encoder fails (no memory, an empty
 // image) or a text cannot be a chunk (a bad keyword, over kMaxPngTextBytes).
 bool encodePng(const Image& image, std::string& png, const std::vector<PngText>& texts = {}, std::string* why = nullptr);
 
-// Writes a PNG (with `texts`, as encodePng) whole or not at all (render/file_output.h); on failure
+// Writes a PNG (with `texts`, as encodePng) whole or not at all (io/file_output.h); on failure
 // returns false and `error` says "cannot write PATH: REASON".
 bool writePng(const std::string& path, const Image& image, std::string& error, const std::vector<PngText>& texts = {});
 
 // Reading is two steps, so that a caller judges what a file claims before paying for its pixels:
-// readPngFile reads the file (render/file_input.h: a regular file of at most 256 MiB) and its
-// header and text chunks (render/png_text.h: at most `maxSide` pixels a side, 4096 unless the
+// readPngFile reads the file (io/file_input.h: a regular file of at most 256 MiB) and its
+// header and text chunks (io/png_text.h: at most `maxSide` pixels a side, 4096 unless the
 // caller was given --allow-large); decodePng then decodes its pixels (any bit depth or channel
 // count, to 8-bit RGBA, alpha 255 where it has none). Each is false with `error` saying "cannot
-// read PATH: REASON" (the path escaped, render/printable_text.h) when the file is missing, not a
+// read PATH: REASON" (the path escaped, io/printable_text.h) when the file is missing, not a
 // regular file, not a PNG, cut, fails a CRC or is over the limits.
 bool readPngFile(const std::string& path, std::string& bytes, PngHeader& header, std::string& error,
                  uint32_t maxSide = kDefaultMaxPngSide);

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "render/file_input.h"
+#include "io/file_input.h"
 #include "render/texture_units.h"
 
 namespace oasis {

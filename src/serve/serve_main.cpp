@@ -18,7 +18,7 @@
 #include <cstring>
 #include <string>
 
-#include "render/printable_text.h"
+#include "io/printable_text.h"
 
 namespace {
 

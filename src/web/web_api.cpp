@@ -68,7 +68,7 @@ EMSCRIPTEN_KEEPALIVE int oasis_write_final_png(int deferred, const char* path) {
 }
 }
 
-#include "commands/check_judge.h"
+#include "check/check_judge.h"
 #include "render/image.h"
 
 namespace {
@@ -100,8 +100,8 @@ EMSCRIPTEN_KEEPALIVE char* oasis_judge(const char* result, const char* reference
 }
 
 #include "cli/options.h"
-#include "commands/check.h"
-#include "commands/check_diff.h"
+#include "check/check.h"
+#include "check/check_diff.h"
 #include "commands/json_value.h"
 
 extern "C" {

@@ -16,20 +16,9 @@
 #include "frame/frame_readback.h"
 #include "frame/pixel_probe.h"
 #include "render/image.h"
+#include "io/json_text.h"
 
 namespace oasis::web {
-namespace {
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\', out += c;
-        else if (c == '\n') out += "\\n";
-        else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
-        else out += c;
-    }
-    return out + "\"";
-}
-}  // namespace
 
 void showPageError(const std::string& message) {
     std::fprintf(stderr, "oasis: %s\n", message.c_str());

@@ -1,5 +1,5 @@
 // The browser's app: a WebGL 2 canvas from emscripten's GLFW and, on it, the native window's own
-// WindowApp (commands/window_app.h: panel, keys, inspector, live comparison), whose frame() the
+// WindowApp (window/window_app.h: panel, keys, inspector, live comparison), whose frame() the
 // page's main loop calls; and what the page's hooks (web_api.cpp) ask of it.
 #pragma once
 #include <chrono>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cli/options.h"
-#include "commands/window_app.h"
+#include "window/window_app.h"
 
 struct GLFWwindow;
 

@@ -1,6 +1,6 @@
-// render/interruption.h for the page: a browser tab sends no signals and runs no child processes,
+// io/interruption.h for the page: a browser tab sends no signals and runs no child processes,
 // so nothing is ever removed on an interruption; registering a file is a no-op.
-#include "render/interruption.h"
+#include "io/interruption.h"
 
 namespace oasis {
 

@@ -1,8 +1,8 @@
-// PNG files for the web build (render/png_text.h's encoding and reading): natively libpng does it
-// (render/png_libpng.cpp), but libpng and zlib are emscripten ports that download, which the web
+// PNG files for the web build (io/png_text.h's encoding and reading): natively libpng does it
+// (io/png_libpng.cpp), but libpng and zlib are emscripten ports that download, which the web
 // build does not use (docs/web.md); stb_image and stb_image_write (web_stb.cpp) do it here. The
 // page's PNGs stay in its own file system, so they carry no text chunks and none are read.
-#include "render/png_text.h"
+#include "io/png_text.h"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

@@ -1,5 +1,5 @@
 #!/bin/sh
-# `oasis check` end to end (commands/check.h), one case per ctest test:
+# `oasis check` end to end (check/check.h), one case per ctest test:
 #   quick      --quick on this machine's llvmpipe against the repository's reference frames: exit 0,
 #              report.json with the keys scripts depend on and counts that add up, report.html
 #              opened in chromium-headless-shell showing the same counts, within the 90 s budget

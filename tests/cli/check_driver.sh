@@ -1,5 +1,5 @@
 #!/bin/sh
-# `oasis check` on a broken driver and with a CI farm's conventions (commands/check.h), one case per
+# `oasis check` on a broken driver and with a CI farm's conventions (check/check.h), one case per
 # ctest test. The broken driver is llvmpipe with tests/driver/broken_gl.c preloaded: one GL entry
 # point aborts, hangs, does nothing, or aborts once.
 #   crash        glDispatchCompute aborts: the check goes on and writes its report (exit 1): every

@@ -1,4 +1,4 @@
-// Writes report.html (commands/check_html.h) for a made-up `oasis check` run, for
+// Writes report.html (check/check_html.h) for a made-up `oasis check` run, for
 // cli.check_html_in_chromium: 3 passing cases, 1 failing case, 2 skipped; the frames are the docs'
 // pictures at 256x144 (a check's size), so the page weighs what a real one does. Prints the
 // report's counts ("pass 3 fail 1 skip 2") for the test to compare with what the browser shows.
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "commands/check_html.h"
-#include "render/file_output.h"
+#include "check/check_html.h"
+#include "io/file_output.h"
 #include "render/image.h"
 
 namespace {

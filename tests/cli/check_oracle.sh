@@ -1,5 +1,5 @@
 #!/bin/sh
-# `oasis check`'s shading oracle (commands/shading_oracle.h) against perturbed copies of the shaders,
+# `oasis check`'s shading oracle (check/shading_oracle.h) against perturbed copies of the shaders,
 # one check case each: the sun's N.L 1 % too large (common/lighting.glsl) fails the day case's
 # oracle naming specular_lobe (whose first value is max(N.L, 0)); the point lights' falloff window
 # squared no more (common/lights.glsl) fails the night case's oracle naming a light ("light N");

@@ -1,5 +1,5 @@
 // Sends a signal to a command at the moment it starts writing a file: when a name containing
-// ".tmp-" (oasis's temporaries, render/file_output.h) is created in a watched directory or in a
+// ".tmp-" (oasis's temporaries, io/file_output.h) is created in a watched directory or in a
 // directory made inside one (compare --driver's staging directory). With --after SECONDS instead, at
 // that time after the start. Prints how the command ended; exit 0 if the signal ended it, 3 if the
 // command ended first (no write was seen: not a failure of oasis, the caller decides), 4 if the

@@ -7,7 +7,7 @@
 #include "frame/frame_readback.h"
 #include "gpu_test.h"
 
-#include "commands/bench_depth.h"
+#include "bench/bench_depth.h"
 #include "commands/session.h"
 
 namespace oasis::gputest {

@@ -1,9 +1,9 @@
-// The bench's depth-convention parts without GL (commands/bench_depth.h): reversed-z configurations
+// The bench's depth-convention parts without GL (bench/bench_depth.h): reversed-z configurations
 // beside the default layout's deferred ones, the distance bands, the CPU twin of
 // relativePositionFromDepth, and the depth-precision CSV and JSON.
 #include <gtest/gtest.h>
 
-#include "commands/bench_depth.h"
+#include "bench/bench_depth.h"
 
 namespace oasis {
 namespace {

@@ -1,4 +1,4 @@
-// Covers src/commands/bench_report.h and svg_plot.h: the knob table, the light counts, the
+// Covers src/bench/bench_report.h and svg_plot.h: the knob table, the light counts, the
 // configurations a run measures, the Pareto frontiers (per size and light count), a configuration's
 // CSV row and JSON object, and the SVG plot.
 #include <gtest/gtest.h>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "commands/bench_report.h"
-#include "commands/svg_plot.h"
+#include "bench/bench_report.h"
+#include "bench/svg_plot.h"
 #include "render/gbuffer_layout.h"
 
 namespace oasis {

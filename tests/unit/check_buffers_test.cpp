@@ -1,4 +1,4 @@
-// The buffers in the check's pass-by-pass search without GL (commands/check_buffers.h): the tile
+// The buffers in the check's pass-by-pass search without GL (check/check_buffers.h): the tile
 // lists checked against the lights that reach each pixel, decoded buffers compared in order or as
 // a multiset, their trip between processes, and the first divergence naming a buffer before the
 // targets of the passes that read it.
@@ -6,8 +6,8 @@
 
 #include <cstring>
 
-#include "commands/check_buffers.h"
-#include "commands/check_snapshots.h"
+#include "check/check_buffers.h"
+#include "check/check_snapshots.h"
 #include "common/shared_constants.glsl"
 #include "passes/light_tiling_pass.h"
 

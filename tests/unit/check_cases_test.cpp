@@ -1,4 +1,4 @@
-// oasis check's covering set (commands/check_cases.h): every compatible pair of values meets in
+// oasis check's covering set (check/check_cases.h): every compatible pair of values meets in
 // some case, no case holds a forbidden pair, the set is the same every time (names shared by every
 // driver's report), and --quick's subset meets every value.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <set>
 #include <string>
 
-#include "commands/check_cases.h"
+#include "check/check_cases.h"
 
 namespace oasis {
 namespace {

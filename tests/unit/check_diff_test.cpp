@@ -1,4 +1,4 @@
-// Covers src/commands/check_diff.h: two reports written by check_report.cpp's checkReportJson read
+// Covers src/check/check_diff.h: two reports written by check_report.cpp's checkReportJson read
 // back and compared: a regression, a fix, a new skip, a skip no longer, numbers that moved (and one
 // that moved too little), new and removed cases; the exit statuses of `oasis check --diff` (0, 1, 2)
 // and its messages for files that are missing, not JSON or not a check report.
@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "commands/check_diff.h"
-#include "commands/check_report.h"
+#include "check/check_diff.h"
+#include "check/check_report.h"
 
 namespace oasis {
 namespace {

@@ -2,10 +2,10 @@
 // child process, the driver's release in a version string, the JUnit file and the verdicts.
 #include <gtest/gtest.h>
 
-#include "commands/check_expectations.h"
-#include "commands/check_references.h"
-#include "commands/check_report.h"
-#include "commands/check_snapshots.h"
+#include "check/check_expectations.h"
+#include "check/check_references.h"
+#include "check/check_report.h"
+#include "check/check_snapshots.h"
 
 namespace oasis {
 namespace {

@@ -1,4 +1,4 @@
-// Covers src/commands/check_html.h: base64 against RFC 4648's vectors, HTML escaping, the command
+// Covers src/check/check_html.h: base64 against RFC 4648's vectors, HTML escaping, the command
 // line a case prints, and report.html itself: the counts in their ids, every report string escaped,
 // nothing fetched from elsewhere, and each shown image a data: URI whose base64 decodes back to
 // the PNG of that image (failing cases and the first passing ones only).
@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "commands/check_html.h"
+#include "check/check_html.h"
 #include "render/image.h"
 
 namespace oasis {

@@ -1,10 +1,10 @@
-// oasis check's image rules (commands/check_judge.h): a frame passes or fails each rule by its own
+// oasis check's image rules (check/check_judge.h): a frame passes or fails each rule by its own
 // numbers, and the error mask marks exactly the pixels above the rule's level.
 #include <gtest/gtest.h>
 
-#include "commands/check_case_judge.h"
-#include "commands/check_cases.h"
-#include "commands/check_judge.h"
+#include "check/check_case_judge.h"
+#include "check/check_cases.h"
+#include "check/check_judge.h"
 
 namespace oasis {
 namespace {

@@ -1,11 +1,11 @@
-// parseDecimal (render/decimal_text.h) gives std::from_chars's answers: the same double, and false
+// parseDecimal (io/decimal_text.h) gives std::from_chars's answers: the same double, and false
 // where from_chars reports result_out_of_range or stops before the end of the text.
 #include <gtest/gtest.h>
 
 #include <charconv>
 #include <cstring>
 
-#include "render/decimal_text.h"
+#include "io/decimal_text.h"
 
 namespace oasis {
 namespace {

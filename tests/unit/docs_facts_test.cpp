@@ -24,7 +24,7 @@ std::string page(const std::string& path) {
     return text.str();
 }
 
-// Keys 1 to 9 choose the first nine views of the table (commands/window_input.cpp); the window's
+// Keys 1 to 9 choose the first nine views of the table (window/window_input.cpp); the window's
 // pages and the browser's say so.
 TEST(DocsFacts, TheViewKeysAreTheFirstNineViews) {
     ASSERT_GE(debugViews().size(), 9u) << "the docs promise nine view keys";
@@ -35,7 +35,7 @@ TEST(DocsFacts, TheViewKeysAreTheFirstNineViews) {
 }
 
 // compare's "bytes/pixel" is the G-buffer with its depth-stencil; bench's B/px adds radiance,
-// reflection and final (commands/bench.cpp measureError). docs/bench.md states both for compact.
+// reflection and final (bench/bench.cpp measureError). docs/bench.md states both for compact.
 TEST(DocsFacts, CompactsBytesPerPixelAsBothCommandsCountThem) {
     const GBufferLayout& compact = *findGBufferLayout("compact");
     int gbuffer = gbufferBytesPerPixel(compact, standardDepthConvention());

@@ -1,4 +1,4 @@
-// Covers src/render/file_output.h: a file is written whole or not at all. Real failures, no mocks:
+// Covers src/io/file_output.h: a file is written whole or not at all. Real failures, no mocks:
 // a file-size limit (RLIMIT_FSIZE, set in a forked child so it cannot touch the test runner) makes
 // the Nth byte's write fail with EFBIG; /dev/full fails with ENOSPC.
 #include <gtest/gtest.h>
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "render/file_output.h"
+#include "io/file_output.h"
 
 namespace oasis {
 namespace {

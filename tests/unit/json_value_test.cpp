@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "commands/check_report.h"
+#include "check/check_report.h"
 #include "commands/json_value.h"
 
 namespace oasis {

@@ -14,7 +14,7 @@
 #include "cli/input_domains.h"
 #include "cli/option_table.h"
 #include "cli/options.h"
-#include "commands/bench_report.h"
+#include "bench/bench_report.h"
 #include "render/shader_library.h"
 
 namespace oasis {

@@ -1,13 +1,13 @@
-// The shading oracle's CPU shading (commands/oracle_shading.h) and sun shadow
-// (commands/oracle_shadow.h) on values worked out by hand: the sun overhead on a flat surface, a
+// The shading oracle's CPU shading (check/oracle_shading.h) and sun shadow
+// (check/oracle_shadow.h) on values worked out by hand: the sun overhead on a flat surface, a
 // specular lobe at 22.5 degrees, the point lights' falloff, water and fog, and the shadow maps'
 // answers (lit, shadowed, and the penumbra and depth tie the oracle leaves out).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "commands/oracle_shading.h"
-#include "commands/oracle_shadow.h"
+#include "check/oracle_shading.h"
+#include "check/oracle_shadow.h"
 
 namespace oasis {
 namespace {

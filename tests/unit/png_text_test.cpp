@@ -1,4 +1,4 @@
-// Covers src/render/png_text.h (libpng underneath): text chunks written and read back (stb_image, a
+// Covers src/io/png_text.h (libpng underneath): text chunks written and read back (stb_image, a
 // second decoder, agrees on the pixels), chunks written by others, malformed chunks left out with
 // a reason, a header over the limits refused before any pixel is decoded, a decompression bomb in a
 // text chunk refused, a cut file and a bad CRC reported with a message that is never empty.
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "render/image.h"
-#include "render/png_text.h"
+#include "io/png_text.h"
 
 #include <stb_image.h>
 

@@ -1,10 +1,10 @@
-// Covers src/render/printable_text.h: every byte a terminal could act on comes out spelled, valid
+// Covers src/io/printable_text.h: every byte a terminal could act on comes out spelled, valid
 // UTF-8 comes out as it went in, and the escaping cannot be forged (a backslash is escaped too).
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "render/printable_text.h"
+#include "io/printable_text.h"
 
 namespace oasis {
 namespace {

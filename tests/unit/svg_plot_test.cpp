@@ -1,4 +1,4 @@
-// Covers the point labels of src/commands/svg_plot.h: in a crowded panel (the bench's layouts sit
+// Covers the point labels of src/bench/svg_plot.h: in a crowded panel (the bench's layouts sit
 // on nearly the same point) no two labels overlap and every label stays inside the plot.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "commands/svg_plot.h"
+#include "bench/svg_plot.h"
 
 namespace oasis {
 namespace {
