@@ -1,6 +1,8 @@
 // The table of input domains and the strict reading of numbers against it.
 #include "cli/input_domains.h"
 
+#include "cli/options.h"
+
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -202,6 +204,55 @@ std::string inputDomainsHelp() {
         help += line;
     }
     return help;
+}
+
+// The readers of the values of several numbers (--size, --camera; declared in cli/options.h),
+// each number read against its own domain.
+bool parseSize(const std::string& text, int& width, int& height, std::string* error) {
+    size_t x = text.find('x');
+    std::string why;
+    int w = 0, h = 0;
+    bool ok = x != std::string::npos && parseIntInDomain(text.substr(0, x), inputDomain("--size W"), w, why) &&
+              parseIntInDomain(text.substr(x + 1), inputDomain("--size H"), h, why);
+    if (!ok) {
+        if (error)
+            *error = "--size expects WxH, each " + std::string(inputDomain("--size W").unit) + " in " +
+                     describeDomain(inputDomain("--size W")) + ", e.g. 1280x720, got '" + text + "'";
+        return false;
+    }
+    width = w;
+    height = h;
+    return true;
+}
+
+bool parseCameraPose(const std::string& text, CameraPose& pose, std::string* error, std::string* note) {
+    static const char* const kFields[] = {"--camera X", "--camera Y", "--camera Z", "--camera YAW", "--camera PITCH"};
+    auto fail = [&](const std::string& why) {
+        if (error) *error = why;
+        return false;
+    };
+    std::vector<std::string> items;
+    size_t start = 0;
+    for (size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
+        items.push_back(text.substr(start, comma - start));
+    items.push_back(text.substr(start));
+    if (items.size() != 5)
+        return fail("--camera expects X,Y,Z,YAW,PITCH (five numbers), got '" + text + "'");
+    double values[5];
+    bool yawWrapped = false;
+    for (size_t k = 0; k < 5; ++k) {
+        std::string why;
+        if (!parseInDomain(items[k], inputDomain(kFields[k]), values[k], why, k == 3 ? &yawWrapped : nullptr))
+            return fail(why + " (in --camera '" + text + "')");
+    }
+    pose.position = glm::dvec3(values[0], values[1], values[2]);
+    pose.yawDegrees = float(values[3]);
+    pose.pitchDegrees = float(values[4]);
+    const InputDomain& yaw = inputDomain("--camera YAW");
+    if (note) *note = yawWrapped ? "--camera YAW " + items[3] + " is " + formatNumber(values[3]) + " degrees, wrapped into [" +
+                                       formatNumber(yaw.low) + ", " + formatNumber(yaw.high) + ")"
+                                 : std::string();
+    return true;
 }
 
 }  // namespace oasis
