@@ -59,13 +59,23 @@ void drawShadowLayer(Renderer& renderer, int layer, float* out) {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     maps.bind();
-    glActiveTexture(GL_TEXTURE0 + kUnitShadowMap);  // the parameter is the bound array's
+    glActiveTexture(GL_TEXTURE0 + kUnitShadowMap);  // the parameters are the bound array's
+    // Compare mode off for texelFetch of the stored depth. OpenGL ES 3.0 then calls a depth texture
+    // with linear filtering incomplete (fetches return 0: every pixel shadowed), which WebGL 2 on
+    // SwiftShader enforces and Mesa does not: nearest filtering for the read too.
+    GLint minFilter = 0, magFilter = 0;
+    glGetTexParameteriv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, &minFilter);
+    glGetTexParameteriv(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, &magFilter);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     GLuint program = renderer.shaders().program("readback.shadow-layer");
     glUseProgram(program);
     glUniform1i(glGetUniformLocation(program, "shadowLayer"), layer);
     renderer.geometry().drawFullscreenTriangle();
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, minFilter);
+    glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, magFilter);
     glActiveTexture(GL_TEXTURE0);
     std::vector<float> rgba(size_t(size) * size_t(size) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.name());
