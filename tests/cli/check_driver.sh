@@ -103,6 +103,9 @@ print("crash: %d crash, %d pass" % (report["summary"]["crash"], report["summary"
         fail "the stand-in driver no longer crashes without the profile"
     echo "check_driver crash: OK in $(($(date +%s) - start)) s" ;;
 hang)
+    # The check's scratch directory (its children's --child-out) in this test's own folder, so that
+    # the search for children left running finds this check's only, not another's on the machine.
+    mkdir -p scratch && TMPDIR=$PWD/scratch && export TMPDIR
     broken glDispatchCompute hang check --case '0[45]-*' --case-timeout 4 --retries 0 --references "$references" \
         --out-dir out > out.txt 2> err.txt
     code=$? elapsed=$(($(date +%s) - start))
@@ -114,7 +117,7 @@ assert tiled["verdict"] == "timeout" and "--case-timeout" in tiled["reason"], ti
 assert "LightTilingPass" in tiled["reason"], tiled["reason"]
 assert case("05-")["verdict"] == "pass", case("05-")
 print("hang: 04 timeout (%s), 05 pass" % tiled["reason"][:80])'
-    pgrep -f "check --child" > /dev/null && fail "a child of the check is still running"
+    pgrep -f "check --child .* --child-out $TMPDIR/" > /dev/null && fail "a child of the check is still running"
     echo "check_driver hang: OK in $elapsed s" ;;
 flake)
     broken glDispatchCompute abort-nth check --case '01-*' --jobs 1 --retries 1 --references "$references" \
