@@ -253,9 +253,13 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     frameSinks_ = sinkOfFrame(!stopBefore.empty(), &beyondFrame);
     // The graph's plan of the frame's targets: those it does not use are given back (a forward
     // frame holds no G-buffer), those whose lifetimes do not overlap may share a texture.
-    lifetimes_ = oasis::targetLifetimes(pipeline.graph(frame_, frameSinks_), frame_, beyondFrame,
-                                        passContext.reflectionTargets != nullptr);
+    const FrameGraph graph = pipeline.graph(frame_, frameSinks_);
+    const bool reduced = passContext.reflectionTargets != nullptr;
+    lifetimes_ = oasis::targetLifetimes(graph, frame_, beyondFrame,
+                                        reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
     targets_->plan(lifetimes_);
+    if (reduced)  // the reduced reflection's own targets: its passes' alone
+        reflectionTargets_->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) stepsRan_.push_back(pass.sceneStep());

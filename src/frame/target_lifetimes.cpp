@@ -11,7 +11,7 @@
 namespace oasis {
 
 std::vector<TargetLifetime> targetLifetimes(const FrameGraph& graph, const FrameSetup& frame,
-                                            const std::vector<Target>& beyondFrame, bool reducedReflection) {
+                                            const std::vector<Target>& beyondFrame, StepsOf steps) {
     std::array<int, size_t(Target::Count)> first, last;
     first.fill(-1);
     last.fill(-1);
@@ -20,7 +20,9 @@ std::vector<TargetLifetime> targetLifetimes(const FrameGraph& graph, const Frame
         const GraphStep& step = graph.steps[k];
         if (!step.runs) continue;
         if (firstRunning < 0) firstRunning = int(k);
-        if (reducedReflection && step.pass->drawsInReflectionTargets()) continue;
+        const bool reflection = step.pass->drawsInReflectionTargets();
+        if (steps == StepsOf::FrameWithoutReducedReflection && reflection) continue;
+        if (steps == StepsOf::ReducedReflection && !reflection) continue;
         for (const Access& access : step.pass->accesses(frame)) {
             const Target* target = std::get_if<Target>(&access.resource);
             if (!target) continue;
@@ -61,9 +63,6 @@ std::string targetLifetimesText(const FrameGraph& graph, const std::vector<Targe
                       memory == lifetime.target ? "" : targetName(memory));
         text += line;
     }
-    if (targets.displayBorrows())
-        text += std::string("# Display      (the views, after the frame), in the memory of ") +
-                targetName(targets.displayMemory()) + "\n";
     char held[160];
     std::snprintf(held, sizeof(held), "# targets held after the frame: %.2f MiB (Display included)\n",
                   targets.heldBytes() / mebibyte);

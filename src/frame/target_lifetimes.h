@@ -13,16 +13,19 @@ struct FrameGraph;
 struct FrameSetup;
 class FrameTargets;
 
-// For every target a running step touches: its first and last step. A target in `beyondFrame` (the
-// frame's sink, what code after the frame writes) lives from the first step to kBeyondFrame, even
-// where no step touches it, so it never lends its memory. Steps drawn into the reduced reflection's
-// own targets (`reducedReflection` and Pass::drawsInReflectionTargets) touch none of the frame's.
+// Which running steps a set of targets is drawn by: the frame's (every step, or every step but those
+// drawn into the reduced reflection's own targets, Pass::drawsInReflectionTargets) or the reduced
+// reflection's (those steps alone).
+enum class StepsOf { WholeFrame, FrameWithoutReducedReflection, ReducedReflection };
+
+// For every target a running step of `steps` touches: its first and last step. A target in
+// `beyondFrame` (the frame's sink, what code after the frame writes) lives to kBeyondFrame, and from
+// the first step where no step touches it, so it never lends its memory.
 std::vector<TargetLifetime> targetLifetimes(const FrameGraph& graph, const FrameSetup& frame,
-                                            const std::vector<Target>& beyondFrame, bool reducedReflection);
+                                            const std::vector<Target>& beyondFrame, StepsOf steps);
 
 // Lines that open with "# " after render --graph's passes: each target the frame holds with its
-// first and last pass, its size and format, and whose memory it uses; Display where it borrows one;
-// then the memory held.
+// first and last pass, its size and format, and whose memory it uses; then the memory held.
 std::string targetLifetimesText(const FrameGraph& graph, const std::vector<TargetLifetime>& lifetimes,
                                 const FrameTargets& targets);
 

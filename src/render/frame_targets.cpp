@@ -97,12 +97,16 @@ GLuint FrameTargets::texture(Target target) const {
         held = std::move(pooled->texture);
         pool_.erase(pooled);
     } else {
+        // Made in the middle of a pass's bindings: the active unit's texture is put back after.
+        GLint bound = 0;
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
         while (glGetError() != GL_NO_ERROR) {}
         held = gl::createTargetTexture(labelPrefix_ + targetLabel(layout_, depth_, memory), format.internalFormat,
                                        width_, height_);
         if (GLenum error = glGetError(); error != GL_NO_ERROR)
             throw std::runtime_error("allocating a " + std::to_string(width_) + "x" + std::to_string(height_) + " " +
                                      targetName(memory) + " target failed: " + gl::errorString(error));
+        glBindTexture(GL_TEXTURE_2D, GLuint(bound));
     }
     // Labelled by every target it is lent to this frame, as capture tools list it.
     std::string label = labelPrefix_ + targetLabel(layout_, depth_, memory);
@@ -142,23 +146,6 @@ void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
     for (int t = 0; t < int(Target::Count); ++t)
         if (realiased || !used[t]) giveBack(Target(t));
     memory_ = memory;
-    // Display borrows an RGBA8 memory all of whose holders end inside the frame, and then gives its own back.
-    displayMemory_ = Target::Count;
-    for (const TargetLifetime& lifetime : lifetimes) {
-        const Target owner = memory_[size_t(lifetime.target)];
-        if (targetFormat(layout_, depth_, owner).internalFormat != GL_RGBA8) continue;
-        const bool endsInFrame = std::none_of(lifetimes.begin(), lifetimes.end(), [&](const TargetLifetime& other) {
-            return memory_[size_t(other.target)] == owner && other.last == kBeyondFrame;
-        });
-        if (endsInFrame) {
-            displayMemory_ = owner;
-            break;
-        }
-    }
-    if (displayBorrows() && display_.name()) {
-        forgetFramebuffersOf(display_.name());
-        display_.reset();
-    }
     for (auto entry = pool_.begin(); entry != pool_.end();) {
         if (entry->idlePlans > kPoolFrames) {
             forgetFramebuffersOf(entry->texture.name());
@@ -183,8 +170,12 @@ double FrameTargets::pooledBytes() const {
 }
 
 GLuint FrameTargets::displayTexture() const {
-    if (displayBorrows()) return texture(displayMemory_);
-    if (!display_.name()) display_ = gl::createTargetTexture(labelPrefix_ + "Display", GL_RGBA8, width_, height_);
+    if (!display_.name()) {
+        GLint bound = 0;  // as texture(): the active unit's texture is put back
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+        display_ = gl::createTargetTexture(labelPrefix_ + "Display", GL_RGBA8, width_, height_);
+        glBindTexture(GL_TEXTURE_2D, GLuint(bound));
+    }
     return display_.name();
 }
 

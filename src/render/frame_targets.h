@@ -59,12 +59,10 @@ public:
     // stored ones in kGBufferColourTargets order, no gaps. -1 for a target it does not hold.
     int gbufferSlot(Target target) const;
     int gbufferSlotCount() const { return gbufferSlot(Target::Info) + 1; }
-    // Display: its own texture, or after a frame whose plan lets it (displayBorrows) the memory of an
-    // RGBA8 target that no one uses after the frame's passes (the G-buffer albedo of a deferred frame
-    // seen through the final view), since the views draw it after the frame.
+    // Display, made at its first use: its own texture always. (Lent the memory of an RGBA8 target
+    // that ends inside the frame, it changed views' pictures after frames of another sink,
+    // FrameSink.EveryViewIsTheSameAfterItsOwnFrameAsAfterAWholeFrame, for a reason not found yet.)
     GLuint displayTexture() const;
-    bool displayBorrows() const { return displayMemory_ != Target::Count; }
-    Target displayMemory() const { return displayMemory_; }
     // The framebuffer over `colour` (attachments 0.. in that order, the targets this layout does not
     // store left out, so the draw buffers have no gaps: zink leaves every column past 1024
     // unrendered at 1280x720 when one in the middle is GL_NONE) and `depth` (DepthStencil or
@@ -91,7 +89,6 @@ private:
     };
     mutable std::vector<Pooled> pool_;
     mutable gl::Texture display_;
-    Target displayMemory_ = Target::Count;  // the target whose memory Display borrows; Count: its own
     std::string labelPrefix_;
     // Keyed by the textures attached, since a target's texture changes with the plan.
     using FramebufferKey = std::pair<std::vector<GLuint>, GLuint>;

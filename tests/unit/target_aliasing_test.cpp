@@ -60,7 +60,7 @@ TEST(TargetLifetimes, TheForwardFrameUsesNoGBufferTheDeferredFrameDoes) {
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         Pipeline pipeline(kind);
         std::vector<TargetLifetime> lifetimes =
-            targetLifetimes(pipeline.graph(frame, sink), frame, {Target::Final}, false);
+            targetLifetimes(pipeline.graph(frame, sink), frame, {Target::Final}, StepsOf::WholeFrame);
         const bool deferred = kind == PipelineKind::Deferred;
         for (Target gbuffer : {Target::Albedo, Target::Normal, Target::Info})
             EXPECT_EQ(hasLifetime(lifetimes, gbuffer), deferred) << pipelineName(kind) << " " << targetName(gbuffer);
@@ -70,6 +70,27 @@ TEST(TargetLifetimes, TheForwardFrameUsesNoGBufferTheDeferredFrameDoes) {
                                   [](const TargetLifetime& l) { return l.target == Target::Final; });
         ASSERT_NE(final, lifetimes.end());
         EXPECT_EQ(final->last, kBeyondFrame) << "the sink lives past the frame";
+    }
+}
+
+TEST(TargetLifetimes, TheReducedReflectionsTargetsAreItsPassesAlone) {
+    FrameSetup frame;
+    frame.positionFromDepth = true;
+    frame.reflectionsActive = true;
+    frame.reflectionDivisor = 2;
+    const std::vector<Resource> sink{Target::Final};
+    for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+        SCOPED_TRACE(pipelineName(kind));
+        Pipeline pipeline(kind);  // the graph points at its passes
+        FrameGraph graph = pipeline.graph(frame, sink);
+        std::vector<TargetLifetime> reduced = targetLifetimes(graph, frame, {}, StepsOf::ReducedReflection);
+        std::vector<TargetLifetime> rest = targetLifetimes(graph, frame, {}, StepsOf::FrameWithoutReducedReflection);
+        EXPECT_TRUE(hasLifetime(reduced, Target::Reflection));
+        EXPECT_FALSE(hasLifetime(reduced, Target::Final));
+        EXPECT_FALSE(hasLifetime(reduced, Target::Radiance));
+        EXPECT_EQ(hasLifetime(reduced, Target::Albedo), kind == PipelineKind::Deferred);
+        EXPECT_TRUE(hasLifetime(rest, Target::Reflection)) << "the upsample's write and the composite's read";
+        EXPECT_FALSE(hasLifetime(rest, Target::SceneDepth)) << "only the mirrored lighting reads the depth copy";
     }
 }
 
