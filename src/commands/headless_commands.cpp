@@ -25,6 +25,7 @@
 #include "frame/frame_graph.h"
 #include "frame/frame_readback.h"
 #include "frame/pixel_probe.h"
+#include "frame/target_lifetimes.h"
 #include "gl/frame_capture.h"
 #include "io/file_output.h"
 #include "io/printable_text.h"
@@ -44,6 +45,7 @@ struct Comparison {
     TimingClock clock;                        // how the passes were timed (measured with --passes)
     std::string forwardGraph, deferredGraph;  // each frame's graph as JSON (frame/frame_graph.h)
     FrameTraffic forwardTraffic, deferredTraffic, floorTraffic;  // counted with --passes
+    double forwardTargetBytes = 0, deferredTargetBytes = 0;     // each frame's targets, as allocated
 };
 
 bool ensureDirectory(const std::string& path, std::string& error) {
@@ -73,8 +75,10 @@ Comparison compareFrame(RenderSession& session, const RoundPlan& plan, bool pass
     if (capture) gl::armCaptures(2);
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
     result.forwardGraph = frameGraphJson(renderer.frameGraph());
+    result.forwardTargetBytes = renderer.targetMemoryBytes();
     result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
     result.deferredGraph = frameGraphJson(renderer.frameGraph());
+    result.deferredTargetBytes = renderer.targetMemoryBytes();
     result.difference = compareImages(result.forward, result.deferred);
     result.differing = countDifferingPixels(result.forward, result.deferred);
     result.times = timePipelinesInTurn(renderer, session.scene, plan);
@@ -244,7 +248,7 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 "\"shader_dir\": \"%s\", \"plant_interpretation\": \"%s\", \"plant_atlas_ms\": %.4f, "
                 "\"lights\": %d, \"lights_path\": \"%s\", \"lights_path_reason\": \"%s\", \"lights_dropped\": %d, "
                 "\"light_method\": \"%s\", \"light_method_reason\": \"%s\", "
-                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s%s%s%s%s%s%s}\n",
+                "\"frame_order\": \"rounds\", \"frame_clock\": \"wall-glfinish\"%s%s%s%s%s%s%s%s%s%s}\n",
                 c.difference.psnrDb, c.difference.maxAbs, c.difference.rmse, c.times.forwardMs, c.times.deferredMs,
                 c.times.floorMs, c.times.forwardRatio, c.times.deferredRatio, c.times.deferredRatioLowest,
                 c.times.deferredRatioHighest, timingSpreadJson(c.times).c_str(), timesStatsJson(c.times).c_str(),
@@ -263,6 +267,8 @@ void printJson(const Options& options, const RenderSession& session, const Compa
                 passIntervalsJson("deferred_passes_ci_ms", c.deferredPassStats).c_str(),
                 pipelineTrafficJson("forward", c.forwardTraffic).c_str(),
                 pipelineTrafficJson("deferred", c.deferredTraffic).c_str(), floorTrafficJson(c.floorTraffic).c_str(),
+                (c.forwardPasses.empty() ? std::string()
+                                         : targetMemoryJson(c.forwardTargetBytes, c.deferredTargetBytes)).c_str(),
                 graphJson(c).c_str());
 }
 
@@ -414,6 +420,8 @@ int runRenderCommand(const Options& options) {
                         options.view.c_str(),
                         options.pipeline == PipelineKind::Forward ? "deferred" : "forward");
             std::printf("%s", frameGraphText(renderer.frameGraph()).c_str());
+            std::printf("%s", targetLifetimesText(renderer.frameGraph(), renderer.targetLifetimes(),
+                                                  renderer.targets()).c_str());
             return 0;
         }
         std::string error;

@@ -77,4 +77,11 @@ std::string floorTrafficJson(const FrameTraffic& floor) {
            ", \"traffic_invocations\": " + jsonString(describeInvocationCount(floor));
 }
 
+std::string targetMemoryJson(double forwardBytes, double deferredBytes) {
+    char text[128];
+    std::snprintf(text, sizeof(text), ", \"target_memory_bytes\": {\"forward\": %.0f, \"deferred\": %.0f}",
+                  forwardBytes, deferredBytes);
+    return text;
+}
+
 }  // namespace oasis

@@ -17,5 +17,8 @@ std::string trafficSummary(const FrameTraffic& forward, const FrameTraffic& defe
 std::string pipelineTrafficJson(const char* pipeline, const FrameTraffic& traffic);
 // `, "floor_bytes_per_pixel": ..., "traffic_invocations": "..."`; "" when not counted.
 std::string floorTrafficJson(const FrameTraffic& floor);
+// `, "target_memory_bytes": {"forward": ..., "deferred": ...}`: the GPU memory of each frame's
+// targets as the frame graph allocated them (Renderer::targetMemoryBytes), beside its traffic.
+std::string targetMemoryJson(double forwardBytes, double deferredBytes);
 
 }  // namespace oasis

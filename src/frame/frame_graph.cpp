@@ -213,19 +213,6 @@ std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) 
     GLint framebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     if (framebuffer == 0) return {};
-    // What a texture attached there is: a target of the frame's (or of the reduced reflection's).
-    auto targetOf = [&](GLint texture) -> const Target* {
-        static Target found;
-        for (const FrameTargets* targets : {&context.targets, context.reflectionTargets}) {
-            if (!targets) continue;
-            for (int t = 0; t < int(Target::Count); ++t)
-                if (targets->layout().stores(Target(t)) && GLint(targets->texture(Target(t))) == texture) {
-                    found = Target(t);
-                    return &found;
-                }
-        }
-        return nullptr;  // not a frame target (the shadow maps' own framebuffers)
-    };
     std::vector<Access> declared = pass.accesses(context.frame);
     auto declaresAttached = [&](Target target, bool depth) {
         return std::any_of(declared.begin(), declared.end(), [&](const Access& access) {
@@ -233,6 +220,18 @@ std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) 
             if (!declaredTarget || *declaredTarget != target) return false;
             return depth ? access.use != Use::Sample : isWrite(access.use);
         });
+    };
+    // What a texture attached there is: the targets of the frame's (or of the reduced reflection's)
+    // that hold it now (several where the plan aliases them); none for the shadow maps' own.
+    auto heldBy = [&](GLint texture) {
+        std::vector<Target> found;
+        for (const FrameTargets* targets : {&context.targets, context.reflectionTargets}) {
+            if (!targets) continue;
+            for (int t = 0; t < int(Target::Count); ++t)
+                if (targets->heldTexture(Target(t)) != 0 && GLint(targets->heldTexture(Target(t))) == texture)
+                    found.push_back(Target(t));
+        }
+        return found;
     };
     GLint maxAttachments = 0;
     glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &maxAttachments);
@@ -244,9 +243,9 @@ std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) 
         if (type != GL_TEXTURE) return;
         glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
                                               &texture);
-        const Target* target = targetOf(texture);
-        if (target && !declaresAttached(*target, depth))
-            problems += (problems.empty() ? "" : "; ") + pass.name() + " draws into " + targetName(*target) +
+        std::vector<Target> held = heldBy(texture);
+        if (!held.empty() && std::none_of(held.begin(), held.end(), [&](Target t) { return declaresAttached(t, depth); }))
+            problems += (problems.empty() ? "" : "; ") + pass.name() + " draws into " + targetName(held.front()) +
                         ", which it does not declare";
     };
     for (GLint k = 0; k < maxAttachments; ++k) check(GLenum(GL_COLOR_ATTACHMENT0 + k), false);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "debug/debug_views.h"
+#include "frame/target_lifetimes.h"
 #include "gl/capabilities.h"
 #include "gl/frame_capture.h"
 #include "passes/pass.h"
@@ -248,7 +249,17 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         reflectionTargets_.reset();  // back at full resolution: the reduced set's memory goes back too
     }
     stepsRan_.clear();
-    frameSinks_ = sinkOfFrame(!stopBefore.empty());
+    std::vector<Target> beyondFrame;
+    frameSinks_ = sinkOfFrame(!stopBefore.empty(), &beyondFrame);
+    // The graph's plan of the frame's targets: those it does not use are given back (a forward
+    // frame holds no G-buffer), those whose lifetimes do not overlap may share a texture.
+    const FrameGraph graph = pipeline.graph(frame_, frameSinks_);
+    const bool reduced = passContext.reflectionTargets != nullptr;
+    lifetimes_ = oasis::targetLifetimes(graph, frame_, beyondFrame,
+                                        reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
+    targets_->plan(lifetimes_);
+    if (reduced)  // the reduced reflection's own targets: its passes' alone
+        reflectionTargets_->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) stepsRan_.push_back(pass.sceneStep());
@@ -264,8 +275,18 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
 
 FrameGraph Renderer::frameGraph() const { return pipelineOf(active_).graph(frame_, frameSinks_); }
 
-std::vector<Resource> Renderer::sinkOfFrame(bool stopped) const {
-    if (views_.sink_.empty() || stopped) return frameOutputs();
+std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* beyondFrame) const {
+    // What lives past the frame: its sink, and what the views' fill and the composite after it write.
+    auto targetsIn = [&](const std::vector<Resource>& resources) {
+        if (!beyondFrame) return;
+        for (const Resource& resource : resources)
+            if (const Target* target = std::get_if<Target>(&resource)) beyondFrame->push_back(*target);
+    };
+    if (views_.sink_.empty() || stopped) {
+        targetsIn(frameOutputs());
+        targetsIn(everyResource());  // the fill of a whole frame's views may write any target
+        return frameOutputs();
+    }
     // What the views read, walked back through what runs for them after the frame, last first:
     // the views' fill (ensureGBuffer), then the water laid onto Radiance (ensureRadiance).
     std::vector<Resource> reads;
@@ -278,12 +299,19 @@ std::vector<Resource> Renderer::sinkOfFrame(bool stopped) const {
         surfaces = surfaces || readsSceneSurfaces(view);
         radiance = radiance || view.source == ViewSource::Radiance;
     }
-    if (surfaces) reads = readsBefore(viewFill_.passes(views_.waterScene_, frame_), frame_, reads);
+    targetsIn(reads);
+    if (surfaces) {
+        std::vector<const Pass*> fill = viewFill_.passes(views_.waterScene_, frame_);
+        for (const Pass* pass : fill) targetsIn(pass->writes(frame_));
+        reads = readsBefore(fill, frame_, reads);
+    }
     if (radiance && frame_.toneMapFused) {
         FrameSetup separate = frame_;  // ensureRadiance runs the composite as the separate pass
         separate.toneMapFused = false;
+        targetsIn(waterComposite_.writes(separate));
         reads = readsBefore({&waterComposite_}, separate, reads);
     }
+    targetsIn(reads);
     return reads;
 }
 

@@ -95,6 +95,13 @@ public:
     const FrameTargets& targets() const { return *targets_; }
     // The reflection's own targets when a frame drew it at a reduced resolution; null before.
     const FrameTargets* reflectionTargets() const { return reflectionTargets_.get(); }
+    // The GPU memory of the frame's targets now (FrameTargets::heldBytes: what the graph's plan
+    // left allocated after the last frame), the reduced reflection's included.
+    // The last frame's targets with their lifetimes, as its plan gave them (render --graph).
+    const std::vector<TargetLifetime>& targetLifetimes() const { return lifetimes_; }
+    double targetMemoryBytes() const {
+        return targets_->heldBytes() + (reflectionTargets_ ? reflectionTargets_->heldBytes() : 0.0);
+    }
     const FrameSetup& lastFrame() const { return frame_; }
     ShaderLibrary& shaders() { return shaders_; }
     const SceneGeometry& geometry() const { return geometry_; }
@@ -120,7 +127,9 @@ private:
     // its frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.
     void prepareReducedReflection();
     void uploadLights();
-    std::vector<Resource> sinkOfFrame(bool stopped) const;
+    // The frame's sink; with `beyondFrame`, also the targets that live past the frame (the sink's,
+    // and those the views' fill and the composite after the frame write), which lend no memory.
+    std::vector<Resource> sinkOfFrame(bool stopped, std::vector<Target>* beyondFrame = nullptr) const;
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
@@ -166,6 +175,7 @@ private:
     std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
     bool radianceAwaitsWater_ = false;  // a fused frame's composite has not been laid onto Radiance
     std::vector<Resource> frameSinks_ = frameOutputs();  // the last frame's sink
+    std::vector<TargetLifetime> lifetimes_;               // and its targets' lifetimes
 };
 
 }  // namespace oasis

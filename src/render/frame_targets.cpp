@@ -1,6 +1,7 @@
 // Allocation of the frame's render targets.
 #include "render/frame_targets.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -63,29 +64,137 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
                                  gibibytes(bytes) + " GiB of render targets (" +
                                  layout.name + " layout, " + depth.name + " depth); the limit is " +
                                  std::to_string(int(kMaxTargetBytes / double(1u << 30))) + " GiB");
-    while (glGetError() != GL_NO_ERROR) {}
-    for (int t = 0; t < int(Target::Count); ++t)
-        if (layout.stores(Target(t)))
-            textures_[t] = gl::createTargetTexture(prefix + targetLabel(layout, depth, Target(t)),
-                                                   targetFormat(layout, depth, Target(t)).internalFormat, width, height);
-    display_ = gl::createTargetTexture(prefix + "Display", GL_RGBA8, width, height);
-    if (GLenum error = glGetError(); error != GL_NO_ERROR)
-        throw std::runtime_error("allocating " + std::to_string(width) + "x" + std::to_string(height) +
-                                 " render targets failed: " + gl::errorString(error));
-
     labelPrefix_ = prefix;
-    // The framebuffers every frame binds are made now, so an incomplete one is refused here.
-    std::vector<Target> gbuffer = gbufferColourTargets();
-    framebuffer(gbuffer, Target::DepthStencil);
+    memory_ = unaliasedTargets();
+    // The framebuffers every frame binds are made once now, so an incomplete one (a format this
+    // context cannot draw into) is refused here; their textures are then let go again, to be made
+    // at their first use in a frame.
+    framebuffer(gbufferColourTargets(), Target::DepthStencil);
     framebuffer({Target::Radiance}, Target::DepthStencil);
     framebuffer({Target::Reflection}, Target::DepthStencil);
     framebuffer({Target::Final});
+    framebuffers_.clear();
+    for (gl::Texture& texture : textures_) texture.reset();
+}
 
-    displayFbo_ = gl::createFramebuffer(prefix + "Display: debug views");
-    glBindFramebuffer(GL_FRAMEBUFFER, displayFbo_.name());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display_.name(), 0);
+GLuint FrameTargets::heldTexture(Target target) const {
+    if (!layout_.stores(target)) return 0;
+    return textures_[size_t(memory_[size_t(target)])].name();
+}
+
+GLuint FrameTargets::texture(Target target) const {
+    if (!layout_.stores(target)) return 0;
+    const Target memory = memory_[size_t(target)];
+    gl::Texture& held = textures_[size_t(memory)];
+    if (held.name()) return held.name();
+    const TargetFormat format = targetFormat(layout_, depth_, memory);
+    // The pool's texture of the same format, the one this target held before if it is there.
+    auto pooled = pool_.end();
+    for (auto entry = pool_.begin(); entry != pool_.end(); ++entry)
+        if (entry->format == unsigned(format.internalFormat) && (pooled == pool_.end() || entry->lastHolder == memory))
+            pooled = entry;
+    if (pooled != pool_.end()) {
+        held = std::move(pooled->texture);
+        pool_.erase(pooled);
+    } else {
+        // Made in the middle of a pass's bindings: the active unit's texture is put back after.
+        GLint bound = 0;
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+        while (glGetError() != GL_NO_ERROR) {}
+        held = gl::createTargetTexture(labelPrefix_ + targetLabel(layout_, depth_, memory), format.internalFormat,
+                                       width_, height_);
+        if (GLenum error = glGetError(); error != GL_NO_ERROR)
+            throw std::runtime_error("allocating a " + std::to_string(width_) + "x" + std::to_string(height_) + " " +
+                                     targetName(memory) + " target failed: " + gl::errorString(error));
+        glBindTexture(GL_TEXTURE_2D, GLuint(bound));
+    }
+    // Labelled by every target it is lent to this frame, as capture tools list it.
+    std::string label = labelPrefix_ + targetLabel(layout_, depth_, memory);
+    for (int t = 0; t < int(Target::Count); ++t)
+        if (Target(t) != memory && memory_[t] == memory) label += " + " + std::string(targetName(Target(t)));
+    gl::setLabel(held, label);
+    return held.name();
+}
+
+void FrameTargets::giveBack(Target memory) {
+    gl::Texture& held = textures_[size_t(memory)];
+    if (!held.name()) return;
+    const TargetFormat format = targetFormat(layout_, depth_, memory);
+    pool_.push_back({std::move(held), unsigned(format.internalFormat), format.bytesPerPixel, memory, 0});
+}
+
+void FrameTargets::forgetFramebuffersOf(GLuint texture) {
+    for (auto entry = framebuffers_.begin(); entry != framebuffers_.end();) {
+        const auto& [colour, depth] = entry->first;
+        if (depth == texture || std::find(colour.begin(), colour.end(), texture) != colour.end())
+            entry = framebuffers_.erase(entry);
+        else
+            ++entry;
+    }
+}
+
+void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
+    TargetMemory memory = aliasTargets(lifetimes, [&](Target target) {
+        return unsigned(targetFormat(layout_, depth_, target).internalFormat);
+    });
+    std::array<bool, size_t(Target::Count)> used{};
+    for (const TargetLifetime& lifetime : lifetimes) used[size_t(lifetime.target)] = true;
+    for (auto& entry : pool_) ++entry.idlePlans;
+    // A memory changes hands when the aliasing changes: every texture goes back and is taken again
+    // at its first use (mostly the same one, by lastHolder). Otherwise only unused targets' go back.
+    const bool realiased = memory != memory_;
+    for (int t = 0; t < int(Target::Count); ++t)
+        if (realiased || !used[t]) giveBack(Target(t));
+    memory_ = memory;
+    for (auto entry = pool_.begin(); entry != pool_.end();) {
+        if (entry->idlePlans > kPoolFrames) {
+            forgetFramebuffersOf(entry->texture.name());
+            entry = pool_.erase(entry);
+        } else {
+            ++entry;
+        }
+    }
+}
+
+double FrameTargets::heldBytes() const {
+    double bytes = display_.name() ? 4.0 : 0.0;  // Display, RGBA8
+    for (int t = 0; t < int(Target::Count); ++t)
+        if (textures_[t].name()) bytes += targetFormat(layout_, depth_, Target(t)).bytesPerPixel;
+    return bytes * double(width_) * double(height_);
+}
+
+double FrameTargets::pooledBytes() const {
+    double bytes = 0.0;
+    for (const Pooled& entry : pool_) bytes += entry.bytesPerPixel;
+    return bytes * double(width_) * double(height_);
+}
+
+GLuint FrameTargets::displayTexture() const {
+    if (!display_.name()) {
+        GLint bound = 0;  // as texture(): the active unit's texture is put back
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+        display_ = gl::createTargetTexture(labelPrefix_ + "Display", GL_RGBA8, width_, height_);
+        glBindTexture(GL_TEXTURE_2D, GLuint(bound));
+    }
+    return display_.name();
+}
+
+GLuint FrameTargets::displayFramebuffer() const {
+    const GLuint display = displayTexture();
+    FramebufferKey key{{display}, 0};
+    if (auto found = framebuffers_.find(key); found != framebuffers_.end()) return found->second.name();
+    gl::Framebuffer fbo = gl::createFramebuffer(labelPrefix_ + "Display: debug views");
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo.name());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, display, 0);
+    const GLenum colour0 = GL_COLOR_ATTACHMENT0;
+    glDrawBuffers(1, &colour0);
     checkComplete("display");
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    GLuint name = fbo.name();
+    framebuffers_.emplace(std::move(key), std::move(fbo));
+    return name;
 }
 
 GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optional<Target> depth) const {
@@ -94,7 +203,8 @@ GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optiona
         if (layout_.stores(target)) stored.push_back(target);
     if (depth && !layout_.stores(*depth)) depth.reset();
     if (stored.empty() && !depth) return 0;  // nothing this layout stores (SceneDepth in full)
-    FramebufferKey key{stored, depth};
+    FramebufferKey key{{}, depth ? texture(*depth) : 0};
+    for (Target target : stored) key.first.push_back(texture(target));
     if (auto found = framebuffers_.find(key); found != framebuffers_.end()) return found->second.name();
     // Labelled by what it holds, as capture tools list it: "Radiance, Final + DepthStencil".
     std::string label;

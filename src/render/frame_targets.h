@@ -2,6 +2,11 @@
 // deferred fills the G-buffer then lights it into Radiance; forward shades into Radiance directly;
 // the mirrored scene goes to Reflection; tone mapping writes Final. Depth-stencil is shared by all.
 // Display holds what a debug view shows (or the overview), ready to present or save.
+// A target's texture is made at its first use, not up front (issue 43 item 1: a forward frame holds
+// no G-buffer), and the frame graph's plan (render/target_aliasing.h) gives back the textures of
+// targets a frame does not use and lets targets whose lifetimes do not overlap share one. Textures
+// given back wait in a pool for a few frames, so frames that alternate (compare's forward and
+// deferred rounds) do not allocate each time.
 #pragma once
 #include <array>
 #include <map>
@@ -13,6 +18,7 @@
 #include "gl/objects.h"
 #include "render/depth_convention.h"
 #include "render/gbuffer_layout.h"
+#include "render/target_aliasing.h"
 
 namespace oasis {
 
@@ -34,12 +40,29 @@ public:
     // How the depth-stencil target is stored and compared: every pass takes its depth state here.
     const DepthConvention& depth() const { return depth_; }
 
-    GLuint texture(Target target) const { return textures_[size_t(target)].name(); }
+    // The texture of `target`, made (or taken from the pool) at its first use; 0 where the layout
+    // does not store it. Targets the plan aliases return the same texture.
+    GLuint texture(Target target) const;
+    // The texture `target` holds now without making one (0 if none): for audits and tests.
+    GLuint heldTexture(Target target) const;
+    // The frame's plan: the targets `lifetimes` names keep (or will make) their textures, aliased
+    // as aliasTargets says; every other target's texture goes back to the pool. Pool textures unused
+    // for kPoolFrames plans are deleted.
+    void plan(const std::vector<TargetLifetime>& lifetimes);
+    const TargetMemory& memory() const { return memory_; }
+    // The GPU memory the targets hold now: each texture held (aliased ones once, Display included)
+    // at its format's bytes per texel. The pool's waiting textures are not counted (pooledBytes).
+    double heldBytes() const;
+    double pooledBytes() const;
+    static constexpr int kPoolFrames = 4;
     // The G-buffer framebuffer's colour attachment (and draw buffer) of a stored target: the
     // stored ones in kGBufferColourTargets order, no gaps. -1 for a target it does not hold.
     int gbufferSlot(Target target) const;
     int gbufferSlotCount() const { return gbufferSlot(Target::Info) + 1; }
-    GLuint displayTexture() const { return display_.name(); }
+    // Display, made at its first use: its own texture always. (Lent the memory of an RGBA8 target
+    // that ends inside the frame, it changed views' pictures after frames of another sink,
+    // FrameSink.EveryViewIsTheSameAfterItsOwnFrameAsAfterAWholeFrame, for a reason not found yet.)
+    GLuint displayTexture() const;
     // The framebuffer over `colour` (attachments 0.. in that order, the targets this layout does not
     // store left out, so the draw buffers have no gaps: zink leaves every column past 1024
     // unrendered at 1280x720 when one in the middle is GL_NONE) and `depth` (DepthStencil or
@@ -48,18 +71,30 @@ public:
     GLuint framebuffer(const std::vector<Target>& colour, std::optional<Target> depth = std::nullopt) const;
     // The G-buffer's stored colour targets in kGBufferColourTargets order.
     std::vector<Target> gbufferColourTargets() const;
-    GLuint displayFramebuffer() const { return displayFbo_.name(); }
+    GLuint displayFramebuffer() const;
 
 private:
     GBufferLayout layout_;
     DepthConvention depth_;
     int width_, height_;
-    std::array<gl::Texture, size_t(Target::Count)> textures_;
-    gl::Texture display_;
+    // The textures held, by the target whose memory they are (memory_); aliased targets hold none.
+    mutable std::array<gl::Texture, size_t(Target::Count)> textures_;
+    TargetMemory memory_;
+    struct Pooled {
+        gl::Texture texture;
+        unsigned format;
+        int bytesPerPixel;
+        Target lastHolder;  // given back to the same target first, so its contents stay where they were
+        int idlePlans;
+    };
+    mutable std::vector<Pooled> pool_;
+    mutable gl::Texture display_;
     std::string labelPrefix_;
-    gl::Framebuffer displayFbo_;
-    using FramebufferKey = std::pair<std::vector<Target>, std::optional<Target>>;
+    // Keyed by the textures attached, since a target's texture changes with the plan.
+    using FramebufferKey = std::pair<std::vector<GLuint>, GLuint>;
     mutable std::map<FramebufferKey, gl::Framebuffer> framebuffers_;
+    void giveBack(Target memory);
+    void forgetFramebuffersOf(GLuint texture);
 };
 
 }  // namespace oasis
