@@ -123,7 +123,8 @@ std::string checkImage(const fs::path& path, int width, int height, bool picture
 }
 
 // `render --graph`: a first line naming the pipeline ("# the deferred pipeline's frame, ..."), then
-// one line a pass, from the first pass of every frame, each `NAME  READS -> WRITES` or `NAME  culled: WHY`.
+// one line a pass, from the first pass of every frame, each `NAME  READS -> WRITES` or `NAME  culled: WHY`,
+// then the resources' blocks ("# buffers: ...", "# targets: ..."), every line of them a "# " line.
 std::string checkGraphText(const std::string& text) {
     static const std::regex kPassLine("[A-Z][A-Za-z]*Pass(\\.[a-z]+)* +(.* -> .+|culled: .+)");
     static const std::regex kHeader("# the (forward|deferred) pipeline's frame, [0-9]+x[0-9]+, built for view .+\n");
@@ -132,8 +133,15 @@ std::string checkGraphText(const std::string& text) {
         return "render --graph printed no header naming its pipeline";
     if (text.compare(size_t(header.length()), 19, "TerrainHeightsPass ") != 0) return "render --graph printed no pass list";
     std::istringstream lines(text.substr(size_t(header.length())));
-    for (std::string line; std::getline(lines, line);)
-        if (!std::regex_match(line, kPassLine)) return "render --graph printed a line that is not a pass: '" + line + "'";
+    bool resources = false;  // past the passes: the buffers' and targets' blocks
+    for (std::string line; std::getline(lines, line);) {
+        resources = resources || line.rfind("# ", 0) == 0;
+        if (resources && line.rfind("# ", 0) != 0)
+            return "render --graph printed a line after its resources' blocks: '" + line + "'";
+        if (!resources && !std::regex_match(line, kPassLine))
+            return "render --graph printed a line that is not a pass: '" + line + "'";
+    }
+    if (!resources) return "render --graph printed no resources (buffers, targets)";
     return {};
 }
 
