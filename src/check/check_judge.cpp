@@ -32,6 +32,7 @@ const std::vector<ImageRule>& imageRules() {
          "plant edges and shadow-compare filtering, at most 325 of 36,864 pixels (0.88%) above 24 levels, PSNR "
          "36.75 dB, max abs 242; zink over lavapipe max abs 3 (84.8 dB); the NVIDIA H100's 1280x720 frame 48.2 dB, "
          "max abs 161 at single plant-edge pixels"},
+        {"cross-driver-interior", 8, 0.0, 255, 0.002, "PROVISIONAL", true, 0.25},
     };
     return rules;
 }
@@ -73,6 +74,34 @@ Judgement judge(const Image& result, const Image& reference, const ImageRule& ru
     return j;
 }
 
+InteriorJudgement judgeInterior(const Image& result, const Image& reference, const std::vector<uint8_t>& classes,
+                                const ImageRule& rule) {
+    if (result.width != reference.width || result.height != reference.height ||
+        classes.size() != size_t(result.width) * size_t(result.height))
+        throw std::invalid_argument("judgeInterior: the frames and their classes differ in size");
+    InteriorJudgement j;
+    double signedSum = 0;
+    for (int y = 0; y < result.height; ++y)
+        for (int x = 0; x < result.width; ++x) {
+            if (classes[size_t(y) * size_t(result.width) + size_t(x)] != 0) continue;
+            ++j.pixels;
+            int d = pixelDifference(result, reference, x, y);
+            j.maxAbs = std::max(j.maxAbs, d);
+            if (d > rule.level) ++j.pixelsOver;
+            for (int c = 0; c < 3; ++c) signedSum += int(result.pixel(x, y)[c]) - int(reference.pixel(x, y)[c]);
+        }
+    j.meanSigned = j.pixels > 0 ? signedSum / (3.0 * double(j.pixels)) : 0.0;
+    long allowed = long(std::floor(rule.maxFractionOver * double(j.pixels)));
+    j.pass = j.maxAbs <= rule.maxAbs && j.pixelsOver <= allowed && std::fabs(j.meanSigned) <= rule.maxMeanSigned;
+    char text[320];
+    std::snprintf(text, sizeof(text), "interior %ld of %d pixels: max abs %d, %ld over %d, mean %+.3f levels (rule %s: max abs "
+                  "<= %d, at most %ld over %d, mean within +-%.2f)", j.pixels, result.width * result.height, j.maxAbs,
+                  j.pixelsOver, rule.level, j.meanSigned, rule.name.c_str(), rule.maxAbs, allowed, rule.level,
+                  rule.maxMeanSigned);
+    j.summary = text;
+    return j;
+}
+
 std::string meanShiftNote(const Judgement& judgement) {
     if (std::fabs(judgement.meanSigned) <= kMeanShiftNote) return {};
     char text[200];
@@ -91,6 +120,24 @@ Image errorMask(const Image& result, const Image& reference, const ImageRule& ru
             bool over = pixelDifference(result, reference, x, y) > rule.level;
             for (int c = 0; c < 3; ++c) out[c] = over ? (c == 0 ? 255 : 0) : uint8_t(in[c] / 4);
             out[3] = 255;
+        }
+    return mask;
+}
+
+Image interiorErrorMask(const Image& result, const Image& reference, const std::vector<uint8_t>& classes) {
+    // Every interior difference shows, not only those above the rule's level: a mean shift is made
+    // of one-level ones.
+    Image mask(result.width, result.height);
+    for (int y = 0; y < result.height; ++y)
+        for (int x = 0; x < result.width; ++x) {
+            uint8_t* out = mask.pixel(x, y);
+            out[3] = 255;
+            if (classes[size_t(y) * size_t(result.width) + size_t(x)] != 0) continue;
+            int sum = 0;
+            for (int c = 0; c < 3; ++c) sum += int(result.pixel(x, y)[c]) - int(reference.pixel(x, y)[c]);
+            for (int c = 0; c < 3; ++c) out[c] = uint8_t(reference.pixel(x, y)[c] / 2);
+            if (sum > 0) out[0] = 255, out[1] = out[2] = 0;
+            if (sum < 0) out[2] = 255, out[0] = out[1] = 0;
         }
     return mask;
 }
