@@ -32,7 +32,14 @@ const std::vector<ImageRule>& imageRules() {
          "plant edges and shadow-compare filtering, at most 325 of 36,864 pixels (0.88%) above 24 levels, PSNR "
          "36.75 dB, max abs 242; zink over lavapipe max abs 3 (84.8 dB); the NVIDIA H100's 1280x720 frame 48.2 dB, "
          "max abs 161 at single plant-edge pixels"},
-        {"cross-driver-interior", 8, 0.0, 255, 0.002, "PROVISIONAL", true, 0.25},
+        {"cross-driver-interior", 8, 0.0, 255, 0.001,
+         "another rasteriser at the pixels the case's own geometry calls interior (no silhouette, depth bend, crease, "
+         "plant, water outline or shadow edge within a pixel: 38-79% of a shaded frame) against llvmpipe's references, "
+         "the mean over those within the level: zink's 30 shaded cases max abs 1, mean within 0.0001 levels; softpipe's "
+         "14 (quick and 12, 13, 27, 29, 36, 44) at most 0.038% over 8 (6 pixels), mean -0.021 at worst (its plants' "
+         "shadows at the low sun); the bounds 2.6x and 2.4x those. Beyond them: the sky 3% too bright (mean +0.23 to "
+         "+0.84), the sun's N.L flipped near 0 (0.76-1.01% over 8 in the day cases)",
+         true, 0.05},
     };
     return rules;
 }
@@ -87,10 +94,17 @@ InteriorJudgement judgeInterior(const Image& result, const Image& reference, con
             ++j.pixels;
             int d = pixelDifference(result, reference, x, y);
             j.maxAbs = std::max(j.maxAbs, d);
-            if (d > rule.level) ++j.pixelsOver;
+            // A pixel over the level is the count's to judge; in the mean a handful of them would
+            // outweigh a shift of a level over thousands (softpipe's 6 pixels of up to 115 levels
+            // at the low sun moved its interior mean by -0.017).
+            if (d > rule.level) {
+                ++j.pixelsOver;
+                continue;
+            }
             for (int c = 0; c < 3; ++c) signedSum += int(result.pixel(x, y)[c]) - int(reference.pixel(x, y)[c]);
         }
-    j.meanSigned = j.pixels > 0 ? signedSum / (3.0 * double(j.pixels)) : 0.0;
+    long within = j.pixels - j.pixelsOver;
+    j.meanSigned = within > 0 ? signedSum / (3.0 * double(within)) : 0.0;
     long allowed = long(std::floor(rule.maxFractionOver * double(j.pixels)));
     j.pass = j.maxAbs <= rule.maxAbs && j.pixelsOver <= allowed && std::fabs(j.meanSigned) <= rule.maxMeanSigned;
     char text[320];
@@ -106,7 +120,7 @@ std::string meanShiftNote(const Judgement& judgement) {
     if (std::fabs(judgement.meanSigned) <= kMeanShiftNote) return {};
     char text[200];
     std::snprintf(text, sizeof(text), "its mean signed difference from the reference frame is %+.2f levels, beyond "
-                  "every measured driver's (%.1f): a term too %s?", judgement.meanSigned, kMeanShiftNote,
+                  "the measured drivers' quick checks (%.1f): a term too %s?", judgement.meanSigned, kMeanShiftNote,
                   judgement.meanSigned > 0 ? "bright" : "dark");
     return text;
 }

@@ -43,23 +43,25 @@ Judgement judge(const Image& result, const Image& reference, const ImageRule& ru
 
 // A frame against a reference over the pixels `classes` calls interior (0; top row first, as the
 // images): how many, their largest channel difference, how many differ above the rule's level,
-// and their mean signed difference (result minus reference, R, G and B, in levels). A frame with
+// and the mean signed difference (result minus reference, R, G and B, in levels) of the others,
+// those within the level: a shift, which outliers do not make. A frame with
 // no interior pixel passes (nothing there to hold). Throws std::invalid_argument when sizes differ.
 struct InteriorJudgement {
     bool pass = false;
     long pixels = 0;  // interior pixels
     int maxAbs = 0;
     long pixelsOver = 0;
-    double meanSigned = 0;
+    double meanSigned = 0;  // over the interior pixels within the level
     std::string summary;  // "interior 30,112 pixels: max abs 2, 0 over 3, mean +0.412 levels (rule ...)"
 };
 InteriorJudgement judgeInterior(const Image& result, const Image& reference, const std::vector<uint8_t>& classes,
                                 const ImageRule& rule);
 
-// Twice the largest mean signed difference of another driver's frames against llvmpipe's references
-// (zink 0.000, softpipe 0.048, SwiftShader 0.041 levels; docs/check.md): beyond it lie a sky 3% too
-// bright (up to +0.60) and the sun's N.L flipped near 0 (-0.14). Not a rule: no GPU's frames have
-// been measured by it yet, so it is a note on the case, pass or fail.
+// Twice the largest whole-frame mean signed difference of another driver's quick-check frames against
+// llvmpipe's references (zink 0.000, softpipe 0.048, SwiftShader 0.041 levels; docs/check.md): beyond
+// it lie a sky 3% too bright (up to +0.60) and the sun's N.L flipped near 0 (-0.14). Not a rule:
+// softpipe's case 13, outside the quick set, reaches -0.51 over the whole frame (its plants' shadows,
+// at edge pixels); the interiors' mean is the rule (cross-driver-interior). A note, pass or fail.
 constexpr double kMeanShiftNote = 0.1;
 // "its mean signed difference from the reference frame is +0.60 levels, ..." or "" within the note's bound.
 std::string meanShiftNote(const Judgement& judgement);

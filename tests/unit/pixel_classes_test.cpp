@@ -183,6 +183,7 @@ TEST(InteriorRule, JudgesInteriorPixelsOnly) {
     InteriorJudgement one = judgeInterior(result, reference, classes, rule);
     EXPECT_EQ(one.maxAbs, 100);
     EXPECT_EQ(one.pixelsOver, 1);
+    EXPECT_EQ(one.meanSigned, 0.0);  // an outlier is the count's, not the mean's
     // Every interior pixel a level brighter: no pixel over the level, the mean shifted by 1.
     Image brighter = greyFrame(101);
     InteriorJudgement shifted = judgeInterior(brighter, reference, classes, rule);
