@@ -1,29 +1,31 @@
 #!/usr/bin/env python3
-"""The data behind `oasis check`'s cross-driver rule (docs/check.md, "What the cross-driver rule can
-and cannot see"): the quick check's cases drawn (a) by llvmpipe through shader copies that each carry
-one small shading error of issue 40's point 3, and (b) by other drivers through the real shaders,
-each frame compared with its llvmpipe reference frame by the numbers the rules use (PSNR, max abs,
-pixels over 24 levels) and the mean signed difference. A tolerance separates the two only where
-every error class lies beyond it and every driver within it; the table shows where that holds.
+"""The data behind `oasis check`'s cross-driver rules (docs/check.md, "What the cross-driver rule can
+and cannot see" and "Edges and interiors"): the quick check's cases drawn (a) by llvmpipe through
+shader copies that each carry one small shading error of issue 40's point 3, and (b) by other drivers
+through the real shaders, each frame judged against its llvmpipe reference frame as another driver's
+is (the references copied without their oasis:renderer chunk, so that llvmpipe's frames meet
+cross-driver and cross-driver-interior rather than identical). Each row is read from the check's own
+report.json: the whole frame's numbers (PSNR, max abs, pixels over 24 levels, mean signed) and the
+interior's (the pixels the case's geometry calls interior: their max abs, pixels over the interior
+rule's level, mean signed). A tolerance separates the two only where every error class lies beyond it
+and every driver within it; the table shows where that holds.
 
 usage: error_classes.py OASIS SHADERS REFERENCES WORK [DRIVER...] [REPORT.json]
-  DRIVER: zink | softpipe (GALLIUM_DRIVER)
+  DRIVER: zink | softpipe (GALLIUM_DRIVER), or DRIVER:full for the whole check instead of --quick
   REPORT.json: a check report of another driver (the browser's, web-check-report.json), its row from
   the numbers it holds (pixels over 24 are its cross-driver rule's)
 Prints a markdown table; exit 0 (it measures, it does not judge)."""
 import json
-import math
 import os
 import shutil
+import struct
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests", "capture"))
-from png_max_abs import read_png  # noqa: E402
-
 # The check's note on a frame shifted beyond every measured driver (kMeanShiftNote in
-# src/check/check_case_judge.cpp): twice the largest |mean signed| of zink, softpipe and SwiftShader.
+# src/check/check_judge.h).
 MEAN_NOTE = 0.1
+AREA = 256 * 144
 
 # Each class: the file under the shader tree, the line as it is, the line with the error.
 ERROR_CLASSES = {
@@ -42,78 +44,65 @@ ERROR_CLASSES = {
 }
 
 
-def numbers(result, reference):
-    """PSNR (dB, 100 when identical), max abs, pixels over 24 levels, mean signed (levels)."""
-    (w, h, ca, rows_a), (w2, h2, cb, rows_b) = read_png(result), read_png(reference)
-    if (w, h) != (w2, h2):
-        raise ValueError(f"{result}: {w}x{h}, reference {w2}x{h2}")
-    a, b = b"".join(rows_a), b"".join(rows_b)
-    squares = signed = peak = over = 0
-    for p in range(w * h):
-        worst = 0
-        for c in range(3):
-            d = a[p * ca + c] - b[p * cb + c]
-            squares += d * d
-            signed += d
-            worst = max(worst, abs(d))
-        peak = max(peak, worst)
-        over += worst > 24
-    mse = squares / (3 * w * h)
-    psnr = 100.0 if mse == 0 else min(100.0, 10 * math.log10(255 * 255 / mse))
-    return psnr, peak, over, signed / (3 * w * h), w * h
+def strip_renderer(source, target):
+    """The reference PNGs without their oasis:renderer text chunk: no driver is their own."""
+    os.makedirs(target)
+    for name in os.listdir(source):
+        if not name.endswith(".png"):
+            continue
+        with open(os.path.join(source, name), "rb") as f:
+            data = f.read()
+        out, at = [data[:8]], 8
+        while at < len(data):
+            length, kind = struct.unpack(">I4s", data[at:at + 8])
+            chunk = data[at:at + 12 + length]
+            at += 12 + length
+            if not (kind in (b"iTXt", b"tEXt", b"zTXt") and chunk[8:].startswith(b"oasis:renderer\0")):
+                out.append(chunk)
+        with open(os.path.join(target, name), "wb") as f:
+            f.write(b"".join(out))
 
 
-def quick_cases(oasis, references, work):
-    """The quick check's cases and the render line of each (its `reproduce`)."""
-    out = os.path.join(work, "quick")
-    subprocess.run([oasis, "check", "--quick", "--references", references, "--out-dir", out],
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+def check(oasis, references, out, environment, full=False):
+    """The check's report.json of one run (quick unless `full`), every case run once."""
+    arguments = [oasis, "check", "--retries", "0", "--references", references, "--out-dir", out]
+    subprocess.run(arguments + ([] if full else ["--quick"]), env=environment, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL)
     with open(os.path.join(out, "report.json")) as f:
-        report = json.load(f)
-    return [(c["name"], c["reproduce"].split()) for c in report["cases"] if c["verdict"] != "skip"]
+        return json.load(f)
 
 
-def render(oasis, line, out, environment):
-    arguments = line[1:]
-    at = arguments.index("--out")
-    arguments[at + 1] = out
-    run = subprocess.run([oasis] + arguments, env=environment, capture_output=True, text=True)
-    return run.returncode == 0 and os.path.exists(out)
+def interior_level(report):
+    for c in report["cases"]:
+        if c.get("interior"):
+            return c["interior"]["level"]
+    return None
 
 
-def measure(label, oasis, cases, references, work, environment):
-    rows = []
-    os.makedirs(work, exist_ok=True)
-    for name, line in cases:
-        out = os.path.join(work, name + ".png")
-        if render(oasis, line, out, environment):
-            rows.append(numbers(out, os.path.join(references, name + ".png")))
-    if not rows:
-        return f"| {label} | no frame rendered | | | |"
-    psnr = min(r[0] for r in rows)
-    peak = max(r[1] for r in rows)
-    over = max(r[2] / r[4] for r in rows)
-    means = [r[3] for r in rows]
-    changed = sum(1 for r in rows if r[1] > 0)
-    shifted = sum(1 for m in means if abs(m) > MEAN_NOTE)
-    return (f"| {label} | {changed} of {len(rows)} | {psnr:.2f} | {peak} | {100 * over:.2f}% | "
-            f"{min(means):+.3f} .. {max(means):+.3f} | {shifted} |")
+def row(label, report):
+    cases = [c for c in report["cases"] if c["verdict"] != "skip" and c.get("psnr_db") is not None]
+    if not cases:
+        return f"| {label} | no case judged | | | | | | | | | |"
+    means = [c["mean_signed"] for c in cases]
+    inside = [c["interior"] for c in cases if c.get("interior")]
+    whole = (f"| {label} | {sum(c['max_abs'] > 0 for c in cases)} of {len(cases)} | "
+             f"{min(c['psnr_db'] for c in cases):.2f} | {max(c['max_abs'] for c in cases)} | "
+             f"{100 * max(c['pixels_over'] for c in cases) / AREA:.2f}% | {min(means):+.3f} .. {max(means):+.3f} | "
+             f"{sum(1 for m in means if abs(m) > MEAN_NOTE)} |")
+    if not inside:
+        return whole + " not split | | | |"
+    over = max(i["over"] / max(i["pixels"], 1) for i in inside)
+    inner = [i["mean_signed"] for i in inside]
+    return whole + (f" {max(i['max_abs'] for i in inside)} | {100 * over:.2f}% | {min(inner):+.3f} .. {max(inner):+.3f} | "
+                    f"{sum(1 for i in inside if not i['pass'])} of {len(inside)} |")
 
 
 def report_row(path):
     with open(path) as f:
         report = json.load(f)
-    rows = [c for c in report["cases"] if c.get("psnr_db") is not None and c["verdict"] != "skip"]
-    if not rows:
-        return f"| {path}: no judged case | | | | | | |"
-    area = 256 * 144
-    means = [c["mean_signed"] for c in rows]
     renderer = report["driver"]["renderer"]
     renderer = "SwiftShader in Chromium" if "SwiftShader" in renderer else renderer.split(" (")[0]
-    return (f"| {renderer} (its check report) | {sum(c['max_abs'] > 0 for c in rows)} of {len(rows)} | "
-            f"{min(c['psnr_db'] for c in rows):.2f} | {max(c['max_abs'] for c in rows)} | "
-            f"{100 * max(c['pixels_over'] for c in rows) / area:.2f}% | {min(means):+.3f} .. {max(means):+.3f} | "
-            f"{sum(1 for m in means if abs(m) > MEAN_NOTE)} |")
+    return row(renderer + " (its check report)", report)
 
 
 def main():
@@ -125,28 +114,36 @@ def main():
     reports = [os.path.abspath(a) for a in sys.argv[5:] if a.endswith(".json")]
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    cases = quick_cases(oasis, references, work)
-    print("| frames | cases that differ | lowest PSNR (dB) | largest max abs | most pixels over 24 | mean signed (levels) "
-          f"| cases beyond {MEAN_NOTE} |")
-    print("| --- | --- | --- | --- | --- | --- | --- |")
-    for label, (path, line, error) in ERROR_CLASSES.items():
-        tree = os.path.join(work, "shaders-" + str(len(os.listdir(work))))
+    anonymous = os.path.join(work, "references")
+    strip_renderer(references, anonymous)
+    rows, level = [], None
+    for number, (label, (path, line, error)) in enumerate(ERROR_CLASSES.items()):
+        tree = os.path.join(work, f"shaders-{number}")
         shutil.copytree(shaders, tree)
         with open(os.path.join(tree, path)) as f:
             text = f.read()
         if text.count(line) != 1:
-            print(f"| {label} | the line to perturb is not in {path} once | | | |")
+            rows.append(f"| llvmpipe, {label} | the line to perturb is not in {path} once | | | | | | | | | |")
             continue
         with open(os.path.join(tree, path), "w") as f:
             f.write(text.replace(line, error))
-        environment = dict(os.environ, OASIS_SHADER_DIR=tree)
-        print(measure("llvmpipe, " + label, oasis, cases, references, tree + "-frames", environment))
+        report = check(oasis, anonymous, tree + "-check", dict(os.environ, OASIS_SHADER_DIR=tree))
+        level = level or interior_level(report)
+        rows.append(row("llvmpipe, " + label, report))
     for driver in drivers:
-        environment = dict(os.environ, GALLIUM_DRIVER=driver, LIBGL_ALWAYS_SOFTWARE="1")
-        print(measure(driver + " (the real shaders)", oasis, cases, references,
-                      os.path.join(work, driver), environment))
+        name, _, scope = driver.partition(":")
+        environment = dict(os.environ, GALLIUM_DRIVER=name, LIBGL_ALWAYS_SOFTWARE="1")
+        report = check(oasis, anonymous, os.path.join(work, driver.replace(":", "-")), environment, scope == "full")
+        level = level or interior_level(report)
+        rows.append(row(f"{name} (the real shaders{', the full check' if scope == 'full' else ''})", report))
     for path in reports:
-        print(report_row(path))
+        rows.append(report_row(path))
+    print("| frames | cases that differ | lowest PSNR (dB) | largest max abs | most pixels over 24 | mean signed (levels) "
+          f"| cases beyond {MEAN_NOTE} | interior max abs | interior pixels over {level} | interior mean signed "
+          "| cases failing cross-driver-interior |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for text in rows:
+        print(text)
 
 
 if __name__ == "__main__":

@@ -30,6 +30,7 @@
 #include "check/check_references.h"
 #include "check/check_report.h"
 #include "check/check_runner.h"
+#include "check/pixel_classes.h"
 #include "commands/provenance.h"
 #include "io/file_input.h"
 #include "io/file_output.h"
@@ -138,6 +139,11 @@ int writeCheckReport(const Options& options, const std::string& directory, const
             if (image->width == 0) continue;
             files.push_back({directory + "/cases/" + c.name + "-" + suffix + ".png", {}});
             encodePng(*image, files.back().bytes);
+        }
+        // Which pixels its interior rule held (green) and which it left to the edges' rules.
+        if (!c.pixelClasses.empty()) {
+            files.push_back({directory + "/cases/" + c.name + "-classes.png", {}});
+            encodePng(pixelClassImage(c.pixelClasses, c.result.width, c.result.height), files.back().bytes);
         }
     }
     bool withCases = files.size() > 2u + (options.check.junit.empty() ? 0u : 1u) + (profileFile.empty() ? 0u : 1u);
@@ -252,12 +258,14 @@ std::string checkTablesMarkdown() {
         }
         text += " |\n";
     }
-    text += "\n| rule | a pixel differs above | PSNR at least | max abs at most | differing pixels at most | set by |\n"
-            "| --- | --- | --- | --- | --- | --- |\n";
+    text += "\n| rule | a pixel differs above | PSNR at least | max abs at most | differing pixels at most | mean signed within "
+            "| set by |\n| --- | --- | --- | --- | --- | --- | --- |\n";
     for (const ImageRule& rule : imageRules()) {
-        char line[1024];
-        std::snprintf(line, sizeof(line), "| %s | %d levels | %.0f dB | %d | %.1f%% | %s |\n", rule.name.c_str(), rule.level,
-                      rule.minPsnrDb, rule.maxAbs, rule.maxFractionOver * 100.0, rule.measuredBy.c_str());
+        char line[2048], mean[32] = "-";
+        if (rule.maxMeanSigned < 255.0) std::snprintf(mean, sizeof(mean), "+-%.2f levels", rule.maxMeanSigned);
+        std::snprintf(line, sizeof(line), "| %s%s | %d levels | %.0f dB | %d | %.1f%%%s | %s | %s |\n", rule.name.c_str(),
+                      rule.interiorOnly ? " (interior pixels)" : "", rule.level, rule.minPsnrDb, rule.maxAbs,
+                      rule.maxFractionOver * 100.0, rule.interiorOnly ? " of them" : "", mean, rule.measuredBy.c_str());
         text += line;
     }
     PairCoverage coverage = pairCoverage(coveringCases());

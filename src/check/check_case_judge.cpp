@@ -248,6 +248,28 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
             result.errorMask = errorMask(result.result, reference.image, referenceRule);
             result.maskAgainst = "the reference frame";
         }
+        // 1b. Its interiors, where its child split the pixels by the frame's geometry: the rule
+        // binds another driver only (this one is held identical); the numbers are kept for both.
+        if (run.frame.pixelClasses.size() == size_t(result.result.width) * size_t(result.result.height)) {
+            const ImageRule& interiorRule = imageRule("cross-driver-interior");
+            InteriorJudgement i = judgeInterior(result.result, reference.image, run.frame.pixelClasses, interiorRule);
+            result.interiorCompared = true;
+            result.interiorPixels = i.pixels;
+            result.interiorMaxAbs = i.maxAbs;
+            result.interiorPixelsOver = i.pixelsOver;
+            result.interiorLevel = interiorRule.level;
+            result.interiorMeanSigned = i.meanSigned;
+            result.interiorPass = i.pass;
+            result.pixelClasses = run.frame.pixelClasses;
+            if (!sameDriver && !i.pass) {
+                caseMatchesReference = false;
+                failures.push_back("against the reference frame's interiors: " + i.summary);
+                if (result.errorMask.width == 0) {
+                    result.errorMask = interiorErrorMask(result.result, reference.image, run.frame.pixelClasses);
+                    result.maskAgainst = "the reference frame (interior pixels)";
+                }
+            }
+        }
     }
 
     // 2. The main path against the reference, 3. the case against its main path.
@@ -279,7 +301,13 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
             result.mainPathReferenceMaxAbs = m.maxAbs;
             result.mainPathReferencePixelsOver = m.pixelsOver;
             result.mainPathReferenceMeanSigned = m.meanSigned;
-            result.mainPathMatchesReference = mainMatchesReference = m.pass;
+            // Another driver's main path is held to the reference's interiors as the case is: a
+            // shift both draw is the main path's (or the driver's), not this path's.
+            bool interiorsHold = true;
+            if (!sameDriver && main.frame.pixelClasses.size() == size_t(main.frame.image.width) * size_t(main.frame.image.height))
+                interiorsHold = judgeInterior(main.frame.image, reference.image, main.frame.pixelClasses,
+                                              imageRule("cross-driver-interior")).pass;
+            result.mainPathMatchesReference = mainMatchesReference = m.pass && interiorsHold;
         }
         if (!j.pass && result.errorMask.width == 0) {
             result.errorMask = errorMask(result.result, main.frame.image, rule);

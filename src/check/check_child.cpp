@@ -22,6 +22,7 @@
 #include "check/check_snapshots.h"
 #include "commands/json_value.h"
 #include "check/oracle_report.h"
+#include "check/pixel_classes.h"
 #include "gl/objects.h"
 #include "io/file_output.h"
 #include "io/interruption.h"
@@ -67,10 +68,15 @@ int childFrame(const Options& options) {
         if (frame.rendered) {
             std::string error;
             if (!writePng(check.childOut + ".png", frame.image, error, frame.provenance)) throw std::runtime_error(error);
+            if (!frame.pixelClasses.empty() &&
+                !writePng(check.childOut + "-classes.png", pixelClassImage(frame.pixelClasses, frame.image.width,
+                                                                           frame.image.height), error))
+                throw std::runtime_error(error);
         }
         json = "{\"rendered\": " + std::string(frame.rendered ? "true" : "false") +
                ", \"skip_reason\": " + jsonString(frame.skipReason) + ", \"limited_by\": " + jsonString(frame.limitedBy) +
-               ", \"drawn_with\": " + jsonString(frame.drawnWith) + ", \"context\": " + contextJson(frame.context) +
+               ", \"drawn_with\": " + jsonString(frame.drawnWith) + ", \"pixel_classes\": " +
+               (frame.pixelClasses.empty() ? "false" : "true") + ", \"context\": " + contextJson(frame.context) +
                ", \"oracle\": " + shadingOracleJson(frame.oracle) + ", \"error\": \"\"}";
     } catch (const std::exception& error) {
         json = "{\"rendered\": false, \"error\": " + jsonString(error.what()) + "}";
@@ -207,6 +213,16 @@ public:
                 frame.rendered = false;
             } else {
                 frame.provenance = texts.texts;
+            }
+            Image classes;
+            if (frame.rendered && boolMember(answer, "pixel_classes")) {
+                if (!readPng(prefix + "-classes.png", classes, error, nullptr) || classes.width != frame.image.width ||
+                    classes.height != frame.image.height) {
+                    run.outcome.error = "the child's edges and interiors cannot be read back: " + error;
+                    frame.rendered = false;
+                } else {
+                    frame.pixelClasses = pixelClassesOf(classes);
+                }
             }
         }
         return run;

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "cli/options.h"
+#include "check/case_geometry.h"
 #include "check/check_buffers.h"
 #include "commands/headless_commands.h"
 #include "commands/provenance.h"
@@ -107,11 +108,14 @@ std::string pathNotTaken(const Options& options, const RenderSession& session, b
     return {};
 }
 
-// The shading oracle over the frame just drawn. Inputs that cannot be read at all leave every
-// sampled pixel out, saying why: the case is then judged by its images alone.
-ShadingOracle oracleOf(Renderer& renderer) {
+// The shading oracle over the frame just drawn, and the frame's pixels split into edges and
+// interiors from the same inputs. Inputs that cannot be read at all leave every sampled pixel out,
+// saying why, and no split: the case is then judged by its whole images alone.
+ShadingOracle oracleOf(Renderer& renderer, std::vector<uint8_t>& pixelClasses) {
     try {
-        return runShadingOracle(renderer);
+        OracleInputs inputs = readOracleInputs(renderer);
+        pixelClasses = classifyPixels(caseGeometry(inputs));
+        return runShadingOracle(renderer, inputs);
     } catch (const std::exception& error) {
         ShadingOracle oracle;
         oracle.ran = true;
@@ -182,7 +186,7 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
     std::FILE* sink = std::fopen("/dev/null", "w");
     frame.image = renderRequestedImage(options, session, sink ? sink : stderr);
     if (sink) std::fclose(sink);
-    if (options.view == "final" && options.stopBefore.empty()) frame.oracle = oracleOf(renderer);
+    if (options.view == "final" && options.stopBefore.empty()) frame.oracle = oracleOf(renderer, frame.pixelClasses);
     frame.provenance = provenanceTexts(pictureProvenance(options, options.view, pipelineName(options.pipeline),
                                                          frame.image.height, frame.image.height));
     frame.rendered = true;

@@ -33,6 +33,9 @@ struct CaseFrame {
     CaseContext context;  // empty where no context was made
     // A shaded frame's (the final view's) shading oracle over the frame just drawn; not run otherwise.
     ShadingOracle oracle;
+    // A shaded frame's pixels split by its own geometry (check/pixel_classes.h), top row first: 0
+    // an interior pixel, else why it is an edge; empty where the oracle's inputs were not read.
+    std::vector<uint8_t> pixelClasses;
 };
 
 // Renders `oasis render ARGUMENTS` (the final view or the one asked for, no legend) and checks that

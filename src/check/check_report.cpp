@@ -49,6 +49,13 @@ std::string caseJson(const CaseResult& c) {
                       number(c.mainPathReferenceMeanSigned, "%.4f") + ", \"pass\": " +
                       (c.mainPathMatchesReference ? "true" : "false") + "}"
                 : std::string("null");
+    json += ", \"interior\": ";
+    json += c.interiorCompared ? "{\"pixels\": " + std::to_string(c.interiorPixels) + ", \"max_abs\": " +
+                                     std::to_string(c.interiorMaxAbs) + ", \"over\": " + std::to_string(c.interiorPixelsOver) +
+                                     ", \"level\": " + std::to_string(c.interiorLevel) + ", \"mean_signed\": " +
+                                     number(c.interiorMeanSigned, "%.4f") + ", \"pass\": " +
+                                     (c.interiorPass ? "true" : "false") + "}"
+                               : std::string("null");
     json += ", \"blame\": " + (c.blame.empty() ? std::string("null") : jsonString(c.blame));
     json += ", \"observed\": " + jsonString(verdictName(c.observed)) + ", \"expectation\": " +
             (c.expectation.empty() ? std::string("null") : jsonString(c.expectation)) + ", \"runs\": " + std::to_string(c.runs);

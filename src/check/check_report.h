@@ -57,6 +57,17 @@ struct CaseResult {
     long mainPathReferencePixelsOver = 0;
     double mainPathReferenceMeanSigned = 0.0;
     bool mainPathMatchesReference = false;
+    // The case against the reference frame over its interior pixels (check/pixel_classes.h), where
+    // its child split them (a shaded case): judged by cross-driver-interior where another driver
+    // drew the reference, measured and reported on the reference's own driver too.
+    bool interiorCompared = false;
+    long interiorPixels = 0;
+    int interiorMaxAbs = 0;
+    long interiorPixelsOver = 0;
+    int interiorLevel = 0;
+    double interiorMeanSigned = 0.0;
+    bool interiorPass = false;
+    std::vector<uint8_t> pixelClasses;  // for the report's pictures (not in the JSON)
     std::optional<FirstDivergence> firstDivergence;
     ShadingOracle oracle;  // a shaded case's: its radiance against the CPU's shading of its inputs
     double seconds = 0.0;

@@ -212,7 +212,10 @@ std::string nameDifferingTerm(Renderer& renderer, const OracleInputs& in, GlPixe
 double shadingOracleBound() { return kBoundPerStore; }
 
 ShadingOracle runShadingOracle(Renderer& renderer, int samples) {
-    OracleInputs in = readOracleInputs(renderer);
+    return runShadingOracle(renderer, readOracleInputs(renderer), samples);
+}
+
+ShadingOracle runShadingOracle(Renderer& renderer, const OracleInputs& in, int samples) {
     ShadingOracle result;
     result.ran = true;
     result.bound = kBoundPerStore;

@@ -12,6 +12,7 @@
 namespace oasis {
 
 class Renderer;
+struct OracleInputs;
 
 struct ShadingOracle {
     bool ran = false;         // a shaded case: the oracle was evaluated
@@ -35,5 +36,8 @@ double shadingOracleBound();
 // The oracle over the renderer's last whole frame (deferred or forward), `samples` pixels chosen
 // by a fixed seed: three quarters over the frame, a quarter among those the point lights reach. Throws std::runtime_error where an input cannot be read at all.
 ShadingOracle runShadingOracle(Renderer& renderer, int samples = 256);
+// The same over inputs already read (check/oracle_inputs.h), which the check also splits into edges
+// and interiors (check/case_geometry.h): one read of the frame for both.
+ShadingOracle runShadingOracle(Renderer& renderer, const OracleInputs& inputs, int samples = 256);
 
 }  // namespace oasis
