@@ -134,9 +134,11 @@ void FrameTargets::forgetFramebuffersOf(GLuint texture) {
 }
 
 void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
-    TargetMemory memory = aliasTargets(lifetimes, [&](Target target) {
-        return unsigned(targetFormat(layout_, depth_, target).internalFormat);
-    });
+    // No target takes another's memory in a frame: the shading oracle, the probe and the check's
+    // read-backs read the G-buffer after the frame, past every lifetime the graph knows, and an
+    // aliased albedo then held Final's texels (aliasTargets stays the planner's, unit-tested, for
+    // when those readers are declared to the graph).
+    const TargetMemory memory = unaliasedTargets();
     std::array<bool, size_t(Target::Count)> used{};
     for (const TargetLifetime& lifetime : lifetimes) used[size_t(lifetime.target)] = true;
     for (auto& entry : pool_) ++entry.idlePlans;

@@ -69,37 +69,5 @@ TEST_F(TargetMemory, TheForwardFrameHoldsNoGBufferAndEachFrameOnlyWhatItsGraphUs
     }
 }
 
-TEST_F(TargetMemory, FinalTakesTheAlbedosMemoryAfterItAndThePictureStays) {
-    // The separate tone map writes Final after the mirrored lighting's last read of the G-buffer;
-    // seen through the final view alone, nothing after the frame touches the G-buffer. As in
-    // FrameSink: another hour first, then the frame for the final view, then the whole frame.
-    SceneSettings scene = defaultPose().scene;
-    scene.work.fuseToneMap = false;
-    SceneSettings decoy = scene;
-    decoy.hour = 17.5;
-    Renderer renderer(*shaders_, scene);
-    auto atlas = attachPlantAtlas(*shaders_, renderer);
-    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
-    renderer.setPipeline(PipelineKind::Deferred);
-    renderer.renderFrame(decoy);
-    renderer.views().render(kOverviewName);
-
-    renderer.views().setSink({"final"});
-    renderer.renderFrame(scene);
-    EXPECT_EQ(renderer.targets().memory()[size_t(Target::Final)], Target::Albedo);
-    EXPECT_EQ(renderer.targets().heldTexture(Target::Final), renderer.targets().heldTexture(Target::Albedo));
-    EXPECT_EQ(renderer.targetMemoryBytes(), plannedBytes(renderer));
-    renderer.views().render("final");
-    const Image aliased = readDisplay(renderer);
-
-    renderer.views().setSink({});
-    renderer.renderFrame(scene);  // the whole frame's sink: everything lives past the frame, unaliased
-    EXPECT_EQ(renderer.targets().memory()[size_t(Target::Final)], Target::Final);
-    renderer.views().render("final");
-    const Image unaliased = readDisplay(renderer);
-    ASSERT_TRUE(hasContent(aliased));
-    EXPECT_EQ(compareImages(unaliased, aliased).maxAbs, 0) << "the aliased frame's picture differs";
-}
-
 }  // namespace
 }  // namespace oasis::gputest
