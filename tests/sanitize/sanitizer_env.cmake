@@ -57,4 +57,9 @@ set(OASIS_SANITIZE_SKIPPED_CLI_TESTS
   cli.caps_no_ssbo_compute
   # the output limit's bench case: the limit's code runs sanitized in its compare case, the bench's
   # writers in cli.bench_quick_smoke
-  cli.output_size-limit-bench)
+  cli.output_size-limit-bench
+  # checks over perturbed shader copies (the tile lists one tile on, the interior rule's and the
+  # oracle's errors): the oracle, the interior split and the buffers' search run sanitized in
+  # cli.check_quick's cases; the target memory's compare: the graph's plan runs in the sanitized GPU
+  # suite, compare's JSON in the kept compare tests
+  cli.check_tiles cli.check_oracle cli.check_interior cli.compare_target_memory)
