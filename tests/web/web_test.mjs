@@ -260,8 +260,10 @@ for (const [fx, fy] of [[0.5, 0.67], [0.25, 0.8], [0.75, 0.2]]) {
           `oasis check --diff native (llvmpipe, OpenGL ES) browser (SwiftShader): no regression ` +
           `(exit ${diff.status}; regressions ${regressions.map((n) => n.slice(0, 2)).join(' ') || 'none'})`);
   }
-  await delay(500);
-  const framesAfter = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
+  // Up to 20 s for the next frame: SwiftShader's frames take ~0.1 s idle, seconds on a loaded machine.
+  let framesAfter = framesBefore;
+  for (const t0 = Date.now(); Date.now() - t0 < 20000 && framesAfter <= framesBefore; await delay(100))
+    framesAfter = await evaluate(`Module.ccall('oasis_frames_drawn', 'number', [], [])`);
   check(framesAfter > framesBefore, `the page's frame loop draws on after the check (${framesBefore} -> ${framesAfter} frames)`);
 }
 
@@ -407,4 +409,5 @@ for (const [name, hide, expected] of [
 console.log(`web: wrote ${outDir}/page.png, web-*.png, native-*.png, capabilities.json, web-check-report.{json,html}, ` +
             `native-check/, check-diff.txt`);
 console.log(`web: the test took ${((Date.now() - testStart) / 1000).toFixed(1)} s`);
+for (const what of failures) console.log(`web: FAILED: ${what}`);  // again at the end, where a cut log keeps it
 await finish(failures.length ? 1 : 0);
