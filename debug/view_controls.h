@@ -34,7 +34,7 @@ struct ViewControls {
 };
 
 // Which pixels of the frame hold a drawn surface (1) and which nothing was drawn at (0, the sky),
-// for views whose values mean nothing there (commands/view_mask.h); null or empty: every pixel.
+// for views whose values mean nothing there (frame/view_mask.h); null or empty: every pixel.
 using DrawnPixels = std::vector<uint8_t>;
 
 // Over the chosen channel(s) of every drawn pixel (rgb: three values a pixel).

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "commands/overview_overlay.h"
-#include "commands/view_mask.h"
+#include "frame/overview_overlay.h"
+#include "frame/view_mask.h"
 #include "debug/error_image.h"
 #include "frame/encoding_error.h"
 #include "frame/frame_readback.h"
@@ -49,7 +49,7 @@ void inspectFrame(Renderer& renderer, const Configuration& config, Inspector& in
     if (view && (inspector.sectionOpen || controls.showValues())) {
         std::vector<float> values = renderer.views().readValues(view->name);
         ViewChannel channel = controls.channel.value_or(defaultChannel(*view));
-        // As `oasis render` counts them: the sky's undrawn texels are not values (commands/view_mask.h).
+        // As `oasis render` counts them: the sky's undrawn texels are not values (frame/view_mask.h).
         const DrawnPixels drawn = drawnPixels(renderer, *view);
         ValueStatistics statistics = valueStatistics(values, channel, &drawn);
         const FrameTargets& targets = renderer.targets();

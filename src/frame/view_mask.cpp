@@ -1,6 +1,6 @@
-// The drawn-pixel mask of the debug views (commands/view_mask.h), from the Info view's flags,
+// The drawn-pixel mask of the debug views (frame/view_mask.h), from the Info view's flags,
 // read back like any view's values.
-#include "commands/view_mask.h"
+#include "frame/view_mask.h"
 
 #include "common/shared_constants.glsl"
 #include "frame/renderer.h"

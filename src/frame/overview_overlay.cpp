@@ -1,10 +1,10 @@
 // The overview's view controls: each tile's overlay and counts.
-#include "commands/overview_overlay.h"
+#include "frame/overview_overlay.h"
 
 #include <algorithm>
 #include <cstdio>
 
-#include "commands/view_mask.h"
+#include "frame/view_mask.h"
 #include "debug/view_controls.h"
 
 namespace oasis {
