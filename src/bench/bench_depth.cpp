@@ -61,7 +61,7 @@ std::vector<DepthPrecision> measureDepthPrecision(Renderer& renderer, const std:
     const int width = renderer.targets().width(), height = renderer.targets().height();
     for (const SceneSettings& scene : scenes) {
         renderer.renderFrame(scene);
-        const FrameData& frame = renderer.lastFrame().data;
+        const FrameData& frame = renderer.lastFrame().setup.data;
         std::vector<float> stored = readTarget(renderer, Target::Position);
         std::vector<float> depth = readDepth(renderer);
         std::vector<uint8_t> stencil = readStencil(renderer);

@@ -49,7 +49,7 @@ std::vector<T> asValues(const std::vector<uint8_t>& bytes) {
 // False where the context cannot draw into a float target (OpenGL ES without
 // EXT_color_buffer_float): that path's lights are then not compared, rather than taken as none.
 bool decodeLights(Renderer& renderer, std::vector<float>& lights) {
-    const FrameSetup& frame = renderer.lastFrame();
+    const FrameSetup& frame = renderer.lastFrame().setup;
     int uploaded = int(frame.lights.size());
     lights.clear();
     if (uploaded == 0) return true;  // nothing to read: an SSBO path binds no list then
@@ -62,8 +62,8 @@ bool decodeLights(Renderer& renderer, std::vector<float>& lights) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
-    glUseProgram(renderer.shaders().program("lights.decode" + lightsVariantSuffix(frame.lightsPath)));
-    renderer.geometry().drawFullscreenTriangle();
+    glUseProgram(renderer.parts().shaders.program("lights.decode" + lightsVariantSuffix(frame.lightsPath)));
+    renderer.parts().geometry.drawFullscreenTriangle();
     std::vector<float> pixels = target.read();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     size_t width = size_t(uploaded);
@@ -143,7 +143,7 @@ void snapshotWrittenBuffers(Renderer& renderer, const Pass& pass, const std::vec
         // A pass that did not run in this path has no lists to check: the other path's check then
         // stands against none missed.
         GLuint tiles = pass.ownBuffer(*buffer);
-        if (!tiles || !renderer.frameGraph().runs(pass.name())) continue;
+        if (!tiles || !renderer.lastFrame().graph().runs(pass.name())) continue;
         // The direct half only: the mirrored lists are over the reflection's surfaces, which the
         // frame's targets hold only inside the water (the reflection's own targets when reduced).
         if (pass.reflectionWork()) continue;
@@ -153,7 +153,7 @@ void snapshotWrittenBuffers(Renderer& renderer, const Pass& pass, const std::vec
             asValues<uint32_t>(readBufferBytes(tiles, LightTilingPass::listBytes(width, height)));
         if (words.empty()) continue;
         std::vector<float> lights;
-        for (const PointLight& light : renderer.lastFrame().lights)
+        for (const PointLight& light : renderer.lastFrame().setup.lights)
             for (const glm::vec4& part : {light.positionRadius, light.colourIntensity})
                 lights.insert(lights.end(), {part.x, part.y, part.z, part.w});
         into.pixelChecks.push_back(
@@ -165,7 +165,7 @@ PassSnapshot snapshotFrameInputs(Renderer& renderer) {
     PassSnapshot snapshot{kFrameInputsStep, {}};
     if (std::vector<float> lights; decodeLights(renderer, lights))
         snapshot.buffers.push_back({resourceName(Buffer::LightList), uint32_t(kLightFloats), false, std::move(lights)});
-    const VegetationBuffers& plants = renderer.vegetationBuffers();
+    const VegetationBuffers& plants = renderer.lastFrame().plantInstances;
     size_t count = plants.count(Mirroring::Direct) + plants.count(Mirroring::Mirrored);
     std::vector<float> instances =
         asValues<float>(readBufferBytes(plants.instanceBuffer(), count * sizeof(PlantDrawInstance)));

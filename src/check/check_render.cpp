@@ -232,13 +232,13 @@ std::vector<PassSnapshot> renderPassByPass(const std::vector<std::string>& argum
         renderer.renderFrame(session.scene, k + 1 < passes.size() ? passes[k + 1]->name() : std::string());
         // The buffers the renderer uploaded before the first pass, once: the search's first step.
         if (k == 0) snapshots.push_back(snapshotFrameInputs(renderer));
-        std::vector<Resource> writes = passes[k]->writes(renderer.lastFrame());
+        std::vector<Resource> writes = passes[k]->writes(renderer.lastFrame().setup);
         for (const Resource& resource : writes)
             if (const Target* target = std::get_if<Target>(&resource)) written.insert(*target);
         PassSnapshot snapshot{passes[k]->name(), {}};
         // Read before the views, which may refill the G-buffer the tile lists are checked against;
         // the renderer's own pass, which holds the buffers it wrote (the list here is GL-free).
-        snapshotWrittenBuffers(renderer, *renderer.activePipeline().passes()[k], writes, snapshot);
+        snapshotWrittenBuffers(renderer, *renderer.lastFrame().pipeline.passes()[k], writes, snapshot);
         for (const TargetView& target : kTargetViews)
             if (written.count(target.target)) snapshot.targets.push_back({target.label, renderer.views().readValues(target.view)});
         snapshots.push_back(std::move(snapshot));

@@ -23,7 +23,7 @@ std::vector<float> readColourTarget(const FrameTargets& targets, Target target) 
 }
 
 // The surfaces' texels: the G-buffer a deferred frame lit; for a forward frame, which stores none,
-// the frame's surface shaders drawn again into float targets (Renderer::fillExactSurfaces, the
+// the frame's surface shaders drawn again into float targets (FrameViews::fillExactSurfaces, the
 // probe's way): the same Surface values its fragments shaded, unrounded.
 void readSurfaces(Renderer& renderer, OracleInputs& in) {
     const FrameTargets& frame = renderer.targets();
@@ -31,7 +31,7 @@ void readSurfaces(Renderer& renderer, OracleInputs& in) {
     if (in.forward) {
         exact = std::make_unique<FrameTargets>(*findGBufferLayout("full"), frame.depth(), frame.width(), frame.height(),
                                                "shading oracle: forward surfaces");
-        renderer.fillExactSurfaces(*exact, WaterScene::Direct);
+        renderer.views().fillExactSurfaces(*exact, WaterScene::Direct);
     }
     const FrameTargets& surfaces = exact ? *exact : frame;
     in.compact = surfaces.layout().encoding == GBufferEncoding::Compact;
@@ -46,7 +46,7 @@ void readSurfaces(Renderer& renderer, OracleInputs& in) {
 // One layer's depths drawn into a float target and read back, where the context cannot read depth
 // (OpenGL ES without GL_NV_read_depth_stencil): texelFetch of the stored float, compare mode off.
 void drawShadowLayer(Renderer& renderer, int layer, float* out) {
-    const ShadowMaps& maps = renderer.shadowMaps();
+    const ShadowMaps& maps = renderer.parts().shadowMaps;
     const int size = maps.mapSize();
     gl::Texture colour = gl::createTargetTexture("shading oracle: a shadow map layer", GL_R32F, size, size);
     gl::Framebuffer framebuffer = gl::createFramebuffer("shading oracle: a shadow map layer");
@@ -69,10 +69,10 @@ void drawShadowLayer(Renderer& renderer, int layer, float* out) {
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GLuint program = renderer.shaders().program("readback.shadow-layer");
+    GLuint program = renderer.parts().shaders.program("readback.shadow-layer");
     glUseProgram(program);
     glUniform1i(glGetUniformLocation(program, "shadowLayer"), layer);
-    renderer.geometry().drawFullscreenTriangle();
+    renderer.parts().geometry.drawFullscreenTriangle();
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, minFilter);
     glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, magFilter);
@@ -90,7 +90,7 @@ void drawShadowLayer(Renderer& renderer, int layer, float* out) {
 void readShadowMaps(Renderer& renderer, OracleInputs& in) {
     if (in.frame.shadow.x == 0.0f) return;
     const bool drawn = !renderer.paths().capabilities.depthStencilRead.available;
-    const ShadowMaps& maps = renderer.shadowMaps();
+    const ShadowMaps& maps = renderer.parts().shadowMaps;
     ShadowMapDepths& out = in.shadowMaps;
     out.size = maps.mapSize();
     out.layers = maps.layers();
@@ -151,7 +151,7 @@ OracleInputs readOracleInputs(Renderer& renderer) {
     in.width = renderer.targets().width();
     in.height = renderer.targets().height();
     in.forward = renderer.pipeline() == PipelineKind::Forward;
-    in.lightVolumes = !in.forward && renderer.lastFrame().lightMethod == LightMethod::Volumes;
+    in.lightVolumes = !in.forward && renderer.lastFrame().setup.lightMethod == LightMethod::Volumes;
     in.radiance = readTarget(renderer, Target::Radiance);
     in.depth = readDepth(renderer);
     in.stencil = readStencil(renderer);

@@ -73,10 +73,10 @@ std::string graphJson(const Comparison& c) {
 void printCompareJson(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
     ContextInfo info = queryContextInfo();
-    const VegetationStats& plants = session.renderer->vegetation().stats();
+    const VegetationStats& plants = session.renderer->lastFrame().vegetation.stats();
     std::printf("{\"vegetation\": %s, \"vegetation_density\": %.3f, \"plants_placed\": %zu, \"plants_drawn\": %zu, "
                 "\"plants_drawn_mirrored\": %zu, ",
-                session.renderer->lastFrame().vegetationEnabled ? "true" : "false", session.scene.vegetation.density,
+                session.renderer->lastFrame().setup.vegetationEnabled ? "true" : "false", session.scene.vegetation.density,
                 plants.plantsPlaced, plants.plantsDrawn, plants.plantsDrawnMirrored);
     std::printf("\"pixels_differing\": %s, ", c.differing.json().c_str());
     std::printf("\"psnr_db\": %.4f, \"max_abs\": %d, \"rmse\": %.6f, \"forward_ms\": %.4f, \"deferred_ms\": %.4f, "

@@ -57,15 +57,15 @@ Comparison compareFrame(RenderSession& session, const RoundPlan& plan, bool pass
     renderer.views().setSink(capture ? std::vector<std::string>{} : std::vector<std::string>{"final"});
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {  // shader builds: frames of their own
         renderer.setPipeline(kind);
-        renderer.buildPrograms(session.scene, "final");
+        renderer.renderFrame(session.scene, FrameRequest::buildingPrograms("final"));
     }
     if (capture) gl::armCaptures(2);
     result.forward = renderFinal(renderer, session.scene, PipelineKind::Forward);
-    result.forwardGraph = frameGraphJson(renderer.frameGraph());
-    result.forwardTargetBytes = renderer.targetMemoryBytes();
+    result.forwardGraph = frameGraphJson(renderer.lastFrame().graph());
+    result.forwardTargetBytes = renderer.lastFrame().targetMemoryBytes();
     result.deferred = renderFinal(renderer, session.scene, PipelineKind::Deferred);
-    result.deferredGraph = frameGraphJson(renderer.frameGraph());
-    result.deferredTargetBytes = renderer.targetMemoryBytes();
+    result.deferredGraph = frameGraphJson(renderer.lastFrame().graph());
+    result.deferredTargetBytes = renderer.lastFrame().targetMemoryBytes();
     result.difference = compareImages(result.forward, result.deferred);
     result.differing = countDifferingPixels(result.forward, result.deferred);
     result.times = timePipelinesInTurn(renderer, session.scene, plan);
@@ -129,7 +129,7 @@ std::vector<ImageFile> comparisonFiles(const Options& options, const Comparison&
 
 void printSummary(const Options& options, const RenderSession& session, const Comparison& c) {
     const FrameTargets& targets = session.renderer->targets();
-    const FrameSetup& frame = session.renderer->lastFrame();
+    const FrameSetup& frame = session.renderer->lastFrame().setup;
     std::printf("oasis: %dx%d, G-buffer '%s' (%d bytes/pixel: G-buffer and depth-stencil; bench's B/px adds the other targets), depth %s, time %.2f s (%.2f h), on %s\n",
                 targets.width(), targets.height(), targets.layout().name.c_str(),
                 gbufferBytesPerPixel(targets.layout(), targets.depth()),
@@ -138,7 +138,7 @@ void printSummary(const Options& options, const RenderSession& session, const Co
     std::printf("  forward vs deferred: PSNR %.2f dB%s, max abs %d, RMSE %.4f (8-bit RGB)\n", c.difference.psnrDb,
                 c.difference.psnrDb >= kPsnrIdentical ? " (identical)" : "", c.difference.maxAbs, c.difference.rmse);
     std::printf("  %s\n", c.differing.describe().c_str());
-    std::printf("%s", timesText(c.times, session.renderer->geometry().terrainTriangles()).c_str());
+    std::printf("%s", timesText(c.times, session.renderer->parts().geometry.terrainTriangles()).c_str());
     std::printf("  %s\n", describePlantAtlas(session).c_str());
     std::printf("  %s\n", describeVegetation(*session.renderer).c_str());
     std::printf("  %s\n", describeLights(*session.renderer).c_str());
@@ -272,7 +272,7 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     // The final frame is a picture: the size asked for, no strip unless --legend on.
     if (!options.legend.value_or(view->name != "final")) return image;
     gl::endFrame();  // the frame ends with its view read back; the legend strip is a frame of its own
-    const FrameData& frame = renderer.lastFrame().data;
+    const FrameData& frame = renderer.lastFrame().setup.data;
     LegendRenderer legends;
     Legend legend = viewLegend(*view, controls, statistics, frame.depthRange.x, frame.depthRange.y,
                                frame.terrainGridCounts.w, waterNote(*view, renderer.views().scene().description));
@@ -294,7 +294,7 @@ Image renderRequestedImage(const Options& options, RenderSession& session, std::
         renderer.views().setSink(sink);
     }
     // Shader builds in a frame of their own; the frame after it (captured with --capture) only draws.
-    if (options.stopBefore.empty()) renderer.buildPrograms(session.scene, errorView ? "" : options.view);
+    if (options.stopBefore.empty()) renderer.renderFrame(session.scene, FrameRequest::buildingPrograms(errorView ? "" : options.view));
     if (options.capture) gl::armCaptures(1);
     renderer.renderFrame(session.scene, options.stopBefore);
     if (options.graph) return Image();
@@ -315,8 +315,8 @@ int runRenderCommand(const Options& options) {
                         pipelineName(options.pipeline), renderer.targets().width(), renderer.targets().height(),
                         options.view.c_str(),
                         options.pipeline == PipelineKind::Forward ? "deferred" : "forward");
-            std::printf("%s", frameGraphText(renderer.frameGraph()).c_str());
-            std::printf("%s", targetLifetimesText(renderer.frameGraph(), renderer.targetLifetimes(),
+            std::printf("%s", frameGraphText(renderer.lastFrame().graph()).c_str());
+            std::printf("%s", targetLifetimesText(renderer.lastFrame().graph(), renderer.lastFrame().targetLifetimes,
                                                   renderer.targets()).c_str());
             return 0;
         }

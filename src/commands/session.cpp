@@ -290,8 +290,8 @@ std::string describePlantAtlas(const RenderSession& session) {
 }
 
 std::string describeVegetation(const Renderer& renderer) {
-    const VegetationStats& stats = renderer.vegetation().stats();
-    if (!renderer.lastFrame().vegetationEnabled) return "vegetation: off";
+    const VegetationStats& stats = renderer.lastFrame().vegetation.stats();
+    if (!renderer.lastFrame().setup.vegetationEnabled) return "vegetation: off";
     char text[256];
     std::snprintf(text, sizeof(text),
                   "vegetation: %zu plants placed in %zu chunks around the camera; drawn %zu (%zu chunks in view, "
@@ -299,7 +299,7 @@ std::string describeVegetation(const Renderer& renderer) {
                   stats.plantsPlaced, stats.chunksInRange, stats.plantsDrawn, stats.chunksVisible,
                   stats.plantsDrawnMirrored, stats.chunksMirrored);
     std::string described = text;
-    if (renderer.lastFrame().mirroredPlantsCulled)
+    if (renderer.lastFrame().setup.mirroredPlantsCulled)
         described += "; culled on the CPU, their image on dry land: " + std::to_string(stats.chunksMirroredOnLand) +
                      " more chunks and " + std::to_string(stats.plantsMirroredOnLand) + " plants in these";
     return described + ")";
@@ -307,8 +307,8 @@ std::string describeVegetation(const Renderer& renderer) {
 
 std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene) {
     std::string resolution;
-    if (const FrameTargets* reduced = renderer.reflectionTargets(); reduced && renderer.lastFrame().reflectionDivisor > 1)
-        resolution = "; drawn at " + std::string(reflectionResolutionName(renderer.lastFrame().reflectionDivisor)) +
+    if (const FrameTargets* reduced = renderer.lastFrame().reflectionTargets; reduced && renderer.lastFrame().setup.reflectionDivisor > 1)
+        resolution = "; drawn at " + std::string(reflectionResolutionName(renderer.lastFrame().setup.reflectionDivisor)) +
                      " resolution (" + std::to_string(reduced->width()) + "x" + std::to_string(reduced->height()) +
                      "), upsampled bilinearly at the water";
     if (renderer.paths().waterBoundsAvailable && !scene.water.reflectionBounds)

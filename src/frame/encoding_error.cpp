@@ -39,7 +39,7 @@ EncodingError measureEncodingError(Renderer& renderer, const SceneSettings& scen
     renderer.setPipeline(pipeline);
     if (const GBufferLayout* asked = findGBufferLayout(requested); asked && asked->name != layout.name)
         renderer.configure(renderer.targets().width(), renderer.targets().height(), *asked);
-    const FrameData& frame = renderer.lastFrame().data;
+    const FrameData& frame = renderer.lastFrame().setup.data;
     const double nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
     EncodingError error;
     error.width = renderer.targets().width();

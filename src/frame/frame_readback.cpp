@@ -75,7 +75,7 @@ void showImage(Renderer& renderer, const Image& image) {
 }
 
 std::vector<float> readTarget(Renderer& renderer, Target target) {
-    if (target == Target::Radiance) renderer.ensureRadiance();
+    if (target == Target::Radiance) renderer.views().ensureRadiance();
     const FrameTargets& targets = renderer.targets();
     if (target == Target::DepthStencil || target == Target::SceneDepth)
         throw std::invalid_argument(std::string("readTarget reads colour targets; ") + targetName(target) +
@@ -98,8 +98,8 @@ std::vector<float> readSurfacePositions(Renderer& renderer) {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     bindGBufferInputs(targets);
-    glUseProgram(renderer.shaders().program(targets.layout().program("gbuffer.positions")));
-    renderer.geometry().drawFullscreenTriangle();
+    glUseProgram(renderer.parts().shaders.program(targets.layout().program("gbuffer.positions")));
+    renderer.parts().geometry.drawFullscreenTriangle();
     return positions.read();
 }
 

@@ -323,13 +323,13 @@ FrameTraffic measureFrameTraffic(Renderer& renderer, const SceneSettings& scene)
     if (!trafficCountable()) return {};
     renderer.renderFrame(scene);  // programs built, buffers sized: the counted frame only draws
     return countedDraw(renderer, [&](Counter& counter, FrameTraffic& traffic) {
-        renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+        renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
             counter.end();
             PassTraffic counted = counter.take(pass.name());
-            addDeclaredBytes(counted, renderer.targets(), renderer.lastFrame(), pass);
+            addDeclaredBytes(counted, renderer.targets(), renderer.lastFrame().setup, pass);
             merge(traffic.passes, counted);
             counter.begin();
-        });
+        }));
         counter.end();
         counter.take("");  // the frame's tail after its last pass: not a pass
     });
@@ -341,7 +341,7 @@ FrameTraffic measureFloorTraffic(Renderer& renderer) {
     return countedDraw(renderer, [&](Counter& counter, FrameTraffic& traffic) {
         renderer.renderFloor();
         counter.end();
-        countFloor(counter.take(FloorPass().name()), renderer.targets(), renderer.lastFrame(), traffic);
+        countFloor(counter.take(FloorPass().name()), renderer.targets(), renderer.lastFrame().setup, traffic);
     });
 }
 

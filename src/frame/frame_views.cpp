@@ -10,6 +10,12 @@
 
 namespace oasis {
 
+void FrameViews::ensureGBuffer() { renderer_.ensureGBuffer(); }
+void FrameViews::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
+    renderer_.fillExactSurfaces(exact, scene);
+}
+void FrameViews::ensureRadiance() { renderer_.ensureRadiance(); }
+
 void FrameViews::setSink(const std::vector<std::string>& views) {
     for (const std::string& name : views)
         if (name != kOverviewName && !findDebugView(name))

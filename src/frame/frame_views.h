@@ -7,6 +7,7 @@
 
 #include "debug/debug_view_pass.h"
 #include "frame/view_fill.h"
+#include "render/frame_targets.h"
 #include "render/plant_atlas.h"
 
 namespace oasis {
@@ -32,11 +33,24 @@ public:
     // The HDR views' (radiance, reflection-raw) exposure, in stops.
     void setExposure(float stops);
     float exposure() const;
-    // The water scene the views ask the G-buffer to hold (frame/view_fill.h, Renderer::ensureGBuffer);
+    // The water scene the views ask the G-buffer to hold (frame/view_fill.h, ensureGBuffer below);
     // scene() says what the views show at water pixels and why.
     void setWaterScene(WaterScene scene);
     WaterScene waterScene() const;
     const ViewScene& scene() const;
+    // Makes the G-buffer, depth and stencil hold the last frame's surfaces with the water scene the
+    // views ask for (frame/view_fill.h): what the views, the probe and the encoding error read.
+    // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
+    // that ran). scene() says what the views show at water pixels and why.
+    void ensureGBuffer();
+    // The last whole frame's surfaces drawn unrounded: the view fill of `scene` run into `exact`
+    // (targets of the frame's size, depth convention and a float layout) instead of the G-buffer.
+    // `probe --shading` reads a forward frame's surfaces there (frame/shading_probe.h).
+    void fillExactSurfaces(const FrameTargets& exact, WaterScene scene);
+    // With the tone map fused the water composite writes Final only, so Radiance holds what lies
+    // under the water there; this lays the water onto Radiance as the separate pass would have
+    // (the radiance view, the probe, readTarget). Once per frame, and only when something asks.
+    void ensureRadiance();
     // Draws a debug view (by table name, or "overview") of the last frame into Display. A view of
     // a G-buffer target after a forward frame first fills the G-buffer with the geometry passes.
     void render(const std::string& viewName);

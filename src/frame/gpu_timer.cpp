@@ -32,12 +32,12 @@ PassTimes renderFrameTimingPasses(Renderer& renderer, const SceneSettings& scene
     PassTimes times;
     glFinish();
     Clock::time_point start = Clock::now();
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
         glFinish();
         Clock::time_point now = Clock::now();
         times.emplace_back(pass.name(), std::chrono::duration<double, std::milli>(now - start).count());
         start = now;
-    });
+    }));
     return times;
 }
 
@@ -155,12 +155,12 @@ void PassTimerQueries::timeFrame(Renderer& renderer, const SceneSettings& scene)
     // pass, the next from there to the end of the second, and so on (the gaps are the CPU's).
     Query running = nextQuery();
     glBeginQuery(GL_TIME_ELAPSED, running.name);
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
         glEndQuery(GL_TIME_ELAPSED);
         frame.passes.emplace_back(pass.name(), std::move(running));
         running = nextQuery();
         glBeginQuery(GL_TIME_ELAPSED, running.name);
-    });
+    }));
     glEndQuery(GL_TIME_ELAPSED);  // the frame's tail after its last pass: not a pass
     spare_.push_back(std::move(running));
     pending_.push_back(std::move(frame));

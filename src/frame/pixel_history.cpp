@@ -23,9 +23,9 @@ struct PixelPlace {
 
 // Where a pass's writes land for this pixel: the frame's targets, or the reduced reflection's.
 const FrameTargets& targetsOf(const Renderer& renderer, const Pass& pass, PixelPlace& place) {
-    const FrameTargets* reduced = renderer.reflectionTargets();
-    if (pass.drawsInReflectionTargets() && reduced && renderer.lastFrame().reflectionDivisor > 1) {
-        int divisor = renderer.lastFrame().reflectionDivisor;
+    const FrameTargets* reduced = renderer.lastFrame().reflectionTargets;
+    if (pass.drawsInReflectionTargets() && reduced && renderer.lastFrame().setup.reflectionDivisor > 1) {
+        int divisor = renderer.lastFrame().setup.reflectionDivisor;
         place = {place.glX / divisor, place.glY / divisor};
         return *reduced;
     }
@@ -35,10 +35,10 @@ const FrameTargets& targetsOf(const Renderer& renderer, const Pass& pass, PixelP
 std::vector<StoredTexel> readWrites(Renderer& renderer, const Pass& pass, PixelPlace place) {
     const FrameTargets& targets = targetsOf(renderer, pass, place);
     std::vector<StoredTexel> texels;
-    for (const Resource& resource : pass.writes(renderer.lastFrame())) {
+    for (const Resource& resource : pass.writes(renderer.lastFrame().setup)) {
         const Target* target = std::get_if<Target>(&resource);  // buffers have no pixels
         if (target && (targets.layout().stores(*target) || *target == Target::DepthStencil || *target == Target::SceneDepth))
-            texels.push_back(readStoredTexel(renderer.shaders(), targets, *target, place.glX, place.glY,
+            texels.push_back(readStoredTexel(renderer.parts().shaders, targets, *target, place.glX, place.glY,
                                             !renderer.paths().capabilities.depthStencilRead.available));
     }
     return texels;
@@ -94,7 +94,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
     // What a pass's targets held before it: the values the last pass writing each left, read at
     // the same place (the frame's first pass finds them as the frame before left them: unknown).
     std::map<std::string, StoredTexel> current;
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
         PassAtPixel entry{pass.name(), true, false, "", readWrites(renderer, pass, pixel)};
         std::vector<StoredTexel> previous;
         for (const StoredTexel& texel : entry.targets) {
@@ -107,7 +107,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
             current[texel.target + (pass.drawsInReflectionTargets() ? "@reflection" : "")] = texel;
         seen[&pass] = entry;
         ran.push_back(&pass);
-    });
+    }));
 
     // Passes whose values did not change (or were unknown before): did their draws touch the pixel at all?
     for (size_t k = 0; k < ran.size(); ++k) {
@@ -117,7 +117,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
             entry.reason = "writes none of the frame's targets (buffers, transform feedback or the shadow maps)";
             continue;
         }
-        if (pass->clearsWholeTargets(renderer.lastFrame())) {
+        if (pass->clearsWholeTargets(renderer.lastFrame().setup)) {
             entry.wrote = true;
             entry.reason = "a clear: every pixel of the targets it clears";
             continue;
@@ -146,14 +146,14 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
             active = true;
         };
         if (!previous) begin();
-        renderer.renderFrameObserved(scene, [&](const Pass& observed) {
+        renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& observed) {
             if (&observed == previous) begin();
             if (&observed == pass && active) {
                 glEndQuery(GL_ANY_SAMPLES_PASSED);
                 glDisable(GL_SCISSOR_TEST);
                 active = false;
             }
-        });
+        }));
         GLuint samples = 0;
         glGetQueryObjectuiv(query.name(), GL_QUERY_RESULT, &samples);
         entry.wrote = samples != 0;
@@ -166,7 +166,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
 
     // Every pass of the frame's graph in order; one that did not run says why (frame/frame_graph.h).
     std::vector<PassAtPixel> history;
-    for (const GraphStep& step : renderer.frameGraph().steps) {
+    for (const GraphStep& step : renderer.lastFrame().graph().steps) {
         auto found = seen.find(step.pass);
         if (found != seen.end()) {
             history.push_back(found->second);

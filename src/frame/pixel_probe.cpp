@@ -180,14 +180,14 @@ std::array<glm::vec4, kProbeSlots> decodeOnGpu(Renderer& renderer, int glX, int 
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     bindGBufferInputs(targets);
-    renderer.shadowMaps().bind();
+    renderer.parts().shadowMaps.bind();
     glActiveTexture(GL_TEXTURE0 + kUnitProbeDepthStencil);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::DepthStencil));
     glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
-    GLuint program = renderer.shaders().program(targets.layout().program("probe.pixel"));
+    GLuint program = renderer.parts().shaders.program(targets.layout().program("probe.pixel"));
     glUseProgram(program);
     glUniform2i(glGetUniformLocation(program, "probePixel"), glX, glY);
-    renderer.geometry().drawFullscreenTriangle();
+    renderer.parts().geometry.drawFullscreenTriangle();
     std::vector<float> read = values.read();
     std::array<glm::vec4, kProbeSlots> slots{};
     for (int s = 0; s < kProbeSlots; ++s) slots[size_t(s)] = glm::vec4(read[s * 4], read[s * 4 + 1], read[s * 4 + 2], read[s * 4 + 3]);
@@ -204,7 +204,7 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     if (x < 0 || y < 0 || x >= targets.width() || y >= targets.height())
         throw std::out_of_range("pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
                                 std::to_string(targets.width()) + "x" + std::to_string(targets.height()) + " frame");
-    renderer.ensureGBuffer();
+    renderer.views().ensureGBuffer();
     int glX = x, glY = targets.height() - 1 - y;
     PixelProbe probe;
     probe.x = x;
@@ -216,7 +216,7 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     // against it (light volumes, the reflection's lighting), so it need not hold this pixel's depth.
     for (int t = 0; t < int(Target::Count); ++t)
         if (Target(t) != Target::SceneDepth && targets.layout().stores(Target(t)))
-            probe.stored.push_back(readStoredTexel(renderer.shaders(), targets, Target(t), glX, glY,
+            probe.stored.push_back(readStoredTexel(renderer.parts().shaders, targets, Target(t), glX, glY,
                                                    !renderer.paths().capabilities.depthStencilRead.available));
 
     std::array<glm::vec4, kProbeSlots> slot = decodeOnGpu(renderer, glX, glY);
@@ -240,7 +240,7 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
     probe.shadowCascade = int(std::lround(slot[7].y));
     probe.sunFacing = slot[7].z;
     // The surface's own world position: a reflection is stored as its mirror image.
-    glm::dvec3 camera = renderer.lastFrame().view.pose.position;
+    glm::dvec3 camera = renderer.lastFrame().setup.view.pose.position;
     glm::dvec3 relative = glm::dvec3(probe.relativePosition);
     if (probe.flags & OASIS_SURFACE_REFLECTED) relative.y = double(slot[5].z);
     probe.worldPosition = probe.sky ? glm::dvec3(0.0) : camera + relative;
@@ -258,10 +258,10 @@ PixelProbe probePixel(Renderer& renderer, int x, int y) {
         if (texel.target == targetName(Target::Final))
             probe.final = glm::ivec4(texel.values[0], texel.values[1], texel.values[2], texel.values[3]);
     }
-    showUnwrittenAsCleared(probe, targets.layout(), renderer.lastFrame().reflectionsActive);
+    showUnwrittenAsCleared(probe, targets.layout(), renderer.lastFrame().setup.reflectionsActive);
     probe.stencilMeaning = stencilMeaning(probe.stencil);
     probe.waterScene = waterSceneAt(probe, renderer);
-    const FrameSetup& frame = renderer.lastFrame();
+    const FrameSetup& frame = renderer.lastFrame().setup;
     if (frame.reflectionsActive) {
         const int divisor = frame.reflectionDivisor;
         probe.reflectionResolution = reflectionResolutionName(divisor);

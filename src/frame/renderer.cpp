@@ -178,26 +178,33 @@ const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
     return kind == PipelineKind::Forward ? forward_ : deferred_;
 }
 
-void Renderer::renderFrame(const SceneSettings& scene, const std::string& stopBefore) {
-    gl::beginFrame();
-    runFrame(scene, stopBefore, {});
+FrameRequest FrameRequest::observed(std::function<void(const Pass&)> afterEach) {
+    FrameRequest request;
+    request.afterEach = std::move(afterEach);
+    return request;
 }
 
-void Renderer::renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach) {
-    gl::beginFrame();
-    runFrame(scene, {}, afterEach);
+FrameRequest FrameRequest::buildingPrograms(std::string view) {
+    FrameRequest request;
+    request.programsOnly = true;
+    request.programsView = std::move(view);
+    return request;
 }
 
-void Renderer::buildPrograms(const SceneSettings& scene, const std::string& view) {
+void Renderer::renderFrame(const SceneSettings& scene, const FrameRequest& request) {
     gl::beginFrame();
+    if (!request.programsOnly) {
+        runFrame(scene, request.stopBefore, request.afterEach);
+        return;
+    }
     // The marker names this frame in RenderDoc's event list and in apitrace's dump.
     const char* marker = "warm-up: programs built, rasterizer discard on, nothing drawn";
     if (gl::hasDebugGroups())
         glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_MARKER, 0, GL_DEBUG_SEVERITY_NOTIFICATION, -1,
                              marker);
     glEnable(GL_RASTERIZER_DISCARD);
-    runFrame(scene, {}, {});
-    if (!view.empty()) views_.render(view);
+    runFrame(scene, request.stopBefore, request.afterEach);
+    if (!request.programsView.empty()) views_.render(request.programsView);
     glDisable(GL_RASTERIZER_DISCARD);
 }
 
@@ -272,8 +279,6 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     stoppedBefore_ = stopBefore;
     stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(frame_, Target::Albedo);
 }
-
-FrameGraph Renderer::frameGraph() const { return pipelineOf(active_).graph(frame_, frameSinks_); }
 
 std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* beyondFrame) const {
     // What lives past the frame: its sink, and what the views' fill and the composite after it write.

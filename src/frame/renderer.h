@@ -4,6 +4,7 @@
 // offers (depth convention, lights path, water bounds, light method) are in renderer_choices.cpp;
 // what its frames leave is read back with frame/frame_readback.h.
 #pragma once
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +31,55 @@
 
 namespace oasis {
 
+// What a frame is asked for besides its scene (Renderer::renderFrame): where it stops, who is
+// told after each pass, or only its programs built. A pass name converts to a request to stop there.
+struct FrameRequest {
+    FrameRequest() = default;
+    FrameRequest(std::string stopBefore) : stopBefore(std::move(stopBefore)) {}
+    FrameRequest(const char* stopBefore) : stopBefore(stopBefore) {}
+    // The frame, calling `afterEach` after every pass that ran (frame/gpu_timer.h's queries).
+    static FrameRequest observed(std::function<void(const Pass&)> afterEach);
+    // Builds every program the frame and `view` (a debug view name, or "") use, by running them
+    // with GL_RASTERIZER_DISCARD: a frame of its own for capture tools, so the frames after it hold
+    // drawing and no shader compiles. Costs the frame's vertex work.
+    static FrameRequest buildingPrograms(std::string view);
+
+    // With a pass name, the frame ends before that pass so its inputs can be inspected; a name no
+    // pass has throws std::invalid_argument (listing the pipeline's passes).
+    std::string stopBefore;
+    std::function<void(const Pass&)> afterEach;
+    bool programsOnly = false;
+    std::string programsView;  // with programsOnly: the view whose programs are built too
+};
+
+// What the last frame was and left (Renderer::lastFrame()), for the tools that read it after.
+struct LastFrame {
+    const FrameSetup& setup;  // its description
+    // Its targets with their lifetimes, as its plan gave them (render --graph).
+    const std::vector<TargetLifetime>& targetLifetimes;
+    const VegetationField& vegetation;        // the plants placed around its camera, what it drew of them
+    const VegetationBuffers& plantInstances;  // the instances it uploaded (PlantInstances, frame_graph.h)
+    const Pipeline& pipeline;                 // its pipeline's passes (the GL objects a pass owns in them)
+    const std::vector<Resource>& sinks;       // what was to be read of it after (its graph's sink)
+    const FrameTargets& targets;
+    const FrameTargets* reflectionTargets;    // the reflection's own targets when drawn reduced; else null
+    // Its graph: the pipeline's passes, which ran and why the others were culled.
+    FrameGraph graph() const { return pipeline.graph(setup, sinks); }
+    // The GPU memory of its targets (FrameTargets::heldBytes: what the graph's plan left
+    // allocated after it), the reduced reflection's included.
+    double targetMemoryBytes() const {
+        return targets.heldBytes() + (reflectionTargets ? reflectionTargets->heldBytes() : 0.0);
+    }
+};
+
+// What frames are drawn with, lent to the tools that draw or read beside them (the probes, the
+// read-backs, the check's oracle and buffer search).
+struct RendererParts {
+    ShaderLibrary& shaders;
+    const SceneGeometry& geometry;
+    const ShadowMaps& shadowMaps;  // the sun's cascades
+};
+
 class Renderer {
 public:
     Renderer(ShaderLibrary& shaders, const SceneSettings& scene);
@@ -50,73 +100,42 @@ public:
     // and falls back to standard without it. Reallocates the targets when the convention in use
     // changes; paths() says which is in use and why.
     void setDepthConvention(const DepthConvention& requested);
-    // The paths chosen from the capabilities and the last frame's scene, with their reasons.
-    const RenderPaths& paths() const { return paths_; }
     void setPipeline(PipelineKind kind) { active_ = kind; }
     PipelineKind pipeline() const { return active_; }
-    // The last frame's graph: its pipeline's passes, which ran and why the others were culled.
-    FrameGraph frameGraph() const;
-    // The debug views of the last frame (frame/frame_views.h): what they are drawn with, which the
-    // frames are culled for, drawing and reading one.
-    FrameViews& views() { return views_; }
-    const FrameViews& views() const { return views_; }
-    // The plants placed around the last frame's camera and what that frame drew of them.
-    const VegetationField& vegetation() const { return vegetationField_; }
+    // The paths chosen from the capabilities and the last frame's scene, with their reasons.
+    const RenderPaths& paths() const { return paths_; }
 
-    // Renders the scene with the active pipeline into Final (and the G-buffer when deferred).
+    // Renders the scene with the active pipeline into Final (and the G-buffer when deferred), as
+    // `request` asks (FrameRequest: whole, stopped before a pass, observed, or programs only).
     // A scene whose terrain grid density differs from the last frame's rebuilds the grid first.
-    // With `stopBefore`, the frame ends before that pass so its inputs can be inspected; throws
-    // std::invalid_argument (listing the pipeline's passes) if no pass has that name.
-    void renderFrame(const SceneSettings& scene, const std::string& stopBefore = {});
-    // Builds every program the active pipeline's frame and `view` (a debug view name, or "") use,
-    // by running them with GL_RASTERIZER_DISCARD: a frame of its own for capture tools, so the
-    // frames after it hold drawing and no shader compiles. Costs the frame's vertex work.
-    void buildPrograms(const SceneSettings& scene, const std::string& view);
-    // The frame, calling `afterEach` after every pass that ran (frame/gpu_timer.h's queries).
-    void renderFrameObserved(const SceneSettings& scene, const std::function<void(const Pass&)>& afterEach);
-    // Makes the G-buffer, depth and stencil hold the last frame's surfaces with the water scene the
-    // views ask for (frame/view_fill.h): what the views, the probe and the encoding error read.
-    // A frame stopped early keeps what it reached (a forward one gets the direct scene's steps
-    // that ran). views().scene() says what the views show at water pixels and why.
-    void ensureGBuffer();
-    // The last whole frame's surfaces drawn unrounded: the view fill of `scene` run into `exact`
-    // (targets of the frame's size, depth convention and a float layout) instead of the G-buffer.
-    // `probe --shading` reads a forward frame's surfaces there (frame/shading_probe.h).
-    void fillExactSurfaces(const FrameTargets& exact, WaterScene scene);
-    // With the tone map fused the water composite writes Final only, so Radiance holds what lies
-    // under the water there; this lays the water onto Radiance as the separate pass would have
-    // (the radiance view, the probe, readTarget). Once per frame, and only when something asks.
-    void ensureRadiance();
+    void renderFrame(const SceneSettings& scene, const FrameRequest& request = {});
     // The timing floor (passes/floor_pass.h) at the current size and layout; overwrites the targets.
     void renderFloor();
     // Shows the Display target in the bound window's framebuffer of the given size.
     void present(int windowWidth, int windowHeight);
 
+    // The debug views of the last frame (frame/frame_views.h): what they are drawn with, which the
+    // frames are culled for, the fills that make the targets hold what they show, drawing and
+    // reading one.
+    FrameViews& views() { return views_; }
+    const FrameViews& views() const { return views_; }
     const FrameTargets& targets() const { return *targets_; }
-    // The reflection's own targets when a frame drew it at a reduced resolution; null before.
-    const FrameTargets* reflectionTargets() const { return reflectionTargets_.get(); }
-    // The GPU memory of the frame's targets now (FrameTargets::heldBytes: what the graph's plan
-    // left allocated after the last frame), the reduced reflection's included.
-    // The last frame's targets with their lifetimes, as its plan gave them (render --graph).
-    const std::vector<TargetLifetime>& targetLifetimes() const { return lifetimes_; }
-    double targetMemoryBytes() const {
-        return targets_->heldBytes() + (reflectionTargets_ ? reflectionTargets_->heldBytes() : 0.0);
+    LastFrame lastFrame() const {
+        return {frame_, lifetimes_, vegetationField_, vegetationBuffers_, pipelineOf(active_), frameSinks_,
+                *targets_, reflectionTargets_.get()};
     }
-    const FrameSetup& lastFrame() const { return frame_; }
-    ShaderLibrary& shaders() { return shaders_; }
-    const SceneGeometry& geometry() const { return geometry_; }
-    const ShadowMaps& shadowMaps() const { return shadowMaps_; }
-    // The active pipeline's passes, as its frames run them (the GL objects a pass owns in them).
-    const Pipeline& activePipeline() const { return pipelineOf(active_); }
-    // The plants' instances the last frame uploaded (PlantInstances, frame/frame_graph.h's inputs).
-    const VegetationBuffers& vegetationBuffers() const { return vegetationBuffers_; }
-
+    RendererParts parts() const { return {shaders_, geometry_, shadowMaps_}; }
 
 private:
     // frame/frame_readback.cpp's way in (defined there alone): the water's bounds buffer, the
     // surfaces' float target and their refill with their own depth.
     friend struct ReadbackAccess;
     friend class FrameViews;  // its views draw from the frame's targets, context and fill
+    // FrameViews' fills (frame/frame_views.h says what each does), kept here beside the frame
+    // state they read and reset.
+    void ensureGBuffer();
+    void fillExactSurfaces(const FrameTargets& exact, WaterScene scene);
+    void ensureRadiance();
     // After a whole frame, a layout that rebuilds positions from depth gets the mirrored view fill
     // (the water's depth covers the mirrored scene there): the G-buffer's own surfaces.
     void fillSurfacesWithTheirDepth();

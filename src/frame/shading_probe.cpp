@@ -81,18 +81,18 @@ Slots drawRecord(Renderer& renderer, const FrameTargets& surfaces, const std::st
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     bindGBufferInputs(surfaces);
-    renderer.shadowMaps().bind();
+    renderer.parts().shadowMaps.bind();
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Reflection));
     glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
     glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Radiance));
-    GLuint program = renderer.shaders().program(surfaces.layout().program(variant));
+    GLuint program = renderer.parts().shaders.program(surfaces.layout().program(variant));
     glUseProgram(program);
     glUniform2i(glGetUniformLocation(program, "probePixel"), glX, glY);
     glUniform1i(glGetUniformLocation(program, "probeWater"), water ? 1 : 0);
     glUniform1i(glGetUniformLocation(program, "probeMirrored"), mirrored ? 1 : 0);
     glUniform3f(glGetUniformLocation(program, "probeLights"), lights.r, lights.g, lights.b);
-    renderer.geometry().drawFullscreenTriangle();
+    renderer.parts().geometry.drawFullscreenTriangle();
     glActiveTexture(GL_TEXTURE0);
     return values.read();
 }
@@ -113,8 +113,8 @@ void refuseLavapipeUboRecord(LightsPath path) {
 
 // The point lights' terms first (their own draw), then everything else with their sum.
 Slots recordShading(Renderer& renderer, const FrameTargets& surfaces, int glX, int glY, bool water, bool mirrored) {
-    refuseLavapipeUboRecord(renderer.lastFrame().lightsPath);
-    std::string lightsVariant = "probe.shading.lights" + lightsVariantSuffix(renderer.lastFrame().lightsPath);
+    refuseLavapipeUboRecord(renderer.lastFrame().setup.lightsPath);
+    std::string lightsVariant = "probe.shading.lights" + lightsVariantSuffix(renderer.lastFrame().setup.lightsPath);
     Slots lights = drawRecord(renderer, surfaces, lightsVariant, glX, glY, water, mirrored, glm::vec3(0.0f));
     const float* sum = &lights[OASIS_TERM_LIGHTS * 4];
     Slots slots = drawRecord(renderer, surfaces, "probe.shading", glX, glY, water, mirrored,
@@ -171,17 +171,17 @@ class ShadedSurfaces {
 public:
     explicit ShadedSurfaces(Renderer& renderer) : renderer_(renderer) {
         const FrameTargets& frame = renderer.targets();
-        if (renderer.pipeline() == PipelineKind::Forward && renderer.lastFrame().runsToEnd)
+        if (renderer.pipeline() == PipelineKind::Forward && renderer.lastFrame().setup.runsToEnd)
             exact_ = std::make_unique<FrameTargets>(*findGBufferLayout("full"), frame.depth(), frame.width(),
                                                     frame.height(), "probe --shading: forward surfaces");
     }
     const FrameTargets& fill(WaterScene scene) {
         if (exact_) {
-            renderer_.fillExactSurfaces(*exact_, scene);
+            renderer_.views().fillExactSurfaces(*exact_, scene);
             return *exact_;
         }
         renderer_.views().setWaterScene(scene);
-        renderer_.ensureGBuffer();
+        renderer_.views().ensureGBuffer();
         return renderer_.targets();
     }
 
@@ -201,7 +201,7 @@ const ShadingTerm* ShadedSurface::find(const std::string& termName) const {
 std::vector<ShadedSurface> probeShading(Renderer& renderer, const PixelProbe& probe) {
     const int glX = probe.x, glY = renderer.targets().height() - 1 - probe.y;
     const bool water = (probe.stencil & 0x7f) == kStencilWater;
-    const bool mirrored = water && renderer.lastFrame().reflectionsActive;
+    const bool mirrored = water && renderer.lastFrame().setup.reflectionsActive;
     const WaterScene viewScene = renderer.views().waterScene();
     std::vector<ShadedSurface> shading;
 
@@ -213,7 +213,7 @@ std::vector<ShadedSurface> probeShading(Renderer& renderer, const PixelProbe& pr
     if (mirrored) {
         Slots reflected = recordShading(renderer, surfaces.fill(WaterScene::Mirrored), glX, glY, false, true);
         std::string what = "what the water reflects: the mirrored scene (the frame's Reflection";
-        what += renderer.lastFrame().reflectionDivisor > 1 ? ", drawn there at a reduced resolution and upsampled)" : ")";
+        what += renderer.lastFrame().setup.reflectionDivisor > 1 ? ", drawn there at a reduced resolution and upsampled)" : ")";
         shading.push_back(surfaceTerms(reflected, "mirrored", what));
     }
     if (water)

@@ -205,7 +205,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
 
     if (ImGui::CollapsingHeader("shadows")) {
         drawOptionWidgets("shadows", scene);
-        const FrameSetup& frame = renderer.lastFrame();
+        const FrameSetup& frame = renderer.lastFrame().setup;
         ImGui::TextWrapped("%s", !scene.shadows.enabled ? "off" : frame.shadowsActive ? "drawn this frame" : "sun below the horizon: no shadow pass");
     }
     if (ImGui::CollapsingHeader("water")) {
@@ -225,7 +225,7 @@ void drawPanel(Renderer& renderer, SceneSettings& scene, WindowState& state) {
     }
     ImGui::Separator();
     ImGui::Text("%dx%d, terrain %d triangles", renderer.targets().width(), renderer.targets().height(),
-                renderer.geometry().terrainTriangles());
+                renderer.parts().geometry.terrainTriangles());
     if (!state.fallbacks.empty() &&
         ImGui::CollapsingHeader("fallbacks (this driver or --force)", ImGuiTreeNodeFlags_DefaultOpen)) {
         for (const std::string& line : state.fallbacks) {

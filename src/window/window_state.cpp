@@ -73,7 +73,7 @@ void report(WindowState& state, const std::string& message, bool isError) {
 }
 
 void reloadShaders(Renderer& renderer, WindowState& state) {
-    ShaderLibrary& shaders = renderer.shaders();
+    ShaderLibrary& shaders = renderer.parts().shaders;
     std::vector<std::string> failures = shaders.reloadAll();
     state.message.clear();  // a reload always reports, even when it repeats the last message
     if (failures.empty()) {

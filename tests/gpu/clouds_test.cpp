@@ -105,7 +105,7 @@ std::vector<glm::dvec3> skyRadianceWhere(Renderer& renderer, const SceneSettings
                                          const std::function<bool(const FrameData&, glm::dvec3)>& keep) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    const FrameData& f = renderer.lastFrame().data;
+    const FrameData& f = renderer.lastFrame().setup.data;
     const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
     const std::vector<uint8_t> stencil = readStencil(renderer);
     std::vector<glm::dvec3> kept;

@@ -38,7 +38,7 @@ TEST_P(CompactLayout, ReconstructsTheFullLayoutsSurfaces) {
     const GBufferLayout& compact = layoutNamed("compact");
     const GBufferRead reference = renderGBuffer(renderer, pose.scene, "full");
     const GBufferRead packed = renderGBuffer(renderer, pose.scene, "compact");
-    const float nearPlane = renderer.lastFrame().data.depthRange.x, farPlane = renderer.lastFrame().data.depthRange.y;
+    const float nearPlane = renderer.lastFrame().setup.data.depthRange.x, farPlane = renderer.lastFrame().setup.data.depthRange.y;
 
     int surfaces = 0, mirrored = 0, flagsDiffer = 0, materialDiffers = 0, albedoOff = 0, normalOff = 0, positionOff = 0;
     double worstAngle = 0.0, worstSteps = 0.0, worstFraction = 0.0, worstAlbedo = 0.0;

@@ -43,7 +43,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     renderer.renderFrame(poseNamed("lakeMirror").scene);
     renderer.renderFrame(poseNamed("down").scene);
     renderer.renderFrame(pose.scene);
-    renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
+    renderer.views().ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
     const std::vector<float> albedo = readTarget(renderer, Target::Albedo);
     const std::vector<float> normal = readTarget(renderer, Target::Normal);
     // Stored, or reconstructed from depth by the GPU as lighting does (the compact layout).
@@ -54,7 +54,7 @@ TEST_P(DebugViewSemantics, ViewsFollowTheirRemapping) {
     const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
     const std::vector<float> depth = readDepth(renderer);
     const std::vector<uint8_t> stencil = readStencil(renderer);
-    const FrameData& frame = renderer.lastFrame().data;
+    const FrameData& frame = renderer.lastFrame().setup.data;
     const float exposure = frame.depthRange.w;
     const float nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
     const float viewDistance = frame.terrainGridCounts.w;

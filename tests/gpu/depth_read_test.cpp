@@ -34,7 +34,7 @@ DepthReadRun renderWith(Renderer& renderer, SceneSettings scene, bool inPlace) {
     DepthReadRun run;
     scene.work.depthReadInPlace = inPlace;
     const FrameTargets& targets = renderer.targets();
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
         run.passes.push_back(pass.name());
         // What the direct lighting read: the copy against the target it was made from (the water
         // mask writes the water's depth into the target after this).
@@ -42,8 +42,8 @@ DepthReadRun renderWith(Renderer& renderer, SceneSettings scene, bool inPlace) {
         std::vector<uint32_t> target = depthSteps(targets.framebuffer({}, Target::DepthStencil), kSmallWidth, kSmallHeight);
         std::vector<uint32_t> copy = depthSteps(targets.framebuffer({}, Target::SceneDepth), kSmallWidth, kSmallHeight);
         for (size_t i = 0; i < target.size(); ++i) run.copyOff.push_back(int(copy[i]) - int(target[i]));
-    });
-    EXPECT_EQ(renderer.lastFrame().work.depthReadInPlace, inPlace);
+    }));
+    EXPECT_EQ(renderer.lastFrame().setup.work.depthReadInPlace, inPlace);
     run.radiance = readTarget(renderer, Target::Radiance);
     run.positions = readSurfacePositions(renderer);
     renderer.views().render("final");
@@ -130,7 +130,7 @@ TEST_F(DepthReadInPlace, LightsTiledReadInPlaceAndTheVolumesKeepTheCopy) {
         scene.lights.method = method;
         const DepthReadRun copied = renderWith(renderer, scene, false);
         const DepthReadRun inPlace = renderWith(renderer, scene, true);
-        EXPECT_EQ(renderer.lastFrame().lightMethod, method);
+        EXPECT_EQ(renderer.lastFrame().setup.lightMethod, method);
         EXPECT_EQ(ran(inPlace, "DepthCopyPass"), method == LightMethod::Volumes);
         EXPECT_EQ(ran(inPlace, "LightVolumePass"), method == LightMethod::Volumes);
         expectSameFrame(std::string("16 lights, ") + lightMethodName(method), copied, inPlace,

@@ -116,7 +116,7 @@ TEST_P(DomainEnds, FiniteAgreeingAndPlantsOnTheTerrain) {
     // Where the frame wrote them (countNonFiniteWritten: nothing clears the rest).
     for (Target target : {Target::Radiance, Target::Reflection, Target::Final})
         EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
-                                        renderer.lastFrame().reflectionsActive), 0)
+                                        renderer.lastFrame().setup.reflectionsActive), 0)
             << "forward " << targetName(target);
     Image deferred = renderFinal(renderer, c.scene, PipelineKind::Deferred);
     dumpImage("domain-" + c.name + "-forward", forward);
@@ -124,18 +124,18 @@ TEST_P(DomainEnds, FiniteAgreeingAndPlantsOnTheTerrain) {
     for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::Radiance,
                           Target::Reflection, Target::Final})
         EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
-                                        renderer.lastFrame().reflectionsActive), 0)
+                                        renderer.lastFrame().setup.reflectionsActive), 0)
             << "deferred " << targetName(target);
     EXPECT_EQ(countNonFinite(readDepth(renderer)), 0) << "depth";
     ImageDifference difference = compareImages(forward, deferred);
-    const glm::dvec3 camera = renderer.lastFrame().view.pose.position;
+    const glm::dvec3 camera = renderer.lastFrame().setup.view.pose.position;
     std::printf("[domains] %s: camera (%.6g, %.2f, %.6g), forward vs deferred %.2f dB, plants placed %zu drawn %zu\n",
-                c.name.c_str(), camera.x, camera.y, camera.z, difference.psnrDb, renderer.vegetation().stats().plantsPlaced,
-                renderer.vegetation().stats().plantsDrawn);
+                c.name.c_str(), camera.x, camera.y, camera.z, difference.psnrDb, renderer.lastFrame().vegetation.stats().plantsPlaced,
+                renderer.lastFrame().vegetation.stats().plantsDrawn);
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";
     if (c.expectContent) EXPECT_TRUE(hasContent(deferred));
     if (!c.checkBases) return;
-    std::vector<PlantInstance> plants = renderer.vegetation().placedPlants();
+    std::vector<PlantInstance> plants = renderer.lastFrame().vegetation.placedPlants();
     ASSERT_GT(plants.size(), 1000u) << "plants placed around the far camera";
     std::vector<glm::dvec2> points;
     std::vector<float> bases;

@@ -28,7 +28,7 @@ TEST_F(GpuTest, EncodingErrorOfEachLayoutAgainstFull) {
                 normals.median, normals.max, steps.median, steps.max);
     EXPECT_LT(normals.max, 0.01);
     EXPECT_GT(normals.max, 0.0) << "16-bit octahedral normals cannot be exact everywhere";
-    const FrameData& frame = renderer.lastFrame().data;
+    const FrameData& frame = renderer.lastFrame().setup.data;
     int beyondTolerance = 0;
     // Every finite position error within the reconstruction tolerance at its distance.
     std::vector<float> positions = readSurfacePositions(renderer);  // compact's, the last frame drawn

@@ -117,7 +117,7 @@ TEST_F(FrameSink, EachViewRunsThePassesItsReadsNeed) {
             renderer.setPipeline(kind);
             renderer.views().setSink(view.empty() ? std::vector<std::string>{} : std::vector<std::string>{view});
             renderer.renderFrame(scene);
-            std::vector<std::string> ran = passesRun(renderer.frameGraph());
+            std::vector<std::string> ran = passesRun(renderer.lastFrame().graph());
             std::printf("[ sink ] %s %s %s: %s\n", night ? "night" : "day", pipelineName(kind),
                         view.empty() ? "(whole frame)" : view.c_str(), joinedNames(ran).c_str());
             return ran;
@@ -148,7 +148,7 @@ TEST_F(FrameSink, EachViewRunsThePassesItsReadsNeed) {
         renderer.views().setSink({"albedo"});
         renderer.setPipeline(PipelineKind::Deferred);
         renderer.renderFrame(scene);
-        for (const GraphStep& step : renderer.frameGraph().steps)
+        for (const GraphStep& step : renderer.lastFrame().graph().steps)
             if (step.pass->name() == "LightingPass")
                 EXPECT_EQ(step.culled.rfind("nothing later reads what it writes (radiance", 0), 0u) << step.culled;
     }

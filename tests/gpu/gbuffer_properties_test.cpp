@@ -64,7 +64,7 @@ protected:
         deferredStencil_ = stencil;
 
         // Where the frame wrote them (countNonFiniteWritten: nothing clears the rest).
-        const bool reflecting = renderer.lastFrame().reflectionsActive;
+        const bool reflecting = renderer.lastFrame().setup.reflectionsActive;
         EXPECT_EQ(countNonFiniteWritten(albedo, Target::Albedo, stencil, reflecting), 0) << "albedo";
         EXPECT_EQ(countNonFiniteWritten(normal, Target::Normal, stencil, reflecting), 0) << "normal";
         EXPECT_EQ(countNonFiniteWritten(position, Target::Position, stencil, reflecting), 0) << "position";
@@ -74,7 +74,7 @@ protected:
         EXPECT_EQ(countNonFinite(final), 0) << "final";
         EXPECT_EQ(countNonFinite(depth), 0) << "depth";
 
-        const FrameSetup& frame = renderer.lastFrame();
+        const FrameSetup& frame = renderer.lastFrame().setup;
         const FrameData& data = frame.data;
         const double nearPlane = data.depthRange.x, farPlane = data.depthRange.y;
         const double level = data.water.x, eyeHeight = double(data.cameraPosition.y) - level;
@@ -219,7 +219,7 @@ protected:
         EXPECT_EQ(countNonFinite(depth), 0);
         EXPECT_EQ(countNonFinite(readTarget(renderer, Target::Radiance)), 0);
         EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, Target::Reflection), Target::Reflection, stencil,
-                                        renderer.lastFrame().reflectionsActive), 0);
+                                        renderer.lastFrame().setup.reflectionsActive), 0);
         EXPECT_EQ(countNonFinite(readTarget(renderer, Target::Final)), 0);
         int mismatches = 0, firstMismatch = -1;
         for (size_t i = 0; i < depth.size(); ++i) {

@@ -48,7 +48,7 @@ TEST_F(ObjectLabels, DeferredFrameTargetsAreNamedByRoleAndLayout) {
     EXPECT_EQ(gl::objectLabel(gl::ObjectKind::Texture, targets.texture(Target::Albedo)), "G-buffer albedo (compact)");
     EXPECT_EQ(gl::objectLabel(gl::ObjectKind::Texture, targets.texture(Target::SceneDepth)), "SceneDepth copy");
     EXPECT_EQ(gl::objectLabel(gl::ObjectKind::Texture, targets.texture(Target::Reflection)), "Reflection");
-    EXPECT_EQ(gl::objectLabel(gl::ObjectKind::Program, renderer.shaders().program("lighting.compact")),
+    EXPECT_EQ(gl::objectLabel(gl::ObjectKind::Program, renderer.parts().shaders.program("lighting.compact")),
               "lighting.compact");
     // Every live buffer, texture, framebuffer, vertex array, program and sampler has a label (this test's
     // renderer and shader library are the only makers of objects left: earlier tests' are deleted).

@@ -216,7 +216,7 @@ template <typename Point>
 std::vector<glm::vec3> probeGpuHeights(ShaderLibrary& shaders, const Renderer& renderer,
                                        const std::vector<Point>& points) {
     const int side = std::max(1, int(std::ceil(std::sqrt(double(points.size())))));
-    const glm::dvec3 camera = renderer.lastFrame().view.pose.position;
+    const glm::dvec3 camera = renderer.lastFrame().setup.view.pose.position;
     std::vector<float> input(size_t(side) * size_t(side) * 4, 0.0f);
     for (size_t i = 0; i < points.size(); ++i) {
         input[i * 4] = float(double(points[i].x) - camera.x);
@@ -241,7 +241,7 @@ std::vector<glm::vec3> probeGpuHeights(ShaderLibrary& shaders, const Renderer& r
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
     glBindTexture(GL_TEXTURE_2D, source.name());
     glUseProgram(shaders.program("probe.height"));
-    renderer.geometry().drawFullscreenTriangle();
+    renderer.parts().geometry.drawFullscreenTriangle();
     std::vector<float> result(size_t(side) * size_t(side) * 4);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glReadPixels(0, 0, side, side, GL_RGBA, GL_FLOAT, result.data());

@@ -36,7 +36,7 @@ CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool read
     if (counted) glGenQueries(1, &query);
     bool open = false;
     const std::string before[] = {"VegetationPass.gbuffer", "DepthCopyPass", "LightTilingPass", "LightingPass"};
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
         if (!counted) return;
         if (open) {
             glEndQuery(GL_SAMPLES_PASSED);
@@ -50,12 +50,12 @@ CoverageRun renderWith(Renderer& renderer, const SceneSettings& scene, bool read
             glBeginQuery(GL_SAMPLES_PASSED, query);
             open = true;
         }
-    });
+    }));
     if (counted) glDeleteQueries(1, &query);
     run.radiance = readTarget(renderer, Target::Radiance);
     // Where the frame wrote it: nothing clears Reflection outside the water (fresh NaNs on zink).
     run.reflection = writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection, readStencil(renderer),
-                                   renderer.lastFrame().reflectionsActive);
+                                   renderer.lastFrame().setup.reflectionsActive);
     renderer.views().render("final");
     run.final = readDisplay(renderer);
     return run;
@@ -87,10 +87,10 @@ TEST_F(LightingCoverage, SurfacesOnlyEqualsEveryPixelAndTheSkyShadesTheRest) {
             scene.work.depthReadInPlace = inPlace;
             const CoverageRun tested = renderWith(renderer, scene, true);
             LightingPass lighting;
-            EXPECT_TRUE(lighting.testsSurfaces(renderer.lastFrame()));
+            EXPECT_TRUE(lighting.testsSurfaces(renderer.lastFrame().setup));
             const CoverageRun untested = renderWith(renderer, scene, false);
             bool samplesTarget = inPlace && std::string(layout) == "compact";
-            EXPECT_EQ(lighting.testsSurfaces(renderer.lastFrame()), !samplesTarget);
+            EXPECT_EQ(lighting.testsSurfaces(renderer.lastFrame().setup), !samplesTarget);
             EXPECT_TRUE(hasContent(tested.final));
             ImageDifference difference = compareImages(tested.final, untested.final);
             EXPECT_EQ(difference.maxAbs, 0) << difference.psnrDb << " dB";

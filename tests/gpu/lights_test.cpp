@@ -236,7 +236,7 @@ TEST_F(Lights, LightVolumesViewCountsTheLightsAtEachPixel) {
     dumpImage("lights-volumes-view", view);
     std::vector<float> position = readTarget(renderer, Target::Position);
     std::vector<float> info = readTarget(renderer, Target::Info);
-    const glm::dvec3 eye = renderer.lastFrame().view.pose.position;
+    const glm::dvec3 eye = renderer.lastFrame().setup.view.pose.position;
     int counted[3] = {0, 0, 0}, wrong = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {

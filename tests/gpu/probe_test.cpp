@@ -72,13 +72,13 @@ TEST_P(Probe, AgreesWithTheCpuReadBackAtEveryKindOfPixel) {
     // Both water scenes are checked: the mirrored one in deferred, the direct one (the lakebed) in forward.
     renderer.views().setWaterScene(pipeline == PipelineKind::Deferred ? WaterScene::Mirrored : WaterScene::Direct);
     renderer.renderFrame(scene);
-    renderer.ensureGBuffer();  // the views' fill of the water scene, as the probe and the views read it
+    renderer.views().ensureGBuffer();  // the views' fill of the water scene, as the probe and the views read it
 
     CpuFrame cpu{readTarget(renderer, Target::Albedo), readTarget(renderer, Target::Normal),
                  readTarget(renderer, Target::Info), readSurfacePositions(renderer),
                  readTarget(renderer, Target::Radiance), readTarget(renderer, Target::Reflection),
                  readTarget(renderer, Target::Final), readDepth(renderer), readStencil(renderer)};
-    const FrameSetup& frame = renderer.lastFrame();
+    const FrameSetup& frame = renderer.lastFrame().setup;
     // Nothing drawn (gbufferSkyAt): by depth at the far plane in the compact layout, whose colour
     // targets are not cleared there, by Info's SKY flag in the others. The probe shows the texels
     // no pass wrote (those, and Reflection outside the water) as the clear used to leave them.

@@ -25,13 +25,13 @@ long long reflectionWorkInvocations(Renderer& renderer, const SceneSettings& sce
     glGenQueries(1, &query);
     long long reflection = 0;
     glBeginQuery(statistic, query);
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
         glEndQuery(statistic);
         GLuint64 count = 0;
         glGetQueryObjectui64v(query, GL_QUERY_RESULT, &count);
         if (counted(pass)) reflection += (long long)count;
         glBeginQuery(statistic, query);
-    });
+    }));
     glEndQuery(statistic);
     glDeleteQueries(1, &query);
     return reflection;

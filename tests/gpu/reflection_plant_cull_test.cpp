@@ -46,16 +46,16 @@ TEST_F(ReflectionPlantCull, SameFramesBitForBitWithFewerMirroredPlants) {
             // Where the frame wrote it (writtenTexels: nothing clears Reflection outside the water).
             auto reflection = [&] {
                 return writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection,
-                                     readStencil(renderer), renderer.lastFrame().reflectionsActive);
+                                     readStencil(renderer), renderer.lastFrame().setup.reflectionsActive);
             };
             const std::vector<float> reflectionWithout = reflection();
-            const VegetationStats statsWithout = renderer.vegetation().stats();
-            EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
+            const VegetationStats statsWithout = renderer.lastFrame().vegetation.stats();
+            EXPECT_FALSE(renderer.lastFrame().setup.mirroredPlantsCulled);
 
             const Image with = renderFinal(renderer, withCull(pose.scene, true), kind);
             const std::vector<float> reflectionWith = reflection();
-            const VegetationStats stats = renderer.vegetation().stats();
-            EXPECT_EQ(renderer.lastFrame().mirroredPlantsCulled, renderer.lastFrame().reflectionsActive);
+            const VegetationStats stats = renderer.lastFrame().vegetation.stats();
+            EXPECT_EQ(renderer.lastFrame().setup.mirroredPlantsCulled, renderer.lastFrame().setup.reflectionsActive);
 
             ImageDifference difference = compareImages(without, with);
             EXPECT_EQ(difference.maxAbs, 0) << difference.psnrDb << " dB";
@@ -84,14 +84,14 @@ TEST_F(ReflectionPlantCull, StandsAsideAtReducedResolutionAndWithoutReflections)
     SceneSettings scene = defaultPose().scene;
     scene.water.reflectionDivisor = 2;
     renderFinal(renderer, scene, PipelineKind::Deferred);
-    EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
-    EXPECT_EQ(renderer.vegetation().stats().plantsMirroredOnLand, 0u);
-    EXPECT_EQ(renderer.vegetation().stats().chunksMirroredOnLand, 0u);
+    EXPECT_FALSE(renderer.lastFrame().setup.mirroredPlantsCulled);
+    EXPECT_EQ(renderer.lastFrame().vegetation.stats().plantsMirroredOnLand, 0u);
+    EXPECT_EQ(renderer.lastFrame().vegetation.stats().chunksMirroredOnLand, 0u);
     scene = defaultPose().scene;
     scene.water.reflections = false;
     renderFinal(renderer, scene, PipelineKind::Deferred);
-    EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
-    EXPECT_EQ(renderer.vegetation().stats().plantsDrawnMirrored, 0u);
+    EXPECT_FALSE(renderer.lastFrame().setup.mirroredPlantsCulled);
+    EXPECT_EQ(renderer.lastFrame().vegetation.stats().plantsDrawnMirrored, 0u);
 }
 
 // Auto (the default) culls once the camera stands still: not on a frame whose grid moved, from
@@ -103,16 +103,16 @@ TEST_F(ReflectionPlantCull, AutoCullsWhileTheCameraStandsStill) {
     SceneSettings scene = defaultPose().scene;
     ASSERT_EQ(scene.work.mirroredPlantCull, MirroredPlantCull::Auto);
     const Image first = renderFinal(renderer, scene, PipelineKind::Deferred);
-    EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled) << "the first frame has no last grid";
+    EXPECT_FALSE(renderer.lastFrame().setup.mirroredPlantsCulled) << "the first frame has no last grid";
     const Image still = renderFinal(renderer, scene, PipelineKind::Deferred);
-    EXPECT_TRUE(renderer.lastFrame().mirroredPlantsCulled);
-    EXPECT_GT(renderer.vegetation().stats().plantsMirroredOnLand, 0u);
+    EXPECT_TRUE(renderer.lastFrame().setup.mirroredPlantsCulled);
+    EXPECT_GT(renderer.lastFrame().vegetation.stats().plantsMirroredOnLand, 0u);
     EXPECT_EQ(compareImages(first, still).maxAbs, 0);
     scene.timeSeconds = 0.5;  // the flight moves on
     renderFinal(renderer, scene, PipelineKind::Deferred);
-    EXPECT_FALSE(renderer.lastFrame().mirroredPlantsCulled);
+    EXPECT_FALSE(renderer.lastFrame().setup.mirroredPlantsCulled);
     renderFinal(renderer, scene, PipelineKind::Forward);
-    EXPECT_TRUE(renderer.lastFrame().mirroredPlantsCulled) << "the other pipeline, the same view";
+    EXPECT_TRUE(renderer.lastFrame().setup.mirroredPlantsCulled) << "the other pipeline, the same view";
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ std::vector<NamedPose> posesWithWater() { return {defaultPose(), vegetationPoses
 
 // The reduced Reflection as floats (RGBA, bottom row first) at its own size.
 std::vector<float> readReducedReflection(const Renderer& renderer) {
-    const FrameTargets& reduced = *renderer.reflectionTargets();
+    const FrameTargets& reduced = *renderer.lastFrame().reflectionTargets;
     std::vector<float> pixels(size_t(reduced.width()) * size_t(reduced.height()) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, reduced.framebuffer({Target::Reflection}));
     readColourFloats(reduced.width(), reduced.height(), pixels.data());
@@ -95,9 +95,9 @@ TEST_F(ReflectionResolution, ReflectionTargetIsTheReducedTargetReadBilinearly) {
                 // the frame was written there.
                 zeroTarget(renderer.targets(), Target::Reflection);
                 renderer.renderFrame(atResolution(defaultPose().scene, divisor));
-                ASSERT_NE(renderer.reflectionTargets(), nullptr);
-                const int reducedWidth = renderer.reflectionTargets()->width();
-                const int reducedHeight = renderer.reflectionTargets()->height();
+                ASSERT_NE(renderer.lastFrame().reflectionTargets, nullptr);
+                const int reducedWidth = renderer.lastFrame().reflectionTargets->width();
+                const int reducedHeight = renderer.lastFrame().reflectionTargets->height();
                 EXPECT_EQ(reducedWidth, kMediumWidth / divisor);
                 EXPECT_EQ(reducedHeight, kMediumHeight / divisor);
                 const std::vector<uint8_t> stencil = readStencil(renderer);
@@ -188,17 +188,17 @@ TEST_F(ReflectionResolution, OddSizesRoundTheTargetsUp) {
     for (auto [divisor, reducedWidth, reducedHeight] : {std::tuple{2, 161, 91}, std::tuple{4, 81, 46}}) {
         SCOPED_TRACE("1/" + std::to_string(divisor));
         const Image reduced = renderFinal(renderer, atResolution(defaultPose().scene, divisor), PipelineKind::Deferred);
-        ASSERT_NE(renderer.reflectionTargets(), nullptr);
-        EXPECT_EQ(renderer.reflectionTargets()->width(), reducedWidth);
-        EXPECT_EQ(renderer.reflectionTargets()->height(), reducedHeight);
+        ASSERT_NE(renderer.lastFrame().reflectionTargets, nullptr);
+        EXPECT_EQ(renderer.lastFrame().reflectionTargets->width(), reducedWidth);
+        EXPECT_EQ(renderer.lastFrame().reflectionTargets->height(), reducedHeight);
         EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, Target::Reflection), Target::Reflection,
-                                        readStencil(renderer), renderer.lastFrame().reflectionsActive),
+                                        readStencil(renderer), renderer.lastFrame().setup.reflectionsActive),
                   0);
         EXPECT_GE(compareImages(full, reduced).psnrDb, 27.0);
     }
     // Back at full resolution the reduced set is released (and the frame is the full one again).
     const Image again = renderFinal(renderer, defaultPose().scene, PipelineKind::Deferred);
-    EXPECT_EQ(renderer.reflectionTargets(), nullptr);
+    EXPECT_EQ(renderer.lastFrame().reflectionTargets, nullptr);
     EXPECT_EQ(compareImages(full, again).maxAbs, 0);
 }
 

@@ -110,14 +110,14 @@ TEST_F(Resources, GridDensityChangesRebuildTheGridAndLeakNothing) {
     const int coarseTriangles = int(buildTerrainGrid(coarse.grid).indices.size() / 3);
     ASSERT_NE(defaultTriangles, coarseTriangles);
     renderFinal(renderer, pose.scene, PipelineKind::Deferred);  // builds the final view's program too
-    EXPECT_EQ(renderer.geometry().terrainTriangles(), defaultTriangles);
+    EXPECT_EQ(renderer.parts().geometry.terrainTriangles(), defaultTriangles);
     const LiveCounts countsBefore = liveCounts();
     for (int i = 0; i < 5; ++i) {
         Image image = renderFinal(renderer, coarse, PipelineKind::Deferred);
-        EXPECT_EQ(renderer.geometry().terrainTriangles(), coarseTriangles);
+        EXPECT_EQ(renderer.parts().geometry.terrainTriangles(), coarseTriangles);
         EXPECT_TRUE(hasContent(image));
         renderer.renderFrame(pose.scene);
-        EXPECT_EQ(renderer.geometry().terrainTriangles(), defaultTriangles);
+        EXPECT_EQ(renderer.parts().geometry.terrainTriangles(), defaultTriangles);
     }
     glFinish();
     EXPECT_EQ(liveCounts(), countsBefore) << "wrapper live object counts changed over grid density round trips";

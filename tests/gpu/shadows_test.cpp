@@ -57,7 +57,7 @@ protected:
         renderer.configure(width, height, layoutNamed("full"));
         renderer.setPipeline(PipelineKind::Deferred);
         renderer.renderFrame(scene);
-        const FrameSetup& frame = renderer.lastFrame();
+        const FrameSetup& frame = renderer.lastFrame().setup;
         EXPECT_TRUE(frame.shadowsActive) << name;
         renderer.views().render("shadow");
         dumpImage("shadows-" + name, readDisplay(renderer));
@@ -189,7 +189,7 @@ TEST_F(Shadows, NightRunsNoShadowPass) {
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         renderer.setPipeline(kind);
         std::vector<std::string> ran;
-        renderer.renderFrameObserved(scene, [&](const Pass& pass) { ran.push_back(pass.name()); });
+        renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) { ran.push_back(pass.name()); }));
         EXPECT_EQ(std::count(ran.begin(), ran.end(), "ShadowPass"), 0) << pipelineName(kind);
         std::vector<float> values = renderer.views().readValues("shadow");
         for (size_t i = 0; i < values.size(); i += 4) {
@@ -200,7 +200,7 @@ TEST_F(Shadows, NightRunsNoShadowPass) {
     // By day the same frame runs it (so the check above can fail).
     scene.hour = 10.0;
     std::vector<std::string> ran;
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) { ran.push_back(pass.name()); });
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) { ran.push_back(pass.name()); }));
     EXPECT_EQ(std::count(ran.begin(), ran.end(), "ShadowPass"), 1);
 }
 
@@ -242,7 +242,7 @@ TEST_F(Shadows, PlantsCastShadowsOnTheGround) {
     renderer.renderFrame(scene);
     std::vector<float> with = renderer.views().readValues("shadow");
     std::vector<uint8_t> stencil = readStencil(renderer);
-    EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 100u);
+    EXPECT_GT(renderer.lastFrame().vegetation.stats().plantsDrawn, 100u);
     SceneSettings bare = scene;
     bare.vegetation.enabled = false;
     renderer.renderFrame(bare);

@@ -30,7 +30,7 @@ struct SkyFrame {
 SkyFrame render(Renderer& renderer, const SceneSettings& scene, PipelineKind kind) {
     renderer.setPipeline(kind);
     renderer.renderFrame(scene);
-    return {renderer.lastFrame().data, readTarget(renderer, Target::Radiance), readStencil(renderer)};
+    return {renderer.lastFrame().setup.data, readTarget(renderer, Target::Radiance), readStencil(renderer)};
 }
 
 // A camera 5 units above the lake's level, looking along (yaw, pitch) in degrees.

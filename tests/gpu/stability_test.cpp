@@ -184,7 +184,7 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
     // Where the frame wrote each target: nothing clears the rest (NaNs in zink's fresh memory).
     auto nonFiniteWritten = [&](Target target) {
         return countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
-                                     renderer.lastFrame().reflectionsActive);
+                                     renderer.lastFrame().setup.reflectionsActive);
     };
     for (Target target : {Target::Radiance, Target::Reflection, Target::Final})
         EXPECT_EQ(nonFiniteWritten(target), 0) << "forward " << targetName(target);
@@ -212,9 +212,9 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
     ImageDifference difference = compareImages(forward, deferred);
     std::printf("[stability] %s: camera (%.0f, %.2f, %.0f), %d surface pixels, worst |n|-1 %.1e, forward vs deferred "
                 "%.2f dB, plants drawn %zu, lights %d\n",
-                hard.name.c_str(), renderer.lastFrame().view.pose.position.x, renderer.lastFrame().view.pose.position.y,
-                renderer.lastFrame().view.pose.position.z, surfaces, worst, difference.psnrDb,
-                renderer.vegetation().stats().plantsDrawn, renderer.paths().lightsDrawn);
+                hard.name.c_str(), renderer.lastFrame().setup.view.pose.position.x, renderer.lastFrame().setup.view.pose.position.y,
+                renderer.lastFrame().setup.view.pose.position.z, surfaces, worst, difference.psnrDb,
+                renderer.lastFrame().vegetation.stats().plantsDrawn, renderer.paths().lightsDrawn);
     EXPECT_GT(surfaces, 0);
     EXPECT_EQ(notUnit, 0) << "normals off unit length by more than 1e-3 (worst " << worst << ")";
     EXPECT_GE(difference.psnrDb, 45.0) << "forward and deferred disagree";
@@ -222,7 +222,7 @@ TEST_P(Stability, FiniteUnitNormalsAndAgreement) {
     EXPECT_TRUE(hasContent(forward));
     if (hard.check) {
         const std::vector<float> position = readTarget(renderer, Target::Position);
-        hard.check(CaseFrame{renderer.lastFrame(), hard.width, hard.height, position, info, stencil, forward,
+        hard.check(CaseFrame{renderer.lastFrame().setup, hard.width, hard.height, position, info, stencil, forward,
                              deferred, renderer.paths().lightsDrawn});
     }
 }
@@ -240,7 +240,7 @@ TEST_P(Stability, CompactLayoutFiniteAndAgrees) {
     for (Target target : {Target::Albedo, Target::Normal, Target::Info, Target::Radiance, Target::Reflection,
                           Target::Final})
         EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, target), target, readStencil(renderer),
-                                        renderer.lastFrame().reflectionsActive),
+                                        renderer.lastFrame().setup.reflectionsActive),
                   0)
             << "deferred " << targetName(target);
     const std::vector<float> positions = readSurfacePositions(renderer);

@@ -18,7 +18,7 @@ class TargetMemory : public GpuTest {};
 double plannedBytes(const Renderer& renderer) {
     const FrameTargets& targets = renderer.targets();
     std::set<Target> memories;
-    for (const TargetLifetime& lifetime : renderer.targetLifetimes())
+    for (const TargetLifetime& lifetime : renderer.lastFrame().targetLifetimes)
         if (targets.layout().stores(lifetime.target)) memories.insert(targets.memory()[size_t(lifetime.target)]);
     double bytesPerPixel = 4.0;  // Display: the views have drawn it
     for (Target memory : memories) bytesPerPixel += targetFormat(targets.layout(), targets.depth(), memory).bytesPerPixel;
@@ -44,7 +44,7 @@ TEST_F(TargetMemory, TheForwardFrameHoldsNoGBufferAndEachFrameOnlyWhatItsGraphUs
         renderer.views().render("final");
         const FrameTargets& targets = renderer.targets();
         EXPECT_NE(targets.heldTexture(Target::Albedo), 0u);
-        const double deferred = renderer.targetMemoryBytes();
+        const double deferred = renderer.lastFrame().targetMemoryBytes();
         EXPECT_EQ(deferred, plannedBytes(renderer));
 
         renderer.setPipeline(PipelineKind::Forward);
@@ -52,7 +52,7 @@ TEST_F(TargetMemory, TheForwardFrameHoldsNoGBufferAndEachFrameOnlyWhatItsGraphUs
         renderer.views().render("final");
         for (Target gbuffer : {Target::Albedo, Target::Normal, Target::Position, Target::Info, Target::SceneDepth})
             EXPECT_EQ(targets.heldTexture(gbuffer), 0u) << targetName(gbuffer);
-        const double forward = renderer.targetMemoryBytes();
+        const double forward = renderer.lastFrame().targetMemoryBytes();
         EXPECT_EQ(forward, plannedBytes(renderer));
         EXPECT_LT(forward, deferred);
         // The deferred frame seen through the final view uses every target these layouts store.

@@ -46,7 +46,7 @@ TEST_F(TerrainCoverage, EveryRayTwentyDegreesBelowTheHorizonHitsTerrain) {
                 renderer.renderFrame(scene);
                 const std::vector<float> position = readTarget(renderer, Target::Position);
                 const std::vector<uint8_t> stencil = readStencil(renderer);
-                const glm::mat4 inverse = renderer.lastFrame().data.inverseViewProjection;
+                const glm::mat4 inverse = renderer.lastFrame().setup.data.inverseViewProjection;
                 int uncovered = 0;
                 float steepest = 0.0f, shallowest = -90.0f;  // elevations (degrees) of uncovered rays
                 for (int y = 0; y < kHeight; ++y) {

@@ -93,7 +93,7 @@ Agreement compareMethods(Renderer& renderer, const SceneSettings& scene, const I
     // Reflection where the frame wrote it (writtenTexels: nothing clears it outside the water).
     auto writtenReflection = [&] {
         return writtenTexels(readTarget(renderer, Target::Reflection), Target::Reflection, readStencil(renderer),
-                             renderer.lastFrame().reflectionsActive);
+                             renderer.lastFrame().setup.reflectionsActive);
     };
     std::vector<float> radiance = readTarget(renderer, Target::Radiance), reflection = writtenReflection();
     Image image = renderFinal(renderer, tiled, PipelineKind::Deferred);

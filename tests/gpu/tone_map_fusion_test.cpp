@@ -27,7 +27,7 @@ FrameRun observe(Renderer& renderer, const SceneSettings& scene) {
         glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
         run.fragments = 0;
     }
-    renderer.renderFrameObserved(scene, [&](const Pass& pass) {
+    renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
         run.passes.push_back(pass.name());
         if (!counted) return;
         glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
@@ -36,7 +36,7 @@ FrameRun observe(Renderer& renderer, const SceneSettings& scene) {
         run.passFragments.push_back((long long)count);
         run.fragments += (long long)count;
         glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, query);
-    });
+    }));
     if (counted) {
         glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
         glDeleteQueries(1, &query);
@@ -72,7 +72,7 @@ TEST_F(ToneMapFusion, FusedFrameEqualsTheSeparatePassAndRadianceStaysWhole) {
                 const Image separate = readDisplay(renderer);
 
                 renderer.renderFrame(withToneMap(pose.scene, true));
-                EXPECT_TRUE(renderer.lastFrame().toneMapFused);
+                EXPECT_TRUE(renderer.lastFrame().setup.toneMapFused);
                 renderer.views().render("final");
                 const Image fused = readDisplay(renderer);
                 EXPECT_TRUE(hasContent(fused));
@@ -122,7 +122,7 @@ TEST_F(ToneMapFusion, LightsFuseExceptTheVolumesWhichKeepTheSeparatePass) {
 
         FrameRun fusedRun = observe(renderer, withToneMap(scene, true));
         renderer.views().render("final");
-        EXPECT_EQ(renderer.lastFrame().toneMapFused, c.fused);
+        EXPECT_EQ(renderer.lastFrame().setup.toneMapFused, c.fused);
         EXPECT_EQ(ran(fusedRun, "ToneMapPass"), !c.fused);
         EXPECT_LE(compareImages(separate, readDisplay(renderer)).maxAbs, 1);
     }

@@ -31,7 +31,7 @@ TEST_F(Vegetation, PlantBasesLieOnTheTerrainTheGpuDraws) {
     renderer.configure(kMediumWidth, kMediumHeight, layoutNamed("standard"));
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.renderFrame(pose.scene);
-    std::vector<PlantInstance> plants = renderer.vegetation().placedPlants();
+    std::vector<PlantInstance> plants = renderer.lastFrame().vegetation.placedPlants();
     ASSERT_GE(plants.size(), 20000u) << "fewer plants than the issue asks for around the camera";
     // Every 7th plant: 5,000-odd bases spread over the whole field.
     std::vector<glm::vec2> points;
@@ -69,12 +69,12 @@ TEST_F(Vegetation, ToggleChangesOnlyPlantAndWaterPixels) {
         std::vector<uint8_t> stencilOn = stencilOf(renderer, pose.scene, kind);
         renderer.views().render("final");
         Image on = readDisplay(renderer);
-        EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 1000u);
-        EXPECT_GT(renderer.vegetation().stats().plantsDrawnMirrored, 0u);
+        EXPECT_GT(renderer.lastFrame().vegetation.stats().plantsDrawn, 1000u);
+        EXPECT_GT(renderer.lastFrame().vegetation.stats().plantsDrawnMirrored, 0u);
         std::vector<uint8_t> stencilOff = stencilOf(renderer, off, kind);
         renderer.views().render("final");
         Image offImage = readDisplay(renderer);
-        EXPECT_EQ(renderer.vegetation().stats().plantsDrawn, 0u) << "plants drawn with vegetation off";
+        EXPECT_EQ(renderer.lastFrame().vegetation.stats().plantsDrawn, 0u) << "plants drawn with vegetation off";
         EXPECT_EQ(countValue(stencilOff, kStencilPlant), 0u) << "plant stencil marks with vegetation off";
         size_t plantPixels = countValue(stencilOn, kStencilPlant);
         EXPECT_GT(plantPixels, size_t(kMediumWidth * kMediumHeight / 20)) << "the meadow shows few plants";
@@ -161,7 +161,7 @@ TEST_F(Vegetation, CpuAtlasDrawsTheSameFrame) {
     renderer.views().setPlantAtlas(&cpuAtlas);
     Image cpu = renderFinal(renderer, pose.scene, PipelineKind::Deferred);
     EXPECT_EQ(compareImages(gpu, cpu).maxAbs, 0) << "the CPU-interpreted atlas draws a different frame";
-    EXPECT_GT(renderer.vegetation().stats().plantsDrawn, 0u);
+    EXPECT_GT(renderer.lastFrame().vegetation.stats().plantsDrawn, 0u);
 }
 
 // Fragment shader invocations of one frame, where the context counts them (GL 4.6 or

@@ -20,14 +20,14 @@ TEST_P(ViewValues, AreTheTargetsDecoded) {
     renderer.configure(kSmallWidth, kSmallHeight, layout);
     auto atlas = attachPlantAtlas(*shaders_, renderer);
     renderer.renderFrame(pose.scene);
-    renderer.ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
+    renderer.views().ensureGBuffer();  // the targets as the views show them (the direct scene under the water)
     const std::vector<float> positions = readSurfacePositions(renderer);
     const std::vector<float> normal = readTarget(renderer, Target::Normal);
     const std::vector<float> info = readTarget(renderer, Target::Info);
     const std::vector<float> radiance = readTarget(renderer, Target::Radiance);
     const std::vector<float> depth = readDepth(renderer);
     const std::vector<uint8_t> stencil = readStencil(renderer);
-    const FrameData& frame = renderer.lastFrame().data;
+    const FrameData& frame = renderer.lastFrame().setup.data;
     const double nearPlane = frame.depthRange.x, farPlane = frame.depthRange.y;
 
     const std::vector<float> positionValues = renderer.views().readValues("position");

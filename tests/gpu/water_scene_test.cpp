@@ -50,7 +50,7 @@ protected:
         renderer.setPipeline(pipeline);
         renderer.views().setWaterScene(waterScene);
         renderer.renderFrame(scene);
-        renderer.ensureGBuffer();
+        renderer.views().ensureGBuffer();
         return readSurfaces(renderer);
     }
     // The deferred frame as it stood before `pass`.

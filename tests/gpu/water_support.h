@@ -24,12 +24,12 @@ struct FrameReadback {
     uint8_t stencilAt(int x, int y) const { return stencil[index(x, y)]; }
 };
 
-// Not const: reading Radiance after a fused frame lays the water on first (Renderer::ensureRadiance).
+// Not const: reading Radiance after a fused frame lays the water on first (FrameViews::ensureRadiance).
 inline FrameReadback readBack(Renderer& renderer, bool gbuffer) {
     FrameReadback r;
     r.width = renderer.targets().width();
     r.height = renderer.targets().height();
-    r.frame = renderer.lastFrame();
+    r.frame = renderer.lastFrame().setup;
     if (gbuffer) {
         r.albedo = readTarget(renderer, Target::Albedo);
         r.normal = readTarget(renderer, Target::Normal);

@@ -98,8 +98,8 @@ Checkpoint measure(Renderer& renderer, SceneSettings& scene, int frame) {
     fixed.timeSeconds = knobsFor(frame).timeSeconds;
     drawFrame(renderer, scene, fixed);
     glFinish();
-    return {frame, residentKiB(), liveCounts(), probeNames(), int(renderer.vegetation().stats().plantsPlaced),
-            renderer.lastFrame().view.pose.position.x};
+    return {frame, residentKiB(), liveCounts(), probeNames(), int(renderer.lastFrame().vegetation.stats().plantsPlaced),
+            renderer.lastFrame().setup.view.pose.position.x};
 }
 
 class Soak : public GpuTest {};
