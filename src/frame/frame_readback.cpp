@@ -13,10 +13,10 @@ namespace oasis {
 
 // The renderer's internals these reads need, and nothing else of it (a friend of Renderer).
 struct ReadbackAccess {
-    static GLuint waterBounds(const Renderer& renderer) { return renderer.waterBounds_.name(); }
+    static GLuint waterBounds(const Renderer& renderer) { return renderer.water_.bounds.name(); }
     static GLuint frameBlock(const Renderer& renderer) { return renderer.frameUniforms_.name(); }
-    static GLuint lightList(const Renderer& renderer) { return renderer.lightList_.name(); }
-    static GLuint lightCount(const Renderer& renderer) { return renderer.lightCount_.name(); }
+    static GLuint lightList(const Renderer& renderer) { return renderer.lights_.list.name(); }
+    static GLuint lightCount(const Renderer& renderer) { return renderer.lights_.count.name(); }
     static FloatReadback& positions(Renderer& renderer) { return renderer.positionsReadback_; }
     static void fillSurfacesWithTheirDepth(Renderer& renderer) { renderer.fillSurfacesWithTheirDepth(); }
     // The depth and stencil read-backs may draw (render/depth_stencil_readback.h): a const read

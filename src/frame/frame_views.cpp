@@ -26,7 +26,7 @@ void FrameViews::setSink(const std::vector<std::string>& views) {
 const std::vector<std::string>& FrameViews::sink() const { return sink_; }
 void FrameViews::setStencilPath(StencilViewPath path) { stencilPath_ = path; }
 StencilViewPath FrameViews::stencilPath() const { return stencilPath_; }
-const PlantAtlas* FrameViews::plantAtlas() const { return renderer_.plantAtlas_; }
+const PlantAtlas* FrameViews::plantAtlas() const { return renderer_.plants_.atlas; }
 void FrameViews::setExposure(float stops) { debugViews_.setExposureStops(stops); }
 float FrameViews::exposure() const { return debugViews_.exposureStops(); }
 void FrameViews::setWaterScene(WaterScene scene) { waterScene_ = scene; }
@@ -34,12 +34,12 @@ WaterScene FrameViews::waterScene() const { return waterScene_; }
 const ViewScene& FrameViews::scene() const { return scene_; }
 
 void FrameViews::setPlantAtlas(const PlantAtlas* atlas) {
-    renderer_.plantAtlas_ = atlas;
+    renderer_.plants_.atlas = atlas;
     debugViews_.setPlantAtlasTexture(atlas ? atlas->texture() : 0);
     if (atlas)
-        renderer_.vegetationBuffers_.setAtlas(atlas->texture(), atlas->columns(), atlas->rows());
+        renderer_.plants_.buffers.setAtlas(atlas->texture(), atlas->columns(), atlas->rows());
     else
-        renderer_.vegetationBuffers_.setAtlas(0, 1, 1);
+        renderer_.plants_.buffers.setAtlas(0, 1, 1);
 }
 
 void FrameViews::requireInSink(const std::string& viewName) const {

@@ -31,8 +31,8 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     // session replaces the capabilities with its --force-aware report: setCapabilities).
     const gl::Capabilities caps = gl::measureCapabilities();
     RendererCapabilities& given = paths_.capabilities;
-    given.ssbo.available = caps.ssboAvailable(&ssboMissingReason_);
-    given.ssbo.reason = ssboMissingReason_;
+    given.ssbo.available = caps.ssboAvailable(&lights_.ssboMissingReason);
+    given.ssbo.reason = lights_.ssboMissingReason;
     given.forcedLightsPath = scene.lights.path;
     given.forcedLightMethod = scene.lights.method;
     // The table's driver workarounds for this context; a session gives its request's set instead.
@@ -43,15 +43,15 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     glGetIntegerv(GL_MAX_FRAGMENT_UNIFORM_BLOCKS, &maxFragmentBlocks);
     paths_.uboLights = uboLightLayout(maxBlockSize, std::min(maxVertexBlocks, maxFragmentBlocks));
     chooseWaterBounds();
-    lightList_ = gl::createBuffer("point lights");  // named by its path once a frame picks one
-    lightCount_ = gl::createBuffer("point light count");
-    glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
+    lights_.list = gl::createBuffer("point lights");  // named by its path once a frame picks one
+    lights_.count = gl::createBuffer("point light count");
+    glBindBuffer(GL_UNIFORM_BUFFER, lights_.list.name());
     glBufferData(GL_UNIFORM_BUFFER, GLsizeiptr(std::max(kMaxLights, paths_.uboLights.maxLights()) * sizeof(PointLight)),
                  nullptr, GL_DYNAMIC_DRAW);
-    glBindBuffer(GL_UNIFORM_BUFFER, lightCount_.name());
+    glBindBuffer(GL_UNIFORM_BUFFER, lights_.count.name());
     glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
-    paths_.lights = chooseLightsPath(given.ssbo.available, scene.lights.path, ssboMissingReason_);
+    paths_.lights = chooseLightsPath(given.ssbo.available, scene.lights.path, lights_.ssboMissingReason);
     given.compute.available = caps.computeAvailable(&given.compute.reason);
     paths_.lightMethod = chooseLightMethod(given.compute.available, scene.lights.method, given.compute.reason,
                                           paths_.lights.path);
@@ -73,29 +73,29 @@ void Renderer::uploadLights() {
         frame_.lights.resize(size_t(paths_.uboLights.maxLights()));
     }
     paths_.lightsDrawn = int(frame_.lights.size());
-    if (labelledLightsPath_ != frame_.lightsPath) {  // "point lights (ssbo)": what the shaders read it as
-        gl::setLabel(lightList_, std::string("point lights (") + lightsPathName(frame_.lightsPath) + ")");
-        labelledLightsPath_ = frame_.lightsPath;
+    if (lights_.labelledPath != frame_.lightsPath) {  // "point lights (ssbo)": what the shaders read it as
+        gl::setLabel(lights_.list, std::string("point lights (") + lightsPathName(frame_.lightsPath) + ")");
+        lights_.labelledPath = frame_.lightsPath;
     }
     GLsizeiptr bytes = GLsizeiptr(frame_.lights.size() * sizeof(PointLight));
-    glBindBuffer(GL_UNIFORM_BUFFER, lightList_.name());
+    glBindBuffer(GL_UNIFORM_BUFFER, lights_.list.name());
     if (bytes > 0) glBufferSubData(GL_UNIFORM_BUFFER, 0, bytes, frame_.lights.data());
     const GLuint count[4] = {GLuint(frame_.lights.size()), 0, 0, 0};
-    glBindBuffer(GL_UNIFORM_BUFFER, lightCount_.name());
+    glBindBuffer(GL_UNIFORM_BUFFER, lights_.count.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(count), count);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
     GLsizeiptr blockBytes = GLsizeiptr(paths_.uboLights.capacity) * GLsizeiptr(sizeof(PointLight));
     for (int k = 0; k < paths_.uboLights.blocks; ++k)
-        glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(kLightBlockFirstBinding + k), lightList_.name(), k * blockBytes,
+        glBindBufferRange(GL_UNIFORM_BUFFER, GLuint(kLightBlockFirstBinding + k), lights_.list.name(), k * blockBytes,
                           blockBytes);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kLightCountBlockBinding, lightCount_.name());
+    glBindBufferBase(GL_UNIFORM_BUFFER, kLightCountBlockBinding, lights_.count.name());
     if (paths_.capabilities.ssbo.available) {
         // .length() is the bound range's size over 32 bytes; an empty list binds an empty range.
         if (bytes > 0)
-            glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightStorageBinding, lightList_.name(), 0, bytes);
+            glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightStorageBinding, lights_.list.name(), 0, bytes);
         else
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightStorageBinding, 0);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightCountStorageBinding, lightCount_.name());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightCountStorageBinding, lights_.count.name());
     }
 }
 
@@ -124,9 +124,9 @@ PassContext Renderer::context() { return contextOver(*targets_, frame_); }
 PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup& frame) {
     // Another renderer of the same context may have bound its own maps there since.
     shadowMaps_.bind();
-    PassContext context{targets, shaders_, geometry_, frame, vegetationBuffers_,
-                        paths_.waterBoundsAvailable ? waterBounds_.name() : 0u, &shadowMaps_,
-                        frame_.waterBounded ? waterSeen_.name() : 0u};
+    PassContext context{targets, shaders_, geometry_, frame, plants_.buffers,
+                        paths_.waterBoundsAvailable ? water_.bounds.name() : 0u, &shadowMaps_,
+                        frame_.waterBounded ? water_.seen.name() : 0u};
     context.drawDepthStencilReads = !paths_.capabilities.depthStencilRead.available;
     context.depthClamp = shadowMaps_.depthClamp();  // the dialect's answer (OASIS_NO_DEPTH_CLAMP)
     context.flushBeforeComputeRead = paths_.capabilities.workarounds.has(gl::Workaround::FlushBeforeComputeRead);
@@ -135,43 +135,43 @@ PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup&
 
 void Renderer::prepareVegetation(const SceneSettings& scene) {
     // The billboards pick their atlas mip level from their projected size (vegetation.vert).
-    float cellTexels = plantAtlas_ ? float(plantAtlas_->cellSize()) : 1.0f;
+    float cellTexels = plants_.atlas ? float(plants_.atlas->cellSize()) : 1.0f;
     float pixelsPerUnit = float(targets_->height()) /
                           (2.0f * std::tan(glm::radians(frame_.view.projection.verticalFovDegrees) * 0.5f));
-    frame_.data.vegetationAtlas = glm::vec4(float(vegetationBuffers_.atlasColumns()),
-                                            float(vegetationBuffers_.atlasRows()), cellTexels, pixelsPerUnit);
+    frame_.data.vegetationAtlas = glm::vec4(float(plants_.buffers.atlasColumns()),
+                                            float(plants_.buffers.atlasRows()), cellTexels, pixelsPerUnit);
     // Trimmed billboards: each cell's drawn bounds (prepareFrame left whole cells).
-    if (plantAtlas_ && scene.vegetation.trimmedBillboards) {
-        const std::vector<glm::vec4>& drawn = plantAtlas_->drawnBounds();
+    if (plants_.atlas && scene.vegetation.trimmedBillboards) {
+        const std::vector<glm::vec4>& drawn = plants_.atlas->drawnBounds();
         for (size_t cell = 0; cell < drawn.size() && cell < size_t(OASIS_PLANT_MAX_CELLS); ++cell)
             frame_.data.plantDrawnBounds[cell] = drawn[cell];
     }
-    vegetationList_.instances.clear();
-    vegetationList_.directCount = vegetationList_.mirroredCount = 0;
-    if (frame_.vegetationEnabled && plantAtlas_) {
+    plants_.list.instances.clear();
+    plants_.list.directCount = plants_.list.mirroredCount = 0;
+    if (frame_.vegetationEnabled && plants_.atlas) {
         const glm::dvec3& camera = frame_.view.pose.position;
-        vegetationField_.update(scene.terrain, scene.water.level, scene.vegetation,
-                                uint32_t(plantAtlas_->variantCount()), camera);
+        plants_.field.update(scene.terrain, scene.water.level, scene.vegetation,
+                                uint32_t(plants_.atlas->variantCount()), camera);
         // At a reduced reflection resolution the reflection's stencil marks the whole plane and the
         // upsample's taps reach past the water's edge, so images on land may show: no cull there.
         // Auto: only when the grid (and so every height the bound computes) is the last frame's.
         TerrainGridPlacement grid{scene.terrain, scene.grid, frame_.wedge, scene.viewDistance,
                                   glm::dvec2(camera.x, camera.z)};
-        bool still = lastGrid_ && *lastGrid_ == grid;
-        lastGrid_ = grid;
+        bool still = plants_.lastGrid && *plants_.lastGrid == grid;
+        plants_.lastGrid = grid;
         MirroredPlantCull cull = scene.work.mirroredPlantCull;
         frame_.mirroredPlantsCulled = frame_.reflectionsActive && frame_.reflectionDivisor == 1 &&
                                       (cull == MirroredPlantCull::On || (cull == MirroredPlantCull::Auto && still));
         if (frame_.mirroredPlantsCulled)
-            visibleWater_.prepare(scene.terrain, scene.grid, frame_.wedge, scene.viewDistance, frame_.view,
+            plants_.visibleWater.prepare(scene.terrain, scene.grid, frame_.wedge, scene.viewDistance, frame_.view,
                                   scene.water.level);
-        vegetationField_.buildDrawList(scene.vegetation, camera, frame_.data.viewProjection, frame_.view.depthMapping,
-                                       frame_.reflectionsActive, scene.water.level, vegetationList_,
-                                       frame_.mirroredPlantsCulled ? &visibleWater_ : nullptr);
+        plants_.field.buildDrawList(scene.vegetation, camera, frame_.data.viewProjection, frame_.view.depthMapping,
+                                       frame_.reflectionsActive, scene.water.level, plants_.list,
+                                       frame_.mirroredPlantsCulled ? &plants_.visibleWater : nullptr);
     } else {
-        vegetationField_.clearStats();
+        plants_.field.clearStats();
     }
-    vegetationBuffers_.upload(vegetationList_);
+    plants_.buffers.upload(plants_.list);
 }
 
 const Pipeline& Renderer::pipelineOf(PipelineKind kind) const {
@@ -223,7 +223,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     if (frame_.waterBounded)  // the shaders' copy of it: the mirrored billboards cull by the rectangle
         frame_.data.water.w = float(unsigned(frame_.data.water.w) | OASIS_WATER_BOUNDED_FLAG);
     prepareVegetation(scene);
-    paths_.lights = chooseLightsPath(paths_.capabilities.ssbo.available, scene.lights.path, ssboMissingReason_);
+    paths_.lights = chooseLightsPath(paths_.capabilities.ssbo.available, scene.lights.path, lights_.ssboMissingReason);
     frame_.lightsPath = paths_.lights.path;
     paths_.lightMethod = chooseLightMethod(paths_.capabilities.compute.available, scene.lights.method,
                                           paths_.capabilities.compute.reason, paths_.lights.path);
@@ -255,29 +255,29 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     } else if (frame_.reflectionDivisor == 1) {
         reflectionTargets_.reset();  // back at full resolution: the reduced set's memory goes back too
     }
-    stepsRan_.clear();
+    left_.stepsRan.clear();
     std::vector<Target> beyondFrame;
-    frameSinks_ = sinkOfFrame(!stopBefore.empty(), &beyondFrame);
+    left_.sinks = sinkOfFrame(!stopBefore.empty(), &beyondFrame);
     // The graph's plan of the frame's targets: those it does not use are given back (a forward
     // frame holds no G-buffer), those whose lifetimes do not overlap may share a texture.
-    const FrameGraph graph = pipeline.graph(frame_, frameSinks_);
+    const FrameGraph graph = pipeline.graph(frame_, left_.sinks);
     const bool reduced = passContext.reflectionTargets != nullptr;
-    lifetimes_ = oasis::targetLifetimes(graph, frame_, beyondFrame,
+    left_.lifetimes = oasis::targetLifetimes(graph, frame_, beyondFrame,
                                         reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
-    targets_->plan(lifetimes_);
+    targets_->plan(left_.lifetimes);
     if (reduced)  // the reduced reflection's own targets: its passes' alone
         reflectionTargets_->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
-        if (!pass.sceneStep().empty()) stepsRan_.push_back(pass.sceneStep());
+        if (!pass.sceneStep().empty()) left_.stepsRan.push_back(pass.sceneStep());
         if (afterEach) afterEach(pass);
-    }, frameSinks_);
-    gbufferHolds_.reset();
+    }, left_.sinks);
+    left_.gbufferHolds.reset();
     // A view's frame may cull the composite (nothing it shows reads the water): then nothing awaits.
-    radianceAwaitsWater_ = frame_.toneMapFused && waterComposite_.active(frame_) &&
-                           pipeline.graph(frame_, frameSinks_).runs(waterComposite_.name());
-    stoppedBefore_ = stopBefore;
-    stoppedGBufferCurrent_ = !stopBefore.empty() && pipeline.writes(frame_, Target::Albedo);
+    left_.radianceAwaitsWater = frame_.toneMapFused && lonePasses_.waterComposite.active(frame_) &&
+                           pipeline.graph(frame_, left_.sinks).runs(lonePasses_.waterComposite.name());
+    left_.stoppedBefore = stopBefore;
+    left_.stoppedGBufferCurrent = !stopBefore.empty() && pipeline.writes(frame_, Target::Albedo);
 }
 
 std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* beyondFrame) const {
@@ -313,8 +313,8 @@ std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* b
     if (radiance && frame_.toneMapFused) {
         FrameSetup separate = frame_;  // ensureRadiance runs the composite as the separate pass
         separate.toneMapFused = false;
-        targetsIn(waterComposite_.writes(separate));
-        reads = readsBefore({&waterComposite_}, separate, reads);
+        targetsIn(lonePasses_.waterComposite.writes(separate));
+        reads = readsBefore({&lonePasses_.waterComposite}, separate, reads);
     }
     targetsIn(reads);
     return reads;
@@ -355,40 +355,40 @@ void Renderer::prepareReducedReflection() {
 }
 
 void Renderer::forgetGBuffer() {
-    gbufferHolds_.reset();
-    stoppedGBufferCurrent_ = false;
+    left_.gbufferHolds.reset();
+    left_.stoppedGBufferCurrent = false;
 }
 
 void Renderer::ensureRadiance() {
-    if (!radianceAwaitsWater_) return;
-    radianceAwaitsWater_ = false;
+    if (!left_.radianceAwaitsWater) return;
+    left_.radianceAwaitsWater = false;
     // The separate pass's composite, blended onto Radiance; the stencil and depth are still the
     // frame's (ensureGBuffer calls this before a view fill redraws them).
     frame_.toneMapFused = false;
     PassContext passContext = context();
     FrameClipControl clipControl(targets_->depth());
-    waterComposite_.run(passContext);
+    lonePasses_.waterComposite.run(passContext);
     frame_.toneMapFused = true;
 }
 
 void Renderer::ensureGBuffer() {
     ensureRadiance();
-    if (!stoppedBefore_.empty()) {
+    if (!left_.stoppedBefore.empty()) {
         fillStoppedFrame();
         return;
     }
-    if (gbufferHolds_ == views_.waterScene_) return;
+    if (left_.gbufferHolds == views_.waterScene_) return;
     PassContext passContext = context();
     FrameClipControl clipControl(targets_->depth());
     views_.scene_ = viewFill_.run(passContext, views_.waterScene_);
-    gbufferHolds_ = views_.waterScene_;
+    left_.gbufferHolds = views_.waterScene_;
 }
 
 void Renderer::fillSurfacesWithTheirDepth() {
     // After a whole frame the water composite has written the water's depth over the mirrored
     // scene the G-buffer holds there. A layout that rebuilds positions from depth reads them from
     // those surfaces refilled with their own depth: the mirrored view fill, what the frame left.
-    if (targets_->layout().positionFromDepth() && stoppedBefore_.empty() && !gbufferHolds_) {
+    if (targets_->layout().positionFromDepth() && left_.stoppedBefore.empty() && !left_.gbufferHolds) {
         WaterScene asked = views_.waterScene_;
         views_.waterScene_ = WaterScene::Mirrored;
         ensureGBuffer();
@@ -409,17 +409,17 @@ void Renderer::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
 void Renderer::fillStoppedFrame() {
     views_.scene_ = ViewScene{std::nullopt,
                            active_ == PipelineKind::Forward
-                               ? "the direct scene's steps that ran before " + stoppedBefore_
-                               : "what the frame left there before " + stoppedBefore_,
+                               ? "the direct scene's steps that ran before " + left_.stoppedBefore
+                               : "what the frame left there before " + left_.stoppedBefore,
                            "the frame was stopped early (--stop-before): its targets are shown as they were"};
-    if (stoppedGBufferCurrent_) return;
+    if (left_.stoppedGBufferCurrent) return;
     PassContext passContext = context();
     // Forward draws no G-buffer: fill it for the view with the deferred passes of the direct scene
     // that do not shade, each only if the forward pass of the same scene step ran this frame, so a
     // frame stopped early keeps its depth and stencil. Radiance and Final stay the forward frame's.
     auto ranInForward = [&](const Pass& pass) {
         return !pass.sceneStep().empty() &&
-               std::find(stepsRan_.begin(), stepsRan_.end(), pass.sceneStep()) != stepsRan_.end();
+               std::find(left_.stepsRan.begin(), left_.stepsRan.end(), pass.sceneStep()) != left_.stepsRan.end();
     };
     bool filled = false;
     FrameClipControl clipControl(targets_->depth());
@@ -433,19 +433,19 @@ void Renderer::fillStoppedFrame() {
             filled = true;
         }
     }
-    stoppedGBufferCurrent_ = true;
+    left_.stoppedGBufferCurrent = true;
 }
 
 void Renderer::renderFloor() {
     gl::beginFrame();
     PassContext passContext = context();
-    floor_.run(passContext);
+    lonePasses_.floor.run(passContext);
     forgetGBuffer();
 }
 
 void Renderer::present(int windowWidth, int windowHeight) {
     PassContext passContext = context();
-    present_.run(passContext, windowWidth, windowHeight);
+    lonePasses_.present.run(passContext, windowWidth, windowHeight);
 }
 
 }  // namespace oasis

@@ -121,7 +121,7 @@ public:
     const FrameViews& views() const { return views_; }
     const FrameTargets& targets() const { return *targets_; }
     LastFrame lastFrame() const {
-        return {frame_, lifetimes_, vegetationField_, vegetationBuffers_, pipelineOf(active_), frameSinks_,
+        return {frame_, left_.lifetimes, plants_.field, plants_.buffers, pipelineOf(active_), left_.sinks,
                 *targets_, reflectionTargets_.get()};
     }
     RendererParts parts() const { return {shaders_, geometry_, shadowMaps_}; }
@@ -155,6 +155,51 @@ private:
     void forgetGBuffer();
     void fillStoppedFrame();
 
+    // The plants: the atlas they are drawn with, those placed around the camera, the dry land the
+    // reflection's plant chunks are culled against, the last frame's grid (is the camera standing
+    // still?), the frame's draw list and its instance buffers.
+    struct Plants {
+        const PlantAtlas* atlas = nullptr;
+        VegetationField field;
+        VisibleWaterBound visibleWater;
+        std::optional<TerrainGridPlacement> lastGrid;
+        VegetationDrawList list;
+        VegetationBuffers buffers;
+    };
+    // The passes run outside the pipelines: the timing floor, ensureRadiance's separate composite,
+    // and present.
+    struct LonePasses {
+        FloorPass floor;
+        WaterCompositePass waterComposite;
+        PresentPass present;
+    };
+    // One list of PointLights serves every path (SSBO or UBO), with its count; the path the list's
+    // label names, and why there is no SSBO path where there is none.
+    struct LightBuffers {
+        gl::Buffer list, count;
+        std::optional<LightsPath> labelledPath;
+        std::string ssboMissingReason = "no GL 4.3 / ARB_shader_storage_buffer_object";
+    };
+    // The water's records on the GPU: its visible rectangle (four ints, common/water_bounds.glsl)
+    // and whether the water mask passed a sample (the reflection renders only then).
+    struct WaterRecords {
+        gl::Buffer bounds;
+        gl::Query seen;
+    };
+    // What the last frame left for the fills and views after it.
+    struct FrameLeft {
+        std::optional<WaterScene> gbufferHolds;  // the fill the G-buffer holds for it, if any
+        std::string stoppedBefore;               // the pass it stopped before, "" for a whole frame
+        bool stoppedGBufferCurrent = false;      // a stopped frame's G-buffer already holds what it reached
+        std::vector<std::string> stepsRan;       // the scene steps (Pass::sceneStep) it ran
+        bool radianceAwaitsWater = false;        // a fused frame's composite has not been laid onto Radiance
+        std::vector<Resource> sinks = frameOutputs();  // its sink
+        std::vector<TargetLifetime> lifetimes;         // and its targets' lifetimes
+    };
+    void chooseWaterBounds();  // from the SSBOs and the context's limits; sets the context defines
+    // The layout drawn for `requested` (itself, or standard without 16-bit unorm targets) and why.
+    const GBufferLayout& chooseGBufferLayout(const GBufferLayout& requested, std::string& reason) const;
+
     ShaderLibrary& shaders_;
     SceneGeometry geometry_;
     std::unique_ptr<FrameTargets> targets_;
@@ -162,39 +207,20 @@ private:
     gl::Buffer reflectionUniforms_;                     // frame data for those targets' size
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
-    const PlantAtlas* plantAtlas_ = nullptr;
-    VegetationField vegetationField_;
-    VisibleWaterBound visibleWater_;  // the dry land the reflection's plant chunks are culled against
-    std::optional<TerrainGridPlacement> lastGrid_;  // the last frame's grid: is the camera standing still?
-    VegetationDrawList vegetationList_;
-    VegetationBuffers vegetationBuffers_;
+    Plants plants_;
     FrameViews views_{*this};  // where the debug views' pass was: GL objects made in the same order
-    FloorPass floor_;
-    WaterCompositePass waterComposite_;  // ensureRadiance's separate composite
-    PresentPass present_;
+    LonePasses lonePasses_;
     ShadowMaps shadowMaps_;  // the sun's cascades, bound to their unit in every pass context
     FloatReadback positionsReadback_;  // readSurfacePositions' float target (frame/frame_readback.h)
     gl::Buffer frameUniforms_;
-    gl::Buffer lightList_, lightCount_;  // one list of PointLights serves every path
-    std::optional<LightsPath> labelledLightsPath_;  // the path lightList_'s label names
-    std::string ssboMissingReason_ = "no GL 4.3 / ARB_shader_storage_buffer_object";
-    gl::Buffer waterBounds_;  // four ints (common/water_bounds.glsl)
-    gl::Query waterSeen_;     // did the water mask pass a sample? (the reflection renders only then)
-    void chooseWaterBounds();  // from the SSBOs and the context's limits; sets the context defines
-    // The layout drawn for `requested` (itself, or standard without 16-bit unorm targets) and why.
-    const GBufferLayout& chooseGBufferLayout(const GBufferLayout& requested, std::string& reason) const;
+    LightBuffers lights_;
+    WaterRecords water_;
     std::optional<GBufferLayout> layoutRequested_;  // configure's last request (a copy: callers may pass a temporary)
     RenderPaths paths_;
     FrameSetup frame_;
     const DepthConvention* depthRequested_ = &standardDepthConvention();
     ViewFill viewFill_;
-    std::optional<WaterScene> gbufferHolds_;  // the fill the G-buffer holds for the last frame, if any
-    std::string stoppedBefore_;  // the pass the last frame stopped before, "" for a whole frame
-    bool stoppedGBufferCurrent_ = false;  // a stopped frame's G-buffer already holds what it reached
-    std::vector<std::string> stepsRan_;  // the scene steps (Pass::sceneStep) the last frame ran
-    bool radianceAwaitsWater_ = false;  // a fused frame's composite has not been laid onto Radiance
-    std::vector<Resource> frameSinks_ = frameOutputs();  // the last frame's sink
-    std::vector<TargetLifetime> lifetimes_;               // and its targets' lifetimes
+    FrameLeft left_;
 };
 
 }  // namespace oasis

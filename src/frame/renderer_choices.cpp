@@ -14,8 +14,8 @@ void Renderer::setCapabilities(const RendererCapabilities& capabilities) {
     // In the order the session gave them one by one: the light method follows the lights' path.
     RendererCapabilities& given = paths_.capabilities;
     given = capabilities;
-    if (!given.ssbo.available) ssboMissingReason_ = given.ssbo.reason;
-    paths_.lights = chooseLightsPath(given.ssbo.available, given.forcedLightsPath, ssboMissingReason_);
+    if (!given.ssbo.available) lights_.ssboMissingReason = given.ssbo.reason;
+    paths_.lights = chooseLightsPath(given.ssbo.available, given.forcedLightsPath, lights_.ssboMissingReason);
     chooseWaterBounds();
     paths_.lightMethod = chooseLightMethod(given.compute.available, given.forcedLightMethod, given.compute.reason,
                                           paths_.lights.path);
@@ -81,7 +81,7 @@ void Renderer::chooseWaterBounds() {
         paths_.waterBoundsReason = "bounded to the visible water (recorded in a storage block, clipped with 4 clip distances; "
                              "skipped where no water is seen: the water mask's occlusion query, conditional rendering)";
     else if (!ssbo)
-        paths_.waterBoundsReason = "whole screen, stencil-masked (no storage blocks: " + ssboMissingReason_ + ")";
+        paths_.waterBoundsReason = "whole screen, stencil-masked (no storage blocks: " + lights_.ssboMissingReason + ")";
     else if (!epoxy_is_desktop_gl())
         paths_.waterBoundsReason = "whole screen, stencil-masked (not on OpenGL ES yet: the bounds' storage block is "
                              "bound by name, which ES cannot do)";
@@ -93,12 +93,12 @@ void Renderer::chooseWaterBounds() {
         paths_.waterBoundsReason = "whole screen, stencil-masked (storage blocks in vertex/fragment shaders " +
                              std::to_string(vertexBlocks) + "/" + std::to_string(fragmentBlocks) +
                              ", clip distances " + std::to_string(clipDistances) + "; need 1/1 and 5)";
-    if (paths_.waterBoundsAvailable && !waterBounds_.name()) {
-        waterBounds_ = gl::createBuffer("visible water rectangle");
-        glBindBuffer(GL_SHADER_STORAGE_BUFFER, waterBounds_.name());
+    if (paths_.waterBoundsAvailable && !water_.bounds.name()) {
+        water_.bounds = gl::createBuffer("visible water rectangle");
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, water_.bounds.name());
         glBufferData(GL_SHADER_STORAGE_BUFFER, 4 * sizeof(GLint), nullptr, GL_DYNAMIC_DRAW);
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-        waterSeen_ = gl::createQuery(GL_ANY_SAMPLES_PASSED, "water seen (water mask's samples)");
+        water_.seen = gl::createQuery(GL_ANY_SAMPLES_PASSED, "water seen (water mask's samples)");
     }
     std::vector<std::string> defines = {"LIGHTS_UBO_CAPACITY " + std::to_string(paths_.uboLights.capacity),
                                         "LIGHTS_UBO_BLOCKS " + std::to_string(paths_.uboLights.blocks)};
