@@ -90,6 +90,7 @@ const FrameRun& CaseJudge::mainPath(const CheckCase& c, bool again) {
 
 CaseResult CaseJudge::run(const CheckCase& c, CaseFrame* keptFrame) {
     Clock::time_point start = Clock::now();
+    prefetchedSeconds_ = 0.0;
     CaseResult result;
     result.name = c.name();
     result.options = checkCaseArguments(c, options_);
@@ -128,7 +129,7 @@ CaseResult CaseJudge::run(const CheckCase& c, CaseFrame* keptFrame) {
     }
     if (result.verdict != Verdict::Flake) result.verdict = result.observed;
     if (expectation) applyExpectation(result, expectation->result);
-    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count() + prefetchedSeconds_;
     return result;
 }
 
@@ -187,6 +188,7 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
     if (auto ready = prefetched_.find(result.options); ready != prefetched_.end() && result.runs == 0) {
         run = std::move(ready->second);
         prefetched_.erase(ready);
+        prefetchedSeconds_ += run.outcome.seconds;
     } else {
         run = runner_.frame(result.options, gpuPlants);
     }

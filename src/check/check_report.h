@@ -70,6 +70,8 @@ struct CaseResult {
     std::vector<uint8_t> pixelClasses;  // for the report's pictures (not in the JSON)
     std::optional<FirstDivergence> firstDivergence;
     ShadingOracle oracle;  // a shaded case's: its radiance against the CPU's shading of its inputs
+    // The case's own time: its frame's child (rendered ahead by prefetch or now), its re-runs, its
+    // pass-by-pass search and its judging; a main path rendered ahead for several cases is no one's.
     double seconds = 0.0;
     // Who is to blame when it did not pass: "this path", "the main path", "the driver against the
     // reference", or "" (passed, skipped).
