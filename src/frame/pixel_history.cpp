@@ -70,7 +70,7 @@ std::string whyUntouched(const Pass& pass, int stencilBefore) {
 // What `pass` (it ran in the last frame) wrote of the buffers that concerns the pixel: its tile's
 // light lists. The direct lists with the slice the lighting reads at the pixel's `surface`.
 std::vector<BufferAtPixel> buffersAtPixelOf(const Renderer& renderer, const Pass& pass, PixelPlace pixel,
-                                          const std::optional<glm::vec3>& surface) {
+                                            const std::optional<glm::vec3>& surface) {
     std::vector<BufferAtPixel> buffers;
     for (const Resource& resource : pass.writes(renderer.lastFrame())) {
         if (resource != Resource(Buffer::LightTiles)) continue;
