@@ -8,15 +8,12 @@
 #include <vector>
 
 #include "check/check_render.h"
+#include "frame/buffer_readback.h"
 #include "passes/pass.h"
 
 namespace oasis {
 
 class Renderer;
-
-// The name of the first step of the search, before any pass: the buffers the renderer uploads
-// (frame/frame_graph.h's frameInputs), as `render --graph` calls their writer.
-inline constexpr const char* kFrameInputsStep = "(before the passes)";
 
 // Reads what `pass` (the renderer's own, just run) wrote of the buffers `written` into `into`:
 // LightTiles as a per-pixel check (lightTileFaults); the other buffers a pass writes (terrain

@@ -37,6 +37,8 @@ std::string endedHow(const RunOutcome& outcome) {
     return outcome.end == RunEnd::Crashed ? "crashed: " + outcome.detail : "timed out: " + outcome.detail;
 }
 
+FrameComparison comparisonOf(const Judgement& j) { return {true, j.psnrDb, j.maxAbs, j.pixelsOver, j.meanSigned}; }
+
 // The pixels whose largest channel difference exceeds `level`, bottom row first as the views read.
 std::vector<bool> differingPixels(const Image& a, const Image& b, int level) {
     std::vector<bool> where(size_t(a.width) * size_t(a.height));
@@ -90,6 +92,7 @@ const FrameRun& CaseJudge::mainPath(const CheckCase& c, bool again) {
 
 CaseResult CaseJudge::run(const CheckCase& c, CaseFrame* keptFrame) {
     Clock::time_point start = Clock::now();
+    prefetchedSeconds_ = 0.0;
     CaseResult result;
     result.name = c.name();
     result.options = checkCaseArguments(c, options_);
@@ -128,7 +131,7 @@ CaseResult CaseJudge::run(const CheckCase& c, CaseFrame* keptFrame) {
     }
     if (result.verdict != Verdict::Flake) result.verdict = result.observed;
     if (expectation) applyExpectation(result, expectation->result);
-    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count() + prefetchedSeconds_;
     return result;
 }
 
@@ -187,6 +190,7 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
     if (auto ready = prefetched_.find(result.options); ready != prefetched_.end() && result.runs == 0) {
         run = std::move(ready->second);
         prefetched_.erase(ready);
+        prefetchedSeconds_ += run.outcome.seconds;
     } else {
         run = runner_.frame(result.options, gpuPlants);
     }
@@ -235,11 +239,7 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
     } else {
         result.reference = reference.image;
         Judgement j = judge(result.result, reference.image, referenceRule);
-        result.referenceCompared = true;
-        result.psnrDb = j.psnrDb;
-        result.maxAbs = j.maxAbs;
-        result.pixelsOver = j.pixelsOver;
-        result.meanSigned = j.meanSigned;
+        result.againstReference = comparisonOf(j);
         caseMatchesReference = j.pass;
         if (!sameDriver)
             if (std::string shift = meanShiftNote(j); !shift.empty()) notes.push_back(shift);
@@ -286,21 +286,13 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
         result.mainPathImage = main.frame.image;
         const ImageRule& rule = mainPathRule(c);
         Judgement j = judge(result.result, main.frame.image, rule);
-        result.mainPathCompared = true;
+        result.againstMainPath = comparisonOf(j);
         result.mainPathRule = rule.name;
-        result.mainPathPsnrDb = j.psnrDb;
-        result.mainPathMaxAbs = j.maxAbs;
-        result.mainPathPixelsOver = j.pixelsOver;
-        result.mainPathMeanSigned = j.meanSigned;
         caseMatchesMain = j.pass;
         if (!j.pass) failures.push_back("against the driver's main path: " + j.summary);
         if (reference.readable) {
             Judgement m = judge(main.frame.image, reference.image, sameDriver ? rule : imageRule("cross-driver"));
-            result.mainPathReferenceCompared = true;
-            result.mainPathReferencePsnrDb = m.psnrDb;
-            result.mainPathReferenceMaxAbs = m.maxAbs;
-            result.mainPathReferencePixelsOver = m.pixelsOver;
-            result.mainPathReferenceMeanSigned = m.meanSigned;
+            result.mainPathAgainstReference = comparisonOf(m);
             // Another driver's main path is held to the reference's interiors as the case is: a
             // shift both draw is the main path's (or the driver's), not this path's.
             bool interiorsHold = true;
@@ -350,18 +342,18 @@ Verdict CaseJudge::attempt(const CheckCase& c, CaseResult& result, CaseFrame* ke
         notes.push_back("the main path is off: it " + (main.outcome.end != RunEnd::Finished ? endedHow(main.outcome)
                                                        : "did not render") + "; this path matches the reference frame");
     }
-    if (referenceOk && mainRendered && !mainMatchesReference && result.mainPathReferenceCompared) {
+    if (referenceOk && mainRendered && !mainMatchesReference && result.mainPathAgainstReference.compared) {
         // This path matches the reference where the main path does not: the main path is off.
         failures.erase(std::remove_if(failures.begin(), failures.end(),
                                       [](const std::string& f) { return f.rfind("against the driver's main path", 0) == 0; }),
                        failures.end());
         notes.push_back("the main path is off: it differs from the reference frame (" +
-                        std::to_string(result.mainPathReferenceMaxAbs) + " max abs) where this path matches it");
+                        std::to_string(result.mainPathAgainstReference.maxAbs) + " max abs) where this path matches it");
     }
     if (failures.empty()) {
         result.observed = Verdict::Pass;
         result.blame.clear();
-        failures.push_back(result.referenceCompared ? "matches the reference frame" +
+        failures.push_back(result.againstReference.compared ? "matches the reference frame" +
                                                           std::string(sameDriver ? " (drawn by this driver: identical)" : "") +
                                                           " and the driver's main path"
                                                     : "matches the driver's main path");
@@ -441,7 +433,7 @@ void CaseJudge::settleBlame(std::vector<CaseResult>& cases) const {
         return c.observed == Verdict::Pass && !c.mainPathMatchesReference;
     });
     for (CaseResult& c : cases)
-        if (c.blame == "the main path" && c.mainPathCompared && !someFallbackMatches)
+        if (c.blame == "the main path" && c.againstMainPath.compared && !someFallbackMatches)
             c.blame = "the driver against the reference";
 }
 

@@ -70,6 +70,9 @@ private:
     BaselineManifest baseline_;
     std::map<std::vector<std::string>, FrameRun> mainPaths_;  // by arguments: shared between cases
     std::map<std::vector<std::string>, FrameRun> prefetched_;  // cases' first frames, by arguments
+    // The seconds of the prefetched children the case being judged took its frames from: they ran
+    // before run() began, and are the case's own time.
+    double prefetchedSeconds_ = 0.0;
 };
 
 }  // namespace oasis

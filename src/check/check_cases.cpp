@@ -142,6 +142,16 @@ bool fits(const std::vector<int>& values, int dimension, int value) {
     return true;
 }
 
+// What each of the case's values adds: `which` is CheckValue::arguments or mainArguments.
+std::vector<std::string> caseArgumentsOf(const CheckCase& c, std::vector<std::string> CheckValue::*which) {
+    std::vector<std::string> arguments;
+    for (size_t d = 0; d < kDimensions.size(); ++d) {
+        const std::vector<std::string>& added = kDimensions[d].values[size_t(c.values[d])].*which;
+        arguments.insert(arguments.end(), added.begin(), added.end());
+    }
+    return arguments;
+}
+
 }  // namespace
 
 const std::vector<CheckDimension>& checkDimensions() { return kDimensions; }
@@ -158,23 +168,8 @@ std::string CheckCase::name() const {
     return text;
 }
 
-std::vector<std::string> CheckCase::arguments() const {
-    std::vector<std::string> arguments;
-    for (size_t d = 0; d < kDimensions.size(); ++d) {
-        const CheckValue& value = kDimensions[d].values[size_t(values[d])];
-        arguments.insert(arguments.end(), value.arguments.begin(), value.arguments.end());
-    }
-    return arguments;
-}
-
-std::vector<std::string> CheckCase::mainPathArguments() const {
-    std::vector<std::string> arguments;
-    for (size_t d = 0; d < kDimensions.size(); ++d) {
-        const CheckValue& value = kDimensions[d].values[size_t(values[d])];
-        arguments.insert(arguments.end(), value.mainArguments.begin(), value.mainArguments.end());
-    }
-    return arguments;
-}
+std::vector<std::string> CheckCase::arguments() const { return caseArgumentsOf(*this, &CheckValue::arguments); }
+std::vector<std::string> CheckCase::mainPathArguments() const { return caseArgumentsOf(*this, &CheckValue::mainArguments); }
 
 const CheckValue& CheckCase::value(const std::string& dimension) const {
     int d = dimensionIndex(dimension);

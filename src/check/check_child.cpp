@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -284,6 +285,7 @@ private:
         for (char** entry = environ; *entry; ++entry) environment.push_back(*entry);
         RunOutcome outcome;
         ChildResult child;
+        const auto start = std::chrono::steady_clock::now();
         try {
             child = runChild(command, environment, limit);
         } catch (const std::exception& error) {
@@ -291,6 +293,7 @@ private:
             outcome.detail = error.what();
             return outcome;
         }
+        outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         outcome.tail = lastLines(child.output, 12);
         char text[160];
         if (child.timedOut) {

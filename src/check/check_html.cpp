@@ -149,10 +149,10 @@ std::vector<bool> casesWithImages(const CheckReport& report) {
 }
 
 // "41.20 dB, 3" (max abs), with the rule under it; a dash where nothing was compared.
-std::string comparison(bool compared, double psnrDb, int maxAbs, long pixelsOver, const std::string& rule) {
-    if (!compared) return "<span class=\"c\">&mdash;</span>";
-    return "<span class=\"c\" title=\"rule " + htmlEscape(rule) + ": " + std::to_string(pixelsOver) +
-           " pixels over its level\">" + formatNumber("%.1f dB", psnrDb) + " &middot; " + std::to_string(maxAbs) + "</span>";
+std::string comparison(const FrameComparison& c, const std::string& rule) {
+    if (!c.compared) return "<span class=\"c\">&mdash;</span>";
+    return "<span class=\"c\" title=\"rule " + htmlEscape(rule) + ": " + std::to_string(c.pixelsOver) +
+           " pixels over its level\">" + formatNumber("%.1f dB", c.psnrDb) + " &middot; " + std::to_string(c.maxAbs) + "</span>";
 }
 
 // One image as an <img> with its PNG inline, at its own size; nothing where there is none.
@@ -190,20 +190,19 @@ std::string detailLine(const char* name, const std::string& html) {
 // What a click on a case's line opens: the reason, the three comparisons, the blame, the first
 // divergence, what its renderer saw, the reproduce line, a crash's output, the images.
 std::string caseDetails(const CaseResult& c, size_t index, bool withImages) {
-    auto numbers = [](bool compared, double psnr, int maxAbs, long over, const std::string& rule) {
-        if (!compared) return std::string("not compared");
-        return formatNumber("%.2f dB", psnr) + ", max abs " + std::to_string(maxAbs) + ", " + std::to_string(over) +
-               " pixels over (rule " + htmlEscape(rule) + ")";
+    auto numbers = [](const FrameComparison& compared, const std::string& rule) {
+        if (!compared.compared) return std::string("not compared");
+        return formatNumber("%.2f dB", compared.psnrDb) + ", max abs " + std::to_string(compared.maxAbs) + ", " +
+               std::to_string(compared.pixelsOver) + " pixels over (rule " + htmlEscape(rule) + ")";
     };
     std::string html = "<div class=\"detail\"><table class=\"facts\">\n" + detailLine("reason", htmlEscape(c.reason));
-    html += detailLine("against the reference", numbers(c.referenceCompared, c.psnrDb, c.maxAbs, c.pixelsOver, c.referenceRule));
-    html += detailLine("against its main path",
-                       numbers(c.mainPathCompared, c.mainPathPsnrDb, c.mainPathMaxAbs, c.mainPathPixelsOver, c.mainPathRule));
+    html += detailLine("against the reference", numbers(c.againstReference, c.referenceRule));
+    html += detailLine("against its main path", numbers(c.againstMainPath, c.mainPathRule));
     html += detailLine("main path against the reference",
-                       c.mainPathReferenceCompared
-                           ? numbers(true, c.mainPathReferencePsnrDb, c.mainPathReferenceMaxAbs, c.mainPathReferencePixelsOver,
-                                     c.referenceRule) + (c.mainPathMatchesReference ? " &mdash; matches" : " &mdash; differs")
-                           : std::string("not compared"));
+                       numbers(c.mainPathAgainstReference, c.referenceRule) +
+                           (!c.mainPathAgainstReference.compared ? ""
+                            : c.mainPathMatchesReference         ? " &mdash; matches"
+                                                                 : " &mdash; differs"));
     if (!c.blame.empty()) html += detailLine("blame", htmlEscape(c.blame));
     if (c.firstDivergence)
         html += detailLine("first divergence", htmlEscape(c.firstDivergence->pass) + " &rarr; " +
@@ -241,8 +240,8 @@ std::string caseList(const CheckReport& report, const std::vector<bool>& withIma
         if (withImages[i]) name = "<a href=\"#images-" + std::to_string(i) + "\">" + name + "</a>";
         html += "<details class=\"case\" id=\"case-" + std::to_string(i) + "\"><summary class=\"row\"><span>" +
                 verdictSpan(c.verdict) + "</span><span class=\"name\">" + name + "</span>" +
-                comparison(c.referenceCompared, c.psnrDb, c.maxAbs, c.pixelsOver, c.referenceRule) +
-                comparison(c.mainPathCompared, c.mainPathPsnrDb, c.mainPathMaxAbs, c.mainPathPixelsOver, c.mainPathRule) +
+                comparison(c.againstReference, c.referenceRule) +
+                comparison(c.againstMainPath, c.mainPathRule) +
                 "<span>" + htmlEscape(c.blame) +
                 (c.ended.empty() ? "" : "<div class=\"rule\">" + htmlEscape(c.ended) + "</div>") + "</span><span class=\"n\">" +
                 formatNumber("%.1f", c.seconds) + "</span></summary>\n" + caseDetails(c, i, withImages[i]) + "</details>\n";

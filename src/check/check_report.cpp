@@ -22,33 +22,31 @@ std::string stringList(const std::vector<std::string>& items) {
     return json + "]";
 }
 
+// "psnr_db", "max_abs", "pixels_over", "mean_signed": null each where nothing was compared.
+std::string comparisonMembers(const FrameComparison& c) {
+    return "\"psnr_db\": " + (c.compared ? number(c.psnrDb) : "null") + ", \"max_abs\": " +
+           (c.compared ? std::to_string(c.maxAbs) : "null") + ", \"pixels_over\": " +
+           (c.compared ? std::to_string(c.pixelsOver) : "null") + ", \"mean_signed\": " +
+           (c.compared ? number(c.meanSigned, "%.4f") : "null");
+}
+
 std::string caseJson(const CaseResult& c) {
     std::string divergence = "null";
     if (c.firstDivergence)
         divergence = "{\"pass\": " + jsonString(c.firstDivergence->pass) + ", \"target\": " +
                      jsonString(c.firstDivergence->target) + ", \"pixels\": " + std::to_string(c.firstDivergence->pixels) + "}";
-    bool judged = c.referenceCompared;
     std::string json = "{\"name\": " + jsonString(c.name) + ", \"options\": " + stringList(c.options) +
                        ", \"verdict\": " + jsonString(verdictName(c.verdict)) + ", \"reason\": " + jsonString(c.reason);
-    json += ", \"psnr_db\": " + (judged ? number(c.psnrDb) : "null");
-    json += ", \"max_abs\": " + (judged ? std::to_string(c.maxAbs) : "null");
-    json += ", \"pixels_over\": " + (judged ? std::to_string(c.pixelsOver) : "null");
-    json += ", \"mean_signed\": " + (judged ? number(c.meanSigned, "%.4f") : "null");
+    json += ", " + comparisonMembers(c.againstReference);
     json += ", \"reference_rule\": " + jsonString(c.referenceRule);
     json += ", \"main_path\": ";
-    json += c.mainPathCompared ? "{\"rule\": " + jsonString(c.mainPathRule) + ", \"psnr_db\": " + number(c.mainPathPsnrDb) +
-                                     ", \"max_abs\": " + std::to_string(c.mainPathMaxAbs) +
-                                     ", \"pixels_over\": " + std::to_string(c.mainPathPixelsOver) +
-                                     ", \"mean_signed\": " + number(c.mainPathMeanSigned, "%.4f") + "}"
-                               : std::string("null");
-    json += ", \"main_path_against_reference\": ";
-    json += c.mainPathReferenceCompared
-                ? "{\"psnr_db\": " + number(c.mainPathReferencePsnrDb) + ", \"max_abs\": " +
-                      std::to_string(c.mainPathReferenceMaxAbs) + ", \"pixels_over\": " +
-                      std::to_string(c.mainPathReferencePixelsOver) + ", \"mean_signed\": " +
-                      number(c.mainPathReferenceMeanSigned, "%.4f") + ", \"pass\": " +
-                      (c.mainPathMatchesReference ? "true" : "false") + "}"
+    json += c.againstMainPath.compared
+                ? "{\"rule\": " + jsonString(c.mainPathRule) + ", " + comparisonMembers(c.againstMainPath) + "}"
                 : std::string("null");
+    json += ", \"main_path_against_reference\": ";
+    json += c.mainPathAgainstReference.compared ? "{" + comparisonMembers(c.mainPathAgainstReference) + ", \"pass\": " +
+                                                      (c.mainPathMatchesReference ? "true" : "false") + "}"
+                                                : std::string("null");
     json += ", \"interior\": ";
     json += c.interiorCompared ? "{\"pixels\": " + std::to_string(c.interiorPixels) + ", \"max_abs\": " +
                                      std::to_string(c.interiorMaxAbs) + ", \"over\": " + std::to_string(c.interiorPixelsOver) +

@@ -32,6 +32,15 @@ const char* verdictName(Verdict verdict);  // "pass", ..., "expected-fail", "une
 bool unexpected(Verdict verdict);
 const std::vector<Verdict>& allVerdicts();
 
+// One frame judged against another by a rule (check/check_judge.h's Judgement), as the report keeps it.
+struct FrameComparison {
+    bool compared = false;
+    double psnrDb = 0.0;
+    int maxAbs = 0;
+    long pixelsOver = 0;      // pixels whose largest channel difference exceeds the rule's level
+    double meanSigned = 0.0;  // levels: the frame's mean of one minus the other (check_judge.h)
+};
+
 struct CaseResult {
     std::string name;                  // "deferred-compact-ubo-night", stable across drivers
     std::vector<std::string> options;  // the command-line arguments that reproduce it (`oasis render ...`)
@@ -40,22 +49,10 @@ struct CaseResult {
     // Against the reference frame (the repository's llvmpipe frame of the same options): the numbers
     // and the rule applied; against the driver's own main path: the same, where it was compared.
     std::string referenceRule, mainPathRule;
-    bool referenceCompared = false;  // a reference frame was found and compared
-    double psnrDb = 0.0;  // against the reference frame
-    int maxAbs = 0;
-    long pixelsOver = 0;  // pixels whose largest channel difference exceeds the rule's level
-    double meanSigned = 0.0;  // levels: the frame's mean of result minus reference (check_judge.h)
-    double mainPathPsnrDb = 0.0;
-    int mainPathMaxAbs = 0;
-    long mainPathPixelsOver = 0;
-    double mainPathMeanSigned = 0.0;
-    bool mainPathCompared = false;
+    FrameComparison againstReference;  // compared where a reference frame was found
+    FrameComparison againstMainPath;
     // The main path against the reference frame (the third comparison: it decides the blame).
-    bool mainPathReferenceCompared = false;
-    double mainPathReferencePsnrDb = 0.0;
-    int mainPathReferenceMaxAbs = 0;
-    long mainPathReferencePixelsOver = 0;
-    double mainPathReferenceMeanSigned = 0.0;
+    FrameComparison mainPathAgainstReference;
     bool mainPathMatchesReference = false;
     // The case against the reference frame over its interior pixels (check/pixel_classes.h), where
     // its child split them (a shaded case): judged by cross-driver-interior where another driver
@@ -70,6 +67,8 @@ struct CaseResult {
     std::vector<uint8_t> pixelClasses;  // for the report's pictures (not in the JSON)
     std::optional<FirstDivergence> firstDivergence;
     ShadingOracle oracle;  // a shaded case's: its radiance against the CPU's shading of its inputs
+    // The case's own time: its frame's child (rendered ahead by prefetch or now), its re-runs, its
+    // pass-by-pass search and its judging; a main path rendered ahead for several cases is no one's.
     double seconds = 0.0;
     // Who is to blame when it did not pass: "this path", "the main path", "the driver against the
     // reference", or "" (passed, skipped).

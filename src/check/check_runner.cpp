@@ -2,6 +2,7 @@
 // child processes.
 #include "check/check_runner.h"
 
+#include <chrono>
 #include <stdexcept>
 
 #include "check/check_snapshots.h"
@@ -14,11 +15,13 @@ class InProcessRunner : public CaseRunner {
 public:
     FrameRun frame(const std::vector<std::string>& arguments, bool gpuPlants) override {
         FrameRun run;
+        const auto start = std::chrono::steady_clock::now();
         try {
             run.frame = renderCaseFrame(arguments, gpuPlants);
         } catch (const std::exception& error) {
             run.outcome.error = error.what();
         }
+        run.outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return run;
     }
     PassesRun passes(const std::vector<std::string>& arguments, const std::vector<bool>& where, int, int) override {

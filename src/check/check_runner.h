@@ -24,6 +24,7 @@ struct RunOutcome {
     std::string detail;  // Crashed: "killed by signal 6 (Aborted)"; TimedOut: "still running after 60 s"
     std::string tail;    // its last lines of output (control bytes escaped), for the report
     std::string error;   // Finished with an error that is not a limit (a shader that does not build)
+    double seconds = 0.0;  // how long it ran, however it ended (the wall clock, from start to answer)
 };
 
 struct FrameRun {

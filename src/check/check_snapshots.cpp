@@ -45,6 +45,18 @@ struct Reader {
         at += size_t(size) * sizeof(float);
         return true;
     }
+    // A count, then that many named lists of values (a snapshot's targets or its pixel checks).
+    bool namedLists(std::vector<std::pair<std::string, std::vector<float>>>& lists) {
+        uint32_t size = 0;
+        if (!count(size)) return false;
+        for (uint32_t i = 0; i < size; ++i) {
+            std::string name;
+            std::vector<float> values;
+            if (!namedValues(name, values)) return false;
+            lists.push_back({name, std::move(values)});
+        }
+        return true;
+    }
 };
 
 void putNamedValues(std::string& out, const std::string& name, const std::vector<float>& values) {
@@ -122,22 +134,7 @@ bool decodeSnapshots(const std::string& bytes, std::vector<PassSnapshot>& snapsh
     snapshots.clear();
     for (uint32_t k = 0; k < passes; ++k) {
         PassSnapshot snapshot;
-        uint32_t targets = 0;
-        if (!in.text(snapshot.pass) || !in.count(targets)) return false;
-        for (uint32_t t = 0; t < targets; ++t) {
-            std::string label;
-            std::vector<float> values;
-            if (!in.namedValues(label, values)) return false;
-            snapshot.targets.push_back({label, std::move(values)});
-        }
-        uint32_t checks = 0;
-        if (!in.count(checks)) return false;
-        for (uint32_t c = 0; c < checks; ++c) {
-            std::string label;
-            std::vector<float> values;
-            if (!in.namedValues(label, values)) return false;
-            snapshot.pixelChecks.push_back({label, std::move(values)});
-        }
+        if (!in.text(snapshot.pass) || !in.namedLists(snapshot.targets) || !in.namedLists(snapshot.pixelChecks)) return false;
         uint32_t buffers = 0;
         if (!in.count(buffers)) return false;
         for (uint32_t b = 0; b < buffers; ++b) {

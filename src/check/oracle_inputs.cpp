@@ -34,7 +34,8 @@ void readSurfaces(Renderer& renderer, OracleInputs& in) {
         renderer.views().fillExactSurfaces(*exact, WaterScene::Direct);
     }
     const FrameTargets& surfaces = exact ? *exact : frame;
-    in.compact = surfaces.layout().encoding == GBufferEncoding::Compact;
+    in.layout = &surfaces.layout();
+    in.compact = surfaces.layout().positionFromDepth();
     in.albedo = readColourTarget(surfaces, Target::Albedo);
     in.normal = readColourTarget(surfaces, Target::Normal);
     in.info = readColourTarget(surfaces, Target::Info);
@@ -135,15 +136,6 @@ glm::dvec3 positionFromDepth(const OracleInputs& in, int x, int y, double depth)
     return glm::dvec3(onNearPlane) / onNearPlane.w * (eyeDepth / nearPlane);
 }
 
-// gbuffer.glsl's octahedralDecode, in double.
-glm::dvec3 octahedralDecodeOf(glm::dvec2 e) {
-    glm::dvec3 n(e.x, 1.0 - std::fabs(e.x) - std::fabs(e.y), e.y);
-    double fold = std::max(-n.y, 0.0);
-    n.x += n.x >= 0.0 ? -fold : fold;
-    n.z += n.z >= 0.0 ? -fold : fold;
-    return glm::normalize(n);
-}
-
 }  // namespace
 
 OracleInputs readOracleInputs(Renderer& renderer) {
@@ -189,17 +181,18 @@ bool oracleWaterAt(const OracleInputs& in, int x, int y) {
 }
 
 bool oracleSurfaceAt(const OracleInputs& in, int x, int y, OracleSurface& s) {
-    glm::dvec4 albedo = texel(in.albedo, in, x, y), info = texel(in.info, in, x, y);
+    GBufferLayout::StoredSurface stored =
+        in.layout->storedSurface(texel(in.albedo, in, x, y), texel(in.normal, in, x, y), texel(in.info, in, x, y));
     double depth = in.depth[size_t(y) * size_t(in.width) + size_t(x)];
-    s.flags = unsigned(std::lround(info[in.compact ? OASIS_COMPACT_INFO_FLAGS_CHANNEL : OASIS_INFO_FLAGS_CHANNEL] * 255.0));
-    bool sky = in.compact ? (in.depthReversed ? depth <= 0.0 : depth >= 1.0) : (s.flags & OASIS_SURFACE_SKY) != 0u;
+    // gbufferSkyAt: a layout that rebuilds positions from depth tells the sky by its depth alone.
+    bool sky = in.compact ? (in.depthReversed ? depth <= 0.0 : depth >= 1.0) : (stored.flags & OASIS_SURFACE_SKY) != 0u;
     if (sky) return false;
-    s.albedo = glm::dvec3(albedo);
-    glm::dvec4 normal = texel(in.normal, in, x, y);
-    s.normal = in.compact ? octahedralDecodeOf(glm::dvec2(normal) * 2.0 - 1.0) : glm::dvec3(normal);
+    s.albedo = stored.albedo;
+    s.normal = stored.normal;
     s.relativePosition = in.compact ? positionFromDepth(in, x, y, depth) : glm::dvec3(texel(in.position, in, x, y));
-    s.specularPower = std::round(info.r * 255.0);
-    s.specularIntensity = in.compact ? albedo.a : info.g;
+    s.specularPower = stored.specularPower;
+    s.specularIntensity = stored.specularIntensity;
+    s.flags = stored.flags;
     return true;
 }
 

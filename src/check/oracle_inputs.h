@@ -11,6 +11,7 @@
 #include "check/oracle_shading.h"
 #include "check/oracle_shadow.h"
 #include "render/frame_data.h"
+#include "render/gbuffer_layout.h"
 #include "render/light_data.h"
 
 namespace oasis {
@@ -19,7 +20,8 @@ class Renderer;
 
 struct OracleInputs {
     int width = 0, height = 0;
-    bool compact = false;        // octahedral normals, position from depth, intensity in albedo.a
+    const GBufferLayout* layout = nullptr;  // the surfaces' layout, which decodes their texels
+    bool compact = false;        // positions (and the sky) from depth
     bool depthReversed = false;
     bool forward = false;
     bool lightVolumes = false;   // deferred lights added one blend per light (each a half-float store)

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <map>
 
+#include "frame/buffer_readback.h"
 #include "frame/frame_graph.h"
 #include "frame/renderer.h"
 #include "gl/objects.h"
@@ -66,6 +67,20 @@ std::string whyUntouched(const Pass& pass, int stencilBefore) {
     return "no sample passed here: nothing of its draw covers the pixel, or a nearer surface won the depth test";
 }
 
+// What `pass` (it ran in the last frame) wrote of the buffers that concerns the pixel: its tile's
+// light lists. The direct lists with the slice the lighting reads at the pixel's `surface`.
+std::vector<BufferAtPixel> buffersAtPixelOf(const Renderer& renderer, const Pass& pass, PixelPlace pixel,
+                                            const std::optional<glm::vec3>& surface) {
+    std::vector<BufferAtPixel> buffers;
+    for (const Resource& resource : pass.writes(renderer.lastFrame().setup)) {
+        if (resource != Resource(Buffer::LightTiles)) continue;
+        const FrameTargets& read = targetsOf(renderer, pass, pixel);
+        std::optional<glm::vec3> surfaceHere = pass.reflectionWork() ? std::nullopt : surface;
+        if (auto tile = tileAtPixel(pass, pixel.glX, pixel.glY, read.width(), surfaceHere)) buffers.push_back(*tile);
+    }
+    return buffers;
+}
+
 }  // namespace
 
 std::vector<double> decodedValues(const StoredTexel& texel) {
@@ -95,7 +110,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
     // the same place (the frame's first pass finds them as the frame before left them: unknown).
     std::map<std::string, StoredTexel> current;
     renderer.renderFrame(scene, FrameRequest::observed([&](const Pass& pass) {
-        PassAtPixel entry{pass.name(), true, false, "", readWrites(renderer, pass, pixel)};
+        PassAtPixel entry{pass.name(), true, false, "", readWrites(renderer, pass, pixel), {}};
         std::vector<StoredTexel> previous;
         for (const StoredTexel& texel : entry.targets) {
             auto found = current.find(texel.target + (pass.drawsInReflectionTargets() ? "@reflection" : ""));
@@ -108,6 +123,14 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
         seen[&pass] = entry;
         ran.push_back(&pass);
     }));
+
+    // The buffers, once the frame is whole (each is written once a frame, by the pass that owns it;
+    // the views' fill draws none) and before the frames below, at the direct scene's surface.
+    std::optional<glm::vec3> surface = directSurfaceAt(renderer, pixel.glX, pixel.glY);
+    for (const Pass* pass : ran) seen[pass].buffers = buffersAtPixelOf(renderer, *pass, pixel, surface);
+    PassAtPixel inputs{kFrameInputsStep, true, false,
+                       "the renderer's uploads before the first pass, which the passes read: buffers, no target's pixel",
+                       {}, {lightsAtPixel(renderer, surface), plantsAtPixel(renderer)}};
 
     // Passes whose values did not change (or were unknown before): did their draws touch the pixel at all?
     for (size_t k = 0; k < ran.size(); ++k) {
@@ -165,14 +188,14 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
     }
 
     // Every pass of the frame's graph in order; one that did not run says why (frame/frame_graph.h).
-    std::vector<PassAtPixel> history;
+    std::vector<PassAtPixel> history{inputs};
     for (const GraphStep& step : renderer.lastFrame().graph().steps) {
         auto found = seen.find(step.pass);
         if (found != seen.end()) {
             history.push_back(found->second);
         } else {
             history.push_back({step.pass->name(), false, false,
-                               step.culled.empty() ? "did not run this frame" : step.culled, {}});
+                               step.culled.empty() ? "did not run this frame" : step.culled, {}, {}});
         }
     }
     return history;
@@ -182,10 +205,14 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
 std::string historyText(const std::vector<PassAtPixel>& history) {
     std::string text = "history (every pass of the frame, in order):\n";
     for (const PassAtPixel& entry : history) {
-        const char* verdict = !entry.ran ? "did not run" : entry.wrote ? "wrote" : "left it";
+        const char* verdict = !entry.ran                      ? "did not run"
+                              : entry.wrote                   ? "wrote"
+                              : entry.pass == kFrameInputsStep ? "uploaded"
+                                                              : "left it";
         char line[512];
         std::snprintf(line, sizeof line, "  %-32s %-12s %s\n", entry.pass.c_str(), verdict, entry.reason.c_str());
         text += line;
+        for (const BufferAtPixel& buffer : entry.buffers) text += bufferAtPixelText(buffer);
         if (!entry.wrote) continue;
         for (const StoredTexel& texel : entry.targets) {
             std::snprintf(line, sizeof line, "      %-14s %-8s %s (decoded %s)\n", texel.target.c_str(), texel.format.c_str(),
@@ -210,6 +237,9 @@ std::string historyJson(const std::vector<PassAtPixel>& history) {
                     ", \"stored\": [" + numberList(texel.values, ", ", "%.9g", true) + "], \"decoded\": [" +
                     numberList(decodedValues(texel), ", ", "%.9g", true) + "]}";
         }
+        json += "}, \"buffers\": {";
+        for (size_t b = 0; b < entry.buffers.size(); ++b)
+            json += (b ? ", " : "") + jsonString(entry.buffers[b].buffer) + ": " + bufferAtPixelJson(entry.buffers[b]);
         json += "}}";
     }
     return json + "]";

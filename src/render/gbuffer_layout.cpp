@@ -90,6 +90,17 @@ unsigned GBufferLayout::storedFlags(glm::vec4 texel) const {
     return unsigned(std::lround(texel[channel] * 255.0f));
 }
 
+GBufferLayout::StoredSurface GBufferLayout::storedSurface(glm::dvec4 albedo, glm::dvec4 normal, glm::dvec4 info) const {
+    const bool compact = encoding == GBufferEncoding::Compact;
+    StoredSurface s;
+    s.albedo = glm::dvec3(albedo);
+    s.normal = compact ? octahedralDecode(glm::dvec2(normal) * 2.0 - 1.0) : glm::dvec3(normal);
+    s.specularPower = std::round(info.r * 255.0);
+    s.specularIntensity = compact ? albedo.a : info.g;
+    s.flags = storedFlags(glm::vec4(info));  // the texels are floats as read back: exact in float
+    return s;
+}
+
 const char* gbufferEncodingDefine(GBufferEncoding encoding) {
     return encoding == GBufferEncoding::Compact ? "GBUFFER_COMPACT" : "";
 }
@@ -105,14 +116,6 @@ glm::vec2 octahedralEncode(glm::vec3 n) {
         folded = (1.0f - glm::abs(glm::vec2(n.z, n.x))) *
                  glm::vec2(n.x >= 0.0f ? 1.0f : -1.0f, n.z >= 0.0f ? 1.0f : -1.0f);
     return folded;
-}
-
-glm::vec3 octahedralDecode(glm::vec2 e) {
-    glm::vec3 n(e.x, 1.0f - std::fabs(e.x) - std::fabs(e.y), e.y);
-    float fold = std::max(-n.y, 0.0f);
-    n.x += n.x >= 0.0f ? -fold : fold;
-    n.z += n.z >= 0.0f ? -fold : fold;
-    return glm::normalize(n);
 }
 
 int GBufferLayout::bytesPerPixel() const {

@@ -48,6 +48,14 @@ struct GBufferLayout {
     // Reads the CPU copy of a texel back (readTarget's floats): the unit normal, the flags.
     glm::vec3 storedNormal(glm::vec4 normalTexel) const;
     unsigned storedFlags(glm::vec4 infoTexel) const;
+    // A surface's texels decoded as common/gbuffer.glsl's readGBuffer decodes them, in double (the
+    // shading oracle's precision); its position aside: stored, or rebuilt from depth.
+    struct StoredSurface {
+        glm::dvec3 albedo{0.0}, normal{0.0};
+        double specularPower = 0.0, specularIntensity = 0.0;
+        unsigned flags = 0;
+    };
+    StoredSurface storedSurface(glm::dvec4 albedoTexel, glm::dvec4 normalTexel, glm::dvec4 infoTexel) const;
 };
 
 // The #define and program-name suffix of an encoding ("" for AsIs: its shaders are the base ones).
@@ -63,8 +71,16 @@ const GBufferLayout& defaultGBufferLayout();
 const GBufferLayout& norm16FallbackGBufferLayout();
 std::string gbufferLayoutNames();  // "full, standard, compact" for help and error text
 
-// Octahedral unit-vector encoding (as shaders/common/gbuffer.glsl): [-1,1]^2 and back.
+// Octahedral unit-vector encoding (as shaders/common/gbuffer.glsl): [-1,1]^2 and back, the decoding
+// in float or double.
 glm::vec2 octahedralEncode(glm::vec3 unit);
-glm::vec3 octahedralDecode(glm::vec2 encoded);
+template <typename T, glm::qualifier Q>
+glm::vec<3, T, Q> octahedralDecode(glm::vec<2, T, Q> e) {
+    glm::vec<3, T, Q> n(e.x, T(1) - glm::abs(e.x) - glm::abs(e.y), e.y);
+    T fold = glm::max(-n.y, T(0));
+    n.x += n.x >= T(0) ? -fold : fold;
+    n.z += n.z >= T(0) ? -fold : fold;
+    return glm::normalize(n);
+}
 
 }  // namespace oasis

@@ -43,6 +43,9 @@ for c in cases:
     assert c["verdict"] in ("pass", "fail", "skip"), c
     assert isinstance(c["options"], list) and all(isinstance(o, str) for o in c["options"]), c["options"]
     assert c["verdict"] != "pass" or c["max_abs"] == 0, ("llvmpipe against its own references", c)
+    # Each case's own seconds: a case that rendered ran a child process of its own (a GL context
+    # and a frame: well over 50 ms here), rendered ahead of its judging; never the judging alone.
+    assert c["verdict"] == "skip" or c["seconds"] >= 0.05, ("the case's seconds", c["name"], c["seconds"])
 assert "llvmpipe" in report["driver"]["renderer"], report["driver"]
 assert all({"feature", "available", "used", "limited_by"} <= set(row) for row in report["caps"]), report["caps"]
 print("report.json: %d cases, %s" % (len(cases), summary))
@@ -59,6 +62,16 @@ EOF
             shown=$(sed -n "s/.*id=\"count-$verdict\">\([0-9]*\)<.*/\1/p" dom.html)
             [ "$shown" = "$expected" ] || fail "report.html shows $verdict '$shown', report.json has '$expected'"
         done
+        # The cases' "s" column shows each case's seconds as report.json has them (never 0.0 for all).
+        python3 - dom.html out/report.json << 'EOF' || fail "report.html's seconds"
+import json, re, sys
+shown = re.findall(r'<span class="n">([0-9.]+)</span></summary>', open(sys.argv[1]).read())
+cases = json.load(open(sys.argv[2]))["cases"]
+assert len(shown) == len(cases), (len(shown), len(cases))
+pairs = zip(sorted(float(s) for s in shown), sorted(c["seconds"] for c in cases))
+assert all(abs(a - b) <= 0.051 for a, b in pairs), (shown, [c["seconds"] for c in cases])
+assert sum(float(s) > 0 for s in shown) >= sum(c["verdict"] != "skip" for c in cases), shown
+EOF
     else
         echo "(chromium-headless-shell absent: report.html not opened)"
     fi

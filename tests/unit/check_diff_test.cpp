@@ -17,10 +17,7 @@ CaseResult makeCase(const std::string& name, Verdict verdict, double psnrDb = 45
     CaseResult c;
     c.name = name;
     c.verdict = verdict;
-    c.psnrDb = psnrDb;
-    c.maxAbs = maxAbs;
-    c.pixelsOver = pixelsOver;
-    c.referenceCompared = verdict != Verdict::Skip;  // a skip has no numbers
+    c.againstReference = {verdict != Verdict::Skip, psnrDb, maxAbs, pixelsOver, 0.0};  // a skip has no numbers
     c.reason = verdict == Verdict::Skip ? "the driver has no SSBOs" : "within the rule";
     return c;
 }
@@ -127,7 +124,7 @@ TEST(CheckDiff, NoRegressionIsExitZero) {
     EXPECT_TRUE(same.fixes.empty() && same.changedNumbers.empty() && same.newCases.empty() && same.removedCases.empty());
     // A fix alone, and a failing case that fails worse, are not regressions.
     CheckReport worse = before();
-    worse.cases[1].maxAbs = 120;
+    worse.cases[1].againstReference.maxAbs = 120;
     CheckDiff diff = diffCheckRuns(a, runOf(worse, "b.json"));
     EXPECT_EQ(names(diff.changedNumbers), std::vector<std::string>{"fixed"});
     EXPECT_EQ(diff.exitCode(), 0);

@@ -58,7 +58,7 @@ CaseResult makeCase(const std::string& name, Verdict verdict, bool images) {
     c.name = name;
     c.verdict = verdict;
     c.options = {"--pipeline", "deferred", "--hour", "21.5"};
-    c.psnrDb = 44.5;
+    c.againstReference.psnrDb = 44.5;
     if (images) {
         c.result = gradient(32, 18, int(name.size()));
         c.reference = gradient(32, 18, 1);

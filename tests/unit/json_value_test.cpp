@@ -134,8 +134,8 @@ TEST(JsonValue, ReadsTheCheckReportItsWriterWrites) {
     c.name = "forward-ubo";
     c.verdict = Verdict::Fail;
     c.options = {"--pipeline", "forward"};
-    c.referenceCompared = true;
-    c.psnrDb = 31.5;
+    c.againstReference.compared = true;
+    c.againstReference.psnrDb = 31.5;
     c.firstDivergence = FirstDivergence{"LightingPass", "Radiance", 12};
     report.cases.push_back(c);
     JsonValue root = parsed(checkReportJson(report));

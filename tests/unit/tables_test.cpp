@@ -150,6 +150,28 @@ TEST(GBufferLayoutTable, ClearedInfoIsTheSkyFlagInTheLayoutsFlagsChannel) {
     EXPECT_EQ(findGBufferLayout("compact")->storedFlags({0.5f, 6.0f / 255.0f, 0.0f, 1.0f}), 6u);
 }
 
+// The layout's decoding of a whole surface (the shading oracle's, in double) reads each encoding's
+// channels as readGBuffer does: the compact layout's intensity in albedo.a, its octahedral normal
+// (the float decoding's direction), power and flags in its two info channels.
+TEST(GBufferLayoutTable, StoredSurfaceReadsEachEncodingsChannels) {
+    glm::dvec4 albedo(0.25, 0.5, 0.75, 0.4);
+    const GBufferLayout& compact = *findGBufferLayout("compact");
+    glm::vec2 e = octahedralEncode(glm::normalize(glm::vec3(0.3f, -0.2f, 0.9f))) * 0.5f + 0.5f;
+    GBufferLayout::StoredSurface c = compact.storedSurface(albedo, glm::dvec4(e, 0.0, 1.0), {12.0 / 255.0, 6.0 / 255.0, 0.0, 1.0});
+    EXPECT_EQ(c.albedo, glm::dvec3(0.25, 0.5, 0.75));
+    EXPECT_DOUBLE_EQ(c.specularIntensity, 0.4);
+    EXPECT_DOUBLE_EQ(c.specularPower, 12.0);
+    EXPECT_EQ(c.flags, 6u);
+    EXPECT_NEAR(glm::length(c.normal - glm::dvec3(compact.storedNormal(glm::vec4(e, 0.0f, 1.0f)))), 0.0, 1e-6);
+    EXPECT_NEAR(glm::length(c.normal), 1.0, 1e-12);  // decoded in double
+    const GBufferLayout& standard = *findGBufferLayout("standard");
+    GBufferLayout::StoredSurface s = standard.storedSurface(albedo, {0.0, 1.0, 0.0, 0.0}, {5.0 / 255.0, 0.3, 4.0 / 255.0, 1.0});
+    EXPECT_DOUBLE_EQ(s.specularIntensity, 0.3);
+    EXPECT_DOUBLE_EQ(s.specularPower, 5.0);
+    EXPECT_EQ(s.flags, 4u);
+    EXPECT_EQ(s.normal, glm::dvec3(0.0, 1.0, 0.0));
+}
+
 // Octahedral normals: the round trip through 16-bit unorm channels (the compact layout's RG16)
 // keeps direction within 1e-4 rad over the sphere, poles, equator and fold lines included.
 TEST(OctahedralNormals, RoundTripThroughSixteenBitsKeepsDirection) {
