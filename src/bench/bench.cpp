@@ -305,11 +305,15 @@ int runBenchCommand(const Options& options) {
         // A renderer per layout and depth convention (the session's for the default layout with
         // standard depth), so that configurations timed in turn never reallocate targets; forward
         // uses the default layout's.
+        // Their frames are looked at through the final view alone (the images, the times, the
+        // traffic): targets nothing reads after their last pass lend their memory (FrameViews::setSink).
+        renderer.views().setSink({"final"});
         std::map<std::pair<std::string, std::string>, Renderer*> renderers;  // (layout, depth)
         std::vector<std::unique_ptr<Renderer>> extraRenderers;
         auto addRenderer = [&](const std::string& layout, const std::string& depth) {
             extraRenderers.push_back(std::make_unique<Renderer>(*session.shaders, session.scene));
             extraRenderers.back()->views().setPlantAtlas(session.plantAtlas.get());
+            extraRenderers.back()->views().setSink({"final"});
             extraRenderers.back()->views().setStencilPath(renderer.views().stencilPath());
             RendererCapabilities withClipControl = extraRenderers.back()->paths().capabilities;
             withClipControl.clipControl = {true, clipControlWhy};

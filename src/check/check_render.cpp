@@ -184,9 +184,11 @@ CaseFrame renderCaseFrame(const std::vector<std::string>& arguments, bool gpuPla
     // The renderer's own layout fallback: the case runs on the layout drawn, and says which and why.
     if (renderer.paths().gbufferFellBack) frame.drawnWith = "drawn with gbuffer " + renderer.paths().gbufferReason;
     std::FILE* sink = std::fopen("/dev/null", "w");
-    frame.image = renderRequestedImage(options, session, sink ? sink : stderr);
+    const bool oracle = options.view == "final" && options.stopBefore.empty();
+    frame.image = renderRequestedImage(options, session, sink ? sink : stderr,
+                                       oracle ? oracleReads(renderer.targets().layout()) : std::vector<Resource>{});
     if (sink) std::fclose(sink);
-    if (options.view == "final" && options.stopBefore.empty()) frame.oracle = oracleOf(renderer, frame.pixelClasses);
+    if (oracle) frame.oracle = oracleOf(renderer, frame.pixelClasses);
     frame.provenance = provenanceTexts(pictureProvenance(options, options.view, pipelineName(options.pipeline),
                                                          frame.image.height, frame.image.height));
     frame.rendered = true;

@@ -16,6 +16,7 @@ namespace oasis {
 namespace {
 
 std::vector<float> readColourTarget(const FrameTargets& targets, Target target) {
+    requireHeldAfterFrame(targets, target);
     std::vector<float> pixels(size_t(targets.width()) * size_t(targets.height()) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({target}));
     readColourFloats(targets.width(), targets.height(), pixels.data());
@@ -159,6 +160,14 @@ OracleInputs readOracleInputs(Renderer& renderer) {
                                                    : "; the shadow maps unreadable (" + in.shadowMapsUnreadable + ")";
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return in;
+}
+
+std::vector<Resource> oracleReads(const GBufferLayout& layout) {
+    std::vector<Resource> reads = {Target::DepthStencil, Target::Radiance, Target::Reflection, Buffer::ShadowMaps,
+                                   Buffer::LightList};
+    for (Target surface : kGBufferColourTargets)
+        if (layout.stores(surface)) reads.push_back(surface);
+    return reads;
 }
 
 double oracleRebuiltPositionError(const OracleInputs& in, int x, int y) {

@@ -10,6 +10,7 @@
 
 #include "check/oracle_shading.h"
 #include "check/oracle_shadow.h"
+#include "passes/pass.h"
 #include "render/frame_data.h"
 #include "render/gbuffer_layout.h"
 #include "render/light_data.h"
@@ -37,6 +38,10 @@ struct OracleInputs {
 };
 
 OracleInputs readOracleInputs(Renderer& renderer);
+// What readOracleInputs and the shading record (probeShading) read of the frame in `layout` as it
+// leaves it: the frame's sink for it (FrameViews::setSink's reads), so no target it reads lends
+// its memory inside the frame.
+std::vector<Resource> oracleReads(const GBufferLayout& layout);
 
 // Whether GL pixel (x, y) shows water (the water mask's stencil mark).
 bool oracleWaterAt(const OracleInputs& in, int x, int y);

@@ -281,7 +281,8 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
     return stackImages(image, legends.draw(legend, image.width));
 }
 
-Image renderRequestedImage(const Options& options, RenderSession& session, std::FILE* report) {
+Image renderRequestedImage(const Options& options, RenderSession& session, std::FILE* report,
+                           const std::vector<Resource>& readAfter) {
     Renderer& renderer = *session.renderer;
     renderer.setPipeline(options.pipeline);
     const EncodingErrorView* errorView = findEncodingErrorView(options.view);
@@ -291,7 +292,7 @@ Image renderRequestedImage(const Options& options, RenderSession& session, std::
     if (!errorView && !options.capture) {
         std::vector<std::string> sink = {options.view};
         if (const DebugView* view = findDebugView(options.view); view && masksUndrawn(*view)) sink.push_back("info");
-        renderer.views().setSink(sink);
+        renderer.views().setSink(sink, readAfter);
     }
     // Shader builds in a frame of their own; the frame after it (captured with --capture) only draws.
     if (options.stopBefore.empty()) renderer.renderFrame(session.scene, FrameRequest::buildingPrograms(errorView ? "" : options.view));

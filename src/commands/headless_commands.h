@@ -23,9 +23,11 @@ Image renderedViewImage(const Options& options, Renderer& renderer, std::FILE* r
 // What `oasis render OPTIONS` draws into its PNG, from the session's first frame on: the sink set,
 // the programs built, the frame rendered, the view or encoding-error image made (empty with
 // --graph). `oasis check` renders every case through it, so that a case's reproduce line is the
-// same code.
+// same code. `readAfter`: what the caller reads of the frame after it, besides the view (the
+// check's shading oracle): the sink keeps it (FrameViews::setSink's reads).
 struct RenderSession;
-Image renderRequestedImage(const Options& options, RenderSession& session, std::FILE* report);
+Image renderRequestedImage(const Options& options, RenderSession& session, std::FILE* report,
+                           const std::vector<Resource>& readAfter = {});
 
 // The difference image compare writes: the heat map of a against b (render/image.h, full scale 16
 // levels) with a legend strip naming them and giving PSNR, max abs and RMSE. Sizes must agree.

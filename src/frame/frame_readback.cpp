@@ -52,6 +52,14 @@ std::vector<PointLight> readLightList(const Renderer& renderer) {
     return lights;
 }
 
+void requireHeldAfterFrame(const FrameTargets& targets, Target target) {
+    const Target holder = targets.holderAfterFrame(target);
+    if (holder != target)
+        throw std::logic_error(std::string("the frame lent ") + targetName(target) + "'s memory to " +
+                               targetName(holder) + " after its last use: what it held is gone (name what is "
+                               "read after the frame in its sink: Renderer::views().setSink)");
+}
+
 Image readDisplay(const Renderer& renderer) {
     const FrameTargets& targets = renderer.targets();
     Image image(targets.width(), targets.height());
@@ -83,6 +91,7 @@ std::vector<float> readTarget(Renderer& renderer, Target target) {
     if (!targets.layout().stores(target))
         throw std::invalid_argument(std::string("the ") + targets.layout().name + " G-buffer layout has no " +
                                     targetName(target) + " target");
+    requireHeldAfterFrame(targets, target);
     std::vector<float> pixels(size_t(targets.width()) * size_t(targets.height()) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({target}));
     readColourFloats(targets.width(), targets.height(), pixels.data());
@@ -109,11 +118,13 @@ bool drawsDepthStencil(const Renderer& renderer) { return !renderer.paths().capa
 
 std::vector<float> readDepth(const Renderer& renderer) {
     const FrameTargets& targets = renderer.targets();
+    requireHeldAfterFrame(targets, Target::DepthStencil);
     return readDepthRegion(ReadbackAccess::shaders(renderer), targets, wholeDepthStencil(targets, drawsDepthStencil(renderer)));
 }
 
 std::vector<uint8_t> readStencil(const Renderer& renderer) {
     const FrameTargets& targets = renderer.targets();
+    requireHeldAfterFrame(targets, Target::DepthStencil);
     return readStencilRegion(ReadbackAccess::shaders(renderer), targets, wholeDepthStencil(targets, drawsDepthStencil(renderer)));
 }
 

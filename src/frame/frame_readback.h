@@ -12,6 +12,10 @@
 
 namespace oasis {
 
+// Throws std::logic_error when the frame's plan lent `target`'s memory to a target used after it
+// (FrameTargets::holderAfterFrame): its values are gone; the frame's sink (views().setSink) must
+// name what is read after it. Every read of a target below asks this first.
+void requireHeldAfterFrame(const FrameTargets& targets, Target target);
 // The Display target, top row first.
 Image readDisplay(const Renderer& renderer);
 // Puts an image of the frame's size (top row first) into Display, e.g. a view's values mapped by

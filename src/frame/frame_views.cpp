@@ -16,11 +16,15 @@ void FrameViews::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) 
 }
 void FrameViews::ensureRadiance() { renderer_.ensureRadiance(); }
 
-void FrameViews::setSink(const std::vector<std::string>& views) {
+void FrameViews::setSink(const std::vector<std::string>& views, const std::vector<Resource>& reads) {
     for (const std::string& name : views)
         if (name != kOverviewName && !findDebugView(name))
             throw std::invalid_argument("no debug view named '" + name + "' (views: " + debugViewNames() + ")");
+    if (views.empty() && !reads.empty())
+        throw std::invalid_argument("FrameViews::setSink: reads besides the views need the views named "
+                                    "(no views: the whole frame, which holds them anyway)");
     sink_ = views;
+    sinkReads_ = reads;
 }
 
 const std::vector<std::string>& FrameViews::sink() const { return sink_; }

@@ -22,7 +22,9 @@ public:
     // view reads, through what runs after the frame for it (the composite onto Radiance, the
     // views' fill). A frame stopped early keeps the whole frame's sink. render and readValues of
     // a view not named throw std::logic_error; a name that is no view throws std::invalid_argument.
-    void setSink(const std::vector<std::string>& views);
+    // `reads`: what a reader besides the views (the check's shading oracle) reads afterwards as the
+    // frame leaves it (Radiance with the water laid on, as readTarget reads it); views needed too.
+    void setSink(const std::vector<std::string>& views, const std::vector<Resource>& reads = {});
     const std::vector<std::string>& sink() const;
     void setStencilPath(StencilViewPath path);
     StencilViewPath stencilPath() const;
@@ -71,6 +73,7 @@ private:
     WaterScene waterScene_ = WaterScene::Direct;
     ViewScene scene_;  // what the G-buffer holds at water pixels for the views, and why
     std::vector<std::string> sink_;  // setSink's views; empty: the whole frame
+    std::vector<Resource> sinkReads_;  // setSink's reads
 };
 
 }  // namespace oasis

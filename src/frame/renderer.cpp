@@ -310,6 +310,12 @@ std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* b
         for (const Pass* pass : fill) targetsIn(pass->writes(frame_));
         reads = readsBefore(fill, frame_, reads);
     }
+    // The sink's other reads are of the frame as it leaves it, no fill before them, but the water
+    // laid onto Radiance (readTarget).
+    for (const Resource& read : views_.sinkReads_) {
+        reads.push_back(read);
+        radiance = radiance || read == Resource(Target::Radiance);
+    }
     if (radiance && frame_.toneMapFused) {
         FrameSetup separate = frame_;  // ensureRadiance runs the composite as the separate pass
         separate.toneMapFused = false;

@@ -49,18 +49,27 @@ std::string targetLifetimesText(const FrameGraph& graph, const std::vector<Targe
         return step >= 0 && size_t(step) < graph.steps.size() ? graph.steps[size_t(step)].pass->name() : "?";
     };
     const double mebibyte = 1024.0 * 1024.0;
-    std::string text = "# targets: first use -> last use (the passes that run), size, memory\n";
+    std::string text =
+        "# targets: first use -> last use (the passes that run), size, memory (whose it takes, who takes it next)\n";
     for (const TargetLifetime& lifetime : lifetimes) {
         const TargetFormat format = targetFormat(targets.layout(), targets.depth(), lifetime.target);
         if (format.internalFormat == 0) continue;  // not stored in this layout
         const Target memory = targets.memory()[size_t(lifetime.target)];
+        // The target that takes the memory next, after this one's last use, if any.
+        const TargetLifetime* next = nullptr;
+        for (const TargetLifetime& later : lifetimes)
+            if (later.first > lifetime.last && targets.memory()[size_t(later.target)] == memory &&
+                (!next || later.first < next->first))
+                next = &later;
+        const std::string after = next ? targetName(next->target) : "";
         char line[256];
-        std::snprintf(line, sizeof(line), "# %-12s %s -> %s, %dx%d x %d B = %.2f MiB%s%s\n",
+        std::snprintf(line, sizeof(line), "# %-12s %s -> %s, %dx%d x %d B = %.2f MiB%s%s%s%s\n",
                       targetName(lifetime.target), passAt(lifetime.first).c_str(), passAt(lifetime.last).c_str(),
                       targets.width(), targets.height(), format.bytesPerPixel,
                       double(targets.width()) * targets.height() * format.bytesPerPixel / mebibyte,
                       memory == lifetime.target ? "" : ", in the memory of ",
-                      memory == lifetime.target ? "" : targetName(memory));
+                      memory == lifetime.target ? "" : targetName(memory), after.empty() ? "" : ", then lent to ",
+                      after.c_str());
         text += line;
     }
     char held[160];

@@ -25,7 +25,8 @@ std::vector<TargetLifetime> targetLifetimes(const FrameGraph& graph, const Frame
                                             const std::vector<Target>& beyondFrame, StepsOf steps);
 
 // Lines that open with "# " after render --graph's passes: each target the frame holds with its
-// first and last pass, its size and format, and whose memory it uses; then the memory held.
+// first and last pass, its size and format, whose memory it uses and who takes its memory after it;
+// then the memory held.
 std::string targetLifetimesText(const FrameGraph& graph, const std::vector<TargetLifetime>& lifetimes,
                                 const FrameTargets& targets);
 

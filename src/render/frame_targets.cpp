@@ -66,6 +66,7 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
                                  std::to_string(int(kMaxTargetBytes / double(1u << 30))) + " GiB");
     labelPrefix_ = prefix;
     memory_ = unaliasedTargets();
+    holderAfterFrame_ = memory_;
     // The framebuffers every frame binds are made once now, so an incomplete one (a format this
     // context cannot draw into) is refused here; their textures are then let go again, to be made
     // at their first use in a frame.
@@ -134,11 +135,22 @@ void FrameTargets::forgetFramebuffersOf(GLuint texture) {
 }
 
 void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
-    // No target takes another's memory in a frame: the shading oracle, the probe and the check's
-    // read-backs read the G-buffer after the frame, past every lifetime the graph knows, and an
-    // aliased albedo then held Final's texels (aliasTargets stays the planner's, unit-tested, for
-    // when those readers are declared to the graph).
-    const TargetMemory memory = unaliasedTargets();
+    // Readers after the frame are in its sink (Renderer::sinkOfFrame): their targets live to
+    // kBeyondFrame and lend nothing, so a target lends its memory only where nothing reads it again.
+    const TargetMemory memory = aliasTargets(lifetimes, [&](Target target) {
+        return unsigned(targetFormat(layout_, depth_, target).internalFormat);
+    });
+    // Each memory's last holder: the target whose values it holds when the frame ends.
+    std::array<int, size_t(Target::Count)> latestFirst;
+    latestFirst.fill(-1);
+    holderAfterFrame_ = unaliasedTargets();
+    for (const TargetLifetime& lifetime : lifetimes) {
+        const size_t owner = size_t(memory[size_t(lifetime.target)]);
+        if (lifetime.first > latestFirst[owner]) {
+            latestFirst[owner] = lifetime.first;
+            holderAfterFrame_[owner] = lifetime.target;
+        }
+    }
     std::array<bool, size_t(Target::Count)> used{};
     for (const TargetLifetime& lifetime : lifetimes) used[size_t(lifetime.target)] = true;
     for (auto& entry : pool_) ++entry.idlePlans;
@@ -156,6 +168,10 @@ void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
             ++entry;
         }
     }
+}
+
+Target FrameTargets::holderAfterFrame(Target target) const {
+    return holderAfterFrame_[size_t(memory_[size_t(target)])];
 }
 
 double FrameTargets::heldBytes() const {

@@ -50,6 +50,9 @@ public:
     // for kPoolFrames plans are deleted.
     void plan(const std::vector<TargetLifetime>& lifetimes);
     const TargetMemory& memory() const { return memory_; }
+    // The target whose values `target`'s texture holds after the frame: `target` itself, unless
+    // the plan lent its memory to a target used after it (what it held is then gone).
+    Target holderAfterFrame(Target target) const;
     // The GPU memory the targets hold now: each texture held (aliased ones once, Display included)
     // at its format's bytes per texel. The pool's waiting textures are not counted (pooledBytes).
     double heldBytes() const;
@@ -80,6 +83,7 @@ private:
     // The textures held, by the target whose memory they are (memory_); aliased targets hold none.
     mutable std::array<gl::Texture, size_t(Target::Count)> textures_;
     TargetMemory memory_;
+    TargetMemory holderAfterFrame_;  // by memory: its last holder in the plan
     struct Pooled {
         gl::Texture texture;
         unsigned format;

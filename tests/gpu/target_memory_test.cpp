@@ -2,6 +2,7 @@
 // G-buffer; a frame holds the textures of the targets its running passes and its sink name, no more;
 // a target whose lifetime follows another's of the same format takes its memory, and the picture
 // stays the one drawn without aliasing, bit for bit. Numbers come from the allocation, not constants.
+#include "check/oracle_inputs.h"
 #include "frame/frame_readback.h"
 #include "frame/target_lifetimes.h"
 #include "gpu_test.h"
@@ -67,6 +68,63 @@ TEST_F(TargetMemory, TheForwardFrameHoldsNoGBufferAndEachFrameOnlyWhatItsGraphUs
         EXPECT_NE(targets.heldTexture(Target::Albedo), 0u);
         renderer.views().setSink({});
     }
+}
+
+TEST_F(TargetMemory, FinalTakesTheAlbedosMemoryAfterItAndThePictureStays) {
+    // The separate tone map writes Final after the mirrored lighting's last read of the G-buffer;
+    // seen through the final view alone, nothing after the frame touches the G-buffer. As in
+    // FrameSink: another hour first, then the frame for the final view, then the whole frame.
+    SceneSettings scene = defaultPose().scene;
+    scene.work.fuseToneMap = false;
+    SceneSettings decoy = scene;
+    decoy.hour = 17.5;
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
+    renderer.setPipeline(PipelineKind::Deferred);
+    renderer.renderFrame(decoy);
+    renderer.views().render(kOverviewName);
+
+    renderer.views().setSink({"final"});
+    renderer.renderFrame(scene);
+    EXPECT_EQ(renderer.targets().memory()[size_t(Target::Final)], Target::Albedo);
+    EXPECT_EQ(renderer.targets().heldTexture(Target::Final), renderer.targets().heldTexture(Target::Albedo));
+    EXPECT_EQ(renderer.lastFrame().targetMemoryBytes(), plannedBytes(renderer));
+    renderer.views().render("final");
+    const Image aliased = readDisplay(renderer);
+    // The albedo's values are gone: a read of it says so rather than return Final's texels.
+    EXPECT_THROW(readTarget(renderer, Target::Albedo), std::logic_error);
+
+    renderer.views().setSink({});
+    renderer.renderFrame(scene);  // the whole frame's sink: everything lives past the frame, unaliased
+    EXPECT_EQ(renderer.targets().memory()[size_t(Target::Final)], Target::Final);
+    renderer.views().render("final");
+    const Image unaliased = readDisplay(renderer);
+    ASSERT_TRUE(hasContent(aliased));
+    EXPECT_EQ(compareImages(unaliased, aliased).maxAbs, 0) << "the aliased frame's picture differs";
+}
+
+TEST_F(TargetMemory, WhatTheSinkNamesBesidesTheViewsLendsNoMemory) {
+    // The check's shading oracle reads the G-buffer as the frame left it, after a frame built for
+    // the final view: its reads in the sink keep the albedo's memory the albedo's, and the values
+    // read are those of the whole frame's sink.
+    SceneSettings scene = defaultPose().scene;
+    scene.work.fuseToneMap = false;  // Final after the G-buffer's last read: it could take the albedo's memory
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(kSmallWidth, kSmallHeight, layoutNamed("compact"));
+    renderer.setPipeline(PipelineKind::Deferred);
+    renderer.renderFrame(scene);
+    const std::vector<float> whole = readTarget(renderer, Target::Albedo);
+
+    renderer.views().setSink({"final"}, oracleReads(renderer.targets().layout()));
+    renderer.renderFrame(scene);
+    for (Target read : {Target::Albedo, Target::Normal, Target::Info, Target::DepthStencil, Target::Radiance})
+        EXPECT_EQ(renderer.targets().holderAfterFrame(read), read) << targetName(read);
+    EXPECT_NE(renderer.targets().memory()[size_t(Target::Final)], Target::Albedo);
+    EXPECT_EQ(readTarget(renderer, Target::Albedo), whole);
+    EXPECT_THROW(renderer.views().setSink({}, {Target::Albedo}), std::invalid_argument);
+    renderer.views().setSink({});
 }
 
 }  // namespace
