@@ -53,7 +53,6 @@ void LightingPass::execute(PassContext& context) {
     } else {
         glDisable(GL_DEPTH_TEST);
     }
-    bindGBufferInputs(context.targets, depthRead(context.frame));
     beginMirroredDraw(mirroring_);
     if (mirrored) beginWaterBoundedDraw(context);
     std::string program = mirrored ? "lighting.mirrored" : fused ? "lighting.tonemapped" : "lighting";
