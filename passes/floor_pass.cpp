@@ -16,8 +16,7 @@ void FloorPass::execute(PassContext& context) {
     context.geometry.drawFullscreenTriangle();
     glDisable(GL_DEPTH_TEST);
 
-    bindFramebufferOf(targets, {{Target::Final, Use::Write}});
-    bindGBufferInputs(targets);
+    bindFramebufferOf(targets, {{Target::Final, Use::Write}});  // the G-buffer bound as declared
     glUseProgram(context.shaders.program(targets.layout().program("floor.read")));
     context.geometry.drawFullscreenTriangle();
 }

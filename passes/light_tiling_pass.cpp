@@ -24,8 +24,8 @@ void LightTilingPass::execute(PassContext& context) {
         glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
         tilesBytes_ = bytes;
     }
+    // Its own lists, which it writes (the readers get them bound from their declarations).
     glBindBufferRange(GL_SHADER_STORAGE_BUFFER, kLightTileStorageBinding, tiles_.name(), 0, GLsizeiptr(bytes));
-    bindGBufferInputs(targets);
     glUseProgram(context.shaders.program(targets.layout().program(mirroring_ == Mirroring::Mirrored ? "light.tiles.mirrored" : "light.tiles")));
     // The G-buffer was drawn just now with its framebuffer still bound. GL needs no barrier here
     // (drawn texels are visible to later commands' fetches), but softpipe's dispatch reads them

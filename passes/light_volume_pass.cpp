@@ -28,7 +28,6 @@ void LightVolumePass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
     bool mirrored = mirroring_ == Mirroring::Mirrored;
     bindDeclaredOutputs(context);
-    bindGBufferInputs(targets, DepthRead::FromCopy);
     std::string suffix = (mirrored ? ".mirrored" : "") + lightsVariantSuffix(context.frame.lightsPath);
     GLuint mark = context.shaders.program("light.mark" + suffix);
     GLuint shade = context.shaders.program(targets.layout().program("light.shade" + suffix));

@@ -5,18 +5,16 @@
 // variant also adds the lights its LightTilingPass listed for the pixel's tile.
 #include "passes/lighting_pass.h"
 
-
 namespace oasis {
 
 DepthRead LightingPass::depthRead(const FrameSetup& frame) const {
-    return mirroring_ == Mirroring::Direct && frame.work.depthReadInPlace ? DepthRead::FromTarget : DepthRead::FromCopy;
+    return mirroring_ == Mirroring::Direct && lightingSamplesDepthTarget(frame) ? DepthRead::FromTarget
+                                                                               : DepthRead::FromCopy;
 }
 
 bool LightingPass::testsSurfaces(const FrameSetup& frame) const {
-    // A layout that stores position reads no depth; the compact layout's read of the target it
-    // would test is allowed only where the context has read-only depth.
-    bool samplesTheTarget = depthRead(frame) == DepthRead::FromTarget && frame.positionFromDepth;
-    return !samplesTheTarget || frame.readOnlyDepth;
+    // A read of the very target it would test is allowed only where the context has read-only depth.
+    return depthRead(frame) == DepthRead::FromCopy || frame.readOnlyDepth;
 }
 
 // Whether the tiled variant adds the point lights: the tiled method, lights to add (LightTilingPass
@@ -53,7 +51,6 @@ void LightingPass::execute(PassContext& context) {
     } else {
         glDisable(GL_DEPTH_TEST);
     }
-    bindGBufferInputs(context.targets, depthRead(context.frame));
     beginMirroredDraw(mirroring_);
     if (mirrored) beginWaterBoundedDraw(context);
     std::string program = mirrored ? "lighting.mirrored" : fused ? "lighting.tonemapped" : "lighting";

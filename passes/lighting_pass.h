@@ -19,8 +19,8 @@ public:
     // Whether the depth test keeps the pass to the surfaces (else every pixel is shaded, the sky's
     // black): unless it samples the very target it would test and the context forbids that.
     bool testsSurfaces(const FrameSetup& frame) const;
-    // Where it reads the surfaces' depth (--depth-read): the depth target itself for the direct
-    // half where the read in place is on, else the copy (the mirrored half's always).
+    // Where it reads the surfaces' depth: the depth target itself for the direct half where the
+    // frame reads it in place (render/frame_setup.h's lightingSamplesDepthTarget), else the copy.
     DepthRead depthRead(const FrameSetup& frame) const;
 
 protected:

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "render/light_paths.h"
+#include "render/shadow_maps.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -111,7 +112,8 @@ ReflectionContext::ReflectionContext(const PassContext& frame)
       context_{reduced_ ? *frame.reflectionTargets : frame.targets, frame.shaders, frame.geometry, frame.frame,
                frame.vegetation, frame.waterBounds, frame.shadowMaps, frame.waterSeen,
                frame.reflectionTargets, frame.reflectionFrameBlock, frame.frameBlock,
-               frame.drawDepthStencilReads, frame.depthClamp, frame.flushBeforeComputeRead} {
+               frame.drawDepthStencilReads, frame.depthClamp, frame.flushBeforeComputeRead,
+               frame.producedBuffers} {
     if (reduced_) glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame.reflectionFrameBlock);
 }
 
@@ -198,23 +200,42 @@ std::string variantName(const std::string& base, SurfaceOutput output, Mirroring
     return base + "." + surfaceOutputName(output) + (mirroring == Mirroring::Mirrored ? ".mirrored" : "");
 }
 
-void bindGBufferInputs(const FrameTargets& targets, DepthRead depthRead) {
-    const std::pair<int, Target> inputs[] = {{kUnitAlbedo, Target::Albedo}, {kUnitNormal, Target::Normal},
-                                             {kUnitPosition, Target::Position}, {kUnitInfo, Target::Info}};
-    for (auto [unit, target] : inputs) {
-        glActiveTexture(GL_TEXTURE0 + unit);
+// Binds `target` of `targets` on its unit in kInputBindings.
+static void bindSampledTarget(const FrameTargets& targets, Target target) {
+    for (const InputBinding& row : kInputBindings) {
+        if (row.resource != Resource(target)) continue;
+        glActiveTexture(GLenum(GL_TEXTURE0 + row.binding));
         glBindTexture(GL_TEXTURE_2D, targets.texture(target));
+        // The stencil view switches the target to stencil sampling; what samples it reads depth.
+        if (target == Target::DepthStencil)
+            glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
     }
-    if (!targets.layout().positionFromDepth()) return;
-    glActiveTexture(GL_TEXTURE0 + kUnitDepth);
-    if (depthRead == DepthRead::FromCopy) {
-        // Nothing switches the copy to stencil sampling, so it keeps GL's default depth mode.
-        glBindTexture(GL_TEXTURE_2D, targets.texture(Target::SceneDepth));
-    } else {
-        // The stencil view switches the target to stencil sampling; depth is read here.
-        glBindTexture(GL_TEXTURE_2D, targets.texture(Target::DepthStencil));
-        glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+void bindDeclaredInputs(const std::vector<Access>& accesses, const PassContext& context) {
+    for (const Access& access : accesses) {
+        if (access.use != Use::Sample) continue;
+        if (const Target* target = std::get_if<Target>(&access.resource)) {
+            bindSampledTarget(context.targets, *target);
+            continue;
+        }
+        for (const InputBinding& row : kInputBindings) {
+            if (row.resource != access.resource) continue;
+            if (row.slot == InputSlot::TextureArray && context.shadowMaps) context.shadowMaps->bind();
+            if (row.slot != InputSlot::StorageBlock && row.slot != InputSlot::UniformBlock) continue;
+            for (const auto& [buffer, name] : context.producedBuffers)
+                if (Resource(buffer) == row.resource)
+                    glBindBufferBase(row.slot == InputSlot::StorageBlock ? GL_SHADER_STORAGE_BUFFER : GL_UNIFORM_BUFFER,
+                                     GLuint(row.binding), name);
+        }
     }
+}
+
+void bindGBufferInputs(const FrameTargets& targets) {
+    for (Target target : {Target::Albedo, Target::Normal, Target::Position, Target::Info})
+        bindSampledTarget(targets, target);
+    if (targets.layout().positionFromDepth()) bindSampledTarget(targets, Target::DepthStencil);
 }
 
 const char* surfaceOutputName(SurfaceOutput output) {

@@ -3,10 +3,10 @@
 #pragma once
 #include <memory>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "gl/objects.h"
+#include "render/frame_resource.h"
 #include "render/frame_setup.h"
 #include "render/frame_targets.h"
 #include "render/scene_geometry.h"
@@ -50,6 +50,9 @@ struct PassContext {
     // The driver workaround flush-before-compute-read (gl/driver_workarounds.h): a dispatch that
     // reads a texture drawn this frame is preceded by a texture-fetch barrier.
     bool flushBeforeComputeRead = false;
+    // The buffers passes of this frame made that they own (Pass::ownBuffer: the tile lists), the
+    // last maker's: where a later pass that samples one finds it. Pipeline::run fills it in.
+    std::vector<std::pair<Buffer, GLuint>> producedBuffers{};
 };
 
 // The context the reflection's passes draw with, for the scope's lifetime: at a reduced
@@ -68,16 +71,6 @@ private:
     PassContext context_;
 };
 
-// The buffers passes hand each other besides the frame's targets: declared like targets so the
-// frame graph sees who produces and who consumes them, and the check's pass-by-pass search reads
-// what a pass wrote (check/check_buffers.h). LightList (the point lights, SSBO or UBO) and
-// PlantInstances (the billboards' instance attributes) are uploaded by the renderer before the
-// first pass: the frame's inputs (frame/frame_graph.h's frameInputs), read by the passes.
-enum class Buffer { TerrainHeights, ShadowMaps, LightTiles, LightList, PlantInstances };
-const char* bufferName(Buffer buffer);
-using Resource = std::variant<Target, Buffer>;
-std::string resourceName(const Resource& resource);
-
 // How a pass touches a resource. Write draws into part of it (blending or depth-tested draws keep
 // the rest); Replace makes all of it anew (a copy, a compute pass), so what an earlier pass wrote
 // there is dead. The depth and stencil uses attach the depth-stencil target.
@@ -88,6 +81,12 @@ struct Access {
 };
 bool isRead(Use use);   // Sample, DepthTest, StencilTest
 bool isWrite(Use use);  // Write, Replace, DepthWrite, StencilWrite
+// Binds each resource `accesses` samples where render/texture_units.h's kInputBindings reads it:
+// the context's targets on their texture units (the depth-stencil target in depth mode), the
+// shadow maps, and the buffers passes made (PassContext::producedBuffers). The point lights are
+// the renderer's upload, bound before the first pass (Renderer::uploadLights); the terrain's
+// heights and the plants' instances are vertex attributes, bound by the geometry that draws them.
+void bindDeclaredInputs(const std::vector<Access>& accesses, const PassContext& context);
 
 class Pass {
 public:
@@ -122,8 +121,10 @@ public:
     // tile lists), else 0: what the check's pass-by-pass search reads (check/check_buffers.h).
     virtual GLuint ownBuffer(Buffer) const { return 0; }
 
+    // Binds what the pass declares it samples (bindDeclaredInputs), then executes it.
     void run(PassContext& context) {
         gl::DebugGroup group(name().c_str());
+        bindDeclaredInputs(accesses(context.frame), context);
         execute(context);
     }
 
@@ -206,9 +207,10 @@ const char* surfaceOutputName(SurfaceOutput output);
 // DepthCopyPass's copy, for passes that write stencil while they read depth (the light volumes)
 // and the mirrored lighting.
 enum class DepthRead { FromTarget, FromCopy };
-// Binds the four G-buffer colour targets to their texture units for a pass that reads them, and
-// the depth the position is rebuilt from where the layout does that.
-void bindGBufferInputs(const FrameTargets& targets, DepthRead depthRead = DepthRead::FromTarget);
+// Binds the G-buffer's colour targets and, where the layout rebuilds position from depth, the
+// depth-stencil target to their units, for what reads the G-buffer outside a pass (the views, the
+// probes); a pass gets them from its declarations (bindDeclaredInputs).
+void bindGBufferInputs(const FrameTargets& targets);
 // The colour targets a surface output draws into this frame: the G-buffer's stored ones (no
 // Position where the layout rebuilds it from depth), Radiance (+ Final where the tone map is fused)
 // or Reflection.

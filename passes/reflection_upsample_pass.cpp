@@ -10,6 +10,8 @@ void ReflectionUpsamplePass::execute(PassContext& context) {
     // Reflection work, but drawn into the frame's targets: the frame's water rectangle and query.
     OnlyWhereWaterIsSeen onlyWithWater(context, true);
     bindDeclaredOutputs(context);
+    // Bound by hand: the reduced reflection's own Reflection is none of this context's targets,
+    // so no declaration of it binds it (the frame's Reflection is what the pass writes).
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
     glBindTexture(GL_TEXTURE_2D, context.reflectionTargets->texture(Target::Reflection));
     glEnable(GL_STENCIL_TEST);

@@ -13,6 +13,8 @@ void VegetationPass::execute(PassContext& context) {
     // The mirrored billboards read the visible water's rectangle to drop those that miss it.
     const bool readsWaterBounds = mirroring_ == Mirroring::Mirrored && context.waterBounds;
     if (readsWaterBounds) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, context.waterBounds);
+    // The draw binds the plant atlas itself: made once for the scene, it is no frame resource a
+    // declaration could bind (the instances it draws are: PlantInstances).
     context.vegetation.draw(mirroring_);
     if (readsWaterBounds) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kWaterBoundsStorageBinding, 0);
     endSurfaceDraw();

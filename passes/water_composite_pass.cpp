@@ -3,21 +3,13 @@
 #include "passes/water_composite_pass.h"
 
 #include "passes/water_mask_pass.h"  // drawWaterSurface
-#include "render/texture_units.h"
 
 namespace oasis {
 
 void WaterCompositePass::execute(PassContext& context) {
-    const FrameTargets& targets = context.targets;
     // Fused: the same blend done in the shader over Radiance (read, not attached) into Final.
     bool fused = context.frame.toneMapFused;
     bindDeclaredOutputs(context);
-    if (fused) {
-        glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
-        glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Radiance));
-    }
-    glActiveTexture(GL_TEXTURE0 + kUnitSource);
-    glBindTexture(GL_TEXTURE_2D, targets.texture(Target::Reflection));
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_EQUAL, kStencilWater, 0xFF);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

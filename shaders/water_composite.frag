@@ -12,12 +12,12 @@
 uniform sampler2D radianceTexture;
 #endif
 
-uniform sampler2D sourceTexture;  // Reflection
+uniform sampler2D reflectionTexture;
 layout(location = 0) out vec4 outColour;
 
 void main() {
     vec3 relativePosition = waterFragmentPosition();  // WATER_FULLSCREEN: found per fragment (common/water_fragment.glsl)
-    vec3 reflectedScene = reflectionsActive() ? texelFetch(sourceTexture, ivec2(gl_FragCoord.xy), 0).rgb : vec3(0.0);
+    vec3 reflectedScene = reflectionsActive() ? texelFetch(reflectionTexture, ivec2(gl_FragCoord.xy), 0).rgb : vec3(0.0);
     vec4 water = waterSurface(relativePosition, reflectedScene);
 #if defined(TONE_MAP_FUSED)
     vec3 under = texelFetch(radianceTexture, ivec2(gl_FragCoord.xy), 0).rgb;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "frame/frame_assembly.h"
+#include "frame/input_audit.h"
 
 namespace oasis {
 
@@ -47,6 +48,7 @@ bool Pipeline::run(PassContext& context, const std::string& stopBefore,
         } else {
             runValidated(*pass, context);
         }
+        recordProducedBuffers(*pass, context);
         if (afterEach) afterEach(*pass);
     }
     return true;
@@ -66,24 +68,43 @@ bool Pipeline::writes(const FrameSetup& frame, Target target) const {
     return std::any_of(passes_.begin(), passes_.end(), [&](const auto& pass) { return pass->writes(frame, target); });
 }
 
+void recordProducedBuffers(const Pass& pass, PassContext& context) {
+    for (const Resource& written : pass.writes(context.frame)) {
+        const Buffer* buffer = std::get_if<Buffer>(&written);
+        GLuint name = buffer ? pass.ownBuffer(*buffer) : 0;
+        if (name == 0) continue;
+        auto& produced = context.producedBuffers;
+        produced.erase(std::remove_if(produced.begin(), produced.end(), [&](const auto& made) { return made.first == *buffer; }),
+                       produced.end());
+        produced.emplace_back(*buffer, name);
+    }
+}
+
 void runValidated(Pass& pass, PassContext& context) {
     if (!frameValidation()) {
         pass.run(context);
         return;
     }
     // Nothing bound going in: whatever is bound after the pass, the pass bound itself (and a pass
-    // that drew without binding its outputs draws nowhere, which the pictures show).
+    // that drew without binding its outputs draws nowhere, which the pictures show). Likewise no
+    // undeclared input left bound where it reads (InputAudit).
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     std::vector<Target> bound;
-    recordBoundTargets(&bound);
-    try {
-        pass.run(context);
-    } catch (...) {
+    std::string problem;
+    {
+        InputAudit inputs(pass, context);
+        recordBoundTargets(&bound);
+        try {
+            pass.run(context);
+        } catch (...) {
+            recordBoundTargets(nullptr);
+            throw;
+        }
         recordBoundTargets(nullptr);
-        throw;
+        problem = inputs.undeclaredReads();
     }
-    recordBoundTargets(nullptr);
-    std::string problem = auditBoundFramebuffer(pass, context);
+    std::string drawn = auditBoundFramebuffer(pass, context);
+    if (!drawn.empty()) problem += (problem.empty() ? "" : "; ") + drawn;
     std::string unbound = auditBoundTargets(pass, context, bound);
     if (!unbound.empty()) problem += (problem.empty() ? "" : "; ") + unbound;
     if (!problem.empty()) throw std::logic_error("frame validation: " + problem);

@@ -39,8 +39,12 @@ private:
     std::vector<std::unique_ptr<Pass>> passes_;
 };
 
-// Runs a pass and, where frames are validated (frameValidation()), audits the framebuffer it
-// left bound against its declarations; throws std::logic_error on a pass that drew elsewhere.
+// Runs a pass and, where frames are validated (frameValidation()), audits what it read
+// (frame/input_audit.h) and the framebuffer it left bound against its declarations; throws
+// std::logic_error on a pass that read or drew anything it did not declare.
 void runValidated(Pass& pass, PassContext& context);
+// Keeps in context.producedBuffers the buffers `pass` just wrote that it owns (Pass::ownBuffer),
+// for the later passes that sample them.
+void recordProducedBuffers(const Pass& pass, PassContext& context);
 
 }  // namespace oasis

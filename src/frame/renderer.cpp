@@ -67,11 +67,7 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
 // Uploads the frame's lights once and binds them for every path: as the SSBO list (sized to the
 // count, for .length()), as the UBO block array, and the count for the other two paths.
 void Renderer::uploadLights() {
-    paths_.lightsDropped = 0;
-    if (frame_.lightsPath == LightsPath::Ubo && int(frame_.lights.size()) > paths_.uboLights.maxLights()) {
-        paths_.lightsDropped = int(frame_.lights.size()) - paths_.uboLights.maxLights();
-        frame_.lights.resize(size_t(paths_.uboLights.maxLights()));
-    }
+    paths_.lightsDropped = frame_.lightsDropped;
     paths_.lightsDrawn = int(frame_.lights.size());
     if (lights_.labelledPath != frame_.lightsPath) {  // "point lights (ssbo)": what the shaders read it as
         gl::setLabel(lights_.list, std::string("point lights (") + lightsPathName(frame_.lightsPath) + ")");
@@ -133,35 +129,35 @@ PassContext Renderer::contextOver(const FrameTargets& targets, const FrameSetup&
     return context;
 }
 
+FrameConditions Renderer::frameConditions(const SceneSettings& scene, const std::string& stopBefore) const {
+    FrameConditions conditions;
+    conditions.depth = targets_->depth();
+    conditions.casterDepth = shadowMaps_.depthClamp() ? ShadowCasterDepth::Clamped : ShadowCasterDepth::Contained;
+    conditions.positionFromDepth = targets_->layout().positionFromDepth();
+    conditions.waterBoundsAvailable = paths_.waterBoundsAvailable;
+    conditions.readOnlyDepth = paths_.capabilities.readOnlyDepth.available;
+    conditions.lightsPath = paths_.lights.path;
+    conditions.uboMaxLights = paths_.uboLights.maxLights();
+    conditions.lightMethod = paths_.lightMethod.method;
+    conditions.deferred = active_ == PipelineKind::Deferred;
+    conditions.runsToEnd = stopBefore.empty();
+    conditions.plantAtlas = plants_.atlas != nullptr;
+    conditions.atlasColumns = plants_.buffers.atlasColumns();
+    conditions.atlasRows = plants_.buffers.atlasRows();
+    conditions.cellTexels = plants_.atlas ? float(plants_.atlas->cellSize()) : 1.0f;
+    if (plants_.atlas && scene.vegetation.trimmedBillboards) conditions.plantDrawnBounds = &plants_.atlas->drawnBounds();
+    conditions.lastGrid = plants_.lastGrid ? &*plants_.lastGrid : nullptr;
+    return conditions;
+}
+
 void Renderer::prepareVegetation(const SceneSettings& scene) {
-    // The billboards pick their atlas mip level from their projected size (vegetation.vert).
-    float cellTexels = plants_.atlas ? float(plants_.atlas->cellSize()) : 1.0f;
-    float pixelsPerUnit = float(targets_->height()) /
-                          (2.0f * std::tan(glm::radians(frame_.view.projection.verticalFovDegrees) * 0.5f));
-    frame_.data.vegetationAtlas = glm::vec4(float(plants_.buffers.atlasColumns()),
-                                            float(plants_.buffers.atlasRows()), cellTexels, pixelsPerUnit);
-    // Trimmed billboards: each cell's drawn bounds (prepareFrame left whole cells).
-    if (plants_.atlas && scene.vegetation.trimmedBillboards) {
-        const std::vector<glm::vec4>& drawn = plants_.atlas->drawnBounds();
-        for (size_t cell = 0; cell < drawn.size() && cell < size_t(OASIS_PLANT_MAX_CELLS); ++cell)
-            frame_.data.plantDrawnBounds[cell] = drawn[cell];
-    }
     plants_.list.instances.clear();
     plants_.list.directCount = plants_.list.mirroredCount = 0;
     if (frame_.vegetationEnabled && plants_.atlas) {
         const glm::dvec3& camera = frame_.view.pose.position;
         plants_.field.update(scene.terrain, scene.water.level, scene.vegetation,
                                 uint32_t(plants_.atlas->variantCount()), camera);
-        // At a reduced reflection resolution the reflection's stencil marks the whole plane and the
-        // upsample's taps reach past the water's edge, so images on land may show: no cull there.
-        // Auto: only when the grid (and so every height the bound computes) is the last frame's.
-        TerrainGridPlacement grid{scene.terrain, scene.grid, frame_.wedge, scene.viewDistance,
-                                  glm::dvec2(camera.x, camera.z)};
-        bool still = plants_.lastGrid && *plants_.lastGrid == grid;
-        plants_.lastGrid = grid;
-        MirroredPlantCull cull = scene.work.mirroredPlantCull;
-        frame_.mirroredPlantsCulled = frame_.reflectionsActive && frame_.reflectionDivisor == 1 &&
-                                      (cull == MirroredPlantCull::On || (cull == MirroredPlantCull::Auto && still));
+        plants_.lastGrid = terrainGridPlacement(scene, frame_);  // prepareFrame culls by it (mirroredPlantsCulled)
         if (frame_.mirroredPlantsCulled)
             plants_.visibleWater.prepare(scene.terrain, scene.grid, frame_.wedge, scene.viewDistance, frame_.view,
                                   scene.water.level);
@@ -216,27 +212,12 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         throw std::invalid_argument("the " + std::string(pipelineName(active_)) + " pipeline has no pass '" +
                                     stopBefore + "' (its passes: " + pipeline.passNames() + ")");
     if (!sameGridDensity(scene.grid, geometry_.density())) geometry_ = SceneGeometry(scene.grid);
-    frame_ = prepareFrame(scene, targets_->width(), targets_->height(), targets_->depth(),
-                          shadowMaps_.depthClamp() ? ShadowCasterDepth::Clamped : ShadowCasterDepth::Contained);
-    frame_.positionFromDepth = targets_->layout().positionFromDepth();
-    frame_.waterBounded = paths_.waterBoundsAvailable && scene.water.reflectionBounds;
-    if (frame_.waterBounded)  // the shaders' copy of it: the mirrored billboards cull by the rectangle
-        frame_.data.water.w = float(unsigned(frame_.data.water.w) | OASIS_WATER_BOUNDED_FLAG);
-    prepareVegetation(scene);
     paths_.lights = chooseLightsPath(paths_.capabilities.ssbo.available, scene.lights.path, lights_.ssboMissingReason);
-    frame_.lightsPath = paths_.lights.path;
     paths_.lightMethod = chooseLightMethod(paths_.capabilities.compute.available, scene.lights.method,
                                           paths_.capabilities.compute.reason, paths_.lights.path);
-    frame_.lightMethod = paths_.lightMethod.method;
+    frame_ = prepareFrame(scene, targets_->width(), targets_->height(), frameConditions(scene, stopBefore));
+    prepareVegetation(scene);
     uploadLights();
-    // The separate tone map stays for a frame stopped early (its targets shown as they were) and
-    // when the deferred light volumes add to Radiance after LightingPass (it cannot write Final).
-    bool volumesAfterLighting = active_ == PipelineKind::Deferred && frame_.lightMethod == LightMethod::Volumes &&
-                                !frame_.lights.empty();
-    frame_.toneMapFused = scene.work.fuseToneMap && stopBefore.empty() && !volumesAfterLighting;
-    frame_.runsToEnd = stopBefore.empty();
-    frame_.work = scene.work;
-    frame_.readOnlyDepth = paths_.capabilities.readOnlyDepth.available;
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
     glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());

@@ -141,6 +141,9 @@ private:
     void fillSurfacesWithTheirDepth();
     PassContext context();
     PassContext contextOver(const FrameTargets& targets, const FrameSetup& frame);
+    // What decides this frame besides the scene (render/frame_setup.h): the targets, the paths,
+    // the capabilities, the plants' atlas and the request.
+    FrameConditions frameConditions(const SceneSettings& scene, const std::string& stopBefore) const;
     void prepareVegetation(const SceneSettings& scene);
     // The reduced reflection's targets (kept while the frame's size, layout and depth stay) and
     // its frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.

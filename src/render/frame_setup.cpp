@@ -54,6 +54,70 @@ const char* reflectionResolutionName(int divisor) {
 
 FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const DepthConvention& depth,
                         ShadowCasterDepth casterDepth) {
+    FrameConditions conditions;
+    conditions.depth = depth;
+    conditions.casterDepth = casterDepth;
+    return prepareFrame(scene, width, height, conditions);
+}
+
+TerrainGridPlacement terrainGridPlacement(const SceneSettings& scene, const FrameSetup& frame) {
+    const glm::dvec3& camera = frame.view.pose.position;
+    return {scene.terrain, scene.grid, frame.wedge, scene.viewDistance, glm::dvec2(camera.x, camera.z)};
+}
+
+bool lightingSamplesDepthTarget(const FrameSetup& frame) {
+    return frame.work.depthReadInPlace && frame.positionFromDepth;
+}
+
+namespace {
+
+// The plants' atlas in the frame block, and whether the reflection's plants are culled on the CPU.
+// At a reduced reflection resolution the reflection's stencil marks the whole plane and the
+// upsample's taps reach past the water's edge, so images on land may show: no cull there. Auto:
+// only when the grid (and so every height the bound computes) is the last frame's.
+void preparePlants(FrameSetup& setup, const SceneSettings& scene, int height, const FrameConditions& conditions) {
+    // The billboards pick their atlas mip level from their projected size (vegetation.vert).
+    float pixelsPerUnit = float(height) / (2.0f * std::tan(glm::radians(setup.view.projection.verticalFovDegrees) * 0.5f));
+    setup.data.vegetationAtlas = glm::vec4(float(conditions.atlasColumns), float(conditions.atlasRows),
+                                           conditions.cellTexels, pixelsPerUnit);
+    if (conditions.plantDrawnBounds) {  // trimmed billboards: each cell's drawn bounds
+        const std::vector<glm::vec4>& drawn = *conditions.plantDrawnBounds;
+        for (size_t cell = 0; cell < drawn.size() && cell < size_t(OASIS_PLANT_MAX_CELLS); ++cell)
+            setup.data.plantDrawnBounds[cell] = drawn[cell];
+    }
+    if (!setup.vegetationEnabled || !conditions.plantAtlas) return;
+    bool still = conditions.lastGrid && *conditions.lastGrid == terrainGridPlacement(scene, setup);
+    MirroredPlantCull cull = scene.work.mirroredPlantCull;
+    setup.mirroredPlantsCulled = setup.reflectionsActive && setup.reflectionDivisor == 1 &&
+                                 (cull == MirroredPlantCull::On || (cull == MirroredPlantCull::Auto && still));
+}
+
+// What the context and the request decide: the layout's depth reading, the water's rectangle, the
+// lights' path and method (the UBO path drops what it cannot hold), whether the tone map is fused.
+void applyConditions(FrameSetup& setup, const SceneSettings& scene, const FrameConditions& conditions) {
+    setup.positionFromDepth = conditions.positionFromDepth;
+    setup.waterBounded = conditions.waterBoundsAvailable && scene.water.reflectionBounds;
+    if (setup.waterBounded)  // the shaders' copy of it: the mirrored billboards cull by the rectangle
+        setup.data.water.w = float(unsigned(setup.data.water.w) | OASIS_WATER_BOUNDED_FLAG);
+    setup.lightsPath = conditions.lightsPath;
+    setup.lightMethod = conditions.lightMethod;
+    if (setup.lightsPath == LightsPath::Ubo && int(setup.lights.size()) > conditions.uboMaxLights) {
+        setup.lightsDropped = int(setup.lights.size()) - conditions.uboMaxLights;
+        setup.lights.resize(size_t(conditions.uboMaxLights));
+    }
+    // The separate tone map stays for a frame stopped early (its targets shown as they were) and
+    // when the deferred light volumes add to Radiance after LightingPass (it cannot write Final).
+    bool volumesAfterLighting = conditions.deferred && setup.lightMethod == LightMethod::Volumes && !setup.lights.empty();
+    setup.toneMapFused = scene.work.fuseToneMap && conditions.runsToEnd && !volumesAfterLighting;
+    setup.runsToEnd = conditions.runsToEnd;
+    setup.work = scene.work;
+    setup.readOnlyDepth = conditions.readOnlyDepth;
+}
+
+}  // namespace
+
+FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const FrameConditions& conditions) {
+    const DepthConvention& depth = conditions.depth;
     FrameSetup setup;
     setup.view.pose = scene.camera ? *scene.camera : defaultCameraPath(scene.terrain, scene.timeSeconds);
     setup.view.projection = scene.projection;
@@ -94,7 +158,6 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     const double kTwoPi = 6.283185307179586;
     float wind = std::clamp(scene.vegetation.windStrength, 0.0f, VegetationSettings::kMaxWindStrength);
     d.vegetation = glm::vec4(wind, float(std::fmod(scene.timeSeconds * 2.3, kTwoPi)), 0.0f, 0.0f);
-    d.vegetationAtlas = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the renderer fills in its atlas
     d.screen = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
     d.targetScale = glm::vec4(1.0f, 1.0f, 0.0f, 0.0f);  // the frame's own targets (the renderer's reflection block differs)
     for (glm::vec4& cell : d.plantDrawnBounds) cell = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f);  // whole cells
@@ -114,7 +177,8 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     setup.shadowsActive = scene.shadows.enabled && setup.sky.sunDirection.y > 0.0f;
     if (setup.shadowsActive) {
         setup.shadowCascades = fitShadowCascades(setup.view, setup.sky.sunDirection, *setup.shadowQuality,
-                                                 scene.viewDistance, terrainHeightBounds(scene.terrain), casterDepth);
+                                                 scene.viewDistance, terrainHeightBounds(scene.terrain),
+                                                 conditions.casterDepth);
         const ShadowCascades& cascades = setup.shadowCascades;
         for (int c = 0; c < OASIS_SHADOW_MAX_CASCADES; ++c) d.shadowMatrices[c] = cascades.matrices[size_t(c)];
         d.shadow = glm::vec4(1.0f, float(cascades.count), cascades.fadeStart, cascades.fadeEnd);
@@ -134,6 +198,8 @@ FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const
     for (const WorldPointLight& light : world)
         setup.lights.push_back(PointLight{glm::vec4(glm::vec3(light.position - setup.view.pose.position), light.radius),
                                           glm::vec4(light.colour, light.intensity)});
+    applyConditions(setup, scene, conditions);
+    preparePlants(setup, scene, height, conditions);
     return setup;
 }
 

@@ -1,6 +1,7 @@
 // From scene settings (time, camera, hour) to everything a frame needs: the camera view, the
 // sky state, the terrain wedge and the FrameData uploaded to the GPU. No GL here.
 #pragma once
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "scene/point_lights.h"
 #include "scene/sky.h"
 #include "scene/terrain.h"
+#include "scene/visible_water.h"
 #include "scene/vegetation.h"
 
 namespace oasis {
@@ -99,18 +101,18 @@ struct FrameSetup {
     TerrainWedge wedge;
     bool cameraAboveWater = true;   // at the level counts as above: the plane is seen edge-on
     bool reflectionsActive = true;  // reflections on and the camera above the water
-    bool waterBounded = false;      // the reflection's passes clip to the visible water (set by the renderer)
+    bool waterBounded = false;      // the reflection's passes clip to the visible water (the context records it)
     int reflectionDivisor = 1;      // the reflection's targets are 1/divisor of the frame's size (1: the frame's own)
     bool vegetationEnabled = true;
-    bool mirroredPlantsCulled = false;  // the reflection's plant chunks culled against the dry land (set by the renderer)
-    bool positionFromDepth = false;  // the layout reconstructs positions from depth (set by the renderer)
+    bool mirroredPlantsCulled = false;  // the reflection's plant chunks culled against the dry land
+    bool positionFromDepth = false;  // the layout reconstructs positions from depth
     // The scene's savings as asked for (--tone-map, --depth-read, --reflection-plant-cull): whole,
     // so a new one reaches the passes without a line here. With depth-read in place, a layout that
     // reconstructs positions lights by sampling the depth-stencil target itself, drawn without it
     // attached; else it reads DepthCopyPass's copy, made every frame.
     FrameWorkSettings work;
     // The context may depth-test against the target a draw samples (writes off): such a layout's
-    // in-place lighting then shades only the surfaces too (set by the renderer from the capabilities).
+    // in-place lighting then shades only the surfaces too (the context's capabilities).
     bool readOnlyDepth = false;
     // The sun's shadow maps this frame: shadows on and the sun above the horizon (at night no
     // shadow pass runs). The cascades are also in `data` for the shaders.
@@ -118,20 +120,53 @@ struct FrameSetup {
     const ShadowQuality* shadowQuality = nullptr;
     ShadowCascades shadowCascades;
     // The tone map is written by the passes that write each pixel's colour last (".tonemapped"
-    // variants), ToneMapPass skipped; set by the renderer: not for --stop-before, nor with the
-    // deferred light volumes (they add to Radiance after LightingPass).
+    // variants), ToneMapPass skipped: not for --stop-before, nor with the deferred light volumes
+    // (they add to Radiance after LightingPass).
     bool toneMapFused = false;
-    bool runsToEnd = true;  // no --stop-before (set by the renderer): what a later pass writes need not be cleared
+    bool runsToEnd = true;  // no --stop-before: what a later pass writes need not be cleared
     FrameData data;
     std::vector<PointLight> lights;       // camera-relative positions (subtracted in double)
-    LightsPath lightsPath = LightsPath::Ubo;  // set by the renderer from the context and the settings
-    LightMethod lightMethod = LightMethod::Volumes;  // the deferred lights' method, set by the renderer too
+    int lightsDropped = 0;                // beyond the UBO path's capacity: not drawn
+    LightsPath lightsPath = LightsPath::Ubo;  // from the context and the settings
+    LightMethod lightMethod = LightMethod::Volumes;  // the deferred lights' method
 };
 
-// `depth`: the convention of the targets drawn into (the renderer's); the camera projects with it.
-// `casterDepth`: whether ShadowPass clamps depth (ShadowCasterDepth, render/shadow_cascades.h).
-FrameSetup prepareFrame(const SceneSettings& scene, int width, int height,
-                        const DepthConvention& depth = standardDepthConvention(),
+// What decides a frame besides the scene (Renderer::runFrame gathers it): its targets, the
+// context's paths and capabilities, the plants' atlas and the request. prepareFrame makes the
+// whole FrameSetup from the scene and these at once.
+struct FrameConditions {
+    DepthConvention depth = standardDepthConvention();  // of the targets drawn into; the camera projects with it
+    ShadowCasterDepth casterDepth = ShadowCasterDepth::Clamped;  // whether ShadowPass clamps depth (render/shadow_cascades.h)
+    bool positionFromDepth = false;     // the G-buffer layout rebuilds position from depth
+    bool waterBoundsAvailable = false;  // the context can record the rectangle of visible water
+    bool readOnlyDepth = false;         // the context may depth-test against a target a draw samples
+    LightsPath lightsPath = LightsPath::Ubo;
+    int uboMaxLights = std::numeric_limits<int>::max();  // the UBO path's capacity: more are dropped
+    LightMethod lightMethod = LightMethod::Volumes;
+    bool deferred = false;  // the deferred pipeline, whose light volumes add to Radiance after LightingPass
+    bool runsToEnd = true;  // no --stop-before
+    // The plants' atlas (vegetation.vert picks a mip level by it): its cells across and down, the
+    // texels of a cell (1 with no atlas), and each cell's drawn bounds where the billboards are
+    // trimmed (null: whole cells). No atlas: no plants drawn.
+    bool plantAtlas = false;
+    int atlasColumns = 1, atlasRows = 1;
+    float cellTexels = 1.0f;
+    const std::vector<glm::vec4>* plantDrawnBounds = nullptr;
+    // The last frame's terrain grid, where plants were drawn (null: none): the camera stands still
+    // while it is this frame's (terrainGridPlacement), and the reflection's plants are culled on
+    // the CPU in MirroredPlantCull::Auto then only.
+    const TerrainGridPlacement* lastGrid = nullptr;
+};
+
+FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const FrameConditions& conditions = {});
+// The same with the targets' depth convention (and the casters' depth) alone, as a test or tool asks.
+FrameSetup prepareFrame(const SceneSettings& scene, int width, int height, const DepthConvention& depth,
                         ShadowCasterDepth casterDepth = ShadowCasterDepth::Clamped);
+// Where the frame's terrain grid lies (scene/visible_water.h): what the culled reflection's plants are tested on.
+TerrainGridPlacement terrainGridPlacement(const SceneSettings& scene, const FrameSetup& frame);
+// Where the direct deferred lighting reads the depth a compact layout rebuilds position from
+// (--depth-read): the depth-stencil target itself (true: in place) or DepthCopyPass's copy. The one
+// place this is decided; the mirrored lighting always reads the copy.
+bool lightingSamplesDepthTarget(const FrameSetup& frame);
 
 }  // namespace oasis

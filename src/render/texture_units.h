@@ -1,9 +1,11 @@
 // Which texture unit and uniform-block binding each shader input uses: the one table that both
-// the shader library (to bind sampler uniforms after linking) and the passes (to bind textures) read.
+// the shader library (to bind sampler uniforms after linking) and the passes (to bind textures) read,
+// and which frame resource each carries for a pass that declares it reads it (kInputBindings).
 #pragma once
 #include <array>
 
 #include "common/shared_constants.glsl"
+#include "render/frame_resource.h"
 
 namespace oasis {
 
@@ -22,11 +24,13 @@ enum TextureUnit : int {
     kUnitSource = 6,
     kUnitPlantAtlas = 7,
     kUnitProbeDepthStencil = 8,  // the probe's view of the depth-stencil target (compact's gDepth is the copy)
-    kUnitRadiance = 9,           // the fused water composite's view of what lies under the water
+    kUnitRadiance = 9,           // Radiance, as the tone map and the fused water composite read it
     kUnitShadowMap = 10,         // the sun's cascaded shadow maps (render/shadow_maps.h), bound for the whole frame
+    kUnitReflection = 11,        // the frame's Reflection, as the water composite reads it
 };
+inline constexpr int kTextureUnitCount = 12;
 
-inline constexpr std::array<SamplerBinding, 11> kSamplerBindings{{
+inline constexpr std::array<SamplerBinding, 12> kSamplerBindings{{
     {"gAlbedo", kUnitAlbedo},
     {"gNormal", kUnitNormal},
     {"gPosition", kUnitPosition},
@@ -38,6 +42,7 @@ inline constexpr std::array<SamplerBinding, 11> kSamplerBindings{{
     {"probeDepthStencil", kUnitProbeDepthStencil},
     {"radianceTexture", kUnitRadiance},
     {"shadowMap", kUnitShadowMap},
+    {"reflectionTexture", kUnitReflection},
 }};
 
 inline constexpr const char* kFrameBlockName = "FrameBlock";
@@ -61,5 +66,35 @@ inline constexpr int kLightCountStorageBinding = OASIS_BINDING_LIGHT_COUNT;
 // binding, as the tiled mirrored lighting reads it beside the tile lists.
 inline constexpr const char* kWaterBoundsStorageName = "WaterBoundsBuffer";
 inline constexpr int kWaterBoundsStorageBinding = OASIS_BINDING_WATER_BOUNDS;
+
+// Where a pass reads each frame resource it declares it samples (passes/pass.h's Use::Sample): the
+// unit or binding bindDeclaredInputs binds it to before the pass runs, and where the frame's
+// validation (frame/input_audit.h) finds reads a pass did not declare. The G-buffer's depth is one
+// unit, whether read from the depth-stencil target or from its copy. The light list's uniform
+// block array takes the bindings from kLightBlockFirstBinding on, one a block. Not here: the
+// terrain's heights and the plants' instances (vertex attributes), the water's rectangle (not a
+// frame resource: the context's, bound by the passes that clip to it).
+enum class InputSlot { Texture2D, TextureArray, UniformBlock, StorageBlock };
+struct InputBinding {
+    Resource resource;
+    InputSlot slot;
+    int binding;
+};
+inline const std::array<InputBinding, 14> kInputBindings{{
+    {Target::Albedo, InputSlot::Texture2D, kUnitAlbedo},
+    {Target::Normal, InputSlot::Texture2D, kUnitNormal},
+    {Target::Position, InputSlot::Texture2D, kUnitPosition},
+    {Target::Info, InputSlot::Texture2D, kUnitInfo},
+    {Target::DepthStencil, InputSlot::Texture2D, kUnitDepth},
+    {Target::SceneDepth, InputSlot::Texture2D, kUnitDepth},
+    {Target::Radiance, InputSlot::Texture2D, kUnitRadiance},
+    {Target::Reflection, InputSlot::Texture2D, kUnitReflection},
+    {Buffer::ShadowMaps, InputSlot::TextureArray, kUnitShadowMap},
+    {Buffer::LightTiles, InputSlot::StorageBlock, kLightTileStorageBinding},
+    {Buffer::LightList, InputSlot::StorageBlock, kLightStorageBinding},
+    {Buffer::LightList, InputSlot::StorageBlock, kLightCountStorageBinding},
+    {Buffer::LightList, InputSlot::UniformBlock, kLightCountBlockBinding},
+    {Buffer::LightList, InputSlot::UniformBlock, kLightBlockFirstBinding},
+}};
 
 }  // namespace oasis

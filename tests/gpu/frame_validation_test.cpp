@@ -1,7 +1,8 @@
-// The frame's validation (frame/frame_graph.h): a pass that draws into a target it does not
-// declare fails it, so does one that declares a write it never binds, one that binds its declared
-// outputs passes, and the real frames of both
-// pipelines pass it in the settings that change their declarations.
+// The frame's validation (frame/frame_graph.h, frame/input_audit.h): a pass that draws into a
+// target it does not declare fails it, so does one that declares a write it never binds, or one that
+// samples a target or reads a buffer it does not declare; one that binds its declared outputs
+// passes, a pass finds what it declares it samples bound, and the real frames of both pipelines
+// pass it in the settings that change their declarations.
 #include "gpu_test.h"
 
 #include <stdexcept>
@@ -47,6 +48,54 @@ protected:
     }
 };
 
+// Draws into Final while it reads Radiance (a target) or the light list (a buffer), bound by hand
+// where the table reads it unless `declares`: then the pass declares the read and binds nothing.
+// `bound` is what the pass found on the input's unit or binding.
+class ReadsAnInput : public Pass {
+public:
+    ReadsAnInput(Resource input, bool declares) : input_(input), declares_(declares) {}
+    std::string name() const override {
+        return std::string(declares_ ? "Declared" : "Undeclared") +
+               (std::holds_alternative<Target>(input_) ? "SamplePass" : "BufferPass");
+    }
+    std::vector<Access> accesses(const FrameSetup&) const override {
+        std::vector<Access> used = {{Target::Final, Use::Write}};
+        if (declares_) used.push_back({input_, Use::Sample});
+        return used;
+    }
+    GLint bound = 0;
+    gl::Buffer lights;
+
+protected:
+    void execute(PassContext& context) override {
+        bindDeclaredOutputs(context);
+        bool target = std::holds_alternative<Target>(input_);
+        if (!declares_ && target) {
+            glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
+            glBindTexture(GL_TEXTURE_2D, context.targets.texture(Target::Radiance));
+        }
+        if (!declares_ && !target) {
+            lights = gl::createBuffer("test: the light count");
+            glBindBuffer(GL_UNIFORM_BUFFER, lights.name());
+            glBufferData(GL_UNIFORM_BUFFER, 16, nullptr, GL_DYNAMIC_DRAW);
+            glBindBufferBase(GL_UNIFORM_BUFFER, kLightCountBlockBinding, lights.name());
+        }
+        if (target) {
+            glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
+            glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+            glActiveTexture(GL_TEXTURE0);
+        } else {
+            glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, kLightCountBlockBinding, &bound);
+        }
+        const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+        glClearBufferfv(GL_COLOR, 0, black);
+    }
+
+private:
+    Resource input_;
+    bool declares_;
+};
+
 // Switches validation on for the scope, as debug builds have it.
 struct ValidatedFrames {
     bool was = frameValidation();
@@ -89,6 +138,41 @@ TEST_F(GpuTest, APassDeclaringAWriteItNeverMakesFailsValidation) {
     DeclaresAWriteItNeverMakes overdeclared;
     one.expectRejected(overdeclared, "OverdeclaredPass declares it writes final but never binds it",
                        "a pass that declared Final and never bound it passed validation");
+}
+
+// A pass reading `input` passes validation where it declares it, and fails it naming `expected`
+// where it does not.
+void expectReadAudited(ShaderLibrary& shaders, Resource input, const std::string& expected, const char* why) {
+    ValidatedFrames validated;
+    OnePassFrame one(shaders);
+    ReadsAnInput declared(input, true), undeclared(input, false);
+    EXPECT_NO_THROW(runValidated(declared, one.context));
+    one.expectRejected(undeclared, expected, why);
+}
+
+TEST_F(GpuTest, APassSamplingATargetItDoesNotDeclareFailsValidation) {
+    expectReadAudited(*shaders_, Target::Radiance,
+                      "UndeclaredSamplePass samples radiance (texture unit 9), which it does not declare",
+                      "a pass that sampled Radiance without declaring it passed validation");
+}
+
+TEST_F(GpuTest, APassReadingABufferItDoesNotDeclareFailsValidation) {
+    expectReadAudited(*shaders_, Buffer::LightList,
+                      "UndeclaredBufferPass reads LightList (uniform block binding 1), which it does not declare",
+                      "a pass that read the light list without declaring it passed validation");
+}
+
+// The pipeline binds what a pass declares it samples before it executes (bindDeclaredInputs), with
+// validation off as on: the pass binds nothing itself.
+TEST_F(GpuTest, APassFindsWhatItDeclaresItSamplesBoundOnItsUnit) {
+    OnePassFrame one(*shaders_);
+    glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE0);
+    ReadsAnInput declared(Target::Radiance, true);
+    declared.run(one.context);
+    EXPECT_NE(declared.bound, 0);
+    EXPECT_EQ(GLuint(declared.bound), one.targets.texture(Target::Radiance));
 }
 
 TEST_F(GpuTest, TheFramesOfBothPipelinesPassValidation) {
