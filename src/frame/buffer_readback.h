@@ -10,16 +10,12 @@
 #include <epoxy/gl.h>
 
 #include "common/shared_constants.glsl"
+#include "frame/frame_graph.h"  // kFrameInputsStep
 
 namespace oasis {
 
 class Renderer;
 struct FrameSetup;
-
-// The name the check's pass-by-pass search and the pixel history give the buffers the renderer
-// uploads before the first pass (frame/frame_graph.h's frameInputs), as `render --graph` calls
-// their writer.
-inline constexpr const char* kFrameInputsStep = "(before the passes)";
 
 // A buffer's bytes from `offset` on, `bytes` of them, as the GL holds them (also on OpenGL ES and
 // in the page); empty where the buffer is smaller.

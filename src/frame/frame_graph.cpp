@@ -152,7 +152,7 @@ std::string buffersText(const FrameGraph& graph) {
         for (const Resource& read : step.reads) {
             if (!std::holds_alternative<Buffer>(read)) continue;
             Uses& entry = usesOf(read);
-            if (entry.writers.empty() && contains(graph.inputs, read)) entry.writers.push_back("(before the passes)");
+            if (entry.writers.empty() && contains(graph.inputs, read)) entry.writers.push_back(kFrameInputsStep);
             entry.readers.push_back(step.pass->name());
         }
         for (const Resource& write : step.writes)

@@ -31,6 +31,9 @@ struct FrameGraph {
 std::vector<Resource> frameOutputs();
 // What holds values before a fill of a finished frame: everything the frame left.
 std::vector<Resource> everyResource();
+// The name `render --graph`, the check's pass-by-pass search and the pixel history give the writer
+// of the buffers the renderer uploads before the first pass (frameInputs below).
+inline constexpr const char* kFrameInputsStep = "(before the passes)";
 // What the renderer uploads before a frame's first pass, which its passes then read: the point
 // lights (LightList) and the plants' instances (PlantInstances).
 std::vector<Resource> frameInputs();
@@ -49,7 +52,7 @@ std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const 
 
 // The graph in order, one pass a line with its reads and writes, culled passes with their reason;
 // then, in lines that open with "# ", each buffer the running passes touch with who writes it
-// ("(before the passes)" for an input) and who reads it.
+// (kFrameInputsStep for an input) and who reads it.
 std::string frameGraphText(const FrameGraph& graph);
 // The same as a JSON array of {name, reads, writes, culled, reason}.
 std::string frameGraphJson(const FrameGraph& graph);

@@ -98,7 +98,7 @@ void Renderer::uploadLights() {
 void Renderer::configure(int width, int height, const GBufferLayout& layout) {
     // The layout a fallback put in use, asked for again (a resize): the request stands.
     const bool sameAsFallback = targets_ && paths_.gbufferFellBack && layout.name == targets_->layout().name;
-    const GBufferLayout& requested = sameAsFallback ? *layoutRequested_ : layout;
+    const GBufferLayout& requested = sameAsFallback ? *requested_.layout : layout;
     std::string reason;
     const GBufferLayout& use = chooseGBufferLayout(requested, reason);
     if (!targets_ || targets_->width() != width || targets_->height() != height || targets_->layout().name != use.name) {
@@ -108,11 +108,11 @@ void Renderer::configure(int width, int height, const GBufferLayout& layout) {
         targets_ = std::move(replacement);
         forgetGBuffer();
     }
-    if (!sameAsFallback) layoutRequested_ = layout;
+    if (!sameAsFallback) requested_.layout = layout;
     paths_.gbuffer = &targets_->layout();
-    paths_.gbufferRequested = layoutRequested_->name;
+    paths_.gbufferRequested = requested_.layout->name;
     paths_.gbufferReason = std::move(reason);
-    paths_.gbufferFellBack = use.name != layoutRequested_->name;
+    paths_.gbufferFellBack = use.name != requested_.layout->name;
 }
 
 PassContext Renderer::context() { return contextOver(*targets_, frame_); }
@@ -230,11 +230,11 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     PassContext passContext = context();
     if (frame_.reflectionsActive && frame_.reflectionDivisor > 1) {
         prepareReducedReflection();
-        passContext.reflectionTargets = reflectionTargets_.get();
-        passContext.reflectionFrameBlock = reflectionUniforms_.name();
+        passContext.reflectionTargets = reduced_.targets.get();
+        passContext.reflectionFrameBlock = reduced_.frameBlock.name();
         passContext.frameBlock = frameUniforms_.name();
     } else if (frame_.reflectionDivisor == 1) {
-        reflectionTargets_.reset();  // back at full resolution: the reduced set's memory goes back too
+        reduced_.targets.reset();  // back at full resolution: the reduced set's memory goes back too
     }
     left_.stepsRan.clear();
     std::vector<Target> beyondFrame;
@@ -247,7 +247,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
                                         reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
     targets_->plan(left_.lifetimes);
     if (reduced)  // the reduced reflection's own targets: its passes' alone
-        reflectionTargets_->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
+        reduced_.targets->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) left_.stepsRan.push_back(pass.sceneStep());
@@ -310,13 +310,13 @@ std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* b
 void Renderer::prepareReducedReflection() {
     const int divisor = frame_.reflectionDivisor;
     const int width = (targets_->width() + divisor - 1) / divisor, height = (targets_->height() + divisor - 1) / divisor;
-    if (!reflectionTargets_ || reflectionTargets_->width() != width || reflectionTargets_->height() != height ||
-        reflectionTargets_->layout().name != targets_->layout().name ||
-        reflectionTargets_->depth().name != targets_->depth().name) {
-        reflectionTargets_ = std::make_unique<FrameTargets>(targets_->layout(), targets_->depth(), width, height,
+    if (!reduced_.targets || reduced_.targets->width() != width || reduced_.targets->height() != height ||
+        reduced_.targets->layout().name != targets_->layout().name ||
+        reduced_.targets->depth().name != targets_->depth().name) {
+        reduced_.targets = std::make_unique<FrameTargets>(targets_->layout(), targets_->depth(), width, height,
                                                             "reflection at 1/" + std::to_string(divisor));
         // ReflectionUpsamplePass reads it bilinearly, clamped at its edges.
-        glBindTexture(GL_TEXTURE_2D, reflectionTargets_->texture(Target::Reflection));
+        glBindTexture(GL_TEXTURE_2D, reduced_.targets->texture(Target::Reflection));
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -331,12 +331,12 @@ void Renderer::prepareReducedReflection() {
     data.screen = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
     data.vegetationAtlas.w *= scaleY;
     data.targetScale = glm::vec4(scaleX, scaleY, 1.0f, 0.0f);
-    if (!reflectionUniforms_.name()) {
-        reflectionUniforms_ = gl::createBuffer("frame data (ubo), reduced reflection");
-        glBindBuffer(GL_UNIFORM_BUFFER, reflectionUniforms_.name());
+    if (!reduced_.frameBlock.name()) {
+        reduced_.frameBlock = gl::createBuffer("frame data (ubo), reduced reflection");
+        glBindBuffer(GL_UNIFORM_BUFFER, reduced_.frameBlock.name());
         glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
     }
-    glBindBuffer(GL_UNIFORM_BUFFER, reflectionUniforms_.name());
+    glBindBuffer(GL_UNIFORM_BUFFER, reduced_.frameBlock.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &data);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }

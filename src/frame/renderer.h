@@ -122,7 +122,7 @@ public:
     const FrameTargets& targets() const { return *targets_; }
     LastFrame lastFrame() const {
         return {frame_, left_.lifetimes, plants_.field, plants_.buffers, pipelineOf(active_), left_.sinks,
-                *targets_, reflectionTargets_.get()};
+                *targets_, reduced_.targets.get()};
     }
     RendererParts parts() const { return {shaders_, geometry_, shadowMaps_}; }
 
@@ -199,6 +199,18 @@ private:
         std::vector<Resource> sinks = frameOutputs();  // its sink
         std::vector<TargetLifetime> lifetimes;         // and its targets' lifetimes
     };
+    // The reflection drawn at a reduced resolution: its own targets (while asked for) and a frame
+    // block for their size.
+    struct ReducedReflection {
+        std::unique_ptr<FrameTargets> targets;
+        gl::Buffer frameBlock;
+    };
+    // What was asked for, kept so a fallback is decided again when the capabilities change:
+    // configure's last layout (a copy: callers may pass a temporary) and the depth convention.
+    struct Requests {
+        std::optional<GBufferLayout> layout;
+        const DepthConvention* depth = &standardDepthConvention();
+    };
     void chooseWaterBounds();  // from the SSBOs and the context's limits; sets the context defines
     // The layout drawn for `requested` (itself, or standard without 16-bit unorm targets) and why.
     const GBufferLayout& chooseGBufferLayout(const GBufferLayout& requested, std::string& reason) const;
@@ -206,8 +218,7 @@ private:
     ShaderLibrary& shaders_;
     SceneGeometry geometry_;
     std::unique_ptr<FrameTargets> targets_;
-    std::unique_ptr<FrameTargets> reflectionTargets_;  // the reflection at a reduced resolution, while asked for
-    gl::Buffer reflectionUniforms_;                     // frame data for those targets' size
+    ReducedReflection reduced_;
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
     Plants plants_;
@@ -218,10 +229,9 @@ private:
     gl::Buffer frameUniforms_;
     LightBuffers lights_;
     WaterRecords water_;
-    std::optional<GBufferLayout> layoutRequested_;  // configure's last request (a copy: callers may pass a temporary)
+    Requests requested_;
     RenderPaths paths_;
     FrameSetup frame_;
-    const DepthConvention* depthRequested_ = &standardDepthConvention();
     ViewFill viewFill_;
     FrameLeft left_;
 };

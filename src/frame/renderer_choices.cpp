@@ -19,9 +19,9 @@ void Renderer::setCapabilities(const RendererCapabilities& capabilities) {
     chooseWaterBounds();
     paths_.lightMethod = chooseLightMethod(given.compute.available, given.forcedLightMethod, given.compute.reason,
                                           paths_.lights.path);
-    setDepthConvention(*depthRequested_);
-    if (targets_ && layoutRequested_) {
-        const GBufferLayout requested = *layoutRequested_;  // configure replaces the stored copy
+    setDepthConvention(*requested_.depth);
+    if (targets_ && requested_.layout) {
+        const GBufferLayout requested = *requested_.layout;  // configure replaces the stored copy
         configure(targets_->width(), targets_->height(), requested);
     }
 }
@@ -59,7 +59,7 @@ void Renderer::setDepthConvention(const DepthConvention& requested) {
         targets_ = std::make_unique<FrameTargets>(targets_->layout(), *use, targets_->width(), targets_->height());
         forgetGBuffer();
     }
-    depthRequested_ = &requested;
+    requested_.depth = &requested;
     paths_.depthReason = std::move(reason);
     paths_.depth = use;
     paths_.depthFellBack = use != &requested;
