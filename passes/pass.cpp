@@ -111,14 +111,16 @@ ReflectionContext::ReflectionContext(const PassContext& frame)
     : reduced_(frame.reflectionTargets != nullptr),
       context_{reduced_ ? *frame.reflectionTargets : frame.targets, frame.shaders, frame.geometry, frame.frame,
                frame.vegetation, frame.waterBounds, frame.shadowMaps, frame.waterSeen,
-               frame.reflectionTargets, frame.reflectionFrameBlock, frame.frameBlock,
+               frame.reflectionTargets, frame.frameBlock, frame.reflectionFrameRange,
                frame.drawDepthStencilReads, frame.depthClamp, frame.flushBeforeComputeRead,
                frame.producedBuffers} {
-    if (reduced_) glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame.reflectionFrameBlock);
+    if (reduced_)
+        glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame.frameBlock, frame.reflectionFrameRange,
+                          sizeof(FrameData));
 }
 
 ReflectionContext::~ReflectionContext() {
-    if (reduced_) glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, context_.frameBlock);
+    if (reduced_) glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, context_.frameBlock, 0, sizeof(FrameData));
 }
 
 void beginMirroredDraw(Mirroring mirroring) {

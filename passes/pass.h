@@ -34,12 +34,13 @@ struct PassContext {
     // its reflection (frame.waterBounded), else 0: the reflection's passes render conditionally on it.
     GLuint waterSeen = 0;
     // The reflection drawn at a reduced resolution (frame.reflectionDivisor > 1): its own smaller
-    // targets, and a frame block like the frame's but for their size (screen, targetScale); the
-    // frame's block is bound back after. Null and 0 at full resolution, and outside the frame
-    // (views, fills and probes use the frame's targets).
+    // targets, and where in the frame block (frameBlock, one buffer) its range lies: the frame's
+    // data for their size (screen, targetScale), bound while its passes run, the frame's range (at
+    // 0) bound back after. Null and 0 at full resolution, and outside the frame (views, fills and
+    // probes use the frame's targets).
     const FrameTargets* reflectionTargets = nullptr;
-    GLuint reflectionFrameBlock = 0;
     GLuint frameBlock = 0;
+    GLintptr reflectionFrameRange = 0;
     // Whether depth and stencil must be drawn into colour targets to be read back (no glReadPixels
     // of them: OpenGL ES without GL_NV_read_depth_stencil, render/depth_stencil_readback.h).
     bool drawDepthStencilReads = false;
@@ -56,7 +57,8 @@ struct PassContext {
 };
 
 // The context the reflection's passes draw with, for the scope's lifetime: at a reduced
-// resolution its targets and frame block (bound here, the frame's bound back at the end);
+// resolution its targets and its range of the frame block (bound here, the frame's range bound
+// back at the end);
 // otherwise the frame's context as it is.
 class ReflectionContext {
 public:

@@ -14,6 +14,15 @@
 
 namespace oasis {
 
+// Where the frame block's second range begins: the frame's data for the reduced reflection's size,
+// after the frame's own, at the context's uniform buffer offset alignment.
+static GLintptr reducedReflectionFrameRange() {
+    GLint alignment = 1;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &alignment);
+    alignment = std::max(alignment, 1);
+    return (GLintptr(sizeof(FrameData)) + alignment - 1) / alignment * alignment;
+}
+
 Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
     : shaders_(shaders), geometry_(scene.grid) {
     registerDebugViewPrograms();  // the debug views' programs, which debug/ adds to the variant table
@@ -22,9 +31,11 @@ Renderer::Renderer(ShaderLibrary& shaders, const SceneSettings& scene)
                                dialectDefines.end());
     shadowMaps_.setDepthClamp(std::find(dialectDefines.begin(), dialectDefines.end(), "OASIS_NO_DEPTH_CLAMP 1") ==
                               dialectDefines.end());
-    frameUniforms_ = gl::createBuffer("frame data (ubo)");
+    // Two ranges: the frame's data, and the same for the reduced reflection's size.
+    frameUniforms_ = gl::createBuffer("frame data (ubo): the frame's, the reduced reflection's");
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
-    glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
+    glBufferData(GL_UNIFORM_BUFFER, reducedReflectionFrameRange() + GLintptr(sizeof(FrameData)), nullptr,
+                 GL_DYNAMIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 
     // Point lights: what the context offers decides the path and the UBO path's block size (a
@@ -220,7 +231,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     uploadLights();
     glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
     glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &frame_.data);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name());
+    glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, frameUniforms_.name(), 0, sizeof(FrameData));
     if (!stopBefore.empty()) {
         // Final is not reached: show black rather than whatever an earlier frame left there.
         const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -230,11 +241,11 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     PassContext passContext = context();
     if (frame_.reflectionsActive && frame_.reflectionDivisor > 1) {
         prepareReducedReflection();
-        passContext.reflectionTargets = reduced_.targets.get();
-        passContext.reflectionFrameBlock = reduced_.frameBlock.name();
+        passContext.reflectionTargets = reducedTargets_.get();
         passContext.frameBlock = frameUniforms_.name();
+        passContext.reflectionFrameRange = reducedReflectionFrameRange();
     } else if (frame_.reflectionDivisor == 1) {
-        reduced_.targets.reset();  // back at full resolution: the reduced set's memory goes back too
+        reducedTargets_.reset();  // back at full resolution: the reduced set's memory goes back too
     }
     left_.stepsRan.clear();
     std::vector<Target> beyondFrame;
@@ -247,7 +258,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
                                         reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
     targets_->plan(left_.lifetimes);
     if (reduced)  // the reduced reflection's own targets: its passes' alone
-        reduced_.targets->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
+        reducedTargets_->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) left_.stepsRan.push_back(pass.sceneStep());
@@ -310,13 +321,13 @@ std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* b
 void Renderer::prepareReducedReflection() {
     const int divisor = frame_.reflectionDivisor;
     const int width = (targets_->width() + divisor - 1) / divisor, height = (targets_->height() + divisor - 1) / divisor;
-    if (!reduced_.targets || reduced_.targets->width() != width || reduced_.targets->height() != height ||
-        reduced_.targets->layout().name != targets_->layout().name ||
-        reduced_.targets->depth().name != targets_->depth().name) {
-        reduced_.targets = std::make_unique<FrameTargets>(targets_->layout(), targets_->depth(), width, height,
-                                                            "reflection at 1/" + std::to_string(divisor));
+    if (!reducedTargets_ || reducedTargets_->width() != width || reducedTargets_->height() != height ||
+        reducedTargets_->layout().name != targets_->layout().name ||
+        reducedTargets_->depth().name != targets_->depth().name) {
+        reducedTargets_ = std::make_unique<FrameTargets>(targets_->layout(), targets_->depth(), width, height,
+                                                           "reflection at 1/" + std::to_string(divisor));
         // ReflectionUpsamplePass reads it bilinearly, clamped at its edges.
-        glBindTexture(GL_TEXTURE_2D, reduced_.targets->texture(Target::Reflection));
+        glBindTexture(GL_TEXTURE_2D, reducedTargets_->texture(Target::Reflection));
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -331,13 +342,8 @@ void Renderer::prepareReducedReflection() {
     data.screen = glm::vec4(float(width), float(height), 1.0f / float(width), 1.0f / float(height));
     data.vegetationAtlas.w *= scaleY;
     data.targetScale = glm::vec4(scaleX, scaleY, 1.0f, 0.0f);
-    if (!reduced_.frameBlock.name()) {
-        reduced_.frameBlock = gl::createBuffer("frame data (ubo), reduced reflection");
-        glBindBuffer(GL_UNIFORM_BUFFER, reduced_.frameBlock.name());
-        glBufferData(GL_UNIFORM_BUFFER, sizeof(FrameData), nullptr, GL_DYNAMIC_DRAW);
-    }
-    glBindBuffer(GL_UNIFORM_BUFFER, reduced_.frameBlock.name());
-    glBufferSubData(GL_UNIFORM_BUFFER, 0, sizeof(FrameData), &data);
+    glBindBuffer(GL_UNIFORM_BUFFER, frameUniforms_.name());
+    glBufferSubData(GL_UNIFORM_BUFFER, reducedReflectionFrameRange(), sizeof(FrameData), &data);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 }
 

@@ -122,7 +122,7 @@ public:
     const FrameTargets& targets() const { return *targets_; }
     LastFrame lastFrame() const {
         return {frame_, left_.lifetimes, plants_.field, plants_.buffers, pipelineOf(active_), left_.sinks,
-                *targets_, reduced_.targets.get()};
+                *targets_, reducedTargets_.get()};
     }
     RendererParts parts() const { return {shaders_, geometry_, shadowMaps_}; }
 
@@ -146,7 +146,7 @@ private:
     FrameConditions frameConditions(const SceneSettings& scene, const std::string& stopBefore) const;
     void prepareVegetation(const SceneSettings& scene);
     // The reduced reflection's targets (kept while the frame's size, layout and depth stay) and
-    // its frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.
+    // its range of the frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.
     void prepareReducedReflection();
     void uploadLights();
     // The frame's sink; with `beyondFrame`, also the targets that live past the frame (the sink's,
@@ -199,12 +199,6 @@ private:
         std::vector<Resource> sinks = frameOutputs();  // its sink
         std::vector<TargetLifetime> lifetimes;         // and its targets' lifetimes
     };
-    // The reflection drawn at a reduced resolution: its own targets (while asked for) and a frame
-    // block for their size.
-    struct ReducedReflection {
-        std::unique_ptr<FrameTargets> targets;
-        gl::Buffer frameBlock;
-    };
     // What was asked for, kept so a fallback is decided again when the capabilities change:
     // configure's last layout (a copy: callers may pass a temporary) and the depth convention.
     struct Requests {
@@ -218,7 +212,9 @@ private:
     ShaderLibrary& shaders_;
     SceneGeometry geometry_;
     std::unique_ptr<FrameTargets> targets_;
-    ReducedReflection reduced_;
+    // The reflection drawn at a reduced resolution: its own targets (while asked for); the frame
+    // block's second range holds the frame's data for their size.
+    std::unique_ptr<FrameTargets> reducedTargets_;
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
     Plants plants_;
