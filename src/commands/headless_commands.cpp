@@ -317,8 +317,16 @@ int runRenderCommand(const Options& options) {
                         options.view.c_str(),
                         options.pipeline == PipelineKind::Forward ? "deferred" : "forward");
             std::printf("%s", frameGraphText(renderer.lastFrame().graph()).c_str());
-            std::printf("%s", targetLifetimesText(renderer.lastFrame().graph(), renderer.lastFrame().targetLifetimes,
-                                                  renderer.targets()).c_str());
+            const LastFrame frame = renderer.lastFrame();
+            std::printf("%s", targetLifetimesText(frame.graph(), frame.targetLifetimes, renderer.targets()).c_str());
+            if (frame.reflectionTargets) {  // drawn reduced: the reflection's own, smaller targets
+                // Those it holds: its plan also names what lives past the frame, which it never makes.
+                std::vector<TargetLifetime> held;
+                for (const TargetLifetime& lifetime : frame.reflectionTargetLifetimes)
+                    if (frame.reflectionTargets->heldTexture(lifetime.target) != 0) held.push_back(lifetime);
+                std::printf("# the reflection's own targets, at 1/%d of the frame:\n", frame.setup.reflectionDivisor);
+                std::printf("%s", targetLifetimesText(frame.graph(), held, *frame.reflectionTargets).c_str());
+            }
             return 0;
         }
         std::string error;

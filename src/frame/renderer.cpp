@@ -257,8 +257,11 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     left_.lifetimes = oasis::targetLifetimes(graph, frame_, beyondFrame,
                                         reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
     targets_->plan(left_.lifetimes);
-    if (reduced)  // the reduced reflection's own targets: its passes' alone
-        reducedTargets_->plan(oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection));
+    left_.reflectionLifetimes.clear();
+    if (reduced) {  // the reduced reflection's own targets: its passes' alone
+        left_.reflectionLifetimes = oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection);
+        reducedTargets_->plan(left_.reflectionLifetimes);
+    }
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) left_.stepsRan.push_back(pass.sceneStep());

@@ -63,6 +63,7 @@ struct LastFrame {
     const std::vector<Resource>& sinks;       // what was to be read of it after (its graph's sink)
     const FrameTargets& targets;
     const FrameTargets* reflectionTargets;    // the reflection's own targets when drawn reduced; else null
+    const std::vector<TargetLifetime>& reflectionTargetLifetimes;  // and theirs (empty when not reduced)
     // Its graph: the pipeline's passes, which ran and why the others were culled.
     FrameGraph graph() const { return pipeline.graph(setup, sinks); }
     // The GPU memory of its targets (FrameTargets::heldBytes: what the graph's plan left
@@ -122,7 +123,7 @@ public:
     const FrameTargets& targets() const { return *targets_; }
     LastFrame lastFrame() const {
         return {frame_, left_.lifetimes, plants_.field, plants_.buffers, pipelineOf(active_), left_.sinks,
-                *targets_, reducedTargets_.get()};
+                *targets_, reducedTargets_.get(), left_.reflectionLifetimes};
     }
     RendererParts parts() const { return {shaders_, geometry_, shadowMaps_}; }
 
@@ -198,6 +199,7 @@ private:
         bool radianceAwaitsWater = false;        // a fused frame's composite has not been laid onto Radiance
         std::vector<Resource> sinks = frameOutputs();  // its sink
         std::vector<TargetLifetime> lifetimes;         // and its targets' lifetimes
+        std::vector<TargetLifetime> reflectionLifetimes;  // the reduced reflection's own targets'
     };
     // What was asked for, kept so a fallback is decided again when the capabilities change:
     // configure's last layout (a copy: callers may pass a temporary) and the depth convention.
