@@ -35,7 +35,8 @@ void readSurfaces(Renderer& renderer, OracleInputs& in) {
         renderer.views().fillExactSurfaces(*exact, WaterScene::Direct);
     }
     const FrameTargets& surfaces = exact ? *exact : frame;
-    in.layout = &surfaces.layout();
+    // The table's row, not the targets' copy: a forward frame's `exact` targets end with this function.
+    in.layout = findGBufferLayout(surfaces.layout().name);
     in.compact = surfaces.layout().positionFromDepth();
     in.albedo = readColourTarget(surfaces, Target::Albedo);
     in.normal = readColourTarget(surfaces, Target::Normal);
