@@ -76,6 +76,7 @@ namespace {
 // what it writes. Leaves in `live` what is read before the first step.
 void cullBackFrom(FrameGraph& graph, const FrameSetup& frame, std::set<Resource>& live) {
     for (auto step = graph.steps.rbegin(); step != graph.steps.rend(); ++step) {
+        live.insert(step->readAfter.begin(), step->readAfter.end());
         if (!step->pass->active(frame)) {
             step->culled = "off in this frame's settings";
             continue;
@@ -96,11 +97,25 @@ void cullBackFrom(FrameGraph& graph, const FrameSetup& frame, std::set<Resource>
 
 FrameGraph stepsOf(const std::vector<const Pass*>& passes, const FrameSetup& frame) {
     FrameGraph graph;
-    for (const Pass* pass : passes) graph.steps.push_back({pass, pass->reads(frame), pass->writes(frame), false, ""});
+    for (const Pass* pass : passes) graph.steps.push_back(graphStep(*pass, frame));
     return graph;
 }
 
 }  // namespace
+
+GraphStep graphStep(const Pass& pass, const FrameSetup& frame, bool afterFrame) {
+    GraphStep step{&pass, pass.reads(frame), pass.writes(frame), false, ""};
+    step.afterFrame = afterFrame;
+    return step;
+}
+
+FrameGraph withoutViewSteps(const FrameGraph& graph) {
+    FrameGraph frame = graph;
+    frame.steps.erase(std::remove_if(frame.steps.begin(), frame.steps.end(),
+                                     [](const GraphStep& step) { return step.afterFrame; }),
+                      frame.steps.end());
+    return frame;
+}
 
 std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                                   const std::vector<Resource>& sinks) {
@@ -112,7 +127,13 @@ std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const 
 
 FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                            const std::vector<Resource>& sinks, const std::vector<Resource>& inputs) {
-    FrameGraph graph = stepsOf(passes, frame);
+    return buildFrameGraph(stepsOf(passes, frame).steps, frame, sinks, inputs);
+}
+
+FrameGraph buildFrameGraph(std::vector<GraphStep> steps, const FrameSetup& frame, const std::vector<Resource>& sinks,
+                           const std::vector<Resource>& inputs) {
+    FrameGraph graph;
+    graph.steps = std::move(steps);
     graph.inputs = inputs;
     std::set<Resource> live(sinks.begin(), sinks.end());
     cullBackFrom(graph, frame, live);
@@ -185,7 +206,10 @@ std::string frameGraphText(const FrameGraph& graph) {
         return resources.empty() ? std::string("-") : joined(resources);
     };
     std::string text;
+    bool views = false;
     for (const GraphStep& step : graph.steps) {
+        if (step.afterFrame && !views) text += std::string(kViewStepsHeader) + "\n";
+        views = views || step.afterFrame;
         const std::string& name = step.pass->name();
         text += name + std::string(column + 2 - name.size(), ' ');
         text += step.runs ? listed(step.reads) + " -> " + listed(step.writes) : "culled: " + step.culled;

@@ -14,7 +14,15 @@ struct GraphStep {
     std::vector<Resource> reads, writes;
     bool runs = false;
     std::string culled;  // why it does not run; "" when it runs
+    // A step of the views after the frame (the composite onto Radiance, the views' fill, a debug
+    // view): run when the view is drawn, not by Pipeline::run (frame/frame_views.h).
+    bool afterFrame = false;
+    // What a reader outside the graph reads right after this step (the check's shading oracle
+    // reads the frame as it leaves it, before the views' fill): live there like a sink.
+    std::vector<Resource> readAfter = {};
 };
+// A step of `pass` in `frame`: its reads and writes, not yet culled.
+GraphStep graphStep(const Pass& pass, const FrameSetup& frame, bool afterFrame = false);
 
 struct FrameGraph {
     std::vector<GraphStep> steps;
@@ -43,6 +51,12 @@ std::vector<Resource> frameInputs();
 // was written earlier or is one of `inputs`.
 FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                            const std::vector<Resource>& sinks, const std::vector<Resource>& inputs = {});
+// The same over steps already made (graphStep): a request's frame and the views after it.
+FrameGraph buildFrameGraph(std::vector<GraphStep> steps, const FrameSetup& frame, const std::vector<Resource>& sinks,
+                           const std::vector<Resource>& inputs = {});
+// The graph's steps of the frame itself, without the views' steps after it: what the pixel
+// history, the check's buffer search and compare's per-pass JSON walk.
+FrameGraph withoutViewSteps(const FrameGraph& graph);
 
 // What `passes`, run after a frame to make `sinks` (the views' fill, the composite onto Radiance),
 // need the frame to leave: walking back through them by the same rule, the reads that reach
@@ -50,9 +64,13 @@ FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSe
 std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                                   const std::vector<Resource>& sinks);
 
-// The graph in order, one pass a line with its reads and writes, culled passes with their reason;
-// then, in lines that open with "# ", each buffer the running passes touch with who writes it
-// (kFrameInputsStep for an input) and who reads it.
+// The line before the views' steps in frameGraphText: they run after the frame, as each view is
+// drawn, and end in the displayed image.
+inline constexpr const char* kViewStepsHeader =
+    "# after the frame, as each view is drawn (the sink: the displayed image)";
+// The graph in order, one pass a line with its reads and writes, culled passes with their reason
+// (the views' steps after kViewStepsHeader); then, in lines that open with "# ", each buffer the
+// running passes touch with who writes it (kFrameInputsStep for an input) and who reads it.
 std::string frameGraphText(const FrameGraph& graph);
 // The same as a JSON array of {name, reads, writes, culled, reason}.
 std::string frameGraphJson(const FrameGraph& graph);
