@@ -87,7 +87,7 @@ void FrameViews::render(const std::string& viewName) {
     if (pass.readsRadiance()) renderer_.ensureRadiance();
     if (pass.readsSurfaces()) renderer_.ensureGBuffer();
     PassContext passContext = renderer_.context();
-    pass.run(passContext);
+    runValidated(pass, passContext);
 }
 
 void FrameViews::draw(PassContext& context, const DebugView* view) {

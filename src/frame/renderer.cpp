@@ -358,7 +358,7 @@ void Renderer::ensureRadiance() {
     // (ensureGBuffer calls this before a view fill redraws them).
     PassContext passContext = context();
     FrameClipControl clipControl(targets_->depth());
-    lonePasses_.waterComposite.run(passContext);
+    runValidated(lonePasses_.waterComposite, passContext);
 }
 
 void Renderer::ensureGBuffer() {
