@@ -117,14 +117,6 @@ FrameGraph withoutViewSteps(const FrameGraph& graph) {
     return frame;
 }
 
-std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
-                                  const std::vector<Resource>& sinks) {
-    FrameGraph graph = stepsOf(passes, frame);
-    std::set<Resource> live(sinks.begin(), sinks.end());
-    cullBackFrom(graph, frame, live);
-    return std::vector<Resource>(live.begin(), live.end());
-}
-
 FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                            const std::vector<Resource>& sinks, const std::vector<Resource>& inputs) {
     return buildFrameGraph(stepsOf(passes, frame).steps, frame, sinks, inputs);

@@ -58,12 +58,6 @@ FrameGraph buildFrameGraph(std::vector<GraphStep> steps, const FrameSetup& frame
 // history, the check's buffer search and compare's per-pass JSON walk.
 FrameGraph withoutViewSteps(const FrameGraph& graph);
 
-// What `passes`, run after a frame to make `sinks` (the views' fill, the composite onto Radiance),
-// need the frame to leave: walking back through them by the same rule, the reads that reach
-// before the first of them. A view's frame is built for that (FrameViews::setSink).
-std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
-                                  const std::vector<Resource>& sinks);
-
 // The line before the views' steps in frameGraphText: they run after the frame, as each view is
 // drawn, and end in the displayed image.
 inline constexpr const char* kViewStepsHeader =
