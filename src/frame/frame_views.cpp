@@ -65,8 +65,9 @@ void FrameViews::setPlantAtlas(const PlantAtlas* atlas) {
 
 void FrameViews::requireInGraph(const std::string& viewName) const {
     if (sink_.empty()) return;
-    // A whole frame's graph ends in its view passes: the view's, or the overview's (every view's
-    // reads). A frame stopped early keeps the whole frame's sink: the views named may be drawn.
+    // The graph of a frame built for views ends in their passes: the view's, or the overview's
+    // (every view's reads). A frame stopped early keeps the whole frame's sink: the views named
+    // may be drawn.
     const FrameGraph& graph = renderer_.left_.graph;
     const bool stopped = !renderer_.left_.stoppedBefore.empty();
     auto named = [&](const std::string& name) { return std::find(sink_.begin(), sink_.end(), name) != sink_.end(); };
