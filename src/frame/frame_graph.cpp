@@ -47,7 +47,7 @@ bool gValidation = kDebugBuild || (std::getenv("OASIS_VALIDATE_FRAME") &&
 
 bool FrameGraph::runs(const std::string& passName) const {
     return std::any_of(steps.begin(), steps.end(),
-                       [&](const GraphStep& step) { return step.runs && step.pass->name() == passName; });
+                       [&](const GraphStep& step) { return step.runs && !step.cut && step.pass->name() == passName; });
 }
 
 std::vector<Resource> frameOutputs() {
@@ -107,6 +107,15 @@ GraphStep graphStep(const Pass& pass, const FrameSetup& frame, bool afterFrame) 
     GraphStep step{&pass, pass.reads(frame), pass.writes(frame), false, ""};
     step.afterFrame = afterFrame;
     return step;
+}
+
+bool cutAt(FrameGraph& graph, const std::string& passName) {
+    auto at = std::find_if(graph.steps.begin(), graph.steps.end(), [&](const GraphStep& step) {
+        return !step.afterFrame && step.pass->name() == passName;
+    });
+    for (auto step = at; step != graph.steps.end(); ++step)
+        if (!step->afterFrame) step->cut = true;
+    return at != graph.steps.end();
 }
 
 FrameGraph withoutViewSteps(const FrameGraph& graph) {
@@ -197,14 +206,19 @@ std::string frameGraphText(const FrameGraph& graph) {
     auto listed = [](const std::vector<Resource>& resources) {
         return resources.empty() ? std::string("-") : joined(resources);
     };
-    std::string text;
+    std::string text, cutName;
+    for (const GraphStep& step : graph.steps)
+        if (step.cut && cutName.empty()) cutName = step.pass->name();
     bool views = false;
     for (const GraphStep& step : graph.steps) {
         if (step.afterFrame && !views) text += std::string(kViewStepsHeader) + "\n";
         views = views || step.afterFrame;
         const std::string& name = step.pass->name();
         text += name + std::string(column + 2 - name.size(), ' ');
-        text += step.runs ? listed(step.reads) + " -> " + listed(step.writes) : "culled: " + step.culled;
+        if (step.runs && step.cut)
+            text += "cut: the frame stops before " + cutName + " (--stop-before)";
+        else
+            text += step.runs ? listed(step.reads) + " -> " + listed(step.writes) : "culled: " + step.culled;
         text += "\n";
     }
     for (const std::string& problem : graph.problems) text += "invalid: " + problem + "\n";

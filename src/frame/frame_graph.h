@@ -17,6 +17,10 @@ struct GraphStep {
     // A step of the views after the frame (the composite onto Radiance, the views' fill, a debug
     // view): run when the view is drawn, not by Pipeline::run (frame/frame_views.h).
     bool afterFrame = false;
+    // A step at or after the pass a stopped frame stops before (--stop-before, cutAt): the graph
+    // is the whole frame's, cut there; what would run does not, and the views show what the cut
+    // left in the targets.
+    bool cut = false;
     // What a reader outside the graph reads right after this step (the check's shading oracle
     // reads the frame as it leaves it, before the views' fill): live there like a sink.
     std::vector<Resource> readAfter = {};
@@ -29,7 +33,7 @@ struct FrameGraph {
     // Reads with no writer earlier in the frame and no input to hold them: empty when valid.
     std::vector<std::string> problems;
     std::vector<Resource> inputs;  // what holds values before the first pass (frameInputs())
-    bool runs(const std::string& passName) const;
+    bool runs(const std::string& passName) const;  // a step of that name runs (and is not cut)
 };
 
 // What a finished frame is looked at through afterwards when anything may be (the window, the
@@ -54,6 +58,9 @@ FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSe
 // The same over steps already made (graphStep): a request's frame and the views after it.
 FrameGraph buildFrameGraph(std::vector<GraphStep> steps, const FrameSetup& frame, const std::vector<Resource>& sinks,
                            const std::vector<Resource>& inputs = {});
+// Marks the frame's steps from the one named `passName` on as cut (GraphStep::cut); false when no
+// step of the frame is named so.
+bool cutAt(FrameGraph& graph, const std::string& passName);
 // The graph's steps of the frame itself, without the views' steps after it: what the pixel
 // history, the check's buffer search and compare's per-pass JSON walk.
 FrameGraph withoutViewSteps(const FrameGraph& graph);
@@ -62,8 +69,8 @@ FrameGraph withoutViewSteps(const FrameGraph& graph);
 // drawn, and end in the displayed image.
 inline constexpr const char* kViewStepsHeader =
     "# after the frame, as each view is drawn (the sink: the displayed image)";
-// The graph in order, one pass a line with its reads and writes, culled passes with their reason
-// (the views' steps after kViewStepsHeader); then, in lines that open with "# ", each buffer the
+// The graph in order, one pass a line with its reads and writes, culled passes with their reason,
+// those a stopped frame does not reach with "cut:" (the views' steps after kViewStepsHeader); then, in lines that open with "# ", each buffer the
 // running passes touch with who writes it (kFrameInputsStep for an input) and who reads it.
 std::string frameGraphText(const FrameGraph& graph);
 // The same as a JSON array of {name, reads, writes, culled, reason}.

@@ -27,9 +27,8 @@ FrameGraph Pipeline::graph(const FrameSetup& frame, const std::vector<Resource>&
     return buildFrameGraph(passes, frame, sinks, frameInputs());
 }
 
-bool Pipeline::run(PassContext& context, const FrameGraph& frameGraph, const std::string& stopBefore,
+void Pipeline::run(PassContext& context, const FrameGraph& frameGraph,
                    const std::function<void(const Pass&)>& afterEach) const {
-    if (!stopBefore.empty() && !hasPass(stopBefore)) return false;
     if (frameGraph.steps.size() < passes_.size())
         throw std::logic_error("Pipeline::run: the graph holds fewer steps than the pipeline has passes");
     gl::DebugGroup group(pipelineName(kind_));
@@ -40,8 +39,8 @@ bool Pipeline::run(PassContext& context, const FrameGraph& frameGraph, const std
                                frameGraph.problems.front());
     for (size_t k = 0; k < passes_.size(); ++k) {
         Pass* pass = passes_[k].get();
-        if (pass->name() == stopBefore) break;
         if (frameGraph.steps[k].pass != pass) throw std::logic_error("Pipeline::run: a graph of another frame");
+        if (frameGraph.steps[k].cut) break;
         if (!frameGraph.steps[k].runs) continue;
         OnlyWhereWaterIsSeen onlyWithWater(context, pass->reflectionWork());
         if (pass->reflectionWork()) {
@@ -53,7 +52,6 @@ bool Pipeline::run(PassContext& context, const FrameGraph& frameGraph, const std
         recordProducedBuffers(*pass, context);
         if (afterEach) afterEach(*pass);
     }
-    return true;
 }
 
 bool Pipeline::hasPass(const std::string& name) const {

@@ -21,10 +21,10 @@ public:
     explicit Pipeline(PipelineKind kind);
     PipelineKind kind() const { return kind_; }
     // Runs the passes `graph` keeps (the frame's graph: its first steps are this pipeline's passes,
-    // in order; the views' steps after them run as each view is drawn), stopping before the pass
-    // named `stopBefore` (empty: run all). Returns false if `stopBefore` names no pass of this
-    // pipeline. `afterEach` is called after every pass that ran (to record or time it).
-    bool run(PassContext& context, const FrameGraph& graph, const std::string& stopBefore = {},
+    // in order; the views' steps after them run as each view is drawn), up to its cut where a
+    // stopped frame's graph is cut (cutAt, --stop-before). `afterEach` is called after every pass
+    // that ran (to record or time it).
+    void run(PassContext& context, const FrameGraph& graph,
              const std::function<void(const Pass&)>& afterEach = {}) const;
     bool hasPass(const std::string& name) const;
     std::string passNames() const;

@@ -249,7 +249,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     }
     left_.stepsRan.clear();
     std::vector<Target> beyondFrame;
-    left_.graph = requestGraph(!stopBefore.empty(), beyondFrame);
+    left_.graph = requestGraph(stopBefore, beyondFrame);
     // The graph's plan of the frame's targets: those it does not use are given back (a forward
     // frame holds no G-buffer), those whose lifetimes do not overlap may share a texture.
     const FrameGraph& graph = left_.graph;
@@ -263,7 +263,7 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         reducedTargets_->plan(left_.reflectionLifetimes);
     }
     FrameClipControl clipControl(targets_->depth());
-    pipeline.run(passContext, graph, stopBefore, [&](const Pass& pass) {
+    pipeline.run(passContext, graph, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) left_.stepsRan.push_back(pass.sceneStep());
         if (afterEach) afterEach(pass);
     });
@@ -279,17 +279,21 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     left_.stoppedGBufferCurrent = !stopBefore.empty() && pipeline.writes(frame_, Target::Albedo);
 }
 
-FrameGraph Renderer::requestGraph(bool stopped, std::vector<Target>& beyondFrame) const {
+FrameGraph Renderer::requestGraph(const std::string& stopBefore, std::vector<Target>& beyondFrame) const {
     auto targetsIn = [&](const std::vector<Resource>& resources) {
         for (const Resource& resource : resources)
             if (const Target* target = std::get_if<Target>(&resource)) beyondFrame.push_back(*target);
     };
     std::vector<GraphStep> steps;
     for (const auto& pass : pipelineOf(active_).passes()) steps.push_back(graphStep(*pass, frame_));
-    if (views_.sink_.empty() || stopped) {
+    if (views_.sink_.empty() || !stopBefore.empty()) {
         targetsIn(frameOutputs());
         targetsIn(everyResource());  // the fill of a whole frame's views may write any target
-        return buildFrameGraph(std::move(steps), frame_, frameOutputs(), frameInputs());
+        // A stopped frame is the whole frame's graph cut before the pass: the passes before it run
+        // as they would in the whole frame, and its targets are planned as the whole frame's.
+        FrameGraph graph = buildFrameGraph(std::move(steps), frame_, frameOutputs(), frameInputs());
+        if (!stopBefore.empty()) cutAt(graph, stopBefore);
+        return graph;
     }
     // After the frame, from the sink: the water laid onto Radiance where the tone map was fused and
     // a view (or the sink's other reader, readTarget) reads Radiance; that reader's reads, of the

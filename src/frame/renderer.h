@@ -154,10 +154,11 @@ private:
     // The frame's graph (frame_graph.h), one for the request: the pipeline's passes, then for named
     // views (FrameViews::setSink) the passes they need after the frame (the composite onto
     // Radiance for a view of it, the views' fill for a view of the surfaces, one ViewPass each),
-    // culled from the displayed image; a whole or stopped frame's ends at frameOutputs().
+    // culled from the displayed image; a whole frame's ends at frameOutputs(), and a frame stopped
+    // before the pass `stopBefore` (not empty) is the whole frame's cut there (cutAt).
     // `beyondFrame` gets the targets that live past the frame (what the views' passes touch, as
     // they run when each view is drawn; all of them for a whole frame), which lend no memory.
-    FrameGraph requestGraph(bool stopped, std::vector<Target>& beyondFrame) const;
+    FrameGraph requestGraph(const std::string& stopBefore, std::vector<Target>& beyondFrame) const;
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;

@@ -29,7 +29,7 @@ def running(graph_text, part="frame"):
     frame, _, views = graph_text.partition(VIEWS_HEADER)
     text = frame if part == "frame" else views.split("\n", 1)[1] if views else ""
     return [line.split()[0] for line in text.splitlines()
-            if line and not line.startswith(("invalid", "#")) and line.split()[1] != "culled:"]
+            if line and not line.startswith(("invalid", "#")) and line.split()[1] not in ("culled:", "cut:")]
 
 
 def step_line(graph_text, name):
@@ -68,11 +68,18 @@ def check_views(oasis):
             print(f"render --graph {' '.join(arguments)}: the forward frame runs {running(text, 'frame')}")
             return 1
         print(f"render --graph {' '.join(arguments)}: {', '.join(steps)}")
-    # A stopped frame keeps the whole frame's sink: no views' steps.
+    # A stopped frame is the whole frame's graph cut before the pass: what runs before the cut runs
+    # as in the whole frame, the cut passes say so, and no views' steps (it keeps the whole sink).
     text = graph("--view", "albedo", "--stop-before", "LightingPass")
-    if VIEWS_HEADER in text:
-        print(f"render --graph --stop-before: views' steps in a stopped frame's graph:\n{text}")
+    lines = [line.split() for line in text.splitlines() if line and not line.startswith(("invalid", "#"))]
+    names = [words[0] for words in lines]
+    after = lines[names.index("LightingPass"):] if "LightingPass" in names else []
+    cut = [words[0] for words in after if words[1] == "cut:"]
+    if (VIEWS_HEADER in text or cut[:1] != ["LightingPass"] or any(words[1] not in ("cut:", "culled:") for words in after)
+            or not {"ClearPass.gbuffer", "TerrainPass.gbuffer"} <= set(running(text))):
+        print(f"render --graph --stop-before LightingPass: not the whole frame cut there:\n{text}")
         return 1
+    print(f"render --graph --stop-before LightingPass: {len(running(text))} passes before the cut, {len(cut)} cut")
     return 0
 
 
