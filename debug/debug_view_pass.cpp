@@ -47,12 +47,18 @@ void DebugViewPass::bindSource(PassContext& context, const DebugView& view, Sten
             bind(kUnitSource, targets.texture(Target::Final));
             bindGBufferInputs(targets);
             break;
-        // The G-buffer views decode through common/gbuffer.glsl, which may read any target (the
-        // compact layout: intensity in albedo, position from depth; pixel size from info).
+        // The G-buffer views decode through common/gbuffer.glsl: each samples what the table says
+        // it reads in this layout (the compact layout: intensity in albedo, position from depth),
+        // no more, as its pass declares (frame/view_pass.h).
         case ViewSource::Albedo:
         case ViewSource::Normal:
         case ViewSource::Position:
-        case ViewSource::Info: bindGBufferInputs(targets); break;
+        case ViewSource::Info: {
+            std::vector<Access> reads;
+            for (const Resource& read : viewReads(view, targets.layout())) reads.push_back({read, Use::Sample});
+            bindDeclaredInputs(reads, context);
+            break;
+        }
         case ViewSource::Depth:
             bind(kUnitDepth, depthStencil);
             glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);

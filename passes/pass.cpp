@@ -24,7 +24,8 @@ const char* bufferName(Buffer buffer) {
 
 std::string resourceName(const Resource& resource) {
     if (auto target = std::get_if<Target>(&resource)) return targetName(*target);
-    return bufferName(std::get<Buffer>(resource));
+    if (auto buffer = std::get_if<Buffer>(&resource)) return bufferName(*buffer);
+    return "display";  // as the targets are named
 }
 
 bool isRead(Use use) { return use == Use::Sample || use == Use::DepthTest || use == Use::StencilTest; }

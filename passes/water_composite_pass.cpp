@@ -8,7 +8,7 @@ namespace oasis {
 
 void WaterCompositePass::execute(PassContext& context) {
     // Fused: the same blend done in the shader over Radiance (read, not attached) into Final.
-    bool fused = context.frame.toneMapFused;
+    bool fused = this->fused(context.frame);
     bindDeclaredOutputs(context);
     glEnable(GL_STENCIL_TEST);
     glStencilFunc(GL_EQUAL, kStencilWater, 0xFF);

@@ -47,7 +47,7 @@ bool gValidation = kDebugBuild || (std::getenv("OASIS_VALIDATE_FRAME") &&
 
 bool FrameGraph::runs(const std::string& passName) const {
     return std::any_of(steps.begin(), steps.end(),
-                       [&](const GraphStep& step) { return step.runs && step.pass->name() == passName; });
+                       [&](const GraphStep& step) { return step.runs && !step.cut && step.pass->name() == passName; });
 }
 
 std::vector<Resource> frameOutputs() {
@@ -76,6 +76,7 @@ namespace {
 // what it writes. Leaves in `live` what is read before the first step.
 void cullBackFrom(FrameGraph& graph, const FrameSetup& frame, std::set<Resource>& live) {
     for (auto step = graph.steps.rbegin(); step != graph.steps.rend(); ++step) {
+        live.insert(step->readAfter.begin(), step->readAfter.end());
         if (!step->pass->active(frame)) {
             step->culled = "off in this frame's settings";
             continue;
@@ -96,23 +97,44 @@ void cullBackFrom(FrameGraph& graph, const FrameSetup& frame, std::set<Resource>
 
 FrameGraph stepsOf(const std::vector<const Pass*>& passes, const FrameSetup& frame) {
     FrameGraph graph;
-    for (const Pass* pass : passes) graph.steps.push_back({pass, pass->reads(frame), pass->writes(frame), false, ""});
+    for (const Pass* pass : passes) graph.steps.push_back(graphStep(*pass, frame));
     return graph;
 }
 
 }  // namespace
 
-std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
-                                  const std::vector<Resource>& sinks) {
-    FrameGraph graph = stepsOf(passes, frame);
-    std::set<Resource> live(sinks.begin(), sinks.end());
-    cullBackFrom(graph, frame, live);
-    return std::vector<Resource>(live.begin(), live.end());
+GraphStep graphStep(const Pass& pass, const FrameSetup& frame, bool afterFrame) {
+    GraphStep step{&pass, pass.reads(frame), pass.writes(frame), false, ""};
+    step.afterFrame = afterFrame;
+    return step;
+}
+
+bool cutAt(FrameGraph& graph, const std::string& passName) {
+    auto at = std::find_if(graph.steps.begin(), graph.steps.end(), [&](const GraphStep& step) {
+        return !step.afterFrame && step.pass->name() == passName;
+    });
+    for (auto step = at; step != graph.steps.end(); ++step)
+        if (!step->afterFrame) step->cut = true;
+    return at != graph.steps.end();
+}
+
+FrameGraph withoutViewSteps(const FrameGraph& graph) {
+    FrameGraph frame = graph;
+    frame.steps.erase(std::remove_if(frame.steps.begin(), frame.steps.end(),
+                                     [](const GraphStep& step) { return step.afterFrame; }),
+                      frame.steps.end());
+    return frame;
 }
 
 FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                            const std::vector<Resource>& sinks, const std::vector<Resource>& inputs) {
-    FrameGraph graph = stepsOf(passes, frame);
+    return buildFrameGraph(stepsOf(passes, frame).steps, frame, sinks, inputs);
+}
+
+FrameGraph buildFrameGraph(std::vector<GraphStep> steps, const FrameSetup& frame, const std::vector<Resource>& sinks,
+                           const std::vector<Resource>& inputs) {
+    FrameGraph graph;
+    graph.steps = std::move(steps);
     graph.inputs = inputs;
     std::set<Resource> live(sinks.begin(), sinks.end());
     cullBackFrom(graph, frame, live);
@@ -184,11 +206,19 @@ std::string frameGraphText(const FrameGraph& graph) {
     auto listed = [](const std::vector<Resource>& resources) {
         return resources.empty() ? std::string("-") : joined(resources);
     };
-    std::string text;
+    std::string text, cutName;
+    for (const GraphStep& step : graph.steps)
+        if (step.cut && cutName.empty()) cutName = step.pass->name();
+    bool views = false;
     for (const GraphStep& step : graph.steps) {
+        if (step.afterFrame && !views) text += std::string(kViewStepsHeader) + "\n";
+        views = views || step.afterFrame;
         const std::string& name = step.pass->name();
         text += name + std::string(column + 2 - name.size(), ' ');
-        text += step.runs ? listed(step.reads) + " -> " + listed(step.writes) : "culled: " + step.culled;
+        if (step.runs && step.cut)
+            text += "cut: the frame stops before " + cutName + " (--stop-before)";
+        else
+            text += step.runs ? listed(step.reads) + " -> " + listed(step.writes) : "culled: " + step.culled;
         text += "\n";
     }
     for (const std::string& problem : graph.problems) text += "invalid: " + problem + "\n";

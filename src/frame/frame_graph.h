@@ -14,14 +14,26 @@ struct GraphStep {
     std::vector<Resource> reads, writes;
     bool runs = false;
     std::string culled;  // why it does not run; "" when it runs
+    // A step of the views after the frame (the composite onto Radiance, the views' fill, a debug
+    // view): run when the view is drawn, not by Pipeline::run (frame/frame_views.h).
+    bool afterFrame = false;
+    // A step at or after the pass a stopped frame stops before (--stop-before, cutAt): the graph
+    // is the whole frame's, cut there; what would run does not, and the views show what the cut
+    // left in the targets.
+    bool cut = false;
+    // What a reader outside the graph reads right after this step (the check's shading oracle
+    // reads the frame as it leaves it, before the views' fill): live there like a sink.
+    std::vector<Resource> readAfter = {};
 };
+// A step of `pass` in `frame`: its reads and writes, not yet culled.
+GraphStep graphStep(const Pass& pass, const FrameSetup& frame, bool afterFrame = false);
 
 struct FrameGraph {
     std::vector<GraphStep> steps;
     // Reads with no writer earlier in the frame and no input to hold them: empty when valid.
     std::vector<std::string> problems;
     std::vector<Resource> inputs;  // what holds values before the first pass (frameInputs())
-    bool runs(const std::string& passName) const;
+    bool runs(const std::string& passName) const;  // a step of that name runs (and is not cut)
 };
 
 // What a finished frame is looked at through afterwards when anything may be (the window, the
@@ -43,16 +55,23 @@ std::vector<Resource> frameInputs();
 // was written earlier or is one of `inputs`.
 FrameGraph buildFrameGraph(const std::vector<const Pass*>& passes, const FrameSetup& frame,
                            const std::vector<Resource>& sinks, const std::vector<Resource>& inputs = {});
+// The same over steps already made (graphStep): a request's frame and the views after it.
+FrameGraph buildFrameGraph(std::vector<GraphStep> steps, const FrameSetup& frame, const std::vector<Resource>& sinks,
+                           const std::vector<Resource>& inputs = {});
+// Marks the frame's steps from the one named `passName` on as cut (GraphStep::cut); false when no
+// step of the frame is named so.
+bool cutAt(FrameGraph& graph, const std::string& passName);
+// The graph's steps of the frame itself, without the views' steps after it: what the pixel
+// history, the check's buffer search and compare's per-pass JSON walk.
+FrameGraph withoutViewSteps(const FrameGraph& graph);
 
-// What `passes`, run after a frame to make `sinks` (the views' fill, the composite onto Radiance),
-// need the frame to leave: walking back through them by the same rule, the reads that reach
-// before the first of them. A view's frame is built for that (FrameViews::setSink).
-std::vector<Resource> readsBefore(const std::vector<const Pass*>& passes, const FrameSetup& frame,
-                                  const std::vector<Resource>& sinks);
-
-// The graph in order, one pass a line with its reads and writes, culled passes with their reason;
-// then, in lines that open with "# ", each buffer the running passes touch with who writes it
-// (kFrameInputsStep for an input) and who reads it.
+// The line before the views' steps in frameGraphText: they run after the frame, as each view is
+// drawn, and end in the displayed image.
+inline constexpr const char* kViewStepsHeader =
+    "# after the frame, as each view is drawn (the sink: the displayed image)";
+// The graph in order, one pass a line with its reads and writes, culled passes with their reason,
+// those a stopped frame does not reach with "cut:" (the views' steps after kViewStepsHeader); then, in lines that open with "# ", each buffer the
+// running passes touch with who writes it (kFrameInputsStep for an input) and who reads it.
 std::string frameGraphText(const FrameGraph& graph);
 // The same as a JSON array of {name, reads, writes, culled, reason}.
 std::string frameGraphJson(const FrameGraph& graph);

@@ -10,6 +10,23 @@
 
 namespace oasis {
 
+FrameViews::FrameViews(Renderer& renderer) : renderer_(renderer) {
+    for (const DebugView& view : debugViews()) passes_.push_back(std::make_unique<ViewPass>(*this, &view));
+    passes_.push_back(std::make_unique<ViewPass>(*this, nullptr));
+}
+
+ViewPass& FrameViews::passOf(const std::string& viewName) const {
+    for (const auto& pass : passes_)
+        if (pass->viewName() == viewName) return *pass;
+    throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
+}
+
+std::vector<const ViewPass*> FrameViews::sinkPasses() const {
+    std::vector<const ViewPass*> shown;
+    for (const std::string& name : sink_) shown.push_back(&passOf(name));
+    return shown;
+}
+
 void FrameViews::ensureGBuffer() { renderer_.ensureGBuffer(); }
 void FrameViews::fillExactSurfaces(const FrameTargets& exact, WaterScene scene) {
     renderer_.fillExactSurfaces(exact, scene);
@@ -46,37 +63,46 @@ void FrameViews::setPlantAtlas(const PlantAtlas* atlas) {
         renderer_.plants_.buffers.setAtlas(0, 1, 1);
 }
 
-void FrameViews::requireInSink(const std::string& viewName) const {
-    if (sink_.empty() || std::find(sink_.begin(), sink_.end(), viewName) != sink_.end() ||
-        std::find(sink_.begin(), sink_.end(), kOverviewName) != sink_.end())
+void FrameViews::requireInGraph(const std::string& viewName) const {
+    if (sink_.empty()) return;
+    // The graph of a frame built for views ends in their passes: the view's, or the overview's
+    // (every view's reads). A frame stopped early keeps the whole frame's sink: the views named
+    // may be drawn.
+    const FrameGraph& graph = renderer_.left_.graph;
+    const bool stopped = !renderer_.left_.stoppedBefore.empty();
+    auto named = [&](const std::string& name) { return std::find(sink_.begin(), sink_.end(), name) != sink_.end(); };
+    if (stopped ? named(viewName) || named(kOverviewName)
+                : graph.runs(passOf(viewName).name()) || graph.runs(passOf(kOverviewName).name()))
         return;
     std::string names;
     for (const std::string& name : sink_) names += (names.empty() ? "" : ", ") + name;
-    throw std::logic_error("the view " + viewName + " was not asked for: the frame was culled for " + names +
+    throw std::logic_error("the view " + viewName + " is not in the last frame's graph: it was culled for " + names +
                            " (Renderer::views().setSink)");
 }
 
 void FrameViews::render(const std::string& viewName) {
-    PassContext passContext = renderer_.context();
-    const DebugView* view = findDebugView(viewName);
-    if (!view && viewName != kOverviewName)
-        throw std::invalid_argument("no debug view named '" + viewName + "' (views: " + debugViewNames() + ")");
-    requireInSink(viewName);
+    ViewPass& pass = passOf(viewName);
+    requireInGraph(viewName);
     // Only the views of Radiance ask for the water laid on: the final view (the window's every
     // frame) keeps the fused frame's saving.
-    if (viewName == kOverviewName || view->source == ViewSource::Radiance) renderer_.ensureRadiance();
-    if (viewName == kOverviewName || (view && readsSceneSurfaces(*view))) renderer_.ensureGBuffer();
-    if (viewName == kOverviewName)
-        debugViews_.drawOverview(passContext, stencilPath_, scene_.scene ? waterSceneName(*scene_.scene) : "as left");
+    if (pass.readsRadiance()) renderer_.ensureRadiance();
+    if (pass.readsSurfaces()) renderer_.ensureGBuffer();
+    PassContext passContext = renderer_.context();
+    runValidated(pass, passContext);
+}
+
+void FrameViews::draw(PassContext& context, const DebugView* view) {
+    if (!view)
+        debugViews_.drawOverview(context, stencilPath_, scene_.scene ? waterSceneName(*scene_.scene) : "as left");
     else
-        debugViews_.drawView(passContext, *view, stencilPath_);
+        debugViews_.drawView(context, *view, stencilPath_);
 }
 
 std::vector<float> FrameViews::readValues(const std::string& viewName) {
     const DebugView* view = findDebugView(viewName);
     if (!view) throw std::invalid_argument("no debug view named '" + viewName + "' with values (views: " +
                                            debugViewNames() + ")");
-    requireInSink(viewName);
+    requireInGraph(viewName);
     if (view->source == ViewSource::Radiance) renderer_.ensureRadiance();
     if (readsSceneSurfaces(*view)) renderer_.ensureGBuffer();
     PassContext passContext = renderer_.context();

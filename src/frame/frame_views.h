@@ -2,11 +2,13 @@
 // stencil view's path, the water scene, the plant atlas), which views the frames are culled for
 // (the sink), and drawing one into Display or reading its values, from the last frame.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "debug/debug_view_pass.h"
 #include "frame/view_fill.h"
+#include "frame/view_pass.h"
 #include "render/frame_targets.h"
 #include "render/plant_atlas.h"
 
@@ -18,10 +20,12 @@ class FrameViews {
 public:
     // What the frames after this are looked at through (their sink): the views named (table
     // names or "overview"), and nothing else of them; empty (the default): anything, the whole
-    // frame (frameOutputs()). A view's frame runs only the passes whose writes reach what the
-    // view reads, through what runs after the frame for it (the composite onto Radiance, the
-    // views' fill). A frame stopped early keeps the whole frame's sink. render and readValues of
-    // a view not named throw std::logic_error; a name that is no view throws std::invalid_argument.
+    // frame (frameOutputs()). A view's frame is one graph whose sink is the displayed image
+    // (Screen::Display): the pipeline's passes, then the passes the views need after it (the
+    // composite onto Radiance, the views' fill, one ViewPass per view), culled together; it runs
+    // only the passes whose writes reach what the views read. A frame stopped early keeps the
+    // whole frame's sink. render and readValues of a view whose pass is not in the last frame's
+    // graph throw std::logic_error; a name that is no view throws std::invalid_argument.
     // `reads`: what a reader besides the views (the check's shading oracle) reads afterwards as the
     // frame leaves it (Radiance with the water laid on, as readTarget reads it); views needed too.
     void setSink(const std::vector<std::string>& views, const std::vector<Resource>& reads = {});
@@ -64,10 +68,16 @@ private:
     // Its owner, which reads the views' state while it builds and fills the frame (the sink, the
     // water scene) and reaches the views' drawing; these reach the renderer's frame in turn.
     friend class Renderer;
-    explicit FrameViews(Renderer& renderer) : renderer_(renderer) {}
-    void requireInSink(const std::string& viewName) const;
+    friend class ViewPass;  // draws through debugViews_ with the views' settings
+    explicit FrameViews(Renderer& renderer);
+    void requireInGraph(const std::string& viewName) const;
+    // The pass of a view (table name or "overview"); the sink's, in the sink's order.
+    ViewPass& passOf(const std::string& viewName) const;
+    std::vector<const ViewPass*> sinkPasses() const;
+    void draw(PassContext& context, const DebugView* view);  // ViewPass::execute: null, the overview
 
     Renderer& renderer_;
+    std::vector<std::unique_ptr<ViewPass>> passes_;  // one per view of the table, then the overview
     DebugViewPass debugViews_;
     StencilViewPath stencilPath_ = StencilViewPath::Texturing;
     WaterScene waterScene_ = WaterScene::Direct;

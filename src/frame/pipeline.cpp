@@ -27,19 +27,20 @@ FrameGraph Pipeline::graph(const FrameSetup& frame, const std::vector<Resource>&
     return buildFrameGraph(passes, frame, sinks, frameInputs());
 }
 
-bool Pipeline::run(PassContext& context, const std::string& stopBefore,
-                   const std::function<void(const Pass&)>& afterEach, const std::vector<Resource>& sinks) const {
-    if (!stopBefore.empty() && !hasPass(stopBefore)) return false;
+void Pipeline::run(PassContext& context, const FrameGraph& frameGraph,
+                   const std::function<void(const Pass&)>& afterEach) const {
+    if (frameGraph.steps.size() < passes_.size())
+        throw std::logic_error("Pipeline::run: the graph holds fewer steps than the pipeline has passes");
     gl::DebugGroup group(pipelineName(kind_));
     // The whole frame's graph decides what runs, also when it stops early: a stopped frame is the
     // whole frame's first passes.
-    FrameGraph frameGraph = graph(context.frame, sinks);
     if (frameValidation() && !frameGraph.problems.empty())
         throw std::logic_error("the " + std::string(pipelineName(kind_)) + " frame is invalid: " +
                                frameGraph.problems.front());
     for (size_t k = 0; k < passes_.size(); ++k) {
         Pass* pass = passes_[k].get();
-        if (pass->name() == stopBefore) break;
+        if (frameGraph.steps[k].pass != pass) throw std::logic_error("Pipeline::run: a graph of another frame");
+        if (frameGraph.steps[k].cut) break;
         if (!frameGraph.steps[k].runs) continue;
         OnlyWhereWaterIsSeen onlyWithWater(context, pass->reflectionWork());
         if (pass->reflectionWork()) {
@@ -51,7 +52,6 @@ bool Pipeline::run(PassContext& context, const std::string& stopBefore,
         recordProducedBuffers(*pass, context);
         if (afterEach) afterEach(*pass);
     }
-    return true;
 }
 
 bool Pipeline::hasPass(const std::string& name) const {

@@ -20,13 +20,12 @@ class Pipeline {
 public:
     explicit Pipeline(PipelineKind kind);
     PipelineKind kind() const { return kind_; }
-    // Runs the active passes in order; stops before the pass named `stopBefore` (empty: run all).
-    // Returns false if `stopBefore` names no pass of this pipeline.
-    // `afterEach` is called after every pass that ran (to record or time it).
-    // `sinks`: what is read of the frame after it (frameOutputs(), or a view's reads).
-    bool run(PassContext& context, const std::string& stopBefore = {},
-             const std::function<void(const Pass&)>& afterEach = {},
-             const std::vector<Resource>& sinks = frameOutputs()) const;
+    // Runs the passes `graph` keeps (the frame's graph: its first steps are this pipeline's passes,
+    // in order; the views' steps after them run as each view is drawn), up to its cut where a
+    // stopped frame's graph is cut (cutAt, --stop-before). `afterEach` is called after every pass
+    // that ran (to record or time it).
+    void run(PassContext& context, const FrameGraph& graph,
+             const std::function<void(const Pass&)>& afterEach = {}) const;
     bool hasPass(const std::string& name) const;
     std::string passNames() const;
     bool writes(const FrameSetup& frame, Target target) const;

@@ -187,9 +187,10 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
                                      : "a sample passed at the pixel (no earlier pass of the frame wrote these targets)";
     }
 
-    // Every pass of the frame's graph in order; one that did not run says why (frame/frame_graph.h).
+    // Every pass of the frame's graph in order (not the views' after it); one that did not run
+    // says why (frame/frame_graph.h).
     std::vector<PassAtPixel> history{inputs};
-    for (const GraphStep& step : renderer.lastFrame().graph().steps) {
+    for (const GraphStep& step : withoutViewSteps(renderer.lastFrame().graph()).steps) {
         auto found = seen.find(step.pass);
         if (found != seen.end()) {
             history.push_back(found->second);

@@ -249,10 +249,10 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     }
     left_.stepsRan.clear();
     std::vector<Target> beyondFrame;
-    left_.sinks = sinkOfFrame(!stopBefore.empty(), &beyondFrame);
+    left_.graph = requestGraph(stopBefore, beyondFrame);
     // The graph's plan of the frame's targets: those it does not use are given back (a forward
     // frame holds no G-buffer), those whose lifetimes do not overlap may share a texture.
-    const FrameGraph graph = pipeline.graph(frame_, left_.sinks);
+    const FrameGraph& graph = left_.graph;
     const bool reduced = passContext.reflectionTargets != nullptr;
     left_.lifetimes = oasis::targetLifetimes(graph, frame_, beyondFrame,
                                         reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
@@ -263,62 +263,62 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
         reducedTargets_->plan(left_.reflectionLifetimes);
     }
     FrameClipControl clipControl(targets_->depth());
-    pipeline.run(passContext, stopBefore, [&](const Pass& pass) {
+    pipeline.run(passContext, graph, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) left_.stepsRan.push_back(pass.sceneStep());
         if (afterEach) afterEach(pass);
-    }, left_.sinks);
+    });
     left_.gbufferHolds.reset();
-    // A view's frame may cull the composite (nothing it shows reads the water): then nothing awaits.
-    left_.radianceAwaitsWater = frame_.toneMapFused && lonePasses_.waterComposite.active(frame_) &&
-                           pipeline.graph(frame_, left_.sinks).runs(lonePasses_.waterComposite.name());
+    // The water awaits Radiance where the graph keeps the composite onto it (a view of Radiance
+    // asked); a whole frame's, wherever the fused composite ran (any view may be drawn after it).
+    const bool viewsInGraph = std::any_of(graph.steps.begin(), graph.steps.end(),
+                                          [](const GraphStep& step) { return step.afterFrame; });
+    left_.radianceAwaitsWater =
+        lonePasses_.waterComposite.active(frame_) &&
+        graph.runs(viewsInGraph ? lonePasses_.waterComposite.name() : std::string("WaterCompositePass"));
     left_.stoppedBefore = stopBefore;
     left_.stoppedGBufferCurrent = !stopBefore.empty() && pipeline.writes(frame_, Target::Albedo);
 }
 
-std::vector<Resource> Renderer::sinkOfFrame(bool stopped, std::vector<Target>* beyondFrame) const {
-    // What lives past the frame: its sink, and what the views' fill and the composite after it write.
+FrameGraph Renderer::requestGraph(const std::string& stopBefore, std::vector<Target>& beyondFrame) const {
     auto targetsIn = [&](const std::vector<Resource>& resources) {
-        if (!beyondFrame) return;
         for (const Resource& resource : resources)
-            if (const Target* target = std::get_if<Target>(&resource)) beyondFrame->push_back(*target);
+            if (const Target* target = std::get_if<Target>(&resource)) beyondFrame.push_back(*target);
     };
-    if (views_.sink_.empty() || stopped) {
+    std::vector<GraphStep> steps;
+    for (const auto& pass : pipelineOf(active_).passes()) steps.push_back(graphStep(*pass, frame_));
+    if (views_.sink_.empty() || !stopBefore.empty()) {
         targetsIn(frameOutputs());
         targetsIn(everyResource());  // the fill of a whole frame's views may write any target
-        return frameOutputs();
+        // A stopped frame is the whole frame's graph cut before the pass: the passes before it run
+        // as they would in the whole frame, and its targets are planned as the whole frame's.
+        FrameGraph graph = buildFrameGraph(std::move(steps), frame_, frameOutputs(), frameInputs());
+        if (!stopBefore.empty()) cutAt(graph, stopBefore);
+        return graph;
     }
-    // What the views read, walked back through what runs for them after the frame, last first:
-    // the views' fill (ensureGBuffer), then the water laid onto Radiance (ensureRadiance).
-    std::vector<Resource> reads;
-    bool surfaces = false, radiance = false;
-    for (const DebugView& view : debugViews()) {
-        if (std::find(views_.sink_.begin(), views_.sink_.end(), view.name) == views_.sink_.end() &&
-            std::find(views_.sink_.begin(), views_.sink_.end(), kOverviewName) == views_.sink_.end())
-            continue;
-        for (const Resource& read : viewReads(view, targets_->layout())) reads.push_back(read);
-        surfaces = surfaces || readsSceneSurfaces(view);
-        radiance = radiance || view.source == ViewSource::Radiance;
+    // After the frame, from the sink: the water laid onto Radiance where the tone map was fused and
+    // a view (or the sink's other reader, readTarget) reads Radiance; that reader's reads, of the
+    // frame as it leaves it; the views' fill for a view of the frame's surfaces; the views.
+    const std::vector<const ViewPass*> shown = views_.sinkPasses();
+    auto anyView = [&](bool (ViewPass::*reads)() const) {
+        return std::any_of(shown.begin(), shown.end(), [&](const ViewPass* pass) { return (pass->*reads)(); });
+    };
+    const std::vector<Resource>& readAfter = views_.sinkReads_;
+    const bool radiance = anyView(&ViewPass::readsRadiance) ||
+                          std::find(readAfter.begin(), readAfter.end(), Resource(Target::Radiance)) != readAfter.end();
+    if (radiance && frame_.toneMapFused) steps.push_back(graphStep(lonePasses_.waterComposite, frame_, true));
+    steps.back().readAfter = readAfter;
+    if (anyView(&ViewPass::readsSurfaces))
+        for (const Pass* pass : viewFill_.passes(views_.waterScene_, frame_)) steps.push_back(graphStep(*pass, frame_, true));
+    for (const ViewPass* pass : shown) steps.push_back(graphStep(*pass, frame_, true));
+    FrameGraph graph = buildFrameGraph(std::move(steps), frame_, {Screen::Display}, frameInputs());
+    // What the views' passes touch lives past the frame: they run as each view is drawn.
+    for (const GraphStep& step : graph.steps) {
+        if (!step.afterFrame) continue;
+        targetsIn(step.writes);
+        if (step.runs) targetsIn(step.reads);
     }
-    targetsIn(reads);
-    if (surfaces) {
-        std::vector<const Pass*> fill = viewFill_.passes(views_.waterScene_, frame_);
-        for (const Pass* pass : fill) targetsIn(pass->writes(frame_));
-        reads = readsBefore(fill, frame_, reads);
-    }
-    // The sink's other reads are of the frame as it leaves it, no fill before them, but the water
-    // laid onto Radiance (readTarget).
-    for (const Resource& read : views_.sinkReads_) {
-        reads.push_back(read);
-        radiance = radiance || read == Resource(Target::Radiance);
-    }
-    if (radiance && frame_.toneMapFused) {
-        FrameSetup separate = frame_;  // ensureRadiance runs the composite as the separate pass
-        separate.toneMapFused = false;
-        targetsIn(lonePasses_.waterComposite.writes(separate));
-        reads = readsBefore({&lonePasses_.waterComposite}, separate, reads);
-    }
-    targetsIn(reads);
-    return reads;
+    targetsIn(readAfter);
+    return graph;
 }
 
 void Renderer::prepareReducedReflection() {
@@ -358,13 +358,11 @@ void Renderer::forgetGBuffer() {
 void Renderer::ensureRadiance() {
     if (!left_.radianceAwaitsWater) return;
     left_.radianceAwaitsWater = false;
-    // The separate pass's composite, blended onto Radiance; the stencil and depth are still the
-    // frame's (ensureGBuffer calls this before a view fill redraws them).
-    frame_.toneMapFused = false;
+    // The graph's composite onto Radiance; the stencil and depth are still the frame's
+    // (ensureGBuffer calls this before a view fill redraws them).
     PassContext passContext = context();
     FrameClipControl clipControl(targets_->depth());
-    lonePasses_.waterComposite.run(passContext);
-    frame_.toneMapFused = true;
+    runValidated(lonePasses_.waterComposite, passContext);
 }
 
 void Renderer::ensureGBuffer() {

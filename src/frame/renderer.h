@@ -60,12 +60,13 @@ struct LastFrame {
     const VegetationField& vegetation;        // the plants placed around its camera, what it drew of them
     const VegetationBuffers& plantInstances;  // the instances it uploaded (PlantInstances, frame_graph.h)
     const Pipeline& pipeline;                 // its pipeline's passes (the GL objects a pass owns in them)
-    const std::vector<Resource>& sinks;       // what was to be read of it after (its graph's sink)
+    const FrameGraph& requestGraph;           // its graph (Renderer::renderFrame)
     const FrameTargets& targets;
     const FrameTargets* reflectionTargets;    // the reflection's own targets when drawn reduced; else null
     const std::vector<TargetLifetime>& reflectionTargetLifetimes;  // and theirs (empty when not reduced)
-    // Its graph: the pipeline's passes, which ran and why the others were culled.
-    FrameGraph graph() const { return pipeline.graph(setup, sinks); }
+    // Its graph: the pipeline's passes, then (a frame for named views) the views' passes after
+    // it, ending in the displayed image; which ran and why the others were culled.
+    const FrameGraph& graph() const { return requestGraph; }
     // The GPU memory of its targets (FrameTargets::heldBytes: what the graph's plan left
     // allocated after it), the reduced reflection's included.
     double targetMemoryBytes() const {
@@ -122,7 +123,7 @@ public:
     const FrameViews& views() const { return views_; }
     const FrameTargets& targets() const { return *targets_; }
     LastFrame lastFrame() const {
-        return {frame_, left_.lifetimes, plants_.field, plants_.buffers, pipelineOf(active_), left_.sinks,
+        return {frame_, left_.lifetimes, plants_.field, plants_.buffers, pipelineOf(active_), left_.graph,
                 *targets_, reducedTargets_.get(), left_.reflectionLifetimes};
     }
     RendererParts parts() const { return {shaders_, geometry_, shadowMaps_}; }
@@ -150,9 +151,14 @@ private:
     // its range of the frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.
     void prepareReducedReflection();
     void uploadLights();
-    // The frame's sink; with `beyondFrame`, also the targets that live past the frame (the sink's,
-    // and those the views' fill and the composite after the frame write), which lend no memory.
-    std::vector<Resource> sinkOfFrame(bool stopped, std::vector<Target>* beyondFrame = nullptr) const;
+    // The frame's graph (frame_graph.h), one for the request: the pipeline's passes, then for named
+    // views (FrameViews::setSink) the passes they need after the frame (the composite onto
+    // Radiance for a view of it, the views' fill for a view of the surfaces, one ViewPass each),
+    // culled from the displayed image; a whole frame's ends at frameOutputs(), and a frame stopped
+    // before the pass `stopBefore` (not empty) is the whole frame's cut there (cutAt).
+    // `beyondFrame` gets the targets that live past the frame (what the views' passes touch, as
+    // they run when each view is drawn; all of them for a whole frame), which lend no memory.
+    FrameGraph requestGraph(const std::string& stopBefore, std::vector<Target>& beyondFrame) const;
     void runFrame(const SceneSettings& scene, const std::string& stopBefore,
                   const std::function<void(const Pass&)>& afterEach);
     const Pipeline& pipelineOf(PipelineKind kind) const;
@@ -170,11 +176,11 @@ private:
         VegetationDrawList list;
         VegetationBuffers buffers;
     };
-    // The passes run outside the pipelines: the timing floor, ensureRadiance's separate composite,
-    // and present.
+    // The passes run outside the pipelines: the timing floor, the composite onto Radiance (a step
+    // of a Radiance view's graph, run by ensureRadiance), and present.
     struct LonePasses {
         FloorPass floor;
-        WaterCompositePass waterComposite;
+        WaterCompositePass waterComposite{true};
         PresentPass present;
     };
     // One list of PointLights serves every path (SSBO or UBO), with its count; the path the list's
@@ -197,7 +203,7 @@ private:
         bool stoppedGBufferCurrent = false;      // a stopped frame's G-buffer already holds what it reached
         std::vector<std::string> stepsRan;       // the scene steps (Pass::sceneStep) it ran
         bool radianceAwaitsWater = false;        // a fused frame's composite has not been laid onto Radiance
-        std::vector<Resource> sinks = frameOutputs();  // its sink
+        FrameGraph graph;                              // its graph (requestGraph)
         std::vector<TargetLifetime> lifetimes;         // and its targets' lifetimes
         std::vector<TargetLifetime> reflectionLifetimes;  // the reduced reflection's own targets'
     };

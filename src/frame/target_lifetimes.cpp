@@ -18,7 +18,9 @@ std::vector<TargetLifetime> targetLifetimes(const FrameGraph& graph, const Frame
     int firstRunning = -1;
     for (size_t k = 0; k < graph.steps.size(); ++k) {
         const GraphStep& step = graph.steps[k];
-        if (!step.runs) continue;
+        // The views' steps run after the frame, as each view is drawn: what they touch is in
+        // `beyondFrame`, never a borrower.
+        if (!step.runs || step.afterFrame) continue;
         if (firstRunning < 0) firstRunning = int(k);
         const bool reflection = step.pass->drawsInReflectionTargets();
         if (steps == StepsOf::FrameWithoutReducedReflection && reflection) continue;

@@ -18,7 +18,8 @@ class FrameTargets;
 // reflection's (those steps alone).
 enum class StepsOf { WholeFrame, FrameWithoutReducedReflection, ReducedReflection };
 
-// For every target a running step of `steps` touches: its first and last step. A target in
+// For every target a running step of `steps` touches (the frame's, not the views' after it): its
+// first and last step. A target in
 // `beyondFrame` (the frame's sink, what code after the frame writes) lives to kBeyondFrame, and from
 // the first step where no step touches it, so it never lends its memory.
 std::vector<TargetLifetime> targetLifetimes(const FrameGraph& graph, const FrameSetup& frame,

@@ -1,5 +1,5 @@
 // The frame's resources as passes name them in their declarations (passes/pass.h): its targets
-// (render/gbuffer_layout.h's Target) and the buffers passes hand each other.
+// (render/gbuffer_layout.h's Target), the buffers passes hand each other and the displayed image.
 #pragma once
 #include <string>
 #include <variant>
@@ -15,7 +15,10 @@ namespace oasis {
 // first pass: the frame's inputs (frame/frame_graph.h's frameInputs), read by the passes.
 enum class Buffer { TerrainHeights, ShadowMaps, LightTiles, LightList, PlantInstances };
 const char* bufferName(Buffer buffer);
-using Resource = std::variant<Target, Buffer>;
+// The displayed image a request ends in: the Display texture its debug-view pass draws (what the
+// headless commands read back, the sink of a request's graph, frame/frame_views.h).
+enum class Screen { Display };
+using Resource = std::variant<Target, Buffer, Screen>;
 std::string resourceName(const Resource& resource);
 
 }  // namespace oasis

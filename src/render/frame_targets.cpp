@@ -135,7 +135,7 @@ void FrameTargets::forgetFramebuffersOf(GLuint texture) {
 }
 
 void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
-    // Readers after the frame are in its sink (Renderer::sinkOfFrame): their targets live to
+    // Readers after the frame are in its graph (Renderer::requestGraph): their targets live to
     // kBeyondFrame and lend nothing, so a target lends its memory only where nothing reads it again.
     const TargetMemory memory = aliasTargets(lifetimes, [&](Target target) {
         return unsigned(targetFormat(layout_, depth_, target).internalFormat);

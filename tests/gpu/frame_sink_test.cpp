@@ -5,6 +5,7 @@
 // and change the picture.
 #include "debug_views_support.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "frame/frame_readback.h"
@@ -83,10 +84,11 @@ TEST_F(FrameSink, EveryViewIsTheSameAfterItsOwnFrameAsAfterAWholeFrame) {
     }
 }
 
+// The frame's passes that ran (not the views' steps after it).
 std::vector<std::string> passesRun(const FrameGraph& graph) {
     std::vector<std::string> names;
     for (const GraphStep& step : graph.steps)
-        if (step.runs) names.push_back(step.pass->name());
+        if (step.runs && !step.afterFrame) names.push_back(step.pass->name());
     return names;
 }
 
@@ -169,6 +171,57 @@ TEST_F(FrameSink, AViewTheFrameWasNotBuiltForIsRefused) {
     renderer.views().setSink({});
     renderer.renderFrame(scene);
     EXPECT_NO_THROW(renderer.views().render("final"));
+}
+
+// One graph per request (issue 43 item 3): after the frame's passes, the passes the views named
+// need, as steps of the same graph ending in the displayed image: the composite onto Radiance (a
+// fused frame's radiance view), the views' fill (a view of the surfaces), one pass per view; each
+// reads what its view reads, has a writer before it (no problems), and is what draws the view.
+TEST_F(FrameSink, TheViewsPassesAreStepsOfTheFramesGraph) {
+    const SceneSettings scene = lakeScene(false);
+    Renderer renderer(*shaders_, scene);
+    auto atlas = attachPlantAtlas(*shaders_, renderer);
+    renderer.configure(kTinyWidth, kTinyHeight, layoutNamed("standard"));
+    auto viewSteps = [&](PipelineKind kind, const std::vector<std::string>& sink) {
+        renderer.setPipeline(kind);
+        renderer.views().setSink(sink);
+        renderer.renderFrame(scene);
+        const FrameGraph& graph = renderer.lastFrame().graph();
+        EXPECT_TRUE(graph.problems.empty()) << graph.problems.front();
+        std::vector<std::string> names;
+        bool views = false;
+        for (const GraphStep& step : graph.steps) {
+            EXPECT_TRUE(!views || step.afterFrame) << "the views' steps come after the frame's";
+            views = views || step.afterFrame;
+            if (step.afterFrame && step.runs) names.push_back(step.pass->name());
+        }
+        for (const std::string& view : sink) EXPECT_NO_THROW(renderer.views().render(view)) << view;
+        return names;
+    };
+    auto readsOf = [&](const std::string& passName) {
+        for (const GraphStep& step : renderer.lastFrame().graph().steps)
+            if (step.pass->name() == passName && step.afterFrame) return step.reads;
+        return std::vector<Resource>{};
+    };
+    auto has = [](const std::vector<Resource>& list, Resource resource) {
+        return std::find(list.begin(), list.end(), resource) != list.end();
+    };
+    EXPECT_EQ(viewSteps(PipelineKind::Deferred, {"final"}), std::vector<std::string>{"DebugViewPass.final"});
+    EXPECT_EQ(readsOf("DebugViewPass.final"), std::vector<Resource>{Target::Final});
+    EXPECT_EQ(viewSteps(PipelineKind::Deferred, {"radiance"}),
+              (std::vector<std::string>{"WaterCompositePass.radiance", "DebugViewPass.radiance"}));
+    EXPECT_TRUE(has(readsOf("WaterCompositePass.radiance"), Target::Reflection));
+    std::vector<std::string> albedo = viewSteps(PipelineKind::Forward, {"albedo"});
+    ASSERT_FALSE(albedo.empty());
+    EXPECT_EQ(albedo.back(), "DebugViewPass.albedo");
+    EXPECT_TRUE(std::find(albedo.begin(), albedo.end(), "TerrainPass.gbuffer") != albedo.end())
+        << "a forward frame's albedo view: the views' fill draws the surfaces";
+    EXPECT_TRUE(has(readsOf("DebugViewPass.albedo"), Target::Albedo));
+    EXPECT_EQ(viewSteps(PipelineKind::Deferred, {"depth", "final"}),
+              (std::vector<std::string>{"TerrainHeightsPass", "ClearPass.gbuffer", "TerrainPass.gbuffer",
+                                        "VegetationPass.gbuffer", "WaterMaskPass", "DebugViewPass.depth",
+                                        "DebugViewPass.final"}));
+    EXPECT_TRUE(viewSteps(PipelineKind::Deferred, {}).empty()) << "a whole frame's graph ends at its outputs";
 }
 
 // What a view's frame saves, in fragment invocations counted by the driver (frame/frame_traffic.h):

@@ -197,5 +197,30 @@ TEST_F(GpuTest, TheFramesOfBothPipelinesPassValidation) {
     }
 }
 
+// The views' passes after the frame (issue 43 item 3) are validated like the frame's: each view
+// drawn after a frame built for it, in both pipelines and both tone maps, samples only what its
+// pass declares (the composite onto Radiance, the fill and DebugViewPass.<view>), and the graph has
+// a writer before every read of theirs.
+TEST_F(GpuTest, EveryViewsPassesAfterItsFramePassValidation) {
+    ValidatedFrames validated;
+    std::vector<std::string> views = {kOverviewName};
+    for (const DebugView& view : debugViews()) views.push_back(view.name);
+    for (bool fused : {true, false}) {
+        SceneSettings scene = defaultPose().scene;
+        scene.work.fuseToneMap = fused;
+        for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+            for (const std::string& view : views) {
+                Renderer renderer(*shaders_, scene);
+                renderer.configure(64, 36, layoutNamed("compact"));
+                renderer.setPipeline(kind);
+                renderer.views().setSink({view});
+                EXPECT_NO_THROW(renderer.renderFrame(scene)) << view << " " << pipelineName(kind);
+                EXPECT_TRUE(renderer.lastFrame().graph().runs("DebugViewPass." + view)) << view;
+                EXPECT_NO_THROW(renderer.views().render(view)) << view << " " << pipelineName(kind);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace oasis::gputest

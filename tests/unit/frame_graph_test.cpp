@@ -81,21 +81,21 @@ TEST(FrameGraph, EveryReadOfBothPipelinesHasAWriterBeforeIt) {
     }
 }
 
-// A view's sink (FrameViews::setSink): what the albedo view reads, walked back through the
-// views' fill, which clears the depth-stencil whole (ClearPass's Replace) and draws the G-buffer
-// over what the frame left, reaches the frame as the G-buffer's colour targets alone; the frame
-// built for them runs the geometry and none of the shading.
+// A view's frame is one graph (Renderer::requestGraph): the frame's passes, then the views' fill
+// after it, culled from what the albedo view reads. The fill clears the depth-stencil whole
+// (ClearPass's Replace) and draws the G-buffer over what the frame left, so the frame runs the
+// geometry and none of the shading.
 TEST(FrameGraph, AViewOfTheGBufferCullsTheShading) {
     FrameSetup frame = compactFrame(LightMethod::Tiled, true);
     frame.reflectionsActive = true;
     ViewFill fill;
-    std::vector<Resource> frameSink = readsBefore(fill.passes(WaterScene::Direct, frame), frame,
-                                                  {Target::Albedo, Target::Normal, Target::Info, Target::DepthStencil});
-    std::sort(frameSink.begin(), frameSink.end());
-    // The plants' instances too: the fill draws the billboards the renderer uploaded for the frame.
-    EXPECT_EQ(frameSink, (std::vector<Resource>{Target::Albedo, Target::Normal, Target::Info, Buffer::PlantInstances}));
     Pipeline deferred(PipelineKind::Deferred);
-    FrameGraph graph = deferred.graph(frame, frameSink);
+    std::vector<GraphStep> steps;
+    for (const auto& pass : deferred.passes()) steps.push_back(graphStep(*pass, frame));
+    for (const Pass* pass : fill.passes(WaterScene::Direct, frame)) steps.push_back(graphStep(*pass, frame, true));
+    FrameGraph graph = buildFrameGraph(steps, frame, {Target::Albedo, Target::Normal, Target::Info, Target::DepthStencil},
+                                       frameInputs());
+    graph.steps.resize(deferred.passes().size());  // the frame's steps
     for (const char* runs : {"ClearPass.gbuffer", "TerrainPass.gbuffer", "VegetationPass.gbuffer",
                              "TerrainPass.gbuffer.mirrored"})
         EXPECT_TRUE(stepNamed(graph, runs).runs) << runs;
@@ -106,8 +106,29 @@ TEST(FrameGraph, AViewOfTheGBufferCullsTheShading) {
     EXPECT_TRUE(graph.problems.empty());
     // Nothing a pass of the frame writes reaches the depth view: the fill draws all of its depth
     // (from the plants' instances the renderer uploaded).
-    EXPECT_EQ(readsBefore(fill.passes(WaterScene::Mirrored, frame), frame, {Target::DepthStencil}),
-              (std::vector<Resource>{Buffer::PlantInstances}));
+    steps.resize(deferred.passes().size());
+    for (const Pass* pass : fill.passes(WaterScene::Mirrored, frame)) steps.push_back(graphStep(*pass, frame, true));
+    FrameGraph depth = buildFrameGraph(steps, frame, {Target::DepthStencil}, frameInputs());
+    for (const GraphStep& step : depth.steps)
+        EXPECT_TRUE(step.afterFrame || !step.runs) << step.pass->name() << " runs for the depth view";
+    EXPECT_TRUE(depth.problems.empty());
+}
+
+// A reader besides the views (the check's shading oracle, FrameViews::setSink's reads) reads the
+// frame as it leaves it, before the views' fill: its reads are live after the frame's last step
+// (GraphStep::readAfter), so their writers run though the view (depth) needs none of the frame.
+TEST(FrameGraph, WhatIsReadAfterTheFrameKeepsItsWriters) {
+    FrameSetup frame = compactFrame(LightMethod::Tiled, true);
+    ViewFill fill;
+    Pipeline deferred(PipelineKind::Deferred);
+    std::vector<GraphStep> steps;
+    for (const auto& pass : deferred.passes()) steps.push_back(graphStep(*pass, frame));
+    steps.back().readAfter = {Target::Radiance};
+    for (const Pass* pass : fill.passes(WaterScene::Direct, frame)) steps.push_back(graphStep(*pass, frame, true));
+    FrameGraph graph = buildFrameGraph(steps, frame, {Target::DepthStencil}, frameInputs());
+    EXPECT_TRUE(stepNamed(graph, "LightingPass").runs);
+    EXPECT_TRUE(stepNamed(graph, "TerrainPass.gbuffer").runs) << "the lighting reads the frame's own G-buffer";
+    EXPECT_TRUE(graph.problems.empty());
 }
 
 // The buffers are resources like the targets: the light list and the plants' instances are the
