@@ -17,7 +17,8 @@ namespace {
 // Its Reflection is cleared as well, so taps just outside the water read zero, never stale memory.
 void markReducedWater(PassContext& reflection, int divisor) {
     const FrameTargets& targets = reflection.targets;
-    bindFramebufferOf(targets, atScale({{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilWrite}}, divisor));
+    bindFramebufferOf(targets,
+                      atScale({{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilWrite}}, divisor));
     const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearBufferfv(GL_COLOR, 0, nothing);
     glDepthMask(GL_TRUE);

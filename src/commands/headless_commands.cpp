@@ -322,7 +322,8 @@ int runRenderCommand(const Options& options) {
             if (const int divisor = frame.setup.reflectionDivisor; divisor > 1 && frame.setup.reflectionsActive) {
                 // Drawn reduced: the reflection's own targets, the same targets' resources at a scale.
                 std::printf("# the reflection's own targets, at 1/%d of the frame:\n", divisor);
-                std::printf("%s", targetLifetimesText(frame.graph(), frame.targetLifetimes, renderer.targets(), divisor).c_str());
+                std::printf("%s",
+                            targetLifetimesText(frame.graph(), frame.targetLifetimes, renderer.targets(), divisor).c_str());
             }
             std::printf("%s", heldTargetMemoryText(renderer.targets()).c_str());
             return 0;

@@ -211,7 +211,8 @@ std::vector<Resource> targetsHolding(const FrameTargets& targets, GLint texture)
     if (texture == 0) return found;
     for (int divisor : {1, 2, 4})
         for (int t = 0; t < int(Target::Count); ++t)
-            if (GLint(targets.heldTexture(Target(t), divisor)) == texture) found.push_back(targetAt(Target(t), divisor));
+            if (GLint(targets.heldTexture(Target(t), divisor)) == texture)
+                found.push_back(targetAt(Target(t), divisor));
     return found;
 }
 

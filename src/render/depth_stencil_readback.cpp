@@ -92,7 +92,8 @@ struct DrawnRead {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour.name(), 0);
         if (stencil)
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, targets.texture(*stencil, divisor), 0);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                                   targets.texture(*stencil, divisor), 0);
         GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
         glDrawBuffers(1, &drawBuffer);
     }

@@ -30,7 +30,7 @@ inline bool operator<(const ScaledTarget& a, const ScaledTarget& b) {  // for se
     return a.target != b.target ? a.target < b.target : a.divisor < b.divisor;
 }
 using Resource = std::variant<Target, Buffer, ScaledTarget>;
-// "Reflection", "LightTiles", "Reflection at 1/2".
+// "reflection", "LightTiles", "reflection at 1/2".
 std::string resourceName(const Resource& resource);
 // The target of a target resource, at whatever scale, and its divisor (1 for the frame's own);
 // false for a buffer.

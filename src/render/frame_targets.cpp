@@ -256,15 +256,18 @@ GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optiona
     std::vector<Target> stored;
     for (Target target : colour)
         if (layout_.stores(target)) stored.push_back(target);
-    if (depth && !layout_.stores(*depth)) depth.reset();
-    if (stored.empty() && !depth) return 0;  // nothing this layout stores (SceneDepth in full)
-    FramebufferKey key{{}, depth ? texture(*depth, divisor) : 0};
+    // The depth attachment, where the layout stores it (a plain value: GCC warned the optional's
+    // value may be read uninitialised).
+    const bool hasDepth = depth.has_value() && layout_.stores(*depth);
+    const Target depthTarget = depth.value_or(Target::DepthStencil);
+    if (stored.empty() && !hasDepth) return 0;  // nothing this layout stores (SceneDepth in full)
+    FramebufferKey key{{}, hasDepth ? texture(depthTarget, divisor) : 0};
     for (Target target : stored) key.first.push_back(texture(target, divisor));
     if (auto found = framebuffers_.find(key); found != framebuffers_.end()) return found->second.name();
     // Labelled by what it holds, as capture tools list it: "Radiance, Final + DepthStencil".
     std::string label;
     for (Target target : stored) label += (label.empty() ? "" : ", ") + std::string(targetName(target));
-    if (depth) label += (label.empty() ? "" : " + ") + std::string(targetName(*depth));
+    if (hasDepth) label += (label.empty() ? "" : " + ") + std::string(targetName(depthTarget));
     if (divisor != 1) label = "reflection at 1/" + std::to_string(divisor) + ": " + label;
     gl::Framebuffer fbo = gl::createFramebuffer(labelPrefix_ + label);
     GLint previous = 0;
@@ -276,8 +279,9 @@ GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optiona
         glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture(target, divisor), 0);
         drawBuffers.push_back(attachment);
     }
-    if (depth)
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, texture(*depth, divisor), 0);
+    if (hasDepth)
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, texture(depthTarget, divisor),
+                               0);
     if (drawBuffers.empty()) {
         const GLenum none = GL_NONE;
         glDrawBuffers(1, &none);  // glDrawBuffer is desktop-only; this is the same on both APIs
