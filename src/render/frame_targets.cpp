@@ -24,17 +24,14 @@ std::string gibibytes(double bytes) {
     return text;
 }
 
-// What capture tools list a target as: the G-buffer's by role and layout ("G-buffer albedo
-// (compact)"), its depth-stencil also by depth convention; the others by role.
+// What capture tools list a target as: its descriptor's label, after it the layout ("G-buffer
+// albedo (compact)") and the depth convention whose format it has.
 std::string targetLabel(const GBufferLayout& layout, const DepthConvention& depth, Target target) {
-    switch (target) {
-        case Target::DepthStencil:
-            return "G-buffer depth-stencil (" + layout.name + ", " + depth.name + " depth)";
-        case Target::Radiance: return "Radiance";
-        case Target::Reflection: return "Reflection";
-        case Target::Final: return "Final";
-        case Target::SceneDepth: return "SceneDepth copy";
-        default: return std::string("G-buffer ") + targetName(target) + " (" + layout.name + ")";
+    const TargetDescriptor& row = targetDescriptor(target);
+    switch (row.format) {
+        case FormatFrom::LayoutRow: return std::string(row.label) + " (" + layout.name + ")";
+        case FormatFrom::Depth: return std::string(row.label) + " (" + layout.name + ", " + depth.name + " depth)";
+        default: return row.label;
     }
 }
 
