@@ -29,7 +29,7 @@ static std::vector<Access> clearedForStoppedFrame() {
     return {{Target::Radiance, Use::Write}, {Target::Reflection, Use::Write}};
 }
 
-std::vector<Access> ClearPass::accesses(const FrameSetup& frame) const {
+std::vector<Access> ClearPass::declaredAccesses(const FrameSetup& frame) const {
     std::vector<Access> used = clearedTargets(frame, output_);
     if (clearsStoppedFrameTargets(frame))
         for (const Access& access : clearedForStoppedFrame()) used.push_back(access);

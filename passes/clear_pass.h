@@ -13,7 +13,7 @@ public:
     explicit ClearPass(SurfaceOutput output, StoppedFrameTargets stopped = StoppedFrameTargets::Cleared)
         : output_(output), stopped_(stopped) {}
     std::string name() const override { return std::string("ClearPass.") + surfaceOutputName(output_); }
-    std::vector<Access> accesses(const FrameSetup& frame) const override;
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return "clear"; }
     bool clearsWholeTargets(const FrameSetup&) const override { return true; }
 

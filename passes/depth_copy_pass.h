@@ -17,7 +17,7 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "DepthCopyPass.mirrored" : "DepthCopyPass";
     }
-    std::vector<Access> accesses(const FrameSetup&) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override {
         return {{Target::DepthStencil, Use::Sample}, {Target::SceneDepth, Use::Replace},
                 {Target::SceneDepth, Use::DepthWrite}};
     }

@@ -10,7 +10,7 @@ class FloorPass : public Pass {
 public:
     std::string name() const override { return "FloorPass"; }
     // Writes a floor into the G-buffer (and its depth), then reads it back into Final.
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
         std::vector<Access> used;
         for (Target target : surfaceOutputTargets(frame, SurfaceOutput::GBuffer)) used.push_back({target, Use::Write});
         appendDepthStencil(used, {Use::DepthTest, Use::DepthWrite});

@@ -17,7 +17,9 @@ size_t LightTilingPass::listBytes(int width, int height) {
 
 void LightTilingPass::execute(PassContext& context) {
     const FrameTargets& targets = context.targets;
-    size_t bytes = listBytes(targets.width(), targets.height());
+    const int divisor = drawnAtDivisor(context.frame);  // the mirrored lists at the reflection's scale
+    const int width = targets.width(divisor), height = targets.height(divisor);
+    size_t bytes = listBytes(width, height);
     if (!tiles_.name()) tiles_ = gl::createBuffer("tiled lights: per-tile light lists");
     if (bytes > tilesBytes_) {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, tiles_.name());
@@ -32,7 +34,7 @@ void LightTilingPass::execute(PassContext& context) {
     // stale from its render-target cache: the driver workaround flush-before-compute-read.
     if (context.flushBeforeComputeRead) glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     // One invocation per tile, 8x8 tiles a work group (light_tiles.comp).
-    glDispatchCompute(GLuint((tilesAcross(targets.width()) + 7) / 8), GLuint((tilesAcross(targets.height()) + 7) / 8), 1);
+    glDispatchCompute(GLuint((tilesAcross(width) + 7) / 8), GLuint((tilesAcross(height) + 7) / 8), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 

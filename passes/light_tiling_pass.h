@@ -13,7 +13,7 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "LightTilingPass.mirrored" : "LightTilingPass";
     }
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
         std::vector<Access> used = gbufferSamples(frame, DepthRead::FromTarget);
         used.push_back({Buffer::LightList, Use::Sample});
         used.push_back({Buffer::LightTiles, Use::Replace});  // its own tile-list buffer

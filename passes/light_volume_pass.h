@@ -17,7 +17,7 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "LightVolumePass.mirrored" : "LightVolumePass";
     }
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
         // It writes stencil while it tests depth, so a compact layout's depth comes from the copy.
         std::vector<Access> used = gbufferSamples(frame, DepthRead::FromCopy);
         used.push_back({mirroring_ == Mirroring::Mirrored ? Target::Reflection : Target::Radiance, Use::Write});

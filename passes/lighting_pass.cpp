@@ -23,7 +23,7 @@ static bool addsTiledLights(const FrameSetup& frame) {
     return frame.lightMethod == LightMethod::Tiled && !frame.lights.empty();
 }
 
-std::vector<Access> LightingPass::accesses(const FrameSetup& frame) const {
+std::vector<Access> LightingPass::declaredAccesses(const FrameSetup& frame) const {
     std::vector<Access> used = gbufferSamples(frame, depthRead(frame));
     for (Target target : surfaceOutputTargets(frame, SurfaceOutput::Forward, mirroring_))
         used.push_back({target, Use::Write});

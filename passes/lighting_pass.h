@@ -13,7 +13,7 @@ public:
     std::string name() const override {
         return mirroring_ == Mirroring::Mirrored ? "LightingPass.mirrored" : "LightingPass";
     }
-    std::vector<Access> accesses(const FrameSetup& frame) const override;
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override;
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
     bool active(const FrameSetup& frame) const override { return mirroredPassActive(frame, mirroring_); }
     // Whether the depth test keeps the pass to the surfaces (else every pixel is shaded, the sky's

@@ -24,8 +24,64 @@ const char* bufferName(Buffer buffer) {
 
 std::string resourceName(const Resource& resource) {
     if (auto target = std::get_if<Target>(&resource)) return targetName(*target);
+    if (auto scaled = std::get_if<ScaledTarget>(&resource))
+        return std::string(targetName(scaled->target)) + " at 1/" + std::to_string(scaled->divisor);
     if (auto buffer = std::get_if<Buffer>(&resource)) return bufferName(*buffer);
     return "display";  // as the targets are named
+}
+
+bool targetOf(const Resource& resource, Target& target, int& divisor) {
+    if (auto full = std::get_if<Target>(&resource)) {
+        target = *full;
+        divisor = 1;
+        return true;
+    }
+    if (auto scaled = std::get_if<ScaledTarget>(&resource)) {
+        target = scaled->target;
+        divisor = scaled->divisor;
+        return true;
+    }
+    return false;
+}
+
+Resource targetAt(Target target, int divisor) {
+    if (divisor == 1) return target;
+    return ScaledTarget{target, divisor};
+}
+
+std::vector<Access> atScale(std::vector<Access> accesses, int divisor) {
+    for (Access& access : accesses) {
+        Target target;
+        int ignored;
+        if (targetOf(access.resource, target, ignored)) access.resource = targetAt(target, divisor);
+    }
+    return accesses;
+}
+
+static void unbindScaledSamplers(const std::vector<Access>& accesses);
+
+int Pass::drawnAtDivisor(const FrameSetup& frame) const {
+    const bool reduced = frame.reflectionsActive && frame.reflectionDivisor > 1;
+    return reduced && !frameScaleOnly_ && drawsInReflectionTargets() ? frame.reflectionDivisor : 1;
+}
+
+std::vector<Access> Pass::accesses(const FrameSetup& frame) const {
+    const int divisor = drawnAtDivisor(frame);
+    return divisor == 1 ? declaredAccesses(frame) : atScale(declaredAccesses(frame), divisor);
+}
+
+void Pass::run(PassContext& context) {
+    gl::DebugGroup group(name().c_str());
+    const std::vector<Access> declared = accesses(context.frame);
+    bindDeclaredInputs(declared, context);
+    // The frame's data for the targets' size: the reduced reflection's range of the frame block.
+    const bool reduced = drawnAtDivisor(context.frame) > 1 && context.frameBlock != 0;
+    if (reduced)
+        glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, context.frameBlock, context.reflectionFrameRange,
+                          sizeof(FrameData));
+    execute(context);
+    if (reduced) glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, context.frameBlock, 0, sizeof(FrameData));
+    unbindScaledSamplers(declared);
 }
 
 bool isRead(Use use) { return use == Use::Sample || use == Use::DepthTest || use == Use::StencilTest; }
@@ -53,29 +109,32 @@ void Pass::bindDeclaredOutputs(const PassContext& context) const {
 }
 
 namespace {
-std::vector<Target>* boundTargetsRecord = nullptr;
+std::vector<Resource>* boundTargetsRecord = nullptr;
 }
 
-void recordBoundTargets(std::vector<Target>* into) { boundTargetsRecord = into; }
+void recordBoundTargets(std::vector<Resource>* into) { boundTargetsRecord = into; }
 
 void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& accesses) {
     std::vector<Target> colour;
     std::optional<Target> depth;
+    int divisor = 1;  // the scale of what it draws into (a sampled target's may be another)
     for (const Access& access : accesses) {
-        const Target* target = std::get_if<Target>(&access.resource);
-        if (!target || access.use == Use::Sample) continue;
-        if (*target == Target::DepthStencil || *target == Target::SceneDepth) {
-            depth = *target;
-        } else if (std::find(colour.begin(), colour.end(), *target) == colour.end()) {
-            colour.push_back(*target);
+        Target target;
+        int scale;
+        if (access.use == Use::Sample || !targetOf(access.resource, target, scale)) continue;
+        divisor = scale;
+        if (target == Target::DepthStencil || target == Target::SceneDepth) {
+            depth = target;
+        } else if (std::find(colour.begin(), colour.end(), target) == colour.end()) {
+            colour.push_back(target);
         }
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.framebuffer(colour, depth));
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.framebuffer(colour, depth, divisor));
     if (boundTargetsRecord) {
-        boundTargetsRecord->insert(boundTargetsRecord->end(), colour.begin(), colour.end());
-        if (depth) boundTargetsRecord->push_back(*depth);
+        for (Target target : colour) boundTargetsRecord->push_back(targetAt(target, divisor));
+        if (depth) boundTargetsRecord->push_back(targetAt(*depth, divisor));
     }
-    glViewport(0, 0, targets.width(), targets.height());
+    glViewport(0, 0, targets.width(divisor), targets.height(divisor));
 }
 
 void beginWaterBoundedDraw(const PassContext& context) {
@@ -106,22 +165,6 @@ OnlyWhereWaterIsSeen::OnlyWhereWaterIsSeen(const PassContext& context, bool refl
 
 OnlyWhereWaterIsSeen::~OnlyWhereWaterIsSeen() {
     if (conditional_) glEndConditionalRender();
-}
-
-ReflectionContext::ReflectionContext(const PassContext& frame)
-    : reduced_(frame.reflectionTargets != nullptr),
-      context_{reduced_ ? *frame.reflectionTargets : frame.targets, frame.shaders, frame.geometry, frame.frame,
-               frame.vegetation, frame.waterBounds, frame.shadowMaps, frame.waterSeen,
-               frame.reflectionTargets, frame.frameBlock, frame.reflectionFrameRange,
-               frame.drawDepthStencilReads, frame.depthClamp, frame.flushBeforeComputeRead,
-               frame.producedBuffers} {
-    if (reduced_)
-        glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, frame.frameBlock, frame.reflectionFrameRange,
-                          sizeof(FrameData));
-}
-
-ReflectionContext::~ReflectionContext() {
-    if (reduced_) glBindBufferRange(GL_UNIFORM_BUFFER, kFrameBlockBinding, context_.frameBlock, 0, sizeof(FrameData));
 }
 
 void beginMirroredDraw(Mirroring mirroring) {
@@ -156,7 +199,7 @@ SurfacePass::SurfacePass(const std::string& baseName, SurfaceOutput output, Mirr
       name_(variantName(baseName, output, mirroring)),
       step_(baseName + (mirroring == Mirroring::Mirrored ? ".mirrored" : "")) {}
 
-std::vector<Access> SurfacePass::accesses(const FrameSetup& frame) const {
+std::vector<Access> SurfacePass::declaredAccesses(const FrameSetup& frame) const {
     std::vector<Access> used;
     for (Target target : surfaceOutputTargets(frame, output_, mirroring_)) used.push_back({target, Use::Write});
     if (mirroring_ == Mirroring::Direct)
@@ -203,12 +246,20 @@ std::string variantName(const std::string& base, SurfaceOutput output, Mirroring
     return base + "." + surfaceOutputName(output) + (mirroring == Mirroring::Mirrored ? ".mirrored" : "");
 }
 
-// Binds `target` of `targets` on its unit in kInputBindings.
-static void bindSampledTarget(const FrameTargets& targets, Target target) {
+// Binds `target` of `targets` at 1/divisor on its unit in kInputBindings: the row of the target at
+// that scale where the table has one (the reduced Reflection the upsample reads), else the target's
+// own row (the mirrored passes' G-buffer at the reflection's scale, read as at the frame's). A row
+// of a reduced target reads it bilinearly, clamped at its edges (upsampled): by the targets' sampler
+// object, which stays with the unit, not with the texture (pooled memory another target takes next).
+static void bindSampledTarget(const FrameTargets& targets, Target target, int divisor = 1) {
+    const Resource scaled = targetAt(target, divisor);
+    const bool ownRow = std::any_of(kInputBindings.begin(), kInputBindings.end(),
+                                    [&](const InputBinding& row) { return row.resource == scaled; });
     for (const InputBinding& row : kInputBindings) {
-        if (row.resource != Resource(target)) continue;
+        if (row.resource != (ownRow ? scaled : Resource(target))) continue;
         glActiveTexture(GLenum(GL_TEXTURE0 + row.binding));
-        glBindTexture(GL_TEXTURE_2D, targets.texture(target));
+        glBindTexture(GL_TEXTURE_2D, targets.texture(target, divisor));
+        if (ownRow && divisor > 1) glBindSampler(GLuint(row.binding), targets.upsamplingSampler());
         // The stencil view switches the target to stencil sampling; what samples it reads depth.
         if (target == Target::DepthStencil)
             glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_DEPTH_COMPONENT);
@@ -216,11 +267,22 @@ static void bindSampledTarget(const FrameTargets& targets, Target target) {
     glActiveTexture(GL_TEXTURE0);
 }
 
+// The units of the reduced targets `accesses` sampled, back to their textures' own sampling.
+static void unbindScaledSamplers(const std::vector<Access>& accesses) {
+    for (const Access& access : accesses) {
+        if (access.use != Use::Sample || !std::holds_alternative<ScaledTarget>(access.resource)) continue;
+        for (const InputBinding& row : kInputBindings)
+            if (row.resource == access.resource) glBindSampler(GLuint(row.binding), 0);
+    }
+}
+
 void bindDeclaredInputs(const std::vector<Access>& accesses, const PassContext& context) {
     for (const Access& access : accesses) {
         if (access.use != Use::Sample) continue;
-        if (const Target* target = std::get_if<Target>(&access.resource)) {
-            bindSampledTarget(context.targets, *target);
+        Target target;
+        int divisor;
+        if (targetOf(access.resource, target, divisor)) {
+            bindSampledTarget(context.targets, target, divisor);
             continue;
         }
         for (const InputBinding& row : kInputBindings) {

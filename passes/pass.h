@@ -33,12 +33,10 @@ struct PassContext {
     // An occlusion query (GL_ANY_SAMPLES_PASSED) around WaterMaskPass's draw when the frame bounds
     // its reflection (frame.waterBounded), else 0: the reflection's passes render conditionally on it.
     GLuint waterSeen = 0;
-    // The reflection drawn at a reduced resolution (frame.reflectionDivisor > 1): its own smaller
-    // targets, and where in the frame block (frameBlock, one buffer) its range lies: the frame's
-    // data for their size (screen, targetScale), bound while its passes run, the frame's range (at
-    // 0) bound back after. Null and 0 at full resolution, and outside the frame (views, fills and
-    // probes use the frame's targets).
-    const FrameTargets* reflectionTargets = nullptr;
+    // The frame block (one buffer) and where in it the reduced reflection's range lies: the frame's
+    // data for the reflection's targets at 1/frame.reflectionDivisor (screen, targetScale), bound
+    // while a pass drawn at that scale runs (Pass::run), the frame's range (at 0) bound back after.
+    // 0 and 0 at full resolution, and outside the frame (views, fills and probes).
     GLuint frameBlock = 0;
     GLintptr reflectionFrameRange = 0;
     // Whether depth and stencil must be drawn into colour targets to be read back (no glReadPixels
@@ -54,23 +52,6 @@ struct PassContext {
     // The buffers passes of this frame made that they own (Pass::ownBuffer: the tile lists), the
     // last maker's: where a later pass that samples one finds it. Pipeline::run fills it in.
     std::vector<std::pair<Buffer, GLuint>> producedBuffers{};
-};
-
-// The context the reflection's passes draw with, for the scope's lifetime: at a reduced
-// resolution its targets and its range of the frame block (bound here, the frame's range bound
-// back at the end);
-// otherwise the frame's context as it is.
-class ReflectionContext {
-public:
-    explicit ReflectionContext(const PassContext& frame);
-    ~ReflectionContext();
-    ReflectionContext(const ReflectionContext&) = delete;
-    ReflectionContext& operator=(const ReflectionContext&) = delete;
-    PassContext& get() { return context_; }
-    bool reduced() const { return reduced_; }
-private:
-    bool reduced_;
-    PassContext context_;
 };
 
 // How a pass touches a resource. Write draws into part of it (blending or depth-tested draws keep
@@ -95,8 +76,16 @@ public:
     virtual ~Pass() = default;
     virtual std::string name() const = 0;
     // What the pass reads and writes in the frame it is given: the only truth about what it
-    // touches. Framebuffers, culling and the frame's validation are derived from it.
-    virtual std::vector<Access> accesses(const FrameSetup& frame) const = 0;
+    // touches. Framebuffers, culling and the frame's validation are derived from it. Its own
+    // declaration (declaredAccesses) at the scale it draws at (drawnAtDivisor): the one place
+    // where the reflection's passes' targets become the reduced reflection's.
+    std::vector<Access> accesses(const FrameSetup& frame) const;
+    // 1/divisor of the frame's size is where the pass draws: frame.reflectionDivisor for the frame's
+    // reflection passes where the reflection is drawn reduced (drawsInReflectionTargets), else 1.
+    int drawnAtDivisor(const FrameSetup& frame) const;
+    // For the passes of the views' fills: they draw the mirrored scene into the frame's own
+    // targets, whatever the frame's reflection resolution (frame/frame_assembly.h).
+    void drawAtFrameScale() { frameScaleOnly_ = true; }
     std::vector<Resource> reads(const FrameSetup& frame) const;
     std::vector<Resource> writes(const FrameSetup& frame) const;
     bool writes(const FrameSetup& frame, Target target) const;
@@ -123,18 +112,20 @@ public:
     // tile lists), else 0: what the check's pass-by-pass search reads (check/check_buffers.h).
     virtual GLuint ownBuffer(Buffer) const { return 0; }
 
-    // Binds what the pass declares it samples (bindDeclaredInputs), then executes it.
-    void run(PassContext& context) {
-        gl::DebugGroup group(name().c_str());
-        bindDeclaredInputs(accesses(context.frame), context);
-        execute(context);
-    }
+    // Binds what the pass declares it samples (bindDeclaredInputs) and, drawn at a reduced scale,
+    // the frame block's range of that scale; then executes it.
+    void run(PassContext& context);
 
 protected:
+    // What the pass reads and writes, its targets named at the frame's size (accesses scales them).
+    virtual std::vector<Access> declaredAccesses(const FrameSetup& frame) const = 0;
     virtual void execute(PassContext& context) = 0;
     // Binds the framebuffer of the pass's declared writes (and the depth-stencil target where it
     // tests or writes depth or stencil) and sets the viewport to the whole target.
     void bindDeclaredOutputs(const PassContext& context) const;
+
+private:
+    bool frameScaleOnly_ = false;
 };
 
 // The stencil value each kind of surface writes, shown by the stencil debug view.
@@ -146,7 +137,7 @@ class SurfacePass : public Pass {
 public:
     SurfacePass(const std::string& baseName, SurfaceOutput output, Mirroring mirroring);
     std::string name() const override { return name_; }
-    std::vector<Access> accesses(const FrameSetup& frame) const override;
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override;
     bool active(const FrameSetup& frame) const override;
     std::string sceneStep() const override { return step_; }
     bool reflectionWork() const override { return mirroring_ == Mirroring::Mirrored; }
@@ -169,11 +160,13 @@ private:
 };
 
 // Binds the framebuffer of `accesses` (its writes in order, the depth-stencil target where it is
-// tested or written) and sets the viewport to the whole target.
+// tested or written; targets of one scale) and sets the viewport to the whole target at that scale.
 void bindFramebufferOf(const FrameTargets& targets, const std::vector<Access>& accesses);
+// The accesses with every target at 1/divisor of the frame (buffers as they are).
+std::vector<Access> atScale(std::vector<Access> accesses, int divisor);
 // While `into` is set, bindFramebufferOf adds each target it attaches there: the frame's
 // validation (frame/frame_graph.h) holds what a pass bound against what it declared.
-void recordBoundTargets(std::vector<Target>* into);
+void recordBoundTargets(std::vector<Resource>* into);
 // Whether a pass shading into `output` writes Final too this frame (the fused tone map).
 bool toneMapFusedInto(const FrameSetup& frame, SurfaceOutput output, Mirroring mirroring);
 // Mirrored draws pass the stencil test only on water pixels, and flip the front face (a mirror

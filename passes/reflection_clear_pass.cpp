@@ -4,6 +4,8 @@
 // drawn without a depth test.
 #include "passes/reflection_clear_pass.h"
 
+#include <algorithm>
+
 #include "passes/water_mask_pass.h"
 
 namespace oasis {
@@ -13,9 +15,10 @@ namespace {
 // seen or hidden: the frame's depth is not at this size to test against, and the bilinear
 // upsample's taps beside a shore then land on mirrored scene too, not on the clear colour.
 // Its Reflection is cleared as well, so taps just outside the water read zero, never stale memory.
-void markReducedWater(PassContext& reflection) {
+void markReducedWater(PassContext& reflection, int divisor) {
     const FrameTargets& targets = reflection.targets;
-    bindFramebufferOf(targets, {{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilWrite}});
+    bindFramebufferOf(targets,
+                      atScale({{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilWrite}}, divisor));
     const GLfloat nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearBufferfv(GL_COLOR, 0, nothing);
     glDepthMask(GL_TRUE);
@@ -42,11 +45,16 @@ static std::vector<Access> waterReset(const FrameSetup& frame, SurfaceOutput out
 // mirrored passes (a surface, else the mirrored sky) or the upsample; the views and the probe
 // show it only there (black outside the water or with reflections off), and a frame stopped early
 // has it cleared by ClearPass.
-std::vector<Access> ReflectionClearPass::accesses(const FrameSetup& frame) const {
+std::vector<Access> ReflectionClearPass::declaredAccesses(const FrameSetup& frame) const {
     if (!frame.reflectionsActive) return {};
     std::vector<Access> used = waterReset(frame, output_);
-    // The reduced reflection's own Reflection, cleared whole by markReducedWater.
-    if (runsIn_ == RunsIn::Frame && frame.reflectionDivisor > 1) used.insert(used.begin(), {Target::Reflection, Use::Write});
+    if (runsIn_ != RunsIn::Frame || frame.reflectionDivisor == 1) return used;
+    // The reduced reflection's own targets (accesses scales them), made here by markReducedWater:
+    // its Reflection and depth-stencil cleared whole, the water marked in its stencil, which the
+    // reset then tests (its own write, no earlier pass's).
+    used.erase(std::remove_if(used.begin(), used.end(), [](const Access& access) { return isRead(access.use); }),
+               used.end());
+    used.insert(used.begin(), {{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::Replace}});
     return used;
 }
 
@@ -55,12 +63,12 @@ bool ReflectionClearPass::active(const FrameSetup& frame) const { return frame.r
 void ReflectionClearPass::execute(PassContext& context) {
     // Only where water is seen: with no water in view nothing is touched at all.
     OnlyWhereWaterIsSeen onlyWithWater(context, true);
-    ReflectionContext reflection(context);
-    PassContext& mirrored = reflection.get();
-    if (reflection.reduced()) markReducedWater(mirrored);
-    std::vector<Access> reset = waterReset(mirrored.frame, output_);
+    PassContext& mirrored = context;  // at the reflection's scale: Pass::run bound its frame data
+    const int divisor = drawnAtDivisor(context.frame);
+    if (divisor > 1) markReducedWater(mirrored, divisor);
+    std::vector<Access> reset = atScale(waterReset(mirrored.frame, output_), divisor);
     bindFramebufferOf(mirrored.targets, reset);
-    bool writeGBuffer = reset.front().resource != Resource(Target::DepthStencil);
+    bool writeGBuffer = reset.front().resource != targetAt(Target::DepthStencil, divisor);
     glColorMask(writeGBuffer, writeGBuffer, writeGBuffer, writeGBuffer);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);

@@ -16,7 +16,7 @@ public:
     explicit ReflectionClearPass(SurfaceOutput output, RunsIn runsIn = RunsIn::Frame)
         : output_(output), runsIn_(runsIn) {}
     std::string name() const override { return std::string("ReflectionClearPass.") + surfaceOutputName(output_); }
-    std::vector<Access> accesses(const FrameSetup& frame) const override;
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override;
     bool active(const FrameSetup& frame) const override;
     // Only the reduced reflection's own targets are cleared whole (markReducedWater); the frame's
     // are reset inside the water alone, by a stencil-masked draw.

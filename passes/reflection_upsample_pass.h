@@ -10,10 +10,13 @@ namespace oasis {
 class ReflectionUpsamplePass : public Pass {
 public:
     std::string name() const override { return "ReflectionUpsamplePass"; }
-    // The reduced reflection's own Reflection is sampled (not a frame target); the stencil keeps
+    // The reduced reflection's Reflection (the target at its scale) is sampled; the stencil keeps
     // the draw inside the water.
-    std::vector<Access> accesses(const FrameSetup&) const override {
-        return {{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilTest}};
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
+        std::vector<Access> used{{Target::Reflection, Use::Write}, {Target::DepthStencil, Use::StencilTest}};
+        if (frame.reflectionDivisor > 1)
+            used.insert(used.begin(), {ScaledTarget{Target::Reflection, frame.reflectionDivisor}, Use::Sample});
+        return used;
     }
     bool active(const FrameSetup& frame) const override {
         return frame.reflectionsActive && frame.reflectionDivisor > 1;

@@ -9,7 +9,7 @@ namespace oasis {
 class ShadowPass : public Pass {
 public:
     std::string name() const override { return "ShadowPass"; }
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
         std::vector<Access> used = {{Buffer::TerrainHeights, Use::Sample}, {Buffer::ShadowMaps, Use::Replace}};  // no frame target
         if (frame.vegetationEnabled) used.push_back({Buffer::PlantInstances, Use::Sample});  // the plants cast too
         return used;

@@ -18,7 +18,7 @@ public:
     }
     // Where no surface was drawn (the depth test against the far plane); Final too where the tone
     // map is fused into the direct sky; mirrored, inside the water only.
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
         std::vector<Access> used;
         for (Target target : surfaceOutputTargets(frame, SurfaceOutput::Forward, mirroring_))
             used.push_back({target, Use::Write});

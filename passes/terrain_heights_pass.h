@@ -10,7 +10,7 @@ namespace oasis {
 class TerrainHeightsPass : public Pass {
 public:
     std::string name() const override { return "TerrainHeightsPass"; }
-    std::vector<Access> accesses(const FrameSetup&) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override {
         return {{Buffer::TerrainHeights, Use::Replace}};  // the grid's heights buffer, no frame target
     }
 

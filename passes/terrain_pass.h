@@ -10,8 +10,8 @@ public:
     TerrainPass(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct)
         : SurfacePass("TerrainPass", output, mirroring) {}
     // The grid's vertices take their heights from TerrainHeightsPass's buffer.
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
-        std::vector<Access> used = SurfacePass::accesses(frame);
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
+        std::vector<Access> used = SurfacePass::declaredAccesses(frame);
         used.push_back({Buffer::TerrainHeights, Use::Sample});
         return used;
     }

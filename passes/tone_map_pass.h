@@ -9,7 +9,7 @@ namespace oasis {
 class ToneMapPass : public Pass {
 public:
     std::string name() const override { return "ToneMapPass"; }
-    std::vector<Access> accesses(const FrameSetup&) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override {
         return {{Target::Radiance, Use::Sample}, {Target::Final, Use::Write}};
     }
     bool active(const FrameSetup& frame) const override { return !frame.toneMapFused; }

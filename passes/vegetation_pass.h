@@ -11,8 +11,8 @@ public:
     VegetationPass(SurfaceOutput output, Mirroring mirroring = Mirroring::Direct)
         : SurfacePass("VegetationPass", output, mirroring) {}
     // The billboards are drawn from the instances the renderer uploaded for this frame.
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
-        std::vector<Access> used = SurfacePass::accesses(frame);
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
+        std::vector<Access> used = SurfacePass::declaredAccesses(frame);
         used.push_back({Buffer::PlantInstances, Use::Sample});
         return used;
     }

@@ -15,7 +15,7 @@ public:
     std::string name() const override { return ontoRadiance_ ? "WaterCompositePass.radiance" : "WaterCompositePass"; }
     // Fused, it blends Radiance (sampled) and tone-maps the water's pixels into Final; else it
     // blends onto Radiance. Either way it leaves the water surface's depth.
-    std::vector<Access> accesses(const FrameSetup& frame) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override {
         // The reflection only where it was drawn (water_composite.frag's reflectionsActive()).
         std::vector<Access> used;
         if (frame.reflectionsActive) used.push_back({Target::Reflection, Use::Sample});

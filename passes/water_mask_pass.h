@@ -27,7 +27,7 @@ public:
     std::string name() const override { return "WaterMaskPass"; }
     // Depth-tested against the surfaces; marks the water in the stencil (and writes its depth
     // unless kept).
-    std::vector<Access> accesses(const FrameSetup&) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override {
         std::vector<Access> used;
         appendDepthStencil(used, {Use::DepthTest, Use::StencilWrite});
         if (depth_ == WaterDepth::Written) appendDepthStencil(used, {Use::DepthWrite});

@@ -319,15 +319,14 @@ int runRenderCommand(const Options& options) {
                         options.pipeline == PipelineKind::Forward ? "deferred" : "forward");
             std::printf("%s", frameGraphText(renderer.lastFrame().graph()).c_str());
             const LastFrame frame = renderer.lastFrame();
-            std::printf("%s", targetLifetimesText(frame.graph(), frame.targetLifetimes, renderer.targets()).c_str());
-            if (frame.reflectionTargets) {  // drawn reduced: the reflection's own, smaller targets
-                // Those it holds: its plan also names what lives past the frame, which it never makes.
-                std::vector<TargetLifetime> held;
-                for (const TargetLifetime& lifetime : frame.reflectionTargetLifetimes)
-                    if (frame.reflectionTargets->heldTexture(lifetime.target) != 0) held.push_back(lifetime);
-                std::printf("# the reflection's own targets, at 1/%d of the frame:\n", frame.setup.reflectionDivisor);
-                std::printf("%s", targetLifetimesText(frame.graph(), held, *frame.reflectionTargets).c_str());
+            std::printf("%s", targetLifetimesText(frame.graph(), frame.targetLifetimes, renderer.targets(), 1).c_str());
+            if (const int divisor = frame.setup.reflectionDivisor; divisor > 1 && frame.setup.reflectionsActive) {
+                // Drawn reduced: the reflection's own targets, the same targets' resources at a scale.
+                std::printf("# the reflection's own targets, at 1/%d of the frame:\n", divisor);
+                std::printf("%s",
+                            targetLifetimesText(frame.graph(), frame.targetLifetimes, renderer.targets(), divisor).c_str());
             }
+            std::printf("%s", heldTargetMemoryText(renderer.targets()).c_str());
             return 0;
         }
         std::string error;

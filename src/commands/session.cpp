@@ -307,9 +307,11 @@ std::string describeVegetation(const Renderer& renderer) {
 
 std::string describeReflectionBounds(const Renderer& renderer, const SceneSettings& scene) {
     std::string resolution;
-    if (const FrameTargets* reduced = renderer.lastFrame().reflectionTargets; reduced && renderer.lastFrame().setup.reflectionDivisor > 1)
-        resolution = "; drawn at " + std::string(reflectionResolutionName(renderer.lastFrame().setup.reflectionDivisor)) +
-                     " resolution (" + std::to_string(reduced->width()) + "x" + std::to_string(reduced->height()) +
+    if (const int divisor = renderer.lastFrame().setup.reflectionDivisor;
+        divisor > 1 && renderer.lastFrame().setup.reflectionsActive)
+        resolution = "; drawn at " + std::string(reflectionResolutionName(divisor)) + " resolution (" +
+                     std::to_string(renderer.targets().width(divisor)) + "x" +
+                     std::to_string(renderer.targets().height(divisor)) +
                      "), upsampled bilinearly at the water";
     if (renderer.paths().waterBoundsAvailable && !scene.water.reflectionBounds)
         return "reflection passes: whole screen, stencil-masked (--reflection-bounds off)" + resolution;

@@ -68,11 +68,9 @@ PassList assembleFrameOf(SurfaceOutput surfaces) {
     return list;
 }
 
-}  // namespace
-
-PassList assembleFrame(FrameOutput output) {
-    if (output == FrameOutput::ForwardFrame) return assembleFrameOf(SurfaceOutput::Forward);
-    if (output == FrameOutput::DeferredFrame) return assembleFrameOf(SurfaceOutput::GBuffer);
+// The fills' passes, which draw into the frame's own targets (the mirrored scene too, whatever
+// the frame's reflection resolution: Pass::drawAtFrameScale).
+PassList assembleFill(FrameOutput output) {
     PassList list;
     if (output == FrameOutput::StoppedFrameFill) {
         // Only the steps the forward frame ran; the depth copy follows them where the deferred
@@ -93,6 +91,16 @@ PassList assembleFrame(FrameOutput output) {
     add<WaterMaskPass>(list, WaterDepth::Written);
     addSceneSteps(list, SurfaceOutput::GBuffer, Mirroring::Mirrored, ClearPass::StoppedFrameTargets::Kept,
                   ReflectionClearPass::RunsIn::ViewFill);
+    return list;
+}
+
+}  // namespace
+
+PassList assembleFrame(FrameOutput output) {
+    if (output == FrameOutput::ForwardFrame) return assembleFrameOf(SurfaceOutput::Forward);
+    if (output == FrameOutput::DeferredFrame) return assembleFrameOf(SurfaceOutput::GBuffer);
+    PassList list = assembleFill(output);
+    for (auto& pass : list) pass->drawAtFrameScale();
     return list;
 }
 

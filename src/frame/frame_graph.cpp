@@ -236,6 +236,16 @@ std::string frameGraphJson(const FrameGraph& graph) {
     return json + (graph.steps.empty() ? "]" : "\n  ]");
 }
 
+std::vector<Resource> targetsHolding(const FrameTargets& targets, GLint texture) {
+    std::vector<Resource> found;
+    if (texture == 0) return found;
+    for (int divisor : {1, 2, 4})
+        for (int t = 0; t < int(Target::Count); ++t)
+            if (GLint(targets.heldTexture(Target(t), divisor)) == texture)
+                found.push_back(targetAt(Target(t), divisor));
+    return found;
+}
+
 bool frameValidation() { return gValidation; }
 void setFrameValidation(bool on) { gValidation = on; }
 
@@ -244,25 +254,15 @@ std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) 
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     if (framebuffer == 0) return {};
     std::vector<Access> declared = pass.accesses(context.frame);
-    auto declaresAttached = [&](Target target, bool depth) {
+    auto declaresAttached = [&](const Resource& target, bool depth) {
         return std::any_of(declared.begin(), declared.end(), [&](const Access& access) {
-            const Target* declaredTarget = std::get_if<Target>(&access.resource);
-            if (!declaredTarget || *declaredTarget != target) return false;
+            if (access.resource != target) return false;
             return depth ? access.use != Use::Sample : isWrite(access.use);
         });
     };
-    // What a texture attached there is: the targets of the frame's (or of the reduced reflection's)
+    // What a texture attached there is: the targets (at any scale: the reduced reflection's too)
     // that hold it now (several where the plan aliases them); none for the shadow maps' own.
-    auto heldBy = [&](GLint texture) {
-        std::vector<Target> found;
-        for (const FrameTargets* targets : {&context.targets, context.reflectionTargets}) {
-            if (!targets) continue;
-            for (int t = 0; t < int(Target::Count); ++t)
-                if (targets->heldTexture(Target(t)) != 0 && GLint(targets->heldTexture(Target(t))) == texture)
-                    found.push_back(Target(t));
-        }
-        return found;
-    };
+    auto heldBy = [&](GLint texture) { return targetsHolding(context.targets, texture); };
     GLint maxAttachments = 0;
     glGetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &maxAttachments);
     std::string problems;
@@ -273,9 +273,10 @@ std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) 
         if (type != GL_TEXTURE) return;
         glGetFramebufferAttachmentParameteriv(GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
                                               &texture);
-        std::vector<Target> held = heldBy(texture);
-        if (!held.empty() && std::none_of(held.begin(), held.end(), [&](Target t) { return declaresAttached(t, depth); }))
-            problems += (problems.empty() ? "" : "; ") + pass.name() + " draws into " + targetName(held.front()) +
+        std::vector<Resource> held = heldBy(texture);
+        if (!held.empty() &&
+            std::none_of(held.begin(), held.end(), [&](const Resource& t) { return declaresAttached(t, depth); }))
+            problems += (problems.empty() ? "" : "; ") + pass.name() + " draws into " + resourceName(held.front()) +
                         ", which it does not declare";
     };
     for (GLint k = 0; k < maxAttachments; ++k) check(GLenum(GL_COLOR_ATTACHMENT0 + k), false);
@@ -283,25 +284,26 @@ std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context) 
     return problems;
 }
 
-std::string auditBoundTargets(const Pass& pass, const PassContext& context, const std::vector<Target>& bound) {
+std::string auditBoundTargets(const Pass& pass, const PassContext& context, const std::vector<Resource>& bound) {
     std::vector<Access> declared = pass.accesses(context.frame);
-    auto declares = [&](Target target, bool (*use)(Use)) {
-        return std::any_of(declared.begin(), declared.end(), [&](const Access& access) {
-            const Target* declaredTarget = std::get_if<Target>(&access.resource);
-            return declaredTarget && *declaredTarget == target && use(access.use);
-        });
+    auto declares = [&](const Resource& target, bool (*use)(Use)) {
+        return std::any_of(declared.begin(), declared.end(),
+                           [&](const Access& access) { return access.resource == target && use(access.use); });
     };
     auto attaches = [](Use use) { return use != Use::Sample; };
     std::string problems;
     auto problem = [&](const std::string& text) { problems += (problems.empty() ? "" : "; ") + text; };
-    for (Target target : bound)
+    for (const Resource& target : bound)
         if (!declares(target, attaches))
-            problem(pass.name() + " binds " + targetName(target) + " for drawing, which it does not declare");
+            problem(pass.name() + " binds " + resourceName(target) + " for drawing, which it does not declare");
     for (const Access& access : declared) {
-        const Target* target = std::get_if<Target>(&access.resource);
-        if (!target || !isWrite(access.use) || !context.targets.layout().stores(*target)) continue;
-        if (std::find(bound.begin(), bound.end(), *target) == bound.end())
-            problem(pass.name() + " declares it writes " + targetName(*target) + " but never binds it");
+        Target target;
+        int divisor;
+        if (!targetOf(access.resource, target, divisor) || !isWrite(access.use) ||
+            !context.targets.layout().stores(target))
+            continue;
+        if (std::find(bound.begin(), bound.end(), access.resource) == bound.end())
+            problem(pass.name() + " declares it writes " + resourceName(access.resource) + " but never binds it");
     }
     return problems;
 }

@@ -83,10 +83,12 @@ void setFrameValidation(bool on);
 // The audit after a pass ran: every target attached to the bound draw framebuffer must be one the
 // pass declared it writes or tests. Returns what it found wrong, "" when nothing.
 std::string auditBoundFramebuffer(const Pass& pass, const PassContext& context);
+// The targets, at any scale, that hold `texture` now (several where the plan aliases them).
+std::vector<Resource> targetsHolding(const FrameTargets& targets, GLint texture);
 // The audit of what the pass bound while it ran (recordBoundTargets, passes/pass.h): every target
 // it bound is declared (written, or depth and stencil tested), and every target it declares it
 // writes was bound (one the layout stores), so a declaration cannot name a write that never
 // happens. Returns what it found wrong, "" when nothing.
-std::string auditBoundTargets(const Pass& pass, const PassContext& context, const std::vector<Target>& bound);
+std::string auditBoundTargets(const Pass& pass, const PassContext& context, const std::vector<Resource>& bound);
 
 }  // namespace oasis

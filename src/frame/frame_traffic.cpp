@@ -31,9 +31,12 @@ bool pipelineStatistics() {
 // are not per pixel: left out, docs/traffic.md).
 double declaredBytes(const FrameTargets& targets, const std::vector<Resource>& declared) {
     double bytes = 0.0;
-    for (const Resource& resource : declared)
-        if (const Target* target = std::get_if<Target>(&resource))
-            bytes += targetFormat(targets.layout(), targets.depth(), *target).bytesPerPixel;
+    for (const Resource& resource : declared) {
+        Target target;
+        int divisor;  // per fragment: a target at a reduced scale has its bytes per texel too
+        if (targetOf(resource, target, divisor))
+            bytes += targetFormat(targets.layout(), targets.depth(), target).bytesPerPixel;
+    }
     return bytes;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "frame/frame_graph.h"
 #include "render/texture_units.h"
 
 namespace oasis {
@@ -68,8 +69,8 @@ InputAudit::InputAudit(const Pass& pass, const PassContext& context)
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
     // Frame targets the pass does not sample, left on any unit by an earlier pass or a view.
     for (int unit = 0; unit < kTextureUnitCount; ++unit) {
-        std::vector<Target> held = targetsHolding(boundTexture(GL_TEXTURE_2D, unit));
-        if (!held.empty() && std::none_of(held.begin(), held.end(), [&](Target t) { return samples(t); }))
+        std::vector<Resource> held = targetsHolding(context_.targets, boundTexture(GL_TEXTURE_2D, unit));
+        if (!held.empty() && std::none_of(held.begin(), held.end(), [&](const Resource& t) { return samples(t); }))
             glBindTexture(GL_TEXTURE_2D, 0);
     }
     // The shadow maps and buffers bound for the whole frame, where the pass does not touch them.
@@ -120,8 +121,8 @@ std::string InputAudit::undeclaredReads() const {
     GLint active = GL_TEXTURE0;
     glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
     for (int unit = 0; unit < kTextureUnitCount; ++unit) {
-        std::vector<Target> held = targetsHolding(boundTexture(GL_TEXTURE_2D, unit));
-        if (!held.empty() && std::none_of(held.begin(), held.end(), [&](Target t) { return samples(t); }))
+        std::vector<Resource> held = targetsHolding(context_.targets, boundTexture(GL_TEXTURE_2D, unit));
+        if (!held.empty() && std::none_of(held.begin(), held.end(), [&](const Resource& t) { return samples(t); }))
             problem("samples", held.front(), GL_TEXTURE_2D, unit);
     }
     for (const InputBinding& row : kInputBindings)
@@ -135,25 +136,14 @@ std::string InputAudit::undeclaredReads() const {
     return problems;
 }
 
-bool InputAudit::samples(Target target) const {
-    return std::any_of(declared_.begin(), declared_.end(), [&](const Access& access) {
-        return access.use == Use::Sample && access.resource == Resource(target);
-    });
+bool InputAudit::samples(const Resource& target) const {
+    return std::any_of(declared_.begin(), declared_.end(),
+                       [&](const Access& access) { return access.use == Use::Sample && access.resource == target; });
 }
 
 bool InputAudit::touches(const Resource& resource) const {
     return std::any_of(declared_.begin(), declared_.end(),
                        [&](const Access& access) { return access.resource == resource; });
-}
-
-// The frame's targets (the context's: the reduced reflection's for its passes) that hold `texture`
-// now: several where the plan aliases them.
-std::vector<Target> InputAudit::targetsHolding(GLint texture) const {
-    std::vector<Target> found;
-    if (texture == 0) return found;
-    for (int t = 0; t < int(Target::Count); ++t)
-        if (GLint(context_.targets.heldTexture(Target(t))) == texture) found.push_back(Target(t));
-    return found;
 }
 
 }  // namespace oasis

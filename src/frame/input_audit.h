@@ -31,9 +31,8 @@ private:
         GLint64 start, size;
         Resource resource;
     };
-    bool samples(Target target) const;
+    bool samples(const Resource& target) const;
     bool touches(const Resource& resource) const;
-    std::vector<Target> targetsHolding(GLint texture) const;
 
     const Pass& pass_;
     const PassContext& context_;

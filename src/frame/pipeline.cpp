@@ -43,12 +43,7 @@ void Pipeline::run(PassContext& context, const FrameGraph& frameGraph,
         if (frameGraph.steps[k].cut) break;
         if (!frameGraph.steps[k].runs) continue;
         OnlyWhereWaterIsSeen onlyWithWater(context, pass->reflectionWork());
-        if (pass->reflectionWork()) {
-            ReflectionContext reflection(context);  // the reflection's targets, maybe reduced
-            runValidated(*pass, reflection.get());
-        } else {
-            runValidated(*pass, context);
-        }
+        runValidated(*pass, context);  // at its declared scale (the reflection's maybe reduced)
         recordProducedBuffers(*pass, context);
         if (afterEach) afterEach(*pass);
     }
@@ -89,7 +84,7 @@ void runValidated(Pass& pass, PassContext& context) {
     // that drew without binding its outputs draws nowhere, which the pictures show). Likewise no
     // undeclared input left bound where it reads (InputAudit).
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    std::vector<Target> bound;
+    std::vector<Resource> bound;
     std::string problem;
     {
         InputAudit inputs(pass, context);

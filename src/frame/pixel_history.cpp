@@ -22,25 +22,25 @@ struct PixelPlace {
     int glX, glY;  // in the frame's targets, bottom row 0
 };
 
-// Where a pass's writes land for this pixel: the frame's targets, or the reduced reflection's.
-const FrameTargets& targetsOf(const Renderer& renderer, const Pass& pass, PixelPlace& place) {
-    const FrameTargets* reduced = renderer.lastFrame().reflectionTargets;
-    if (pass.drawsInReflectionTargets() && reduced && renderer.lastFrame().setup.reflectionDivisor > 1) {
-        int divisor = renderer.lastFrame().setup.reflectionDivisor;
-        place = {place.glX / divisor, place.glY / divisor};
-        return *reduced;
-    }
-    return renderer.targets();
+// Where a pass draws this pixel: at the scale it drew at (the reduced reflection's: 1/divisor).
+PixelPlace placeOf(const Renderer& renderer, const Pass& pass, PixelPlace place) {
+    const int divisor = pass.drawnAtDivisor(renderer.lastFrame().setup);
+    return {place.glX / divisor, place.glY / divisor};
 }
 
+// What a pass wrote at this pixel: its targets at the scale it drew at (the reduced reflection's
+// at 1/divisor, the pixel's texel there).
 std::vector<StoredTexel> readWrites(Renderer& renderer, const Pass& pass, PixelPlace place) {
-    const FrameTargets& targets = targetsOf(renderer, pass, place);
+    const FrameTargets& targets = renderer.targets();
     std::vector<StoredTexel> texels;
     for (const Resource& resource : pass.writes(renderer.lastFrame().setup)) {
-        const Target* target = std::get_if<Target>(&resource);  // buffers have no pixels
-        if (target && (targets.layout().stores(*target) || *target == Target::DepthStencil || *target == Target::SceneDepth))
-            texels.push_back(readStoredTexel(renderer.parts().shaders, targets, *target, place.glX, place.glY,
-                                            !renderer.paths().capabilities.depthStencilRead.available));
+        Target target;
+        int divisor;
+        if (!targetOf(resource, target, divisor)) continue;  // buffers have no pixels
+        if (targets.layout().stores(target) || target == Target::DepthStencil || target == Target::SceneDepth)
+            texels.push_back(readStoredTexel(renderer.parts().shaders, targets, target, place.glX / divisor,
+                                            place.glY / divisor,
+                                            !renderer.paths().capabilities.depthStencilRead.available, divisor));
     }
     return texels;
 }
@@ -74,9 +74,11 @@ std::vector<BufferAtPixel> buffersAtPixelOf(const Renderer& renderer, const Pass
     std::vector<BufferAtPixel> buffers;
     for (const Resource& resource : pass.writes(renderer.lastFrame().setup)) {
         if (resource != Resource(Buffer::LightTiles)) continue;
-        const FrameTargets& read = targetsOf(renderer, pass, pixel);
+        const int divisor = pass.drawnAtDivisor(renderer.lastFrame().setup);
+        const PixelPlace place = placeOf(renderer, pass, pixel);
         std::optional<glm::vec3> surfaceHere = pass.reflectionWork() ? std::nullopt : surface;
-        if (auto tile = tileAtPixel(pass, pixel.glX, pixel.glY, read.width(), surfaceHere)) buffers.push_back(*tile);
+        if (auto tile = tileAtPixel(pass, place.glX, place.glY, renderer.targets().width(divisor), surfaceHere))
+            buffers.push_back(*tile);
     }
     return buffers;
 }
@@ -161,8 +163,7 @@ std::vector<PassAtPixel> pixelHistory(Renderer& renderer, const SceneSettings& s
         bool active = false;
         const Pass* previous = k > 0 ? ran[k - 1] : nullptr;
         auto begin = [&]() {
-            PixelPlace place = pixel;
-            targetsOf(renderer, *pass, place);
+            const PixelPlace place = placeOf(renderer, *pass, pixel);
             glEnable(GL_SCISSOR_TEST);
             glScissor(place.glX, place.glY, 1, 1);
             glBeginQuery(GL_ANY_SAMPLES_PASSED, query.name());

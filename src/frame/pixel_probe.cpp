@@ -48,29 +48,29 @@ const ReadFormat& readFormatOf(GLenum internalFormat) {
 }
 
 // The framebuffer and attachment a target can be read from.
-std::pair<GLuint, GLenum> readSource(const FrameTargets& targets, Target target) {
+std::pair<GLuint, GLenum> readSource(const FrameTargets& targets, Target target, int divisor) {
     switch (target) {
         case Target::DepthStencil:
-        case Target::SceneDepth: return {targets.framebuffer({}, target), GL_NONE};
-        default: return {targets.framebuffer({target}), GL_COLOR_ATTACHMENT0};
+        case Target::SceneDepth: return {targets.framebuffer({}, target, divisor), GL_NONE};
+        default: return {targets.framebuffer({target}, std::nullopt, divisor), GL_COLOR_ATTACHMENT0};
     }
 }
 
 }  // namespace
 
 StoredTexel readStoredTexel(ShaderLibrary& shaders, const FrameTargets& targets, Target target, int glX, int glY,
-                            bool drawDepthStencil) {
+                            bool drawDepthStencil, int divisor) {
     const ReadFormat& format = readFormatOf(targetFormat(targets.layout(), targets.depth(), target).internalFormat);
     if (format.format == GL_DEPTH_STENCIL && drawDepthStencil) {
         // OpenGL ES without GL_NV_read_depth_stencil (WebGL 2): the depth and stencil drawn into
         // colour targets (render/depth_stencil_readback.h), given as the packed read gives them.
-        DepthStencilRead read{target, glX, glY, 1, 1, true};
+        DepthStencilRead read{target, glX, glY, 1, 1, true, divisor};
         double depth = readDepthRegion(shaders, targets, read)[0];
         double stencil = readStencilRegion(shaders, targets, read)[0];
         if (format.type == GL_UNSIGNED_INT_24_8) depth = std::round(depth * 16777215.0);  // the 24-bit unorm
         return {targetName(target), format.name, format.storedAs, {depth, stencil}};
     }
-    auto [framebuffer, attachment] = readSource(targets, target);
+    auto [framebuffer, attachment] = readSource(targets, target, divisor);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
     if (attachment != GL_NONE) glReadBuffer(attachment);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

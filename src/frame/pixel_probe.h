@@ -24,8 +24,9 @@ enum class Target;
 // One target's texel at GL pixel (glX, glY), bottom row 0, as stored: any time, mid-frame too.
 // `drawDepthStencil`: depth and stencil are drawn out with `shaders` to be read, where glReadPixels
 // cannot read them (RendererCapabilities::depthStencilRead, render/depth_stencil_readback.h).
+// `divisor`: the target at 1/divisor of the frame (the reduced reflection's), (glX, glY) in it.
 StoredTexel readStoredTexel(ShaderLibrary& shaders, const FrameTargets& targets, Target target, int glX, int glY,
-                            bool drawDepthStencil);
+                            bool drawDepthStencil, int divisor = 1);
 
 struct PixelProbe {
     int x = 0, y = 0;              // as asked: 0,0 is the top-left pixel (as in the PNGs)

@@ -241,11 +241,8 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     PassContext passContext = context();
     if (frame_.reflectionsActive && frame_.reflectionDivisor > 1) {
         prepareReducedReflection();
-        passContext.reflectionTargets = reducedTargets_.get();
         passContext.frameBlock = frameUniforms_.name();
         passContext.reflectionFrameRange = reducedReflectionFrameRange();
-    } else if (frame_.reflectionDivisor == 1) {
-        reducedTargets_.reset();  // back at full resolution: the reduced set's memory goes back too
     }
     left_.stepsRan.clear();
     std::vector<Target> beyondFrame;
@@ -253,15 +250,9 @@ void Renderer::runFrame(const SceneSettings& scene, const std::string& stopBefor
     // The graph's plan of the frame's targets: those it does not use are given back (a forward
     // frame holds no G-buffer), those whose lifetimes do not overlap may share a texture.
     const FrameGraph& graph = left_.graph;
-    const bool reduced = passContext.reflectionTargets != nullptr;
-    left_.lifetimes = oasis::targetLifetimes(graph, frame_, beyondFrame,
-                                        reduced ? StepsOf::FrameWithoutReducedReflection : StepsOf::WholeFrame);
+    // The reduced reflection's targets are among them, at their scale.
+    left_.lifetimes = oasis::targetLifetimes(graph, frame_, beyondFrame);
     targets_->plan(left_.lifetimes);
-    left_.reflectionLifetimes.clear();
-    if (reduced) {  // the reduced reflection's own targets: its passes' alone
-        left_.reflectionLifetimes = oasis::targetLifetimes(graph, frame_, beyondFrame, StepsOf::ReducedReflection);
-        reducedTargets_->plan(left_.reflectionLifetimes);
-    }
     FrameClipControl clipControl(targets_->depth());
     pipeline.run(passContext, graph, [&](const Pass& pass) {
         if (!pass.sceneStep().empty()) left_.stepsRan.push_back(pass.sceneStep());
@@ -323,20 +314,7 @@ FrameGraph Renderer::requestGraph(const std::string& stopBefore, std::vector<Tar
 
 void Renderer::prepareReducedReflection() {
     const int divisor = frame_.reflectionDivisor;
-    const int width = (targets_->width() + divisor - 1) / divisor, height = (targets_->height() + divisor - 1) / divisor;
-    if (!reducedTargets_ || reducedTargets_->width() != width || reducedTargets_->height() != height ||
-        reducedTargets_->layout().name != targets_->layout().name ||
-        reducedTargets_->depth().name != targets_->depth().name) {
-        reducedTargets_ = std::make_unique<FrameTargets>(targets_->layout(), targets_->depth(), width, height,
-                                                           "reflection at 1/" + std::to_string(divisor));
-        // ReflectionUpsamplePass reads it bilinearly, clamped at its edges.
-        glBindTexture(GL_TEXTURE_2D, reducedTargets_->texture(Target::Reflection));
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glBindTexture(GL_TEXTURE_2D, 0);
-    }
+    const int width = targets_->width(divisor), height = targets_->height(divisor);
     // The frame's data for the smaller targets: their pixels (rays through pixel centres, the
     // billboards' mip levels) and how the frame's water rectangle maps onto them (widened by a
     // pixel for the upsample's taps).

@@ -61,17 +61,13 @@ struct LastFrame {
     const VegetationBuffers& plantInstances;  // the instances it uploaded (PlantInstances, frame_graph.h)
     const Pipeline& pipeline;                 // its pipeline's passes (the GL objects a pass owns in them)
     const FrameGraph& requestGraph;           // its graph (Renderer::renderFrame)
-    const FrameTargets& targets;
-    const FrameTargets* reflectionTargets;    // the reflection's own targets when drawn reduced; else null
-    const std::vector<TargetLifetime>& reflectionTargetLifetimes;  // and theirs (empty when not reduced)
+    const FrameTargets& targets;  // the reduced reflection's among them, at their scale
     // Its graph: the pipeline's passes, then (a frame for named views) the views' passes after
     // it, ending in the displayed image; which ran and why the others were culled.
     const FrameGraph& graph() const { return requestGraph; }
     // The GPU memory of its targets (FrameTargets::heldBytes: what the graph's plan left
     // allocated after it), the reduced reflection's included.
-    double targetMemoryBytes() const {
-        return targets.heldBytes() + (reflectionTargets ? reflectionTargets->heldBytes() : 0.0);
-    }
+    double targetMemoryBytes() const { return targets.heldBytes(); }
 };
 
 // What frames are drawn with, lent to the tools that draw or read beside them (the probes, the
@@ -124,7 +120,7 @@ public:
     const FrameTargets& targets() const { return *targets_; }
     LastFrame lastFrame() const {
         return {frame_, left_.lifetimes, plants_.field, plants_.buffers, pipelineOf(active_), left_.graph,
-                *targets_, reducedTargets_.get(), left_.reflectionLifetimes};
+                *targets_};
     }
     RendererParts parts() const { return {shaders_, geometry_, shadowMaps_}; }
 
@@ -147,8 +143,8 @@ private:
     // the capabilities, the plants' atlas and the request.
     FrameConditions frameConditions(const SceneSettings& scene, const std::string& stopBefore) const;
     void prepareVegetation(const SceneSettings& scene);
-    // The reduced reflection's targets (kept while the frame's size, layout and depth stay) and
-    // its range of the frame block, for a frame whose reflection is drawn at 1/frame_.reflectionDivisor.
+    // The reduced reflection's range of the frame block, for a frame whose reflection is drawn at
+    // 1/frame_.reflectionDivisor: the frame's data for its targets' size.
     void prepareReducedReflection();
     void uploadLights();
     // The frame's graph (frame_graph.h), one for the request: the pipeline's passes, then for named
@@ -205,7 +201,6 @@ private:
         bool radianceAwaitsWater = false;        // a fused frame's composite has not been laid onto Radiance
         FrameGraph graph;                              // its graph (requestGraph)
         std::vector<TargetLifetime> lifetimes;         // and its targets' lifetimes
-        std::vector<TargetLifetime> reflectionLifetimes;  // the reduced reflection's own targets'
     };
     // What was asked for, kept so a fallback is decided again when the capabilities change:
     // configure's last layout (a copy: callers may pass a temporary) and the depth convention.
@@ -220,9 +215,6 @@ private:
     ShaderLibrary& shaders_;
     SceneGeometry geometry_;
     std::unique_ptr<FrameTargets> targets_;
-    // The reflection drawn at a reduced resolution: its own targets (while asked for); the frame
-    // block's second range holds the frame's data for their size.
-    std::unique_ptr<FrameTargets> reducedTargets_;
     Pipeline forward_{PipelineKind::Forward}, deferred_{PipelineKind::Deferred};
     PipelineKind active_ = PipelineKind::Deferred;
     Plants plants_;

@@ -10,7 +10,7 @@ namespace oasis {
 
 std::string ViewPass::name() const { return "DebugViewPass." + viewName(); }
 
-std::vector<Access> ViewPass::accesses(const FrameSetup&) const {
+std::vector<Access> ViewPass::declaredAccesses(const FrameSetup&) const {
     std::vector<Access> used;
     const GBufferLayout& layout = views_.renderer_.targets().layout();
     for (const DebugView& view : debugViews()) {

@@ -17,7 +17,7 @@ public:
     // `view`: a row of the views' table, or null for the overview (every view's reads).
     ViewPass(FrameViews& views, const DebugView* view) : views_(views), view_(view) {}
     std::string name() const override;
-    std::vector<Access> accesses(const FrameSetup& frame) const override;
+    std::vector<Access> declaredAccesses(const FrameSetup& frame) const override;
     // The view's table name ("overview" for the grid).
     std::string viewName() const { return view_ ? view_->name : kOverviewName; }
     // Whether the view reads Radiance with the water laid on, or the frame's surfaces as the

@@ -43,8 +43,8 @@ double depthStepAt(const DepthConvention& depth, double eyeDistance, double near
 
 TargetFormat targetFormat(const GBufferLayout& layout, const DepthConvention& depth, Target target) {
     // The depth copy of the layouts that reconstruct position from depth has the depth's format.
-    if (target == Target::DepthStencil || (target == Target::SceneDepth && layout.stores(Target::SceneDepth)))
-        return depth.depthStencil;
+    const FormatFrom from = targetDescriptor(target).format;
+    if (from == FormatFrom::Depth || (from == FormatFrom::DepthCopy && layout.stores(target))) return depth.depthStencil;
     return layout.format(target);
 }
 

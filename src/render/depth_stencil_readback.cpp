@@ -85,13 +85,15 @@ struct DrawnRead {
     gl::Framebuffer framebuffer;
     gl::VertexArray noAttributes = gl::createVertexArray("depth-stencil read-back (no attributes)");
 
-    DrawnRead(const FrameTargets& targets, GLenum format, const char* label, std::optional<Target> stencil) {
-        colour = gl::createTargetTexture(label, format, targets.width(), targets.height());
+    DrawnRead(const FrameTargets& targets, GLenum format, const char* label, std::optional<Target> stencil,
+              int divisor) {
+        colour = gl::createTargetTexture(label, format, targets.width(divisor), targets.height(divisor));
         framebuffer = gl::createFramebuffer(label);
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.name());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour.name(), 0);
         if (stencil)
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, targets.texture(*stencil), 0);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                                   targets.texture(*stencil, divisor), 0);
         GLenum drawBuffer = GL_COLOR_ATTACHMENT0;
         glDrawBuffers(1, &drawBuffer);
     }
@@ -121,12 +123,12 @@ struct DrawnRead {
 };
 
 std::vector<float> drawDepth(ShaderLibrary& shaders, const FrameTargets& targets, const DepthStencilRead& r) {
-    DrawnRead read(targets, GL_R32F, "depth read-back (drawn)", std::nullopt);
+    DrawnRead read(targets, GL_R32F, "depth read-back (drawn)", std::nullopt, r.divisor);
     read.begin(r);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_BLEND);
     glActiveTexture(GL_TEXTURE0 + kUnitSource);
-    glBindTexture(GL_TEXTURE_2D, targets.texture(r.target));
+    glBindTexture(GL_TEXTURE_2D, targets.texture(r.target, r.divisor));
     glUseProgram(shaders.program("readback.depth"));
     glDrawArrays(GL_TRIANGLES, 0, 3);
     std::vector<float> depth = read.readRed<float>(r, GL_FLOAT);
@@ -140,7 +142,7 @@ std::vector<float> drawDepth(ShaderLibrary& shaders, const FrameTargets& targets
 }
 
 std::vector<uint8_t> drawStencil(ShaderLibrary& shaders, const FrameTargets& targets, const DepthStencilRead& r) {
-    DrawnRead read(targets, GL_R8, "stencil read-back (drawn)", r.target);
+    DrawnRead read(targets, GL_R8, "stencil read-back (drawn)", r.target, r.divisor);
     read.begin(r);
     const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     glClearBufferfv(GL_COLOR, 0, zero);
@@ -168,7 +170,7 @@ std::vector<uint8_t> drawStencil(ShaderLibrary& shaders, const FrameTargets& tar
 std::vector<float> readDepthRegion(ShaderLibrary& shaders, const FrameTargets& targets, const DepthStencilRead& read) {
     if (read.drawn) return drawDepth(shaders, targets, read);
     std::vector<float> depth(size_t(read.width) * size_t(read.height));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, read.target));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, read.target, read.divisor));
     readDepthFloats(read.x, read.y, read.width, read.height, depth.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return depth;
@@ -178,7 +180,7 @@ std::vector<uint8_t> readStencilRegion(ShaderLibrary& shaders, const FrameTarget
                                        const DepthStencilRead& read) {
     if (read.drawn) return drawStencil(shaders, targets, read);
     std::vector<uint8_t> stencil(size_t(read.width) * size_t(read.height));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, read.target));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({}, read.target, read.divisor));
     readStencilBytes(read.x, read.y, read.width, read.height, stencil.data());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return stencil;

@@ -22,6 +22,7 @@ struct DepthStencilRead {
     Target target = Target::DepthStencil;
     int x = 0, y = 0, width = 0, height = 0;
     bool drawn = false;
+    int divisor = 1;  // the target at 1/divisor of the frame (the reduced reflection's)
 };
 std::vector<float> readDepthRegion(ShaderLibrary& shaders, const FrameTargets& targets, const DepthStencilRead& read);
 std::vector<uint8_t> readStencilRegion(ShaderLibrary& shaders, const FrameTargets& targets, const DepthStencilRead& read);

@@ -18,7 +18,27 @@ const char* bufferName(Buffer buffer);
 // The displayed image a request ends in: the Display texture its debug-view pass draws (what the
 // headless commands read back, the sink of a request's graph, frame/frame_views.h).
 enum class Screen { Display };
-using Resource = std::variant<Target, Buffer, Screen>;
+// A frame target at a scale of the frame's size, 1/divisor (2 or 4): the reflection drawn at a
+// reduced resolution is its targets at that scale (--reflection-resolution half|quarter), other
+// resources than the frame's targets of the same name, held by the same FrameTargets.
+struct ScaledTarget {
+    Target target;
+    int divisor;
+};
+inline bool operator==(const ScaledTarget& a, const ScaledTarget& b) {
+    return a.target == b.target && a.divisor == b.divisor;
+}
+inline bool operator!=(const ScaledTarget& a, const ScaledTarget& b) { return !(a == b); }
+inline bool operator<(const ScaledTarget& a, const ScaledTarget& b) {  // for sets of resources
+    return a.target != b.target ? a.target < b.target : a.divisor < b.divisor;
+}
+using Resource = std::variant<Target, Buffer, ScaledTarget, Screen>;
+// "reflection", "LightTiles", "reflection at 1/2", "display".
 std::string resourceName(const Resource& resource);
+// The target of a target resource, at whatever scale, and its divisor (1 for the frame's own);
+// false for a buffer.
+bool targetOf(const Resource& resource, Target& target, int& divisor);
+// `target` at 1/divisor of the frame: the target itself where divisor is 1.
+Resource targetAt(Target target, int divisor);
 
 }  // namespace oasis

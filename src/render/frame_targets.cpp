@@ -24,17 +24,14 @@ std::string gibibytes(double bytes) {
     return text;
 }
 
-// What capture tools list a target as: the G-buffer's by role and layout ("G-buffer albedo
-// (compact)"), its depth-stencil also by depth convention; the others by role.
+// What capture tools list a target as: its descriptor's label, after it the layout ("G-buffer
+// albedo (compact)") and the depth convention whose format it has.
 std::string targetLabel(const GBufferLayout& layout, const DepthConvention& depth, Target target) {
-    switch (target) {
-        case Target::DepthStencil:
-            return "G-buffer depth-stencil (" + layout.name + ", " + depth.name + " depth)";
-        case Target::Radiance: return "Radiance";
-        case Target::Reflection: return "Reflection";
-        case Target::Final: return "Final";
-        case Target::SceneDepth: return "SceneDepth copy";
-        default: return std::string("G-buffer ") + targetName(target) + " (" + layout.name + ")";
+    const TargetDescriptor& row = targetDescriptor(target);
+    switch (row.format) {
+        case FormatFrom::LayoutRow: return std::string(row.label) + " (" + layout.name + ")";
+        case FormatFrom::Depth: return std::string(row.label) + " (" + layout.name + ", " + depth.name + " depth)";
+        default: return row.label;
     }
 }
 
@@ -48,7 +45,7 @@ int bytesPerPixelOfAllTargets(const GBufferLayout& layout, const DepthConvention
 
 FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height,
                            const std::string& purpose)
-    : layout_(layout), depth_(depth), width_(width), height_(height) {
+    : layout_(layout), depth_(depth) {
     const std::string prefix = purpose.empty() ? "" : purpose + ": ";
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
@@ -65,8 +62,19 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
                                  layout.name + " layout, " + depth.name + " depth); the limit is " +
                                  std::to_string(int(kMaxTargetBytes / double(1u << 30))) + " GiB");
     labelPrefix_ = prefix;
-    memory_ = unaliasedTargets();
-    holderAfterFrame_ = memory_;
+    for (size_t k = 0; k < scales_.size(); ++k) {
+        Scale& scale = scales_[k];
+        scale.divisor = kDivisors[k];
+        scale.width = (width + scale.divisor - 1) / scale.divisor;
+        scale.height = (height + scale.divisor - 1) / scale.divisor;
+        scale.memory = unaliasedTargets();
+        scale.holderAfterFrame = scale.memory;
+    }
+    upsampling_ = gl::createSampler("reduced targets: bilinear, clamped");
+    glSamplerParameteri(upsampling_.name(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(upsampling_.name(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(upsampling_.name(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(upsampling_.name(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     // The framebuffers every frame binds are made once now, so an incomplete one (a format this
     // context cannot draw into) is refused here; their textures are then let go again, to be made
     // at their first use in a frame.
@@ -75,24 +83,36 @@ FrameTargets::FrameTargets(const GBufferLayout& layout, const DepthConvention& d
     framebuffer({Target::Reflection}, Target::DepthStencil);
     framebuffer({Target::Final});
     framebuffers_.clear();
-    for (gl::Texture& texture : textures_) texture.reset();
+    for (gl::Texture& texture : scales_[0].textures) texture.reset();
 }
 
-GLuint FrameTargets::heldTexture(Target target) const {
-    if (!layout_.stores(target)) return 0;
-    return textures_[size_t(memory_[size_t(target)])].name();
+const FrameTargets::Scale& FrameTargets::scaleOf(int divisor) const {
+    for (const Scale& scale : scales_)
+        if (scale.divisor == divisor) return scale;
+    throw std::logic_error("no frame targets at 1/" + std::to_string(divisor) + " of the frame");
 }
 
-GLuint FrameTargets::texture(Target target) const {
+GLuint FrameTargets::heldTexture(Target target, int divisor) const {
     if (!layout_.stores(target)) return 0;
-    const Target memory = memory_[size_t(target)];
-    gl::Texture& held = textures_[size_t(memory)];
+    const Scale& scale = scaleOf(divisor);
+    return scale.textures[size_t(scale.memory[size_t(target)])].name();
+}
+
+GLuint FrameTargets::texture(Target target, int divisor) const {
+    if (!layout_.stores(target)) return 0;
+    Scale& scale = const_cast<Scale&>(scaleOf(divisor));  // scales_ is mutable: textures made on use
+    const Target memory = scale.memory[size_t(target)];
+    gl::Texture& held = scale.textures[size_t(memory)];
     if (held.name()) return held.name();
     const TargetFormat format = targetFormat(layout_, depth_, memory);
-    // The pool's texture of the same format, the one this target held before if it is there.
+    const int width = scale.width, height = scale.height;
+    // What capture tools list it as: the reduced reflection's prefixed by their scale.
+    const std::string prefix = labelPrefix_ + (divisor == 1 ? "" : "reflection at 1/" + std::to_string(divisor) + ": ");
+    // The pool's texture of the same format and size, the one this target held before if it is there.
     auto pooled = pool_.end();
     for (auto entry = pool_.begin(); entry != pool_.end(); ++entry)
-        if (entry->format == unsigned(format.internalFormat) && (pooled == pool_.end() || entry->lastHolder == memory))
+        if (entry->format == unsigned(format.internalFormat) && entry->width == width && entry->height == height &&
+            (pooled == pool_.end() || entry->lastHolder == memory))
             pooled = entry;
     if (pooled != pool_.end()) {
         held = std::move(pooled->texture);
@@ -102,26 +122,27 @@ GLuint FrameTargets::texture(Target target) const {
         GLint bound = 0;
         glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
         while (glGetError() != GL_NO_ERROR) {}
-        held = gl::createTargetTexture(labelPrefix_ + targetLabel(layout_, depth_, memory), format.internalFormat,
-                                       width_, height_);
+        held = gl::createTargetTexture(prefix + targetLabel(layout_, depth_, memory), format.internalFormat,
+                                       width, height);
         if (GLenum error = glGetError(); error != GL_NO_ERROR)
-            throw std::runtime_error("allocating a " + std::to_string(width_) + "x" + std::to_string(height_) + " " +
+            throw std::runtime_error("allocating a " + std::to_string(width) + "x" + std::to_string(height) + " " +
                                      targetName(memory) + " target failed: " + gl::errorString(error));
         glBindTexture(GL_TEXTURE_2D, GLuint(bound));
     }
     // Labelled by every target it is lent to this frame, as capture tools list it.
-    std::string label = labelPrefix_ + targetLabel(layout_, depth_, memory);
+    std::string label = prefix + targetLabel(layout_, depth_, memory);
     for (int t = 0; t < int(Target::Count); ++t)
-        if (Target(t) != memory && memory_[t] == memory) label += " + " + std::string(targetName(Target(t)));
+        if (Target(t) != memory && scale.memory[t] == memory) label += " + " + std::string(targetName(Target(t)));
     gl::setLabel(held, label);
     return held.name();
 }
 
-void FrameTargets::giveBack(Target memory) {
-    gl::Texture& held = textures_[size_t(memory)];
+void FrameTargets::giveBack(Scale& scale, Target memory) {
+    gl::Texture& held = scale.textures[size_t(memory)];
     if (!held.name()) return;
     const TargetFormat format = targetFormat(layout_, depth_, memory);
-    pool_.push_back({std::move(held), unsigned(format.internalFormat), format.bytesPerPixel, memory, 0});
+    pool_.push_back(
+        {std::move(held), unsigned(format.internalFormat), format.bytesPerPixel, scale.width, scale.height, memory, 0});
 }
 
 void FrameTargets::forgetFramebuffersOf(GLuint texture) {
@@ -135,31 +156,14 @@ void FrameTargets::forgetFramebuffersOf(GLuint texture) {
 }
 
 void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
-    // Readers after the frame are in its graph (Renderer::requestGraph): their targets live to
-    // kBeyondFrame and lend nothing, so a target lends its memory only where nothing reads it again.
-    const TargetMemory memory = aliasTargets(lifetimes, [&](Target target) {
-        return unsigned(targetFormat(layout_, depth_, target).internalFormat);
-    });
-    // Each memory's last holder: the target whose values it holds when the frame ends.
-    std::array<int, size_t(Target::Count)> latestFirst;
-    latestFirst.fill(-1);
-    holderAfterFrame_ = unaliasedTargets();
-    for (const TargetLifetime& lifetime : lifetimes) {
-        const size_t owner = size_t(memory[size_t(lifetime.target)]);
-        if (lifetime.first > latestFirst[owner]) {
-            latestFirst[owner] = lifetime.first;
-            holderAfterFrame_[owner] = lifetime.target;
-        }
-    }
-    std::array<bool, size_t(Target::Count)> used{};
-    for (const TargetLifetime& lifetime : lifetimes) used[size_t(lifetime.target)] = true;
     for (auto& entry : pool_) ++entry.idlePlans;
-    // A memory changes hands when the aliasing changes: every texture goes back and is taken again
-    // at its first use (mostly the same one, by lastHolder). Otherwise only unused targets' go back.
-    const bool realiased = memory != memory_;
-    for (int t = 0; t < int(Target::Count); ++t)
-        if (realiased || !used[t]) giveBack(Target(t));
-    memory_ = memory;
+    // Only targets of one size share memory: each scale is planned alone.
+    for (Scale& scale : scales_) {
+        std::vector<TargetLifetime> ofScale;
+        for (const TargetLifetime& lifetime : lifetimes)
+            if (lifetime.divisor == scale.divisor) ofScale.push_back(lifetime);
+        planScale(scale, ofScale);
+    }
     for (auto entry = pool_.begin(); entry != pool_.end();) {
         if (entry->idlePlans > kPoolFrames) {
             forgetFramebuffersOf(entry->texture.name());
@@ -170,28 +174,58 @@ void FrameTargets::plan(const std::vector<TargetLifetime>& lifetimes) {
     }
 }
 
+void FrameTargets::planScale(Scale& scale, const std::vector<TargetLifetime>& lifetimes) {
+    // Readers after the frame are in its graph (Renderer::requestGraph): their targets live to
+    // kBeyondFrame and lend nothing, so a target lends its memory only where nothing reads it again.
+    const TargetMemory memory = aliasTargets(lifetimes, [&](Target target) {
+        return unsigned(targetFormat(layout_, depth_, target).internalFormat);
+    });
+    // Each memory's last holder: the target whose values it holds when the frame ends.
+    std::array<int, size_t(Target::Count)> latestFirst;
+    latestFirst.fill(-1);
+    scale.holderAfterFrame = unaliasedTargets();
+    for (const TargetLifetime& lifetime : lifetimes) {
+        const size_t owner = size_t(memory[size_t(lifetime.target)]);
+        if (lifetime.first > latestFirst[owner]) {
+            latestFirst[owner] = lifetime.first;
+            scale.holderAfterFrame[owner] = lifetime.target;
+        }
+    }
+    std::array<bool, size_t(Target::Count)> used{};
+    for (const TargetLifetime& lifetime : lifetimes) used[size_t(lifetime.target)] = true;
+    // A memory changes hands when the aliasing changes: every texture goes back and is taken again
+    // at its first use (mostly the same one, by lastHolder). Otherwise only unused targets' go back.
+    const bool realiased = memory != scale.memory;
+    for (int t = 0; t < int(Target::Count); ++t)
+        if (realiased || !used[t]) giveBack(scale, Target(t));
+    scale.memory = memory;
+}
+
 Target FrameTargets::holderAfterFrame(Target target) const {
-    return holderAfterFrame_[size_t(memory_[size_t(target)])];
+    const Scale& frame = scales_[0];
+    return frame.holderAfterFrame[size_t(frame.memory[size_t(target)])];
 }
 
 double FrameTargets::heldBytes() const {
-    double bytes = display_.name() ? 4.0 : 0.0;  // Display, RGBA8
-    for (int t = 0; t < int(Target::Count); ++t)
-        if (textures_[t].name()) bytes += targetFormat(layout_, depth_, Target(t)).bytesPerPixel;
-    return bytes * double(width_) * double(height_);
+    double bytes = display_.name() ? 4.0 * width() * height() : 0.0;  // Display, RGBA8
+    for (const Scale& scale : scales_)
+        for (int t = 0; t < int(Target::Count); ++t)
+            if (scale.textures[t].name())
+                bytes += double(targetFormat(layout_, depth_, Target(t)).bytesPerPixel) * scale.width * scale.height;
+    return bytes;
 }
 
 double FrameTargets::pooledBytes() const {
     double bytes = 0.0;
-    for (const Pooled& entry : pool_) bytes += entry.bytesPerPixel;
-    return bytes * double(width_) * double(height_);
+    for (const Pooled& entry : pool_) bytes += double(entry.bytesPerPixel) * entry.width * entry.height;
+    return bytes;
 }
 
 GLuint FrameTargets::displayTexture() const {
     if (!display_.name()) {
         GLint bound = 0;  // as texture(): the active unit's texture is put back
         glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
-        display_ = gl::createTargetTexture(labelPrefix_ + "Display", GL_RGBA8, width_, height_);
+        display_ = gl::createTargetTexture(labelPrefix_ + "Display", GL_RGBA8, width(), height());
         glBindTexture(GL_TEXTURE_2D, GLuint(bound));
     }
     return display_.name();
@@ -215,19 +249,23 @@ GLuint FrameTargets::displayFramebuffer() const {
     return name;
 }
 
-GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optional<Target> depth) const {
+GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optional<Target> depth, int divisor) const {
     std::vector<Target> stored;
     for (Target target : colour)
         if (layout_.stores(target)) stored.push_back(target);
-    if (depth && !layout_.stores(*depth)) depth.reset();
-    if (stored.empty() && !depth) return 0;  // nothing this layout stores (SceneDepth in full)
-    FramebufferKey key{{}, depth ? texture(*depth) : 0};
-    for (Target target : stored) key.first.push_back(texture(target));
+    // The depth attachment, where the layout stores it (a plain value: GCC warned the optional's
+    // value may be read uninitialised).
+    const bool hasDepth = depth.has_value() && layout_.stores(*depth);
+    const Target depthTarget = depth.value_or(Target::DepthStencil);
+    if (stored.empty() && !hasDepth) return 0;  // nothing this layout stores (SceneDepth in full)
+    FramebufferKey key{{}, hasDepth ? texture(depthTarget, divisor) : 0};
+    for (Target target : stored) key.first.push_back(texture(target, divisor));
     if (auto found = framebuffers_.find(key); found != framebuffers_.end()) return found->second.name();
     // Labelled by what it holds, as capture tools list it: "Radiance, Final + DepthStencil".
     std::string label;
     for (Target target : stored) label += (label.empty() ? "" : ", ") + std::string(targetName(target));
-    if (depth) label += (label.empty() ? "" : " + ") + std::string(targetName(*depth));
+    if (hasDepth) label += (label.empty() ? "" : " + ") + std::string(targetName(depthTarget));
+    if (divisor != 1) label = "reflection at 1/" + std::to_string(divisor) + ": " + label;
     gl::Framebuffer fbo = gl::createFramebuffer(labelPrefix_ + label);
     GLint previous = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
@@ -235,11 +273,12 @@ GLuint FrameTargets::framebuffer(const std::vector<Target>& colour, std::optiona
     std::vector<GLenum> drawBuffers;
     for (Target target : stored) {
         GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + drawBuffers.size());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture(target), 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, texture(target, divisor), 0);
         drawBuffers.push_back(attachment);
     }
-    if (depth)
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, texture(*depth), 0);
+    if (hasDepth)
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, texture(depthTarget, divisor),
+                               0);
     if (drawBuffers.empty()) {
         const GLenum none = GL_NONE;
         glDrawBuffers(1, &none);  // glDrawBuffer is desktop-only; this is the same on both APIs

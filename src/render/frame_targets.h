@@ -6,7 +6,9 @@
 // no G-buffer), and the frame graph's plan (render/target_aliasing.h) gives back the textures of
 // targets a frame does not use and lets targets whose lifetimes do not overlap share one. Textures
 // given back wait in a pool for a few frames, so frames that alternate (compare's forward and
-// deferred rounds) do not allocate each time.
+// deferred rounds) do not allocate each time. Targets are held at a scale of the frame's size too
+// (1/2, 1/4: the reflection drawn reduced, render/frame_resource.h's ScaledTarget): a target at a
+// scale is its own resource with its own lifetime, and only targets of one size share memory.
 #pragma once
 #include <array>
 #include <map>
@@ -34,22 +36,26 @@ public:
     FrameTargets(const GBufferLayout& layout, const DepthConvention& depth, int width, int height,
                  const std::string& purpose = "");
 
-    int width() const { return width_; }
-    int height() const { return height_; }
+    // The size of the targets at 1/divisor of the frame (1, 2 or 4), rounded up.
+    int width(int divisor = 1) const { return scaleOf(divisor).width; }
+    int height(int divisor = 1) const { return scaleOf(divisor).height; }
     const GBufferLayout& layout() const { return layout_; }
     // How the depth-stencil target is stored and compared: every pass takes its depth state here.
     const DepthConvention& depth() const { return depth_; }
 
-    // The texture of `target`, made (or taken from the pool) at its first use; 0 where the layout
-    // does not store it. Targets the plan aliases return the same texture.
-    GLuint texture(Target target) const;
+    // The texture of `target` at 1/divisor, made (or taken from the pool) at its first use; 0 where
+    // the layout does not store it. Targets the plan aliases return the same texture.
+    GLuint texture(Target target, int divisor = 1) const;
     // The texture `target` holds now without making one (0 if none): for audits and tests.
-    GLuint heldTexture(Target target) const;
+    GLuint heldTexture(Target target, int divisor = 1) const;
     // The frame's plan: the targets `lifetimes` names keep (or will make) their textures, aliased
-    // as aliasTargets says; every other target's texture goes back to the pool. Pool textures unused
-    // for kPoolFrames plans are deleted.
+    // as aliasTargets says among the targets of one scale; every other target's texture goes back
+    // to the pool. Pool textures unused for kPoolFrames plans are deleted.
     void plan(const std::vector<TargetLifetime>& lifetimes);
-    const TargetMemory& memory() const { return memory_; }
+    const TargetMemory& memory(int divisor = 1) const { return scaleOf(divisor).memory; }
+    // The sampler a target at a reduced scale is read with (bilinear, clamped at its edges: the
+    // upsample's taps), bound on its unit beside it: a texture's own state would go with its memory.
+    GLuint upsamplingSampler() const { return upsampling_.name(); }
     // The target whose values `target`'s texture holds after the frame: `target` itself, unless
     // the plan lent its memory to a target used after it (what it held is then gone).
     Target holderAfterFrame(Target target) const;
@@ -70,8 +76,9 @@ public:
     // store left out, so the draw buffers have no gaps: zink leaves every column past 1024
     // unrendered at 1280x720 when one in the middle is GL_NONE) and `depth` (DepthStencil or
     // SceneDepth), made on first use and kept: passes bind the one of their declared writes.
-    // 0 where the layout stores none of them.
-    GLuint framebuffer(const std::vector<Target>& colour, std::optional<Target> depth = std::nullopt) const;
+    // 0 where the layout stores none of them. With a divisor, over those targets at 1/divisor.
+    GLuint framebuffer(const std::vector<Target>& colour, std::optional<Target> depth = std::nullopt,
+                       int divisor = 1) const;
     // The G-buffer's stored colour targets in kGBufferColourTargets order.
     std::vector<Target> gbufferColourTargets() const;
     GLuint displayFramebuffer() const;
@@ -79,25 +86,35 @@ public:
 private:
     GBufferLayout layout_;
     DepthConvention depth_;
-    int width_, height_;
-    // The textures held, by the target whose memory they are (memory_); aliased targets hold none.
-    mutable std::array<gl::Texture, size_t(Target::Count)> textures_;
-    TargetMemory memory_;
-    TargetMemory holderAfterFrame_;  // by memory: its last holder in the plan
+    // The targets at one scale of the frame: 1, 1/2, 1/4 (kDivisors).
+    struct Scale {
+        int divisor = 1;
+        int width = 0, height = 0;
+        // The textures held, by the target whose memory they are (memory); aliased targets hold none.
+        std::array<gl::Texture, size_t(Target::Count)> textures;
+        TargetMemory memory;
+        TargetMemory holderAfterFrame;  // by memory: its last holder in the plan
+    };
+    static constexpr int kDivisors[] = {1, 2, 4};
+    mutable std::array<Scale, 3> scales_;
+    const Scale& scaleOf(int divisor) const;
     struct Pooled {
         gl::Texture texture;
         unsigned format;
         int bytesPerPixel;
+        int width, height;
         Target lastHolder;  // given back to the same target first, so its contents stay where they were
         int idlePlans;
     };
     mutable std::vector<Pooled> pool_;
     mutable gl::Texture display_;
+    gl::Sampler upsampling_;
     std::string labelPrefix_;
     // Keyed by the textures attached, since a target's texture changes with the plan.
     using FramebufferKey = std::pair<std::vector<GLuint>, GLuint>;
     mutable std::map<FramebufferKey, gl::Framebuffer> framebuffers_;
-    void giveBack(Target memory);
+    void giveBack(Scale& scale, Target memory);
+    void planScale(Scale& scale, const std::vector<TargetLifetime>& lifetimes);
     void forgetFramebuffersOf(GLuint texture);
 };
 

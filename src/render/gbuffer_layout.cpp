@@ -1,8 +1,9 @@
-// The G-buffer format table and what follows from it.
+// The G-buffer format table, the frame targets' descriptors, and what follows from them.
 #include "render/gbuffer_layout.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "common/shared_constants.glsl"
 
@@ -19,6 +20,20 @@ constexpr TargetFormat kDepth24Stencil8{GL_DEPTH24_STENCIL8, 4};
 constexpr TargetFormat kFinalColour{GL_RGBA8, 4};
 constexpr TargetFormat kLinearLight{GL_RGBA16F, 8};
 
+// The frame's targets, one row each.
+constexpr TargetDescriptor kTargetDescriptors[] = {
+    {Target::Albedo, "albedo", "G-buffer albedo", FormatFrom::LayoutRow, &GBufferLayout::albedo, kNotStored},
+    {Target::Normal, "normal", "G-buffer normal", FormatFrom::LayoutRow, &GBufferLayout::normal, kNotStored},
+    {Target::Position, "position", "G-buffer position", FormatFrom::LayoutRow, &GBufferLayout::position, kNotStored},
+    {Target::Info, "info", "G-buffer info", FormatFrom::LayoutRow, &GBufferLayout::info, kNotStored},
+    {Target::DepthStencil, "depth-stencil", "G-buffer depth-stencil", FormatFrom::Depth, nullptr, kDepth24Stencil8},
+    {Target::Radiance, "radiance", "Radiance", FormatFrom::Own, nullptr, kLinearLight},
+    {Target::Reflection, "reflection", "Reflection", FormatFrom::Own, nullptr, kLinearLight},
+    {Target::Final, "final", "Final", FormatFrom::Own, nullptr, kFinalColour},
+    {Target::SceneDepth, "scene-depth", "SceneDepth copy", FormatFrom::DepthCopy, nullptr, kDepth24Stencil8},
+};
+static_assert(std::size(kTargetDescriptors) == size_t(Target::Count), "one row a target");
+
 // Positions are stored relative to the camera, so 32-bit floats keep sub-millimetre precision
 // near the viewer wherever the camera is; normals tolerate half floats (|n| error < 1e-3).
 // Compact: 16-bit octahedral normals (about 5e-5 rad steps) beat half floats; the position comes
@@ -34,21 +49,14 @@ const std::vector<GBufferLayout> kLayouts = {
 
 }  // namespace
 
-const char* targetName(Target target) {
-    switch (target) {
-        case Target::Albedo: return "albedo";
-        case Target::Normal: return "normal";
-        case Target::Position: return "position";
-        case Target::Info: return "info";
-        case Target::DepthStencil: return "depth-stencil";
-        case Target::Radiance: return "radiance";
-        case Target::Reflection: return "reflection";
-        case Target::Final: return "final";
-        case Target::SceneDepth: return "scene-depth";
-        case Target::Count: break;
-    }
-    return "?";
+const TargetDescriptor& targetDescriptor(Target target) {
+    for (const TargetDescriptor& row : kTargetDescriptors)
+        if (row.target == target) return row;
+    static const TargetDescriptor none{Target::Count, "?", "?", FormatFrom::Own, nullptr, kNotStored};
+    return none;
 }
+
+const char* targetName(Target target) { return targetDescriptor(target).name; }
 
 bool GBufferLayout::needsNorm16Targets() const {
     // GL_RG16 is the table's only 16-bit unorm format.
@@ -58,16 +66,11 @@ bool GBufferLayout::needsNorm16Targets() const {
 }
 
 TargetFormat GBufferLayout::format(Target target) const {
-    switch (target) {
-        case Target::Albedo: return albedo;
-        case Target::Normal: return normal;
-        case Target::Position: return position;
-        case Target::Info: return info;
-        case Target::DepthStencil: return kDepth24Stencil8;
-        case Target::Radiance:
-        case Target::Reflection: return kLinearLight;
-        case Target::SceneDepth: return positionFromDepth() ? kDepth24Stencil8 : kNotStored;
-        default: return kFinalColour;
+    const TargetDescriptor& row = targetDescriptor(target);
+    switch (row.format) {
+        case FormatFrom::LayoutRow: return this->*row.row;
+        case FormatFrom::DepthCopy: return positionFromDepth() ? row.own : kNotStored;
+        default: return row.own;
     }
 }
 

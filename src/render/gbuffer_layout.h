@@ -1,4 +1,5 @@
 // The G-buffer layouts: the one table of target formats and encodings. `--gbuffer NAME` picks a row.
+// The frame's targets described (TargetDescriptor): their names, labels and where their formats come from.
 #pragma once
 #include <epoxy/gl.h>
 
@@ -57,6 +58,23 @@ struct GBufferLayout {
     };
     StoredSurface storedSurface(glm::dvec4 albedoTexel, glm::dvec4 normalTexel, glm::dvec4 infoTexel) const;
 };
+
+// Where a frame target's format comes from: its row of the G-buffer layout, the depth convention
+// (the depth-stencil target; its copy where the layout rebuilds position from depth), or a format
+// of its own, the same in every layout.
+enum class FormatFrom { LayoutRow, Depth, DepthCopy, Own };
+// A frame target described: one row of the one table of targets (gbuffer_layout.cpp), from which
+// its name, its texture's format and its label come; its size is a scale of the frame's (the
+// resource's, render/frame_resource.h).
+struct TargetDescriptor {
+    Target target;
+    const char* name;   // as the CLI, the views and render --graph name it
+    const char* label;  // as capture tools list its texture, the layout (and depth) whose format it has after it
+    FormatFrom format;
+    TargetFormat GBufferLayout::*row;  // with FormatFrom::LayoutRow
+    TargetFormat own;                  // otherwise (the standard depth's where the depth convention decides)
+};
+const TargetDescriptor& targetDescriptor(Target target);
 
 // The #define and program-name suffix of an encoding ("" for AsIs: its shaders are the base ones).
 const char* gbufferEncodingDefine(GBufferEncoding encoding);

@@ -20,9 +20,10 @@ constexpr int kBeyondFrame = INT_MAX;
 struct TargetLifetime {
     Target target;
     int first, last;  // step indices of the frame graph, inclusive; last may be kBeyondFrame
+    int divisor = 1;  // the target at 1/divisor of the frame's size (the reduced reflection's: 2, 4)
 };
 
-// For each target, the target whose memory it uses (itself unless aliased): a later target takes
+// For each target of one scale, the target whose memory it uses (itself unless aliased): a later target takes
 // the memory of an earlier one whose lifetime ended before it began (strictly: one step cannot
 // hold both) and whose format (`formatOf`, 0 = not stored) is the same; a memory is lent to one
 // target at a time. Targets without a lifetime map to themselves.

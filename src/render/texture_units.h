@@ -80,7 +80,7 @@ struct InputBinding {
     InputSlot slot;
     int binding;
 };
-inline const std::array<InputBinding, 14> kInputBindings{{
+inline const std::array<InputBinding, 16> kInputBindings{{
     {Target::Albedo, InputSlot::Texture2D, kUnitAlbedo},
     {Target::Normal, InputSlot::Texture2D, kUnitNormal},
     {Target::Position, InputSlot::Texture2D, kUnitPosition},
@@ -89,6 +89,9 @@ inline const std::array<InputBinding, 14> kInputBindings{{
     {Target::SceneDepth, InputSlot::Texture2D, kUnitDepth},
     {Target::Radiance, InputSlot::Texture2D, kUnitRadiance},
     {Target::Reflection, InputSlot::Texture2D, kUnitReflection},
+    // The reflection drawn at 1/2 or 1/4, as ReflectionUpsamplePass reads it (sourceTexture).
+    {ScaledTarget{Target::Reflection, 2}, InputSlot::Texture2D, kUnitSource},
+    {ScaledTarget{Target::Reflection, 4}, InputSlot::Texture2D, kUnitSource},
     {Buffer::ShadowMaps, InputSlot::TextureArray, kUnitShadowMap},
     {Buffer::LightTiles, InputSlot::StorageBlock, kLightTileStorageBinding},
     {Buffer::LightList, InputSlot::StorageBlock, kLightStorageBinding},

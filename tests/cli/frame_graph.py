@@ -114,14 +114,20 @@ def check_order(oasis, out_dir):
             print(f"render --graph --view albedo: {shading} is not culled for the view:\n{albedo}")
             return 1
     print("render --graph --view albedo: the lighting, sky and water composite culled with reasons")
-    # A reflection drawn reduced lists its own targets at their size (160x90 / 2 and / 4, rounded up).
+    # A reflection drawn reduced lists its own targets (the frame's targets at its scale) at their
+    # size (160x90 / 2 and / 4, rounded up), its Reflection living until the upsample that reads it.
     for resolution, size in (("half", "80x45"), ("quarter", "40x23")):
         text = run(oasis, "render", "--size", "160x90", "--graph", "--reflection-resolution", resolution)
         own = text.split("# the reflection's own targets", 1)[1:]
         if not own or not re.search(r"^# reflection .*, " + size + " x ", own[0], re.M):
             print(f"render --graph --reflection-resolution {resolution}: no reflection target at {size}:\n{text}")
             return 1
-    print("render --graph --reflection-resolution half|quarter: the reflection's own targets at their size")
+        if not re.search(r"^# reflection +\S+ -> ReflectionUpsamplePass, ", own[0], re.M):
+            print(f"render --graph --reflection-resolution {resolution}: the reduced reflection does not live "
+                  f"until the upsample reads it:\n{text}")
+            return 1
+    print("render --graph --reflection-resolution half|quarter: the reflection's own targets at their size, "
+          "its Reflection read by the upsample")
     return 0
 
 

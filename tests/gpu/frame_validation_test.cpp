@@ -18,7 +18,7 @@ class ClearsOneTarget : public Pass {
 public:
     explicit ClearsOneTarget(bool honest) : honest_(honest) {}
     std::string name() const override { return honest_ ? "DeclaredPass" : "MisdeclaredPass"; }
-    std::vector<Access> accesses(const FrameSetup&) const override { return {{Target::Radiance, Use::Write}}; }
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override { return {{Target::Radiance, Use::Write}}; }
 
 protected:
     void execute(PassContext& context) override {
@@ -36,7 +36,7 @@ private:
 class DeclaresAWriteItNeverMakes : public Pass {
 public:
     std::string name() const override { return "OverdeclaredPass"; }
-    std::vector<Access> accesses(const FrameSetup&) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override {
         return {{Target::Radiance, Use::Write}, {Target::Final, Use::Write}};
     }
 
@@ -48,17 +48,18 @@ protected:
     }
 };
 
-// Draws into Final while it reads Radiance (a target) or the light list (a buffer), bound by hand
-// where the table reads it unless `declares`: then the pass declares the read and binds nothing.
+// Draws into Final while it reads a target (Radiance, the reduced Reflection) or the light list (a
+// buffer), bound by hand where the table reads it unless `declares`: then the pass declares the
+// read and binds nothing.
 // `bound` is what the pass found on the input's unit or binding.
 class ReadsAnInput : public Pass {
 public:
     ReadsAnInput(Resource input, bool declares) : input_(input), declares_(declares) {}
     std::string name() const override {
         return std::string(declares_ ? "Declared" : "Undeclared") +
-               (std::holds_alternative<Target>(input_) ? "SamplePass" : "BufferPass");
+               (std::holds_alternative<Buffer>(input_) ? "BufferPass" : "SamplePass");
     }
-    std::vector<Access> accesses(const FrameSetup&) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override {
         std::vector<Access> used = {{Target::Final, Use::Write}};
         if (declares_) used.push_back({input_, Use::Sample});
         return used;
@@ -69,10 +70,15 @@ public:
 protected:
     void execute(PassContext& context) override {
         bindDeclaredOutputs(context);
-        bool target = std::holds_alternative<Target>(input_);
+        Target sampled;
+        int divisor;
+        bool target = targetOf(input_, sampled, divisor);
+        int unit = 0;
+        for (const InputBinding& row : kInputBindings)
+            if (row.resource == input_) unit = row.binding;
         if (!declares_ && target) {
-            glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
-            glBindTexture(GL_TEXTURE_2D, context.targets.texture(Target::Radiance));
+            glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+            glBindTexture(GL_TEXTURE_2D, context.targets.texture(sampled, divisor));
         }
         if (!declares_ && !target) {
             lights = gl::createBuffer("test: the light count");
@@ -81,7 +87,7 @@ protected:
             glBindBufferBase(GL_UNIFORM_BUFFER, kLightCountBlockBinding, lights.name());
         }
         if (target) {
-            glActiveTexture(GL_TEXTURE0 + kUnitRadiance);
+            glActiveTexture(GLenum(GL_TEXTURE0 + unit));
             glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
             glActiveTexture(GL_TEXTURE0);
         } else {
@@ -154,6 +160,32 @@ TEST_F(GpuTest, APassSamplingATargetItDoesNotDeclareFailsValidation) {
     expectReadAudited(*shaders_, Target::Radiance,
                       "UndeclaredSamplePass samples radiance (texture unit 9), which it does not declare",
                       "a pass that sampled Radiance without declaring it passed validation");
+}
+
+// The reduced reflection's Reflection is a target at its scale, audited as the frame's are: the
+// upsample must declare it (it does, and so its lifetime reaches it).
+TEST_F(GpuTest, APassSamplingAReducedTargetItDoesNotDeclareFailsValidation) {
+    for (int divisor : {2, 4})
+        expectReadAudited(*shaders_, ScaledTarget{Target::Reflection, divisor},
+                          "UndeclaredSamplePass samples reflection at 1/" + std::to_string(divisor) +
+                              " (texture unit 6), which it does not declare",
+                          "a pass that sampled the reduced Reflection without declaring it passed validation");
+}
+
+// The reduced reflection's frames, validated: the upsample's read of the reduced Reflection and
+// the mirrored passes' draws at its scale are all declared.
+TEST_F(GpuTest, TheReducedReflectionsFramesPassValidation) {
+    ValidatedFrames validated;
+    SceneSettings scene = defaultPose().scene;
+    Renderer renderer(*shaders_, scene);
+    renderer.configure(64, 36, layoutNamed("compact"));
+    for (int divisor : {2, 4})
+        for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+            scene.water.reflectionDivisor = divisor;
+            renderer.setPipeline(kind);
+            EXPECT_NO_THROW(renderer.renderFrame(scene)) << pipelineName(kind) << " at 1/" << divisor;
+            EXPECT_TRUE(renderer.lastFrame().setup.reflectionsActive);
+        }
 }
 
 TEST_F(GpuTest, APassReadingABufferItDoesNotDeclareFailsValidation) {

@@ -19,12 +19,14 @@ SceneSettings atResolution(SceneSettings scene, int divisor) {
 
 std::vector<NamedPose> posesWithWater() { return {defaultPose(), vegetationPoses()[0], waterPoses()[1]}; }
 
-// The reduced Reflection as floats (RGBA, bottom row first) at its own size.
+// The reduced Reflection (the frame's Reflection at its scale) as floats (RGBA, bottom row first)
+// at its own size.
 std::vector<float> readReducedReflection(const Renderer& renderer) {
-    const FrameTargets& reduced = *renderer.lastFrame().reflectionTargets;
-    std::vector<float> pixels(size_t(reduced.width()) * size_t(reduced.height()) * 4);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, reduced.framebuffer({Target::Reflection}));
-    readColourFloats(reduced.width(), reduced.height(), pixels.data());
+    const FrameTargets& targets = renderer.targets();
+    const int divisor = renderer.lastFrame().setup.reflectionDivisor;
+    std::vector<float> pixels(size_t(targets.width(divisor)) * size_t(targets.height(divisor)) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets.framebuffer({Target::Reflection}, std::nullopt, divisor));
+    readColourFloats(targets.width(divisor), targets.height(divisor), pixels.data());
     return pixels;
 }
 
@@ -95,9 +97,9 @@ TEST_F(ReflectionResolution, ReflectionTargetIsTheReducedTargetReadBilinearly) {
                 // the frame was written there.
                 zeroTarget(renderer.targets(), Target::Reflection);
                 renderer.renderFrame(atResolution(defaultPose().scene, divisor));
-                ASSERT_NE(renderer.lastFrame().reflectionTargets, nullptr);
-                const int reducedWidth = renderer.lastFrame().reflectionTargets->width();
-                const int reducedHeight = renderer.lastFrame().reflectionTargets->height();
+                ASSERT_NE(renderer.targets().heldTexture(Target::Reflection, divisor), 0u);
+                const int reducedWidth = renderer.targets().width(divisor);
+                const int reducedHeight = renderer.targets().height(divisor);
                 EXPECT_EQ(reducedWidth, kMediumWidth / divisor);
                 EXPECT_EQ(reducedHeight, kMediumHeight / divisor);
                 const std::vector<uint8_t> stencil = readStencil(renderer);
@@ -188,17 +190,18 @@ TEST_F(ReflectionResolution, OddSizesRoundTheTargetsUp) {
     for (auto [divisor, reducedWidth, reducedHeight] : {std::tuple{2, 161, 91}, std::tuple{4, 81, 46}}) {
         SCOPED_TRACE("1/" + std::to_string(divisor));
         const Image reduced = renderFinal(renderer, atResolution(defaultPose().scene, divisor), PipelineKind::Deferred);
-        ASSERT_NE(renderer.lastFrame().reflectionTargets, nullptr);
-        EXPECT_EQ(renderer.lastFrame().reflectionTargets->width(), reducedWidth);
-        EXPECT_EQ(renderer.lastFrame().reflectionTargets->height(), reducedHeight);
+        ASSERT_NE(renderer.targets().heldTexture(Target::Reflection, divisor), 0u);
+        EXPECT_EQ(renderer.targets().width(divisor), reducedWidth);
+        EXPECT_EQ(renderer.targets().height(divisor), reducedHeight);
         EXPECT_EQ(countNonFiniteWritten(readTarget(renderer, Target::Reflection), Target::Reflection,
                                         readStencil(renderer), renderer.lastFrame().setup.reflectionsActive),
                   0);
         EXPECT_GE(compareImages(full, reduced).psnrDb, 27.0);
     }
-    // Back at full resolution the reduced set is released (and the frame is the full one again).
+    // Back at full resolution the reduced targets are given back (and the frame is the full one again).
     const Image again = renderFinal(renderer, defaultPose().scene, PipelineKind::Deferred);
-    EXPECT_EQ(renderer.lastFrame().reflectionTargets, nullptr);
+    for (int divisor : {2, 4})
+        for (int t = 0; t < int(Target::Count); ++t) EXPECT_EQ(renderer.targets().heldTexture(Target(t), divisor), 0u);
     EXPECT_EQ(compareImages(full, again).maxAbs, 0);
 }
 

@@ -163,7 +163,7 @@ TEST(FrameGraph, TheBuffersAreResourcesWithWritersAndReaders) {
 class ReadsTheCopy : public Pass {
 public:
     std::string name() const override { return "ReadsTheCopy"; }
-    std::vector<Access> accesses(const FrameSetup&) const override {
+    std::vector<Access> declaredAccesses(const FrameSetup&) const override {
         return {{Target::SceneDepth, Use::Sample}, {Target::Radiance, Use::Write}};
     }
 

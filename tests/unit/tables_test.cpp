@@ -14,6 +14,7 @@
 
 #include "debug/debug_views.h"
 #include "passes/pass.h"
+#include "render/frame_targets.h"
 #include "render/gbuffer_layout.h"
 #include "render/shader_library.h"
 #include "render/shader_variants.h"
@@ -86,6 +87,24 @@ TEST(GBufferLayoutTable, FormatBytesAgreeWithInternalFormats) {
         EXPECT_EQ(layout.format(Target::Normal).internalFormat, layout.normal.internalFormat);
         EXPECT_EQ(layout.format(Target::Position).internalFormat, layout.position.internalFormat);
         EXPECT_EQ(layout.format(Target::Info).internalFormat, layout.info.internalFormat);
+    }
+}
+
+// The frame targets' descriptors: a row for every target, under its own name; the G-buffer's
+// colour targets take their format from the layout's row, the rest from the depth convention or
+// their own, the same in every layout.
+TEST(TargetDescriptors, EveryTargetHasItsRowAndItsFormatsSource) {
+    std::set<std::string> names;
+    for (int t = 0; t < int(Target::Count); ++t) {
+        const TargetDescriptor& row = targetDescriptor(Target(t));
+        EXPECT_EQ(row.target, Target(t)) << t;
+        EXPECT_TRUE(names.insert(row.name).second) << row.name;
+        EXPECT_NE(std::string(row.label), "");
+        const bool gbufferColour = std::find(std::begin(kGBufferColourTargets),
+                                             std::end(kGBufferColourTargets), Target(t)) !=
+                                   std::end(kGBufferColourTargets);
+        EXPECT_EQ(row.format == FormatFrom::LayoutRow, gbufferColour) << row.name;
+        EXPECT_EQ(row.row != nullptr, gbufferColour) << row.name;
     }
 }
 

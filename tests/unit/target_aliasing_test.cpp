@@ -60,7 +60,7 @@ TEST(TargetLifetimes, TheForwardFrameUsesNoGBufferTheDeferredFrameDoes) {
     for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
         Pipeline pipeline(kind);
         std::vector<TargetLifetime> lifetimes =
-            targetLifetimes(pipeline.graph(frame, sink), frame, {Target::Final}, StepsOf::WholeFrame);
+            targetLifetimes(pipeline.graph(frame, sink), frame, {Target::Final});
         const bool deferred = kind == PipelineKind::Deferred;
         for (Target gbuffer : {Target::Albedo, Target::Normal, Target::Info})
             EXPECT_EQ(hasLifetime(lifetimes, gbuffer), deferred) << pipelineName(kind) << " " << targetName(gbuffer);
@@ -73,25 +73,55 @@ TEST(TargetLifetimes, TheForwardFrameUsesNoGBufferTheDeferredFrameDoes) {
     }
 }
 
-TEST(TargetLifetimes, TheReducedReflectionsTargetsAreItsPassesAlone) {
+const TargetLifetime* lifetimeOf(const std::vector<TargetLifetime>& lifetimes, Target target, int divisor) {
+    for (const TargetLifetime& lifetime : lifetimes)
+        if (lifetime.target == target && lifetime.divisor == divisor) return &lifetime;
+    return nullptr;
+}
+
+// The reduced reflection's targets are the frame's targets at its scale, touched by its passes
+// alone; its Reflection lives until the upsample that reads it (declared: its memory is lent to no
+// target of that size before then), and the frame's own Reflection from the upsample's write on.
+TEST(TargetLifetimes, TheReducedReflectionsTargetsLiveFromItsPassesToTheUpsample) {
     FrameSetup frame;
     frame.positionFromDepth = true;
     frame.reflectionsActive = true;
-    frame.reflectionDivisor = 2;
     const std::vector<Resource> sink{Target::Final};
-    for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
-        SCOPED_TRACE(pipelineName(kind));
-        Pipeline pipeline(kind);  // the graph points at its passes
-        FrameGraph graph = pipeline.graph(frame, sink);
-        std::vector<TargetLifetime> reduced = targetLifetimes(graph, frame, {}, StepsOf::ReducedReflection);
-        std::vector<TargetLifetime> rest = targetLifetimes(graph, frame, {}, StepsOf::FrameWithoutReducedReflection);
-        EXPECT_TRUE(hasLifetime(reduced, Target::Reflection));
-        EXPECT_FALSE(hasLifetime(reduced, Target::Final));
-        EXPECT_FALSE(hasLifetime(reduced, Target::Radiance));
-        EXPECT_EQ(hasLifetime(reduced, Target::Albedo), kind == PipelineKind::Deferred);
-        EXPECT_TRUE(hasLifetime(rest, Target::Reflection)) << "the upsample's write and the composite's read";
-        EXPECT_FALSE(hasLifetime(rest, Target::SceneDepth)) << "only the mirrored lighting reads the depth copy";
-    }
+    for (int divisor : {2, 4})
+        for (PipelineKind kind : {PipelineKind::Forward, PipelineKind::Deferred}) {
+            SCOPED_TRACE(std::string(pipelineName(kind)) + " at 1/" + std::to_string(divisor));
+            frame.reflectionDivisor = divisor;
+            Pipeline pipeline(kind);  // the graph points at its passes
+            FrameGraph graph = pipeline.graph(frame, sink);
+            std::vector<TargetLifetime> lifetimes = targetLifetimes(graph, frame, {Target::Final});
+            int upsample = -1, lastMirrored = -1;
+            for (size_t k = 0; k < graph.steps.size(); ++k) {
+                if (!graph.steps[k].runs) continue;
+                if (graph.steps[k].pass->name() == "ReflectionUpsamplePass") upsample = int(k);
+                if (graph.steps[k].pass->drawsInReflectionTargets()) lastMirrored = int(k);
+            }
+            ASSERT_GT(upsample, lastMirrored);
+            const TargetLifetime* reduced = lifetimeOf(lifetimes, Target::Reflection, divisor);
+            ASSERT_NE(reduced, nullptr);
+            EXPECT_EQ(reduced->last, upsample) << "the upsample's read of the reduced Reflection is declared";
+            EXPECT_EQ(lifetimeOf(lifetimes, Target::Final, divisor), nullptr);
+            EXPECT_EQ(lifetimeOf(lifetimes, Target::Radiance, divisor), nullptr);
+            EXPECT_EQ(lifetimeOf(lifetimes, Target::Albedo, divisor) != nullptr, kind == PipelineKind::Deferred);
+            for (const TargetLifetime& lifetime : lifetimes)
+                if (lifetime.divisor == divisor) EXPECT_LE(lifetime.last, upsample) << targetName(lifetime.target);
+            const TargetLifetime* frameReflection = lifetimeOf(lifetimes, Target::Reflection, 1);
+            ASSERT_NE(frameReflection, nullptr);
+            EXPECT_EQ(frameReflection->first, upsample) << "the frame's Reflection is the upsample's write";
+            EXPECT_EQ(lifetimeOf(lifetimes, Target::SceneDepth, 1), nullptr) << "only the mirrored lighting reads the copy";
+            // No target of the reduced size takes the reduced Reflection's memory before the upsample.
+            std::vector<TargetLifetime> ofScale;
+            for (const TargetLifetime& lifetime : lifetimes)
+                if (lifetime.divisor == divisor) ofScale.push_back(lifetime);
+            const TargetMemory memory = aliasTargets(ofScale, [](Target) { return 1u; });  // every format alike
+            for (const TargetLifetime& lifetime : ofScale)
+                if (lifetime.target != Target::Reflection && memory[size_t(lifetime.target)] == Target::Reflection)
+                    EXPECT_GT(lifetime.first, upsample) << targetName(lifetime.target);
+        }
 }
 
 }  // namespace
