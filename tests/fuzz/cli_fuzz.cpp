@@ -124,9 +124,10 @@ std::string checkImage(const fs::path& path, int width, int height, bool picture
 
 // `render --graph`: a first line naming the pipeline ("# the deferred pipeline's frame, ..."), then
 // one line a pass, from the first pass of every frame, each `NAME  READS -> WRITES` or `NAME  culled: WHY`,
-// then the resources' blocks ("# buffers: ...", "# targets: ..."), every line of them a "# " line.
+// then, for a frame built for a view, a line "# after the frame, ..." and the views' passes in the same
+// form, then the resources' blocks ("# buffers: ...", "# targets: ..."), every line of them a "# " line.
 std::string checkGraphText(const std::string& text) {
-    static const std::regex kPassLine("[A-Z][A-Za-z]*Pass(\\.[a-z]+)* +(.* -> .+|culled: .+)");
+    static const std::regex kPassLine("[A-Z][A-Za-z]*Pass(\\.[a-z-]+)* +(.* -> .+|culled: .+|cut: .+)");
     static const std::regex kHeader("# the (forward|deferred) pipeline's frame, [0-9]+x[0-9]+, built for view .+\n");
     std::smatch header;
     if (!std::regex_search(text, header, kHeader, std::regex_constants::match_continuous))
@@ -135,6 +136,7 @@ std::string checkGraphText(const std::string& text) {
     std::istringstream lines(text.substr(size_t(header.length())));
     bool resources = false;  // past the passes: the buffers' and targets' blocks
     for (std::string line; std::getline(lines, line);) {
+        if (!resources && line.rfind("# after the frame, ", 0) == 0) continue;  // the views' passes follow
         resources = resources || line.rfind("# ", 0) == 0;
         if (resources && line.rfind("# ", 0) != 0)
             return "render --graph printed a line after its resources' blocks: '" + line + "'";
